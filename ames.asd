@@ -1,0 +1,48 @@
+;;;; ames.asd -- system definitions for AMES, the Algebraic MEchanics Simulator.
+;;;;
+;;;; One module and one package per layer; dependencies point down only:
+;;;;   base  <-  maxima-bridge, tms  <-  geometry  <-  engine  <-  kb  <-  simulator
+;;;; Only Debian's CL packages are used (cl-alexandria, cl-fiveam, cl-ppcre).
+
+(defsystem "ames"
+  :description "AMES: a knowledge-based simulator that predicts in closed form how
+frictionless translating rigid bodies evolve (after Leon Wong's 1994 MIT thesis)."
+  :version "0.1.0"
+  :license "MIT"
+  :depends-on ("alexandria" "cl-ppcre")
+  :components
+  ((:module "base" :pathname "src/base/" :serial t
+    :components ((:file "package")
+                 (:file "conditions")
+                 (:file "algebra")))
+   (:module "maxima-bridge" :pathname "src/maxima-bridge/" :serial t
+    :depends-on ("base")
+    :components ((:file "package")))
+   (:module "tms" :pathname "src/tms/" :serial t
+    :depends-on ("base")
+    :components ((:file "package")))
+   (:module "geometry" :pathname "src/geometry/" :serial t
+    :depends-on ("base" "maxima-bridge")
+    :components ((:file "package")))
+   (:module "engine" :pathname "src/" :serial t
+    :depends-on ("base" "tms" "maxima-bridge")
+    :components ((:file "engine-package")))
+   (:module "kb" :pathname "src/kb/" :serial t
+    :depends-on ("engine" "geometry")
+    :components ((:file "package")))
+   (:module "simulator" :pathname "src/" :serial t
+    :depends-on ("kb")
+    :components ((:file "package"))))
+  :in-order-to ((test-op (test-op "ames/tests"))))
+
+(defsystem "ames/tests"
+  :description "FiveAM test suites for every AMES layer."
+  :depends-on ("ames" "fiveam")
+  :pathname "t/"
+  :serial t
+  :components ((:file "package")
+               (:file "base")
+               (:file "runner"))
+  :perform (test-op (o c)
+             (declare (ignore o c))
+             (uiop:symbol-call :ames.tests :run-ames-tests)))
