@@ -32,7 +32,11 @@ frictionless translating rigid bodies evolve (after Leon Wong's 1994 MIT thesis)
     :components ((:file "package")))
    (:module "simulator" :pathname "src/" :serial t
     :depends-on ("kb")
-    :components ((:file "package"))))
+    :components ((:file "package")
+                 (:file "scenario-conditions")
+                 (:file "scenario-numbers")
+                 (:file "scenario")
+                 (:file "scenario-reader"))))
   :in-order-to ((test-op (test-op "ames/tests"))))
 
 (defsystem "ames/tests"
