@@ -20,16 +20,33 @@
 
 (in-package #:ames)
 
-(defun short-form-string (form)
-  "FORM printed readably but cut short, for condition reports."
+(defun form-package (form)
+  "The package FORM's symbols were most likely written in: the home package of its
+first symbol (the user's package at the REPL, AMES-SCENARIO for a file)."
+  (let ((package (loop repeat 4
+                       do (cond ((consp form) (setf form (car form)))
+                                ((and form (symbolp form))
+                                 (return (let ((home (symbol-package form)))
+                                           (and home
+                                                (not (eq home (find-package '#:keyword)))
+                                                home))))
+                                (t (return nil))))))
+    (or package (find-package '#:ames-scenario))))
+
+(defun short-form-string (form &optional (package (find-package '#:ames-scenario)))
+  "FORM printed readably but cut short, for condition reports; symbols of PACKAGE
+print without their package prefix."
   (with-standard-io-syntax
     (let ((*print-readably* nil) (*print-level* 4) (*print-length* 8)
-          (*print-circle* t) (*package* (find-package '#:ames-scenario)))
+          (*package* package))
       (prin1-to-string form))))
 
 (defun report-scenario-error (condition stream)
   "Write CONDITION's report: where, what, the clause and the datum at fault."
-  (format stream "~:[Scenario~;~:*Scenario ~A~]~@[, ~A~]~@[ (~A)~]: ~A"
+  (flet ((short-form-string (form)
+           (short-form-string form (form-package (or (scenario-error-scenario condition)
+                                                     (scenario-error-clause condition))))))
+   (format stream "~:[Scenario~;~:*Scenario ~A~]~@[, ~A~]~@[ (~A)~]: ~A"
           (let ((name (scenario-error-scenario condition)))
             (and name (short-form-string name)))
           (scenario-error-location condition)
@@ -41,8 +58,12 @@
       (format stream "~%  in: ~A" (short-form-string clause)))
     (when datum
       (format stream "~%  at fault: ~A" (short-form-string datum)))
-    (when (scenario-error-cause condition)
-      (format stream "~%  because: ~A" (scenario-error-cause condition)))))
+    (let ((cause (scenario-error-cause condition)))
+      ;; a cause that only repeats the detail (the algebra's own complaint) is not shown
+      (when (and cause
+                 (not (and (typep cause 'ames-error)
+                           (equal (ames-error-detail cause) (ames-error-detail condition)))))
+        (format stream "~%  because: ~A" cause))))))
 
 (define-condition scenario-error (ames-error)
   ((scenario :initarg :scenario :initform nil :reader scenario-error-scenario

@@ -225,7 +225,10 @@ NIL), with DATUM at fault (the clause, or the whole form, when DATUM is NIL)."
          :cause cause
          :datum (or datum (validation-clause validation) (validation-form validation)
                     "NIL (an empty form)")
-         :detail (apply #'format nil control arguments)))
+         :detail (with-standard-io-syntax
+                   (let ((*print-readably* nil) (*print-level* 4) (*print-length* 8)
+                         (*package* (form-package (validation-form validation))))
+                     (apply #'format nil control arguments)))))
 
 (defun reject (validation class datum control &rest arguments)
   "Signal a scenario error of CLASS at VALIDATION's current place, DATUM at fault."
@@ -236,9 +239,13 @@ NIL), with DATUM at fault (the clause, or the whole form, when DATUM is NIL)."
   (setf (validation-location validation) location
         (validation-clause validation) clause))
 
-(defun show (form)
-  "FORM as a short string for a condition's detail."
-  (short-form-string form))
+(defstruct (shown (:constructor show (form)))
+  "A form to print in a condition's detail: written with ~A, it prints as PRIN1 would,
+under the print settings REJECT-BECAUSE binds (short, in the form's package)."
+  form)
+
+(defmethod print-object ((shown shown) stream)
+  (prin1 (shown-form shown) stream))
 
 ;;; ------------------------------------------------------------------------------------
 ;;; Words, names and operators, by name
@@ -484,7 +491,7 @@ their declared symbols. Signals SCENARIO-EXPRESSION-ERROR or UNDECLARED-SYMBOL-E
   (let ((name (cdr (declared validation (parameter-spec-name spec))))
         (assumptions '())
         (value nil))
-    (enter validation (format nil "parameter ~A" (show name)) spec)
+    (enter validation (format nil "parameter ~A" (symbol-name name)) spec)
     (dolist (assumption (if (consp spec) (rest spec) '()))
       (if (and (consp assumption) (keyword-named-p (first assumption) "VALUE"))
           (progn
@@ -549,7 +556,7 @@ violate one of their assumptions (decided where every parameter involved has one
                 (when (and lhs rhs
                            (eq (relation-holds-p (first relation) lhs lhs-exact rhs rhs-exact)
                                :false))
-                  (enter validation (format nil "parameter ~A" (show name)) nil)
+                  (enter validation (format nil "parameter ~A" (symbol-name name)) nil)
                   (reject validation 'contradictory-assumptions-error assumption
                           "the default value ~A of ~A violates its assumption ~A"
                           lhs (show name) (show assumption)))))))))))
@@ -654,7 +661,7 @@ outline), without :solid."
 
 (defun arc-end-point (arc angle-key)
   "The numeric point of ARC (a checked arc) at its ANGLE-KEY (:FROM or :TO) end, as
-a list (X Y), or NIL when not numeric."
+a list (X Y NIL) (NIL: not exact), or NIL when not numeric."
   (let ((center (getf (rest arc) :center)))
     (let ((cx (constant-value (first center)))
           (cy (constant-value (second center)))
@@ -662,15 +669,25 @@ a list (X Y), or NIL when not numeric."
           (angle (constant-value (getf (rest arc) angle-key))))
       (and cx cy r angle
            (handler-case (list (+ cx (* r (cos (float angle 1d0))))
-                               (+ cy (* r (sin (float angle 1d0)))))
+                               (+ cy (* r (sin (float angle 1d0))))
+                               nil)
              (arithmetic-error () nil))))))
 
 (defun piece-end (piece end)
-  "The point (a form) where the checked outline PIECE starts (END :START) or ends
-(:END); for an arc, its numeric point or NIL."
+  "The numeric point (X Y EXACT) where the checked outline PIECE starts (END :START)
+or ends (:END), or NIL when it is not numeric."
   (if (eq (first piece) 'ames-scenario:line)
-      (if (eq end :start) (second piece) (third piece))
+      (multiple-value-bind (x y exact) (numeric-point (if (eq end :start) (second piece) (third piece)))
+        (and x (list x y exact)))
       (arc-end-point piece (if (eq end :start) :from :to))))
+
+(defun numeric-points-differ-p (a b)
+  "True when the numeric points A and B, each (X Y EXACT), are clearly apart."
+  (destructuring-bind (ax ay a-exact) a
+    (destructuring-bind (bx by b-exact) b
+      (and (or (member (compare-values ax a-exact bx b-exact) '(:less :greater))
+               (member (compare-values ay a-exact by b-exact) '(:less :greater)))
+           t))))
 
 (defun checked-outline (validation shape)
   "(outline PIECE ...) checked: line and arc pieces, end to end where numbers tell."
@@ -698,13 +715,12 @@ a list (X Y), or NIL when not numeric."
           while next
           do (let ((end (piece-end previous :end))
                    (start (piece-end next :start)))
-               (when (and end start
-                          (not (points-coincide-p end start))
-                          (numeric-point end) (numeric-point start))
+               (when (and end start (numeric-points-differ-p end start))
                  (shape-reject validation shape
-                               "the outline's pieces do not meet end to end: ~A ends at ~A ~
-                                but ~A starts at ~A" (show previous) (show end)
-                               (show next) (show start)))))
+                               "the outline's pieces do not meet end to end: ~A ends at ~
+                                (~A ~A) but ~A starts at (~A ~A)" (show previous)
+                               (first end) (second end) (show next)
+                               (first start) (second start)))))
     (cons 'ames-scenario:outline pieces)))
 
 (defun checked-shape (validation x)
@@ -751,7 +767,7 @@ SCENARIO-SHAPE-ERROR for a bad form (and the expression errors for its coordinat
 (defun checked-body (validation clause)
   "The SCENARIO-BODY that the clause (body NAME :shape ... ) declares."
   (let* ((name (cdr (declared validation (second clause))))
-         (what (format nil "body ~A" (show name))))
+         (what (format nil "body ~A" (symbol-name name))))
     (enter validation what clause)
     (let* ((arguments (checked-keywords validation (cddr clause)
                                         '(:shape :mass :position :velocity :fixed) what))
@@ -786,7 +802,7 @@ SCENARIO-SHAPE-ERROR for a bad form (and the expression errors for its coordinat
 (defun checked-force (validation clause)
   "The SCENARIO-FORCE that the clause (force NAME :on BODY :value (FX FY)) declares."
   (let* ((name (cdr (declared validation (second clause))))
-         (what (format nil "force ~A" (show name))))
+         (what (format nil "force ~A" (symbol-name name))))
     (enter validation what clause)
     (let* ((arguments (checked-keywords validation (cddr clause) '(:on :value) what))
            (missing (remove-if (lambda (key) (assoc key arguments)) '(:on :value))))
@@ -893,7 +909,7 @@ order."
                (reject validation 'missing-property-error clause
                        "the ~(~A~) has no name" kind))
              (check-name validation (second clause) (string-downcase kind))
-             (enter validation (format nil "~(~A~) ~A" kind (show (second clause))) clause)
+             (enter validation (format nil "~(~A~) ~A" kind (symbol-name (second clause))) clause)
              (declare-name validation (second clause) kind))))
 
 (defun parse-scenario (form &key source)
@@ -931,7 +947,7 @@ CHECK-SCENARIO-GEOMETRY, which the caller runs when it has those layers."
                                                  (rest clause)))))
             (dolist (parameter parameters)
               (enter validation (format nil "parameter ~A"
-                                        (show (scenario-parameter-name parameter)))
+                                        (symbol-name (scenario-parameter-name parameter)))
                      nil)
               (check-parameter-bounds validation parameter))
             (check-default-values validation parameters)
