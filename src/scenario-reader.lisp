@@ -114,30 +114,34 @@ is not closed runs to the end of TEXT, where reading it will fail."
                    (note start (format nil "a token longer than ~D characters" +longest-token+)))
                  i))
              (scan-form (i)
-               ;; I is at a non-blank character; the index after the form.
-               (let ((c (at i)))
-                 (case c
-                   ((nil) n)
-                   (#\( (let ((j (1+ i)))
-                          (loop (setf j (skip-blank j))
-                                (cond ((>= j n) (return n))
-                                      ((eql (at j) #\)) (return (1+ j)))
-                                      (t (setf j (scan-form j)))))))
-                   (#\) (1+ i))
-                   ((#\' #\` #\,)
-                    (let ((j (skip-blank (if (and (eql c #\,) (eql (at (1+ i)) #\@)) (+ i 2) (1+ i)))))
-                      (if (>= j n) n (scan-form j))))
-                   (#\" (scan-string (1+ i)))
-                   (#\# (let ((j (1+ i)))
-                          (loop while (and (at j) (digit-char-p (at j))) do (incf j))
-                          (let ((d (at j)))
-                            (cond ((null d) n)
-                                  ((eql d #\|) n) ; an unclosed block comment
-                                  ((eql d #\\) (scan-token (min n (+ j 2))))
-                                  ((eql d #\() (scan-form j))
-                                  (t (let ((k (skip-blank (1+ j))))
-                                       (if (>= k n) n (scan-form k))))))))
-                   (t (scan-token i))))))
+               ;; I is at a non-blank character; the index after the form. Iterative,
+               ;; so that no nesting depth can exhaust the stack.
+               (let ((depth 0))
+                 (loop
+                   (setf i (skip-blank i))
+                   (let ((c (at i)))
+                     (flet ((done-if-top (j)
+                              (setf i j)
+                              (when (zerop depth) (return i))))
+                       (case c
+                         ((nil) (return n))
+                         (#\( (incf depth) (incf i))
+                         (#\) (incf i)
+                          (when (or (zerop depth) (zerop (decf depth))) (return i)))
+                         ((#\' #\` #\,)
+                          ;; a prefix: the next form belongs to it
+                          (setf i (if (and (eql c #\,) (eql (at (1+ i)) #\@)) (+ i 2) (1+ i))))
+                         (#\" (done-if-top (scan-string (1+ i))))
+                         (#\# (let ((j (1+ i)))
+                                (loop while (and (at j) (digit-char-p (at j))) do (incf j))
+                                (let ((d (at j)))
+                                  (cond ((null d) (return n))
+                                        ((eql d #\|) (return n)) ; an unclosed block comment
+                                        ((eql d #\\) (done-if-top (scan-token (min n (+ j 2)))))
+                                        ((eql d #\() (setf i j))
+                                        ;; #. #S #P #+ ...: the next form belongs to it
+                                        (t (setf i (1+ j)))))))
+                         (t (done-if-top (scan-token i))))))))))
       (let ((i (skip-blank 0)))
         (loop while (< i n)
               do (setf problem nil problem-position nil)
