@@ -55,4 +55,5 @@ reader and validator.")
    #:constant-value
    ;; reading scenario files (src/scenario-reader.lisp)
    #:read-scenario-forms #:read-scenarios-from-string #:read-scenario-file
-   #:*scenario-readtable-limits*))
+   ;; the checks through Maxima (src/scenario-semantics.lisp)
+   #:check-scenario-assumptions #:missing-assumption-error #:missing-assumption-fact))
