@@ -56,4 +56,5 @@ reader and validator.")
    ;; reading scenario files (src/scenario-reader.lisp)
    #:read-scenario-forms #:read-scenarios-from-string #:read-scenario-file
    ;; the checks through Maxima (src/scenario-semantics.lisp)
-   #:check-scenario-assumptions #:missing-assumption-error #:missing-assumption-fact))
+   #:check-scenario #:check-scenario-assumptions #:check-scenario-geometry
+   #:missing-assumption-error #:missing-assumption-fact))

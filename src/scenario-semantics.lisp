@@ -11,6 +11,14 @@
 ;;;; decide is a MISSING-ASSUMPTION-ERROR naming it (the scenario-language page: "where
 ;;;; it cannot be decided, the scenario is rejected with an error naming the fact that
 ;;;; is missing").
+;;;;
+;;;; CHECK-SCENARIO-GEOMETRY then hands every shape to the geometry layer's parser
+;;;; (self-intersecting polygons, outlines that do not join...) and builds the
+;;;; configuration-space contacts of every pair of bodies that are not both fixed, to
+;;;; reject bodies that overlap at the start. Fixed bodies are all part of the fixed
+;;;; frame: they may touch or overlap each other (a floor and a wall). Geometry's
+;;;; conditions are wrapped into SCENARIO-ERRORs naming the body or the pair.
+;;;; CHECK-SCENARIO runs both under one scope of the scenario's assumptions.
 
 (in-package #:ames)
 
@@ -104,6 +112,39 @@ answer is :UNKNOWN, asks again about the fully simplified difference of its side
         (format nil "parameter ~A" (symbol-name (scenario-parameter-name parameter)))
         "clause PARAMETERS")))
 
+(defun call-with-scenario-assumptions (scenario bridge thunk)
+  "Call THUNK with SCENARIO's parameter assumptions in force in BRIDGE; return its
+values. Signals CONTRADICTORY-ASSUMPTIONS-ERROR, naming the parameter, when Maxima
+finds the assumptions inconsistent (the bridge's INCONSISTENT-ASSUMPTIONS is its CAUSE)."
+  (handler-case
+      (ames.maxima:call-with-assumptions bridge (scenario-assumption-relations scenario) thunk)
+    (ames.maxima:inconsistent-assumptions (condition)
+      (let ((fact (ames.maxima:inconsistent-assumptions-fact condition)))
+        (error 'contradictory-assumptions-error
+               :scenario (scenario-name scenario)
+               :location (assumption-location scenario fact)
+               :source (scenario-source scenario)
+               :datum (or fact (scenario-assumption-relations scenario))
+               :cause condition
+               :detail (scenario-detail scenario "the assumption ~S contradicts the others"
+                                        fact))))))
+
+(defun check-facts (scenario bridge)
+  "Decide every fact SCENARIO needs (see SCENARIO-FACTS) under the assumptions in
+force; signal for the first that is false or undecided."
+  (loop for (location relation what class) in (scenario-facts scenario)
+        do (ecase (decide-fact bridge relation)
+             (:true)
+             (:false (semantic-reject scenario class location relation
+                                      "it is false that ~A" what))
+             (:unknown
+              (error 'missing-assumption-error
+                     :scenario (scenario-name scenario) :location location
+                     :source (scenario-source scenario) :datum relation :fact relation
+                     :detail (scenario-detail scenario "the assumptions do not show that ~A; ~
+                                                        declare what makes ~S hold"
+                                              what relation))))))
+
 (defun check-scenario-assumptions (scenario bridge)
   "Check, through the Maxima BRIDGE and under SCENARIO's parameter assumptions, what
 PARSE-SCENARIO could not decide with numbers: that the assumptions are consistent, that
@@ -113,33 +154,91 @@ Signals CONTRADICTORY-ASSUMPTIONS-ERROR (wrapping the bridge's INCONSISTENT-ASSU
 naming the parameter, SCENARIO-EXPRESSION-ERROR or SCENARIO-SHAPE-ERROR naming the body
 for a fact that is false, MISSING-ASSUMPTION-ERROR naming the fact that the assumptions
 do not decide, and the bridge's own conditions when Maxima fails."
-  (let ((facts (scenario-facts scenario)))
-    (handler-case
-        (ames.maxima:call-with-assumptions
-         bridge (scenario-assumption-relations scenario)
-         (lambda ()
-           (loop for (location relation what class) in facts
-                 do (ecase (decide-fact bridge relation)
-                      (:true)
-                      (:false (semantic-reject scenario class location relation
-                                               "it is false that ~A: ~S" what relation))
-                      (:unknown
-                       (error 'missing-assumption-error
-                              :scenario (scenario-name scenario) :location location
-                              :source (scenario-source scenario) :datum relation
-                              :fact relation
-                              :detail (scenario-detail
-                                       scenario "the assumptions do not show that ~A; ~
-                                                 declare what makes ~S hold"
-                                       what relation)))))))
-      (ames.maxima:inconsistent-assumptions (condition)
-        (let ((fact (ames.maxima:inconsistent-assumptions-fact condition)))
-          (error 'contradictory-assumptions-error
-                 :scenario (scenario-name scenario)
-                 :location (assumption-location scenario fact)
-                 :source (scenario-source scenario)
-                 :datum (or fact (scenario-assumption-relations scenario))
-                 :cause condition
-                 :detail (scenario-detail scenario "the assumption ~S contradicts the others"
-                                          fact)))))
-    scenario))
+  (call-with-scenario-assumptions scenario bridge
+                                  (lambda () (check-facts scenario bridge)))
+  scenario)
+
+(defun call-wrapping-geometry-conditions (scenario location thunk)
+  "Call THUNK; turn the geometry layer's INVALID-SHAPE, UNSUPPORTED-SHAPE-PAIR and
+UNDECIDABLE-GEOMETRIC-FACT into SCENARIO-ERRORs of SCENARIO at LOCATION."
+  (flet ((wrap (class condition datum &rest initargs)
+           (apply #'error class
+                  :scenario (scenario-name scenario) :location location
+                  :source (scenario-source scenario) :cause condition
+                  :datum (or datum location)
+                  :detail (ames-error-detail condition)
+                  initargs)))
+    (handler-case (funcall thunk)
+      (ames.geometry:invalid-shape (condition)
+        (wrap 'scenario-shape-error condition (ames-error-datum condition)))
+      (ames.geometry:unsupported-shape-pair (condition)
+        (wrap 'scenario-shape-error condition (ames-error-datum condition)))
+      (ames.geometry:undecidable-geometric-fact (condition)
+        (wrap 'missing-assumption-error condition (ames.geometry:undecidable-fact condition)
+              :fact (ames.geometry:undecidable-fact condition))))))
+
+(defun scenario-geometry (scenario bridge)
+  "Parse every shape of SCENARIO with the geometry layer and check that no two bodies,
+not both fixed, overlap at the start. Call under the scenario's assumptions."
+  (let ((shapes
+          (loop for body in (scenario-bodies scenario)
+                collect (let ((body body))
+                          (call-wrapping-geometry-conditions
+                           scenario (format nil "body ~A" (symbol-name (scenario-body-name body)))
+                           (lambda ()
+                             (ames.geometry:parse-shape (scenario-body-shape body)
+                                                        :bridge bridge)))))))
+    (loop for (body . more-bodies) on (scenario-bodies scenario)
+          for (shape . more-shapes) on shapes
+          do (loop for other in more-bodies
+                   for other-shape in more-shapes
+                   unless (and (scenario-body-fixed-p body) (scenario-body-fixed-p other))
+                     do (let ((location (format nil "bodies ~A and ~A"
+                                                (symbol-name (scenario-body-name body))
+                                                (symbol-name (scenario-body-name other))))
+                              (body body) (other other) (shape shape)
+                              (other-shape other-shape))
+                          (call-wrapping-geometry-conditions
+                           scenario location
+                           (lambda ()
+                             (let* ((pair (ames.geometry:make-contact-pair
+                                           (scenario-body-name body) shape
+                                           (scenario-body-name other) other-shape
+                                           :bridge bridge))
+                                    (observer (if (eq (ames.geometry:pair-observer pair)
+                                                      (scenario-body-name body))
+                                                  body other))
+                                    (obstacle (if (eq observer body) other body)))
+                               (when (ames.geometry:penetrates-p
+                                      pair (ames.geometry:relative-position
+                                            pair (scenario-body-position observer)
+                                            (scenario-body-position obstacle)))
+                                 (semantic-reject
+                                  scenario 'overlapping-bodies-error location
+                                  (list (scenario-body-name body) (scenario-body-name other))
+                                  "~A and ~A overlap at the start"
+                                  (symbol-name (scenario-body-name body))
+                                  (symbol-name (scenario-body-name other))))))))))
+    shapes))
+
+(defun check-scenario-geometry (scenario bridge)
+  "Check SCENARIO's shapes with the geometry layer (ames.geometry:parse-shape) and that
+no two of its bodies (not both fixed) overlap at the start, through the Maxima BRIDGE
+under the scenario's assumptions. Returns SCENARIO.
+Signals SCENARIO-SHAPE-ERROR naming the body (wrapping geometry's INVALID-SHAPE) or the
+pair (UNSUPPORTED-SHAPE-PAIR), OVERLAPPING-BODIES-ERROR naming the pair,
+MISSING-ASSUMPTION-ERROR for a geometric fact that the assumptions do not decide, and
+CONTRADICTORY-ASSUMPTIONS-ERROR."
+  (call-with-scenario-assumptions scenario bridge
+                                  (lambda () (scenario-geometry scenario bridge)))
+  scenario)
+
+(defun check-scenario (scenario bridge)
+  "Every check of SCENARIO that needs Maxima and geometry, under one scope of its
+assumptions: CHECK-SCENARIO-ASSUMPTIONS, then CHECK-SCENARIO-GEOMETRY. Returns
+SCENARIO; signals what they signal."
+  (call-with-scenario-assumptions scenario bridge
+                                  (lambda ()
+                                    (check-facts scenario bridge)
+                                    (scenario-geometry scenario bridge)))
+  scenario)

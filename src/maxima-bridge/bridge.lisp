@@ -83,6 +83,10 @@ number of seconds one request may take (settable with (SETF BRIDGE-TIMEOUT))."
   (let ((process (bridge-process bridge)))
     (and process (sb-ext:process-alive-p process) t)))
 
+(defun bridge-process-id (bridge)
+  "The pid of BRIDGE's Maxima process (the GCL binary itself), or NIL when none runs."
+  (and (bridge-alive-p bridge) (sb-ext:process-pid (bridge-process bridge))))
+
 (defun now ()
   "Wall-clock seconds, as a double-float."
   (/ (get-internal-real-time) (coerce internal-time-units-per-second 'double-float)))

@@ -47,9 +47,9 @@
     %sin %cos %tan %asin %acos %atan %sqrt %log $atan2 %derivative
     mequal mnotequal mlessp mgreaterp mleqp mgeqp mand mor mnot $equal $notequal
     ;; operations the bridge uses
-    $ratsimp $trigsimp $trigreduce $trigexpand $radcan $expand $factor $fullratsimp
+    $ratsimp $trigsimp $trigreduce $trigexpand $radcan $expand $factor $factorsum $fullratsimp
     $solve $is $sign $assume $supcontext $killcontext $float $tex
-    $ode2 $ic2 $integrate $diff $subst $ratsubst $hipow $ratcoef $freeof $num $denom
+    $ode2 $ic2 $integrate $diff $substitute $ratsubst $hipow $ratcoef $freeof $num $denom
     $realroots $rhs $lhs
     ;; helpers defined in this file
     $ames_pop_context $ames_polynomial_coefficients $ames_expression_size)

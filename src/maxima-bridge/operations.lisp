@@ -172,18 +172,94 @@ has free parameters or is outside the algebra."
   (or (rest (assoc (symbol-name answer) *sign-sets* :test #'string=))
       (list :positive :negative :zero)))
 
+(defun sign-requests (form)
+  "The sign() requests whose answers together bound the sign of the Maxima FORM: FORM
+itself, factor(ratsimp(FORM)), factorsum(FORM) (which groups terms, e.g.
+2 acc l - 2 acc x0 into 2 acc (l - x0)) and trigsimp(FORM)."
+  (list (mcall "$SIGN" form)
+        (mcall "$SIGN" (mcall "$FACTOR" (mcall "$RATSIMP" form)))
+        (mcall "$SIGN" (mcall "$FACTORSUM" form))
+        (mcall "$SIGN" (mcall "$TRIGSIMP" form))))
+
+(defun forms-signs (bridge forms &key datum)
+  "For each of the real Maxima FORMS, the signs (:POSITIVE :NEGATIVE :ZERO) it may have
+under the current assumptions: the intersection of what sign() says of its forms (see
+SIGN-REQUESTS). One round trip."
+  (let* ((count (length (sign-requests 0)))
+         (answers (request-list bridge (mapcan #'sign-requests forms) :datum datum)))
+    (loop for rest on answers by (lambda (list) (nthcdr count list))
+          collect (let ((signs (list :positive :negative :zero)))
+                    (dolist (answer (subseq rest 0 count) signs)
+                      (when (symbolp answer)
+                        (setf signs (intersection signs (sign-set answer)))))))))
+
 (defun form-signs (bridge form &key datum)
-  "The signs the real Maxima FORM may have under the current assumptions: the
-intersection of what sign() says of FORM, of factor(ratsimp(FORM)) and of trigsimp(FORM)."
-  (let ((answers (request-list bridge
-                               (list (mcall "$SIGN" form)
-                                     (mcall "$SIGN" (mcall "$FACTOR" (mcall "$RATSIMP" form)))
-                                     (mcall "$SIGN" (mcall "$TRIGSIMP" form)))
-                               :datum datum))
-        (signs (list :positive :negative :zero)))
-    (dolist (answer answers signs)
-      (when (symbolp answer)
-        (setf signs (intersection signs (sign-set answer)))))))
+  "The signs the real Maxima FORM may have under the current assumptions (see FORMS-SIGNS)."
+  (first (forms-signs bridge (list form) :datum datum)))
+
+(defun square-root-kernel (form)
+  "Some subform sqrt(A) = ((MEXPT) A 1/2) of the Maxima FORM, or NIL."
+  (cond ((atom form) nil)
+        ((and (mform-p form +mexpt+) (mform-p (third form) +rat+)
+              (eql (second (third form)) 1) (eql (third (third form)) 2))
+         form)
+        (t (some #'square-root-kernel (cdr form)))))
+
+(defun sign-product (a b)
+  "The signs a product may have when its factors may have the signs A and B."
+  (remove-duplicates
+   (loop for x in a
+         append (loop for y in b
+                      collect (cond ((or (eq x :zero) (eq y :zero)) :zero)
+                                    ((eq x y) :positive)
+                                    (t :negative))))))
+
+(defun radical-signs (bridge difference &key datum)
+  "The signs of DIFFERENCE (a Maxima form) found by clearing one square root: written
+as (a + b sqrt(A)) / c, its numerator has the sign of a when b = 0 and, when a and b
+have opposite signs, the sign of b^2 A - a^2 times that of b. NIL when no square root
+is there or the form is not linear in it."
+  (destructuring-bind (numerator denominator)
+      (request-list bridge (list (mcall "$NUM" (mcall "$RATSIMP" difference))
+                                 (mcall "$DENOM" (mcall "$RATSIMP" difference)))
+                    :datum datum)
+    (let ((kernel (square-root-kernel numerator)))
+      (when (and kernel (eql 1 (maxima-request bridge (mcall "$HIPOW" (mcall "$EXPAND" numerator) kernel)
+                                              :datum datum)))
+        (destructuring-bind (a b)
+            (request-list bridge (list (mcall "$RATCOEF" (mcall "$EXPAND" numerator) kernel 0)
+                                       (mcall "$RATCOEF" (mcall "$EXPAND" numerator) kernel 1))
+                          :datum datum)
+          (let* ((radicand (second kernel))
+                 (gap (mdifference (mform +mtimes+ (mform +mexpt+ b 2) radicand)
+                                   (mform +mexpt+ a 2))))
+            (destructuring-bind (a-signs b-signs gap-signs radicand-signs denominator-signs)
+                (forms-signs bridge (list a b gap radicand denominator) :datum datum)
+              (flet ((only (signs &rest allowed) (and signs (subsetp signs allowed))))
+                (let* ((real (only radicand-signs :positive :zero))
+                       (numerator-signs
+                        (cond ((or (null a-signs) (null b-signs)) nil)
+                              ;; b sqrt(A) against a: the larger in size wins. When
+                              ;; b^2 A > a^2 >= 0, A > 0 follows, so sqrt(A) is real.
+                              ((and (only a-signs :negative :zero) (only b-signs :positive))
+                               (cond ((only gap-signs :positive) '(:positive))
+                                     (real gap-signs)))
+                              ((and (only a-signs :positive :zero) (only b-signs :negative))
+                               (cond ((only gap-signs :positive) '(:negative))
+                                     (real (sign-product gap-signs '(:negative)))))
+                              ((not real) nil)
+                              ;; a and b sqrt(A) of one sign
+                              ((and (only a-signs :positive :zero) (only b-signs :positive :zero))
+                               (if (or (only a-signs :positive)
+                                       (and (only b-signs :positive) (only radicand-signs :positive)))
+                                   '(:positive) '(:positive :zero)))
+                              ((and (only a-signs :negative :zero) (only b-signs :negative :zero))
+                               (if (or (only a-signs :negative)
+                                       (and (only b-signs :negative) (only radicand-signs :positive)))
+                                   '(:negative) '(:negative :zero)))
+                              (t nil))))
+                  (and numerator-signs (only denominator-signs :positive :negative)
+                       (sign-product numerator-signs denominator-signs)))))))))))
 
 (defun relation-verdict (operator signs)
   "The truth of (OPERATOR d 0) when d may have only SIGNS."
@@ -211,6 +287,9 @@ intersection of what sign() says of FORM, of factor(ratsimp(FORM)) and of trigsi
     (when (eq verdict :unknown)
       (setf verdict (relation-verdict operator (form-signs bridge (mdifference lhs rhs)
                                                            :datum relation))))
+    (when (eq verdict :unknown)
+      (let ((signs (radical-signs bridge (mdifference lhs rhs) :datum relation)))
+        (when signs (setf verdict (relation-verdict operator signs)))))
     (when (and (eq verdict :unknown) (member operator '(= /=))
                (equivalent-p bridge (relation-lhs relation) (relation-rhs relation)))
       (setf verdict (if (eq operator '=) :true :false)))
@@ -219,7 +298,8 @@ intersection of what sign() says of FORM, of factor(ratsimp(FORM)) and of trigsi
 (defun decide (bridge relation)
   "Decide RELATION (a relation of the algebra, or AND / OR / NOT of relations) under the
 current assumptions: :TRUE, :FALSE or :UNKNOWN. Uses Maxima's is(), then the sign of the
-difference of the two sides in several simplified forms; connectives are combined in
+difference of the two sides in several simplified forms, then the same after clearing a
+square root (so that roots of quadratics can be compared); connectives are combined in
 three-valued logic.
 Signals UNTRANSLATABLE-EXPRESSION, MAXIMA-ERROR, MAXIMA-TIMEOUT."
   (check-translatable relation :condition)

@@ -8,7 +8,7 @@ Debian `maxima` process per BRIDGE, started lazily, answering framed requests bu
 only by this package's own translation (see translation.lisp and maxima-server.lisp).")
   (:export
    ;; the bridge object
-   #:bridge #:make-bridge #:close-bridge #:bridge-timeout #:bridge-alive-p
+   #:bridge #:make-bridge #:close-bridge #:bridge-timeout #:bridge-alive-p #:bridge-process-id
    #:bridge-statistics #:reset-bridge-statistics
    ;; operations
    #:simplify #:solve-equations #:decide #:equivalent-p
