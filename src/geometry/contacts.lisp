@@ -37,6 +37,10 @@
           :documentation "The contact's position in its pair's list, from 0.")
    (length :initarg :length :reader contact-length
            :documentation "The arc length: an expression, or :INFINITE for a line.")
+   (tangent :initarg :tangent :initform nil :reader contact-segment-tangent
+            :documentation "For a straight contact, its unit tangent.")
+   (tangent-angle :initarg :tangent-angle :initform nil :reader contact-segment-angle
+                  :documentation "For a straight contact, the angle of its tangent.")
    (decider :initarg :decider :reader contact-decider)
    (neighbours :initform '() :accessor contact-neighbours
                :documentation "Alist: :START / :END -> the contact continuing past that end."))
@@ -80,23 +84,47 @@
         ((eql (vy v) 0) (if (positive-p decider (vx v)) (vx v) (e- (vx v))))
         (t (vector-length v))))
 
+(defun tidy-piece (decider piece)
+  "PIECE with its defining expressions tidied (see TIDY)."
+  (etypecase piece
+    (line-piece (make-line-piece (tidy-vector decider (line-piece-start piece))
+                                 (tidy-vector decider (line-piece-end piece))
+                                 :name (line-piece-name piece)
+                                 :infinite (line-piece-infinite piece)))
+    (arc-piece (let ((from (tidy decider (arc-piece-from piece))))
+                 (make-arc-piece (tidy-vector decider (arc-piece-center piece))
+                                 (tidy decider (arc-piece-radius piece))
+                                 from
+                                 (tidy decider (e+ from (arc-signed-sweep piece)))
+                                 (arc-piece-sense piece)
+                                 :name (arc-piece-name piece)
+                                 :full (arc-piece-full piece))))))
+
 (defun make-simple-contact (decider piece &key observer obstacle observer-feature
                                               obstacle-feature index)
-  (make-instance 'simple-contact
-                 :observer observer :obstacle obstacle
-                 :observer-feature (named-feature observer-feature observer)
-                 :obstacle-feature (named-feature obstacle-feature obstacle)
-                 :piece piece :index index :decider decider
-                 :length (etypecase piece
-                           (line-piece (if (line-piece-infinite piece)
-                                           :infinite
-                                           (decided-length decider (line-direction piece))))
-                           (arc-piece (e* (arc-piece-radius piece)
-                                          (if (arc-piece-full piece)
-                                              (e* 2 'pi)
-                                              (let ((sweep (arc-signed-sweep piece)))
-                                                (if (eq (arc-piece-sense piece) :ccw)
-                                                    sweep (e- sweep)))))))))
+  "The simple contact along PIECE between the features OBSERVER-FEATURE of the body
+OBSERVER and OBSTACLE-FEATURE of OBSTACLE, its expressions tidied by the bridge."
+  (let* ((piece (tidy-piece decider piece))
+         (straight (line-piece-p piece)))
+    (make-instance
+     'simple-contact
+     :observer observer :obstacle obstacle
+     :observer-feature (named-feature observer-feature observer)
+     :obstacle-feature (named-feature obstacle-feature obstacle)
+     :piece piece :index index :decider decider
+     :tangent (and straight (tidy-vector decider (unit-vector decider (line-direction piece))))
+     :tangent-angle (and straight (tidy decider (angle-of-vector decider (line-direction piece))))
+     :length (etypecase piece
+               (line-piece (if (line-piece-infinite piece)
+                               :infinite
+                               (tidy decider (decided-length decider (line-direction piece)))))
+               (arc-piece (tidy decider
+                                (e* (arc-piece-radius piece)
+                                    (if (arc-piece-full piece)
+                                        (e* 2 'pi)
+                                        (let ((sweep (arc-signed-sweep piece)))
+                                          (if (eq (arc-piece-sense piece) :ccw)
+                                              sweep (e- sweep)))))))))))
 
 ;;; Geometry of a contact
 
@@ -138,7 +166,7 @@ concave arc, 0 on a straight contact."
     (e+ (arc-piece-from piece) (e* (contact-sense contact) (e/ s (arc-piece-radius piece))))))
 
 (defun segment-unit-tangent (contact)
-  (unit-vector (contact-decider contact) (line-direction (contact-piece contact))))
+  (contact-segment-tangent contact))
 
 (defun contact-point (contact s)
   "The relative position (X Y) at arc length S along CONTACT."
@@ -169,7 +197,7 @@ the observer."
   "The angle of the unit tangent at arc length S, measured counter-clockwise from +x."
   (let ((piece (contact-piece contact)))
     (etypecase piece
-      (line-piece (angle-of-vector (contact-decider contact) (line-direction piece)))
+      (line-piece (contact-segment-angle contact))
       (arc-piece (e+ (contact-position-angle contact s)
                      (e* (contact-sense contact) (e* 1/2 'pi)))))))
 
@@ -203,12 +231,13 @@ POSITION-NOT-ON-CONTACT when it does not lie on it."
   (unless (position-on-contact-p contact q)
     (error 'position-not-on-contact :datum q :contact contact))
   (let ((piece (contact-piece contact)) (decider (contact-decider contact)))
-    (etypecase piece
-      (line-piece (dot (v- q (line-piece-start piece)) (segment-unit-tangent contact)))
-      (arc-piece (e* (arc-piece-radius piece)
-                     (angle-from-direction decider (polar (arc-piece-from piece))
-                                           (v- q (arc-piece-center piece))
-                                           :sense (arc-piece-sense piece)))))))
+    (tidy decider
+          (etypecase piece
+            (line-piece (dot (v- q (line-piece-start piece)) (segment-unit-tangent contact)))
+            (arc-piece (e* (arc-piece-radius piece)
+                           (angle-from-direction decider (polar (arc-piece-from piece))
+                                                 (v- q (arc-piece-center piece))
+                                                 :sense (arc-piece-sense piece))))))))
 
 ;;; Meeting a contact, leaving it
 

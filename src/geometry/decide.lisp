@@ -33,8 +33,7 @@ facts only) and the subject named when a fact cannot be decided."
 
 (defun bridge-decide (bridge relation)
   "Ask the Maxima bridge whether RELATION holds: :TRUE, :FALSE or :UNKNOWN."
-  ;; TEMPORARY until the bridge branch is merged: its package exports nothing yet.
-  (uiop:symbol-call '#:ames.maxima '#:decide bridge relation))
+  (ames.maxima:decide bridge relation))
 
 (defun undecidable (decider relation &optional detail)
   "Signal UNDECIDABLE-GEOMETRIC-FACT for RELATION. Restarts: ASSUME-TRUE returns T,
@@ -125,3 +124,15 @@ or cannot be decided. Never signals: for optional simplifications only."
 (defun zero-p (decider x) "X = 0." (fact-holds-p decider (list '= x 0)))
 (defun nonnegative-p (decider x) "X >= 0." (fact-holds-p decider (list '>= x 0)))
 (defun nonpositive-p (decider x) "X <= 0." (fact-holds-p decider (list '<= x 0)))
+
+(defun tidy (decider expression)
+  "EXPRESSION in a simpler equal form: unchanged when it is a number or an atom or when
+there is no bridge, else Maxima's :FULL simplification under the current assumptions."
+  (let ((bridge (decider-bridge decider)))
+    (if (or (null bridge) (atom expression) (rational-value expression))
+        expression
+        (ames.maxima:simplify bridge expression :strategy :full))))
+
+(defun tidy-vector (decider v)
+  "The vector V with both components tidied."
+  (list (tidy decider (first v)) (tidy decider (second v))))

@@ -63,7 +63,7 @@ factors are neither numbers nor products."
          (multiple-value-bind (c fs) (product-factors (second x))
            (multiple-value-bind (d gs) (product-factors (third x))
              (if (and (numberp d) (not (zerop d)))
-                 (values (/ c d) (append fs (mapcar (lambda (g) (eexpt g -1)) gs)))
+                 (values (/ c d) (append fs (mapcar (lambda (g) (list 'expt g -1)) gs)))
                  (values c (append fs (list (list 'expt (third x) -1))))))))
         (t (values 1 (list x)))))
 
@@ -91,16 +91,30 @@ coefficient: (values COEFFICIENT FACTORS)."
                      (t (push (list 'expt base exponent) kept))))
       (values coefficient (nreverse kept)))))
 
+(defun render-product (coefficient factors)
+  "COEFFICIENT times FACTORS (non-numeric, sorted) as a prefix expression."
+  (cond ((zerop coefficient) 0)
+        ((null factors) coefficient)
+        (t (let ((body (if (rest factors) (cons '* factors) (first factors))))
+             (cond ((eql coefficient 1) body)
+                   ((eql coefficient -1) (list '- body))
+                   ((rest factors) (list* '* coefficient factors))
+                   (t (list '* coefficient body)))))))
+
 (defun build-product (coefficient factors)
+  "The canonical product of COEFFICIENT and FACTORS; factors with negative exponents
+go to a denominator: (/ NUMERATOR DENOMINATOR)."
   (multiple-value-bind (coefficient factors) (combine-factors coefficient factors)
-    (let ((factors (sort (copy-list factors) #'expression<)))
-      (cond ((zerop coefficient) 0)
-            ((null factors) coefficient)
-            (t (let ((body (if (rest factors) (cons '* factors) (first factors))))
-                 (cond ((eql coefficient 1) body)
-                       ((eql coefficient -1) (list '- body))
-                       ((rest factors) (list* '* coefficient factors))
-                       (t (list '* coefficient body)))))))))
+    (let ((upper '()) (lower '()))
+      (dolist (f factors)
+        (multiple-value-bind (base exponent) (power-parts f)
+          (if (and (realp exponent) (minusp exponent))
+              (push (if (eql exponent -1) base (list 'expt base (- exponent))) lower)
+              (push f upper))))
+      (let ((upper (sort upper #'expression<)) (lower (sort lower #'expression<)))
+        (if (or (null lower) (zerop coefficient))
+            (render-product coefficient upper)
+            (list '/ (render-product coefficient upper) (render-product 1 lower)))))))
 
 (defun sum-expression-p (x)
   (and (consp x) (eq (car x) '+)))
@@ -139,6 +153,36 @@ of constants is expanded over sums."
                  (list (cons c 1))
                  (list (cons c (build-product 1 fs))))))))
 
+(defun pythagorean-pairs (collected)
+  "The alist COLLECTED (KEY . COEFFICIENT) of a sum with every pair c K cos(x)^2 +
+c K sin(x)^2 replaced by c K."
+  (flet ((square-of (f head)
+           (and (consp f) (eq (car f) 'expt) (eql (third f) 2)
+                (consp (second f)) (eq (car (second f)) head)
+                (second (second f)))))
+    (loop
+      (let ((found nil))
+        (loop named search
+              for entry in collected
+              do (multiple-value-bind (c factors) (product-factors (car entry))
+                   (let ((cosine (find-if (lambda (f) (square-of f 'cos)) factors)))
+                     (when cosine
+                       (let* ((argument (square-of cosine 'cos))
+                              (others (remove cosine factors :count 1 :test #'eq))
+                              (partner-key (build-product 1 (cons (list 'expt (list 'sin argument) 2)
+                                                                   others)))
+                              (partner (assoc partner-key collected :test #'equal)))
+                         (when (and partner (= (* c (cdr entry)) (cdr partner)))
+                           (let ((key (build-product 1 others)))
+                             (setf collected (remove partner (remove entry collected)))
+                             (let ((existing (assoc key collected :test #'equal)))
+                               (if existing
+                                   (incf (cdr existing) (* c (cdr entry)))
+                                   (push (cons key (* c (cdr entry))) collected))))
+                           (setf found t)
+                           (return-from search)))))))
+        (unless found (return collected))))))
+
 (defun e+ (&rest addends)
   "The sum of ADDENDS, with numbers folded and like terms collected."
   (let ((collected '()))
@@ -147,6 +191,7 @@ of constants is expanded over sums."
         (if entry
             (incf (cdr entry) (car term))
             (push (cons (cdr term) (car term)) collected))))
+    (setf collected (pythagorean-pairs collected))
     (let* ((constant (let ((entry (assoc 1 collected :test #'eql))) (if entry (cdr entry) 0)))
            (terms (loop for (key . coefficient) in collected
                         unless (or (eql key 1) (zerop coefficient))
@@ -232,28 +277,38 @@ for other non-negative rationals."
          (let ((r (pi-multiple (second x)))) (and r (- r))))
         (t nil)))
 
-(defun quarter-turn-value (x function)
-  "The exact value of FUNCTION (COS or SIN) at X when X is a multiple of PI/2, else NIL."
+(defun special-angle-value (x function)
+  "The exact value of FUNCTION (COS or SIN) at X when X is a multiple of PI/4 or PI/6
+(using square roots of 2 and 3), else NIL."
   (let ((r (pi-multiple x)))
-    (when (and r (integerp (* 2 r)))
-      (let ((quarter (mod (* 2 r) 4)))
-        (ecase function
-          (cos (svref #(1 0 -1 0) quarter))
-          (sin (svref #(0 1 0 -1) quarter)))))))
+    (when r
+      (let ((r (mod r 2)))                ; the angle in [0, 2 pi) as a multiple of pi
+        (flet ((cosine (r)
+                 ;; r in [0, 2): reduce to the first quadrant with signs
+                 (multiple-value-bind (quadrant within) (floor r 1/2)
+                   (let* ((angle (if (oddp quadrant) (- 1/2 within) within))
+                          (magnitude (case angle
+                                       (0 1) (1/6 (e* 1/2 (esqrt 3))) (1/4 (e* 1/2 (esqrt 2)))
+                                       (1/3 1/2) (1/2 0) (t nil))))
+                     (and magnitude
+                          (if (member quadrant '(1 2)) (e- magnitude) magnitude))))))
+          (ecase function
+            (cos (cosine r))
+            (sin (cosine (mod (- r 1/2) 2)))))))))
 
 (defun two-argument-atan-p (x)
   (and (consp x) (eq (car x) 'atan) (= (length x) 3)))
 
 (defun ecos (x)
   "The cosine of X; cos(atan(y, x)) = x / sqrt(x^2 + y^2)."
-  (cond ((quarter-turn-value x 'cos))
+  (cond ((special-angle-value x 'cos))
         ((two-argument-atan-p x)
          (e/ (third x) (esqrt (e+ (esquare (second x)) (esquare (third x))))))
         (t (list 'cos x))))
 
 (defun esin (x)
   "The sine of X; sin(atan(y, x)) = y / sqrt(x^2 + y^2)."
-  (cond ((quarter-turn-value x 'sin))
+  (cond ((special-angle-value x 'sin))
         ((two-argument-atan-p x)
          (e/ (second x) (esqrt (e+ (esquare (second x)) (esquare (third x))))))
         (t (list 'sin x))))
@@ -263,18 +318,41 @@ for other non-negative rationals."
   (let ((r (pi-multiple x)))
     (if (and r (integerp r)) 0 (list 'tan x))))
 
+(defun constant-sign (x)
+  "The sign (-1, 0 or 1) of the constant expression X when it is clear, else NIL."
+  (let ((exact (rational-value x)))
+    (if exact
+        (signum exact)
+        (when (constant-expression-p x)
+          (let ((value (float-value x)))
+            (and value (> (abs value) 1d-9) (round (signum value))))))))
+
+(defun special-atan2 (y x)
+  "The angle of (X, Y) as a multiple of PI when X and Y are constants making a
+multiple of PI/6 or PI/4, else NIL."
+  (let ((sx (constant-sign x)) (sy (constant-sign y)))
+    (when (and sx sy)
+      (cond ((and (zerop sy) (zerop sx)) nil)
+            ((zerop sy) (if (plusp sx) 0 1))
+            ((zerop sx) (if (plusp sy) 1/2 -1/2))
+            (t (let* ((ratio (e/ y x))
+                      (slope (let ((r (rational-value ratio))) (and r (abs r))))
+                      (slope-squared (rational-value (e* ratio ratio)))
+                      (first-quadrant (cond ((eql slope 1) 1/4)
+                                            ((eql slope-squared 3) 1/3)
+                                            ((eql slope-squared 1/3) 1/6))))
+                 (when first-quadrant
+                   (cond ((and (plusp sx) (plusp sy)) first-quadrant)
+                         ((plusp sy) (- 1 first-quadrant))
+                         ((plusp sx) (- first-quadrant))
+                         (t (- first-quadrant 1))))))))))
+
 (defun eatan2 (y x)
   "The angle of the direction (X, Y), in (-PI, PI], as (ATAN Y X) unless exact."
-  (cond ((and (rationalp y) (rationalp x))
-         (cond ((and (zerop y) (plusp x)) 0)
-               ((and (zerop y) (minusp x)) 'pi)
-               ((and (zerop x) (plusp y)) (e* 1/2 'pi))
-               ((and (zerop x) (minusp y)) (e* -1/2 'pi))
-               ((= x y) (if (plusp x) (e* 1/4 'pi) (e* -3/4 'pi)))
-               ((= x (- y)) (if (plusp x) (e* -1/4 'pi) (e* 3/4 'pi)))
-               (t (list 'atan y x))))
-        ((eql y 0) (if (and (rationalp x) (minusp x)) 'pi (list 'atan y x)))
-        (t (list 'atan y x))))
+  (let ((special (special-atan2 y x)))
+    (if special
+        (e* special 'pi)
+        (list 'atan y x))))
 
 (defun normalize-expression (expression)
   "EXPRESSION rebuilt bottom-up through the simplifying constructors: numbers folded,

@@ -5,6 +5,9 @@
 ;;;; it; a sub-piece stays on the union's boundary unless its midpoint lies inside
 ;;;; another part, or on another part's boundary facing the opposite way (an internal
 ;;;; seam, such as a diagonal), or on an identical piece of an earlier part (a duplicate).
+;;;; Of two identical pieces, the one made by more faces (an edge of the obstacle against
+;;;; an edge of the observer rather than a corner against an edge) is kept, so that a
+;;;; flat contact is not split by the cut; among equals, the earlier part's.
 ;;;; Kept sub-pieces that continue one another with the same features are joined again.
 
 (in-package #:ames.geometry)
@@ -54,9 +57,15 @@ a full circle, anywhere on it), sorted."
         ((positive-p decider (dot a b)) :same)
         (t :opposite)))
 
-(defun on-union-boundary-p (decider midpoint normal part-index parts)
-  "True when the point MIDPOINT of a piece of part PART-INDEX, with outward NORMAL there,
-lies on the boundary of the union of PARTS (lists of sum pieces)."
+(defun face-rank (sum-piece)
+  "How many of the two features along SUM-PIECE are edges."
+  (+ (if (eq (first (sum-piece-obstacle-feature sum-piece)) :edge) 1 0)
+     (if (eq (first (sum-piece-observer-feature sum-piece)) :edge) 1 0)))
+
+(defun on-union-boundary-p (decider midpoint normal sum-piece part-index parts)
+  "True when the point MIDPOINT of a sub-piece of SUM-PIECE, of part PART-INDEX, with
+outward NORMAL there, lies on the boundary of the union of PARTS (lists of sum pieces)
+and is not a duplicate to be dropped."
   (loop for part in parts
         for b from 0
         never (and (/= b part-index)
@@ -66,7 +75,9 @@ lies on the boundary of the union of PARTS (lists of sum pieces)."
                                  (and (point-on-piece-p decider midpoint q)
                                       (case (facing decider normal (piece-outward-normal-at q midpoint))
                                         (:opposite t)
-                                        (:same (< b part-index))
+                                        (:same (let ((mine (face-rank sum-piece)) (theirs (face-rank sp)))
+                                                 (or (> theirs mine)
+                                                     (and (= theirs mine) (< b part-index)))))
                                         (t nil)))))
                              part)))))
 
@@ -132,9 +143,30 @@ pieces, counter-clockwise)."
                          (let ((midpoint (piece-midpoint decider sub)))
                            (when (on-union-boundary-p decider midpoint
                                                       (piece-outward-normal-at sub midpoint)
-                                                      a parts)
+                                                      sp a parts)
                              (push (make-sum-piece sub (sum-piece-obstacle-feature sp)
                                                    (sum-piece-observer-feature sp)
                                                    (sum-piece-source sp))
                                    kept))))))))
-        (join-sum-pieces decider (nreverse kept)))))
+        (chain-sum-pieces decider (join-sum-pieces decider (nreverse kept))))))
+
+(defun chain-sum-pieces (decider sum-pieces)
+  "SUM-PIECES reordered so that each piece is followed by the one starting where it
+ends, loop after loop (counter-clockwise along each boundary curve)."
+  (let ((remaining (copy-list sum-pieces)) (ordered '()))
+    (loop while remaining
+          do (let ((current (pop remaining)))
+               (push current ordered)
+               (loop
+                 (let* ((end (piece-endpoints (sum-piece-piece current)))
+                        (next (and end
+                                   (find-if (lambda (sp)
+                                              (let ((start (piece-endpoints (sum-piece-piece sp))))
+                                                (and start
+                                                     (vector-equal-p decider (second end) (first start)))))
+                                            remaining))))
+                   (unless next (return))
+                   (setf remaining (remove next remaining))
+                   (push next ordered)
+                   (setf current next)))))
+    (nreverse ordered)))
