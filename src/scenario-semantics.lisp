@@ -174,8 +174,14 @@ UNDECIDABLE-GEOMETRIC-FACT into SCENARIO-ERRORs of SCENARIO at LOCATION."
       (ames.geometry:unsupported-shape-pair (condition)
         (wrap 'scenario-shape-error condition (ames-error-datum condition)))
       (ames.geometry:undecidable-geometric-fact (condition)
-        (wrap 'missing-assumption-error condition (ames.geometry:undecidable-fact condition)
-              :fact (ames.geometry:undecidable-fact condition))))))
+        (let ((fact (ames.geometry:undecidable-fact condition)))
+          (error 'missing-assumption-error
+                 :scenario (scenario-name scenario) :location location
+                 :source (scenario-source scenario) :cause condition
+                 :datum (or fact location) :fact fact
+                 :detail (scenario-detail scenario "the geometry needs to know whether ~S, ~
+                                                    and ~A"
+                                          fact (ames-error-detail condition))))))))
 
 (defun scenario-geometry (scenario bridge)
   "Parse every shape of SCENARIO with the geometry layer and check that no two bodies,

