@@ -1,7 +1,60 @@
-;;;; src/package.lisp -- AMES's user-facing package: the simulator, the REPL API, the CLI.
+;;;; src/package.lisp -- AMES's user-facing package, and the package scenario files are read into.
+
+(defpackage #:ames-scenario
+  (:use)
+  (:import-from #:cl
+                ;; the prefix algebra's operators, so that a file read here and a form
+                ;; typed at the REPL (in CL-USER) hold the very same operator symbols
+                #:+ #:- #:* #:/ #:expt #:sqrt #:exp #:log
+                #:sin #:cos #:tan #:asin #:acos #:atan
+                #:= #:/= #:< #:> #:<= #:>= #:and #:or #:not
+                #:pi #:t #:nil)
+  (:export
+   ;; the words of the scenario language; validated scenarios hold their shapes with
+   ;; these symbols whatever package the user's form was written in
+   #:scenario #:parameters #:gravity #:body #:force #:simulate #:query
+   #:point #:circle #:polygon #:outline #:line #:arc #:segment #:half-plane)
+  (:documentation "The package scenario files are read into (with *READ-EVAL* nil and
+a restricted readtable). It uses no package: it holds the user's names, and imports
+from COMMON-LISP only the prefix algebra's operators, PI, T and NIL. Nothing in it
+is ever evaluated."))
 
 (defpackage #:ames
   (:use #:cl #:ames.base)
   (:documentation "The qualitative-state simulator and the user-facing API:
-SIMULATE, RUN-FILE and the accessors on a simulation history.")
-  (:export #:ames-error))
+SIMULATE, RUN-FILE and the accessors on a simulation history; the scenario language's
+reader and validator.")
+  (:export
+   #:ames-error
+   ;; scenario conditions (src/scenario-conditions.lisp)
+   #:scenario-error #:scenario-error-scenario #:scenario-error-location
+   #:scenario-error-clause #:scenario-error-source
+   #:scenario-read-error #:scenario-read-error-file #:scenario-read-error-line
+   #:scenario-read-error-column #:scenario-read-error-position
+   #:scenario-file-error
+   #:scenario-syntax-error #:unknown-clause-error #:duplicate-clause-error
+   #:missing-property-error #:undeclared-symbol-error #:duplicate-name-error
+   #:scenario-expression-error #:scenario-shape-error
+   #:contradictory-assumptions-error #:overlapping-bodies-error
+   #:scenario-error-cause
+   #:skip-scenario
+   ;; scenario objects and the validator (src/scenario.lisp)
+   #:scenario #:parse-scenario #:scenario-p
+   #:scenario-name #:scenario-description #:scenario-parameters #:scenario-gravity
+   #:scenario-bodies #:scenario-forces #:scenario-states #:scenario-until
+   #:scenario-queries #:scenario-source #:scenario-form
+   #:scenario-parameter #:scenario-parameter-name #:scenario-parameter-assumptions
+   #:scenario-parameter-value
+   #:scenario-body #:scenario-body-name #:scenario-body-shape #:scenario-body-mass
+   #:scenario-body-position #:scenario-body-velocity #:scenario-body-fixed-p
+   #:scenario-force #:scenario-force-name #:scenario-force-body #:scenario-force-value
+   #:find-scenario-parameter #:find-scenario-body #:find-scenario-force
+   #:scenario-assumption-relations #:scenario-parameter-values
+   #:scenario-moving-bodies #:scenario-fixed-bodies
+   #:shape-kind
+   #:constant-value
+   ;; reading scenario files (src/scenario-reader.lisp)
+   #:read-scenario-forms #:read-scenarios-from-string #:read-scenario-file
+   ;; the checks through Maxima (src/scenario-semantics.lisp)
+   #:check-scenario #:check-scenario-assumptions #:check-scenario-geometry
+   #:missing-assumption-error #:missing-assumption-fact))

@@ -1,6 +1,35 @@
-;;;; src/maxima-bridge/package.lisp -- the only door to Maxima (placeholder until the bridge lands).
+;;;; src/maxima-bridge/package.lisp -- the only door to Maxima: package and exported contract.
 
 (defpackage #:ames.maxima
   (:use #:cl #:ames.base)
   (:documentation "The Maxima bridge: the only code that knows Maxima's syntax or
-representation. Speaks AMES's prefix algebra to the rest of the system."))
+representation. Speaks AMES's prefix algebra to the rest of the system. One persistent
+Debian `maxima` process per BRIDGE, started lazily, answering framed requests built
+only by this package's own translation (see translation.lisp and maxima-server.lisp).")
+  (:export
+   ;; the bridge object
+   #:bridge #:make-bridge #:close-bridge #:bridge-timeout #:bridge-alive-p #:bridge-process-id
+   #:bridge-statistics #:reset-bridge-statistics #:clear-bridge-cache
+   ;; operations
+   #:simplify #:solve-equations #:decide #:equivalent-p
+   #:call-with-assumptions #:with-assumptions #:current-assumptions
+   #:earliest-root
+   #:solve-autonomous-ode #:ode-solution #:ode-solution-kind #:ode-solution-position
+   #:ode-solution-velocity #:ode-solution-speed-squared
+   #:numeric-value #:latex
+   ;; conditions
+   #:maxima-condition #:maxima-error #:maxima-error-message
+   #:maxima-question #:maxima-question-text #:maxima-question-expressions
+   #:maxima-timeout #:maxima-timeout-seconds
+   #:maxima-process-died
+   #:solve-failed #:inconsistent-assumptions #:inconsistent-assumptions-fact
+   #:untranslatable-expression #:untranslatable-result
+   #:numeric-evaluation-failed #:invalid-bridge-argument #:untranslatable-result-form
+   ;; restarts
+   #:retract-assumption #:assume-and-retry))
+
+(defpackage #:ames.maxima.wire
+  (:use)
+  (:documentation "Maxima's internal symbols as the bridge writes and reads them on the
+pipe (MPLUS, %SIN, $AMESVB, ...). Uses no package, so nothing read from Maxima can name
+a Lisp function or variable of AMES."))

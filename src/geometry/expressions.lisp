@@ -1,0 +1,493 @@
+;;;; src/geometry/expressions.lisp -- building prefix-algebra expressions with light simplification.
+;;;;
+;;;; Geometry computes with exact symbolic coordinates. These constructors (E+, E*, ...)
+;;;; fold numbers, drop neutral elements and collect like terms, so that rational inputs
+;;;; stay exact rationals and symbolic results stay readable. They never decide a sign:
+;;;; everything that depends on a parameter's value is left for DECIDE (decide.lisp).
+;;;; Also here: exact and floating evaluation of constant expressions, and the
+;;;; derivative of an expression with respect to a variable (for contact approach rates).
+
+(in-package #:ames.geometry)
+
+;;; A total order on expressions, used to sort the factors of a product and the terms
+;;; of a sum, so that equal expressions come out EQUAL.
+
+(defun expression-rank (x)
+  (cond ((numberp x) 0) ((symbolp x) 1) (t 2)))
+
+(defun expression< (a b)
+  "A total order on expressions: numbers, then symbols by name, then lists."
+  (let ((ra (expression-rank a)) (rb (expression-rank b)))
+    (cond ((/= ra rb) (< ra rb))
+          ((numberp a) (< (realpart a) (realpart b)))
+          ((symbolp a) (string< (symbol-name a) (symbol-name b)))
+          (t (loop for xa on a for xb on b
+                   do (cond ((expression< (car xa) (car xb)) (return t))
+                            ((expression< (car xb) (car xa)) (return nil)))
+                   finally (return (< (length a) (length b))))))))
+
+;;; Products: a rational (or float) coefficient times factors BASE^EXPONENT. Division is
+;;; multiplication by BASE^-1, equal bases combine their numeric exponents, and the
+;;; square root of a rational is kept as M * (SQRT K) with K a square-free integer, so
+;;; that expressions over rationals and their square roots cancel exactly.
+
+(defun constant-expression-p (x)
+  "True when X contains no variable and no quantity term."
+  (null (expression-variables x)))
+
+(defun power-parts (x)
+  "X as (values BASE EXPONENT) when it is a power with a numeric exponent, else X and 1.
+Nested powers flatten when the outer exponent is an integer."
+  (if (and (consp x) (eq (car x) 'expt) (rationalp (third x)))
+      (multiple-value-bind (base exponent) (power-parts (second x))
+        (if (and (integerp (third x)) (not (eql exponent 1)))
+            (values base (* exponent (third x)))
+            (values (second x) (third x))))
+      (values x 1)))
+
+(defun product-factors (x)
+  "X as (values COEFFICIENT FACTORS) with X = COEFFICIENT * product of FACTORS; the
+factors are neither numbers nor products."
+  (cond ((numberp x) (values x '()))
+        ((and (consp x) (eq (car x) '*))
+         (let ((coefficient 1) (factors '()))
+           (dolist (f (cdr x))
+             (multiple-value-bind (c fs) (product-factors f)
+               (setf coefficient (* coefficient c))
+               (setf factors (append factors fs))))
+           (values coefficient factors)))
+        ((and (consp x) (eq (car x) '-) (= (length x) 2))
+         (multiple-value-bind (c fs) (product-factors (second x))
+           (values (- c) fs)))
+        ((and (consp x) (eq (car x) '/) (= (length x) 3))
+         (multiple-value-bind (c fs) (product-factors (second x))
+           (multiple-value-bind (d gs) (product-factors (third x))
+             (if (and (numberp d) (not (zerop d)))
+                 (values (/ c d) (append fs (mapcar (lambda (g) (list 'expt g -1)) gs)))
+                 (values c (append fs (list (list 'expt (third x) -1))))))))
+        (t (values 1 (list x)))))
+
+(defun combine-factors (coefficient factors)
+  "COEFFICIENT and FACTORS with equal bases merged and exact parts folded into the
+coefficient: (values COEFFICIENT FACTORS)."
+  (let ((powers '()))
+    (dolist (f factors)
+      (multiple-value-bind (base exponent) (power-parts f)
+        (let ((entry (assoc base powers :test #'equal)))
+          (if entry
+              (incf (cdr entry) exponent)
+              (push (cons base exponent) powers)))))
+    (let ((kept '()))
+      (loop for (base . exponent) in (nreverse powers)
+            do (cond ((zerop exponent))
+                     ((and (rationalp base) (integerp exponent) (not (zerop base)))
+                      (setf coefficient (* coefficient (expt base exponent))))
+                     ((and (consp base) (eq (car base) 'sqrt) (rationalp (second base))
+                           (integerp exponent))
+                      (multiple-value-bind (whole odd) (floor exponent 2)
+                        (setf coefficient (* coefficient (expt (second base) whole)))
+                        (when (= odd 1) (push base kept))))
+                     ((eql exponent 1) (push base kept))
+                     (t (push (list 'expt base exponent) kept))))
+      (values coefficient (nreverse kept)))))
+
+(defun render-product (coefficient factors)
+  "COEFFICIENT times FACTORS (non-numeric, sorted) as a prefix expression."
+  (cond ((zerop coefficient) 0)
+        ((null factors) coefficient)
+        (t (let ((body (if (rest factors) (cons '* factors) (first factors))))
+             (cond ((eql coefficient 1) body)
+                   ((eql coefficient -1) (list '- body))
+                   ((rest factors) (list* '* coefficient factors))
+                   (t (list '* coefficient body)))))))
+
+(defun build-product (coefficient factors)
+  "The canonical product of COEFFICIENT and FACTORS; factors with negative exponents
+go to a denominator: (/ NUMERATOR DENOMINATOR)."
+  (multiple-value-bind (coefficient factors) (combine-factors coefficient factors)
+    (let ((upper '()) (lower '()))
+      (dolist (f factors)
+        (multiple-value-bind (base exponent) (power-parts f)
+          (if (and (realp exponent) (minusp exponent))
+              (push (if (eql exponent -1) base (list 'expt base (- exponent))) lower)
+              (push f upper))))
+      (let ((upper (sort upper #'expression<)) (lower (sort lower #'expression<)))
+        (if (or (null lower) (zerop coefficient))
+            (render-product coefficient upper)
+            (list '/ (render-product coefficient upper) (render-product 1 lower)))))))
+
+(defun sum-expression-p (x)
+  (and (consp x) (eq (car x) '+)))
+
+(defun e* (&rest factors)
+  "The product of FACTORS: numbers folded, powers of equal bases combined; a product
+of constants is expanded over sums."
+  (multiple-value-bind (c fs) (product-factors (cons '* factors))
+    (setf fs (mapcan (lambda (f)
+                       (if (and (consp f) (eq (car f) 'expt) (integerp (third f))
+                                (<= 2 (third f) 6) (sum-expression-p (second f))
+                                (constant-expression-p (second f)))
+                           (make-list (third f) :initial-element (second f))
+                           (list f)))
+                     fs))
+    (let ((sum (find-if #'sum-expression-p fs)))
+      (if (and sum (or (null (rest fs)) (every #'constant-expression-p fs)))
+          (let ((rest (remove sum fs :count 1 :test #'eq)))
+            (apply #'e+ (mapcar (lambda (term) (apply #'e* c term rest)) (cdr sum))))
+          (build-product c fs)))))
+
+(defun sum-terms (x)
+  "X as a list of (COEFFICIENT . KEY) terms, KEY being 1 for the constant term."
+  (cond ((numberp x) (list (cons x 1)))
+        ((and (consp x) (eq (car x) '+)) (mapcan #'sum-terms (copy-list (cdr x))))
+        ((and (consp x) (eq (car x) '-) (= (length x) 2))
+         (mapcar (lambda (term) (cons (- (car term)) (cdr term))) (sum-terms (second x))))
+        ((and (consp x) (eq (car x) '-))
+         (append (sum-terms (second x))
+                 (mapcan (lambda (y)
+                           (mapcar (lambda (term) (cons (- (car term)) (cdr term)))
+                                   (sum-terms y)))
+                         (cddr x))))
+        (t (multiple-value-bind (c fs) (product-factors x)
+             (if (null fs)
+                 (list (cons c 1))
+                 (list (cons c (build-product 1 fs))))))))
+
+(defun pythagorean-pairs (collected)
+  "The alist COLLECTED (KEY . COEFFICIENT) of a sum with every pair c K cos(x)^2 +
+c K sin(x)^2 replaced by c K."
+  (flet ((square-of (f head)
+           (and (consp f) (eq (car f) 'expt) (eql (third f) 2)
+                (consp (second f)) (eq (car (second f)) head)
+                (second (second f)))))
+    (loop
+      (let ((found nil))
+        (loop named search
+              for entry in collected
+              do (multiple-value-bind (c factors) (product-factors (car entry))
+                   (let ((cosine (find-if (lambda (f) (square-of f 'cos)) factors)))
+                     (when cosine
+                       (let* ((argument (square-of cosine 'cos))
+                              (others (remove cosine factors :count 1 :test #'eq))
+                              (partner-key (build-product 1 (cons (list 'expt (list 'sin argument) 2)
+                                                                   others)))
+                              (partner (assoc partner-key collected :test #'equal)))
+                         (when (and partner (= (* c (cdr entry)) (cdr partner)))
+                           (let ((key (build-product 1 others)))
+                             (setf collected (remove partner (remove entry collected)))
+                             (let ((existing (assoc key collected :test #'equal)))
+                               (if existing
+                                   (incf (cdr existing) (* c (cdr entry)))
+                                   (push (cons key (* c (cdr entry))) collected))))
+                           (setf found t)
+                           (return-from search)))))))
+        (unless found (return collected))))))
+
+(defun e+ (&rest addends)
+  "The sum of ADDENDS, with numbers folded and like terms collected."
+  (let ((collected '()))
+    (dolist (term (mapcan #'sum-terms addends))
+      (let ((entry (assoc (cdr term) collected :test #'equal)))
+        (if entry
+            (incf (cdr entry) (car term))
+            (push (cons (cdr term) (car term)) collected))))
+    (setf collected (pythagorean-pairs collected))
+    (let* ((constant (let ((entry (assoc 1 collected :test #'eql))) (if entry (cdr entry) 0)))
+           (terms (loop for (key . coefficient) in collected
+                        unless (or (eql key 1) (zerop coefficient))
+                          collect (multiple-value-bind (c fs) (product-factors key)
+                                    (build-product (* c coefficient) fs))))
+           (terms (sort terms #'expression<
+                        :key (lambda (x) (if (and (consp x) (eq (car x) '-)) (second x) x))))
+           (all (if (zerop constant) terms (append terms (list constant)))))
+      (cond ((null all) 0)
+            ((null (rest all)) (first all))
+            (t (cons '+ all))))))
+
+(defun e- (x &rest subtrahends)
+  "Negation of X, or X minus SUBTRAHENDS."
+  (if subtrahends
+      (apply #'e+ x (mapcar (lambda (y) (e* -1 y)) subtrahends))
+      (e* -1 x)))
+
+(defun e/ (numerator denominator)
+  "NUMERATOR divided by DENOMINATOR (a product with DENOMINATOR^-1). Signals
+DIVISION-BY-ZERO for a literal zero denominator."
+  (if (and (numberp denominator) (zerop denominator))
+      (error 'division-by-zero :operation 'e/ :operands (list numerator denominator))
+      (e* numerator (eexpt denominator -1))))
+
+(defun square-root-of-rational (q)
+  "The exact square root of the non-negative rational Q when it is rational, else NIL."
+  (when (and (rationalp q) (>= q 0))
+    (let ((n (isqrt (numerator q))) (d (isqrt (denominator q))))
+      (when (and (= (* n n) (numerator q)) (= (* d d) (denominator q)))
+        (/ n d)))))
+
+(defun eexpt (base power)
+  "BASE raised to POWER."
+  (cond ((eql power 0) 1)
+        ((eql power 1) base)
+        ((and (rationalp base) (integerp power) (not (and (zerop base) (minusp power))))
+         (expt base power))
+        ((and (eql base 0) (realp power) (plusp power)) 0)
+        ((eql base 1) 1)
+        ((and (integerp power) (or (consp base) (symbolp base)))
+         ;; an integer power distributes over the factors of a product
+         (multiple-value-bind (c fs) (product-factors base)
+           (if (and (zerop c) (minusp power))
+               (list 'expt base power)
+               (build-product (expt c power)
+                              (mapcar (lambda (f) (list 'expt f power)) fs)))))
+        (t (list 'expt base power))))
+
+(defun esquare (x) "X squared." (eexpt x 2))
+
+(defun square-free-split (n)
+  "The positive integer N as (values M K) with N = M^2 K and K square-free (trial
+division; a large cofactor is kept whole in K)."
+  (let ((m 1) (k 1))
+    (loop for p from 2
+          while (and (<= (* p p) n) (< p 100000))
+          do (loop while (zerop (mod n (* p p)))
+                   do (setf n (/ n (* p p)) m (* m p)))
+             (when (zerop (mod n p))
+               (setf n (/ n p) k (* k p))))
+    (values m (* k n))))
+
+(defun esqrt (x)
+  "The square root of X: exact for rational squares, M * (SQRT K) with K square-free
+for other non-negative rationals."
+  (cond ((square-root-of-rational x))
+        ((and (rationalp x) (plusp x))
+         (multiple-value-bind (m k) (square-free-split (* (numerator x) (denominator x)))
+           (e* (/ m (denominator x)) (list 'sqrt k))))
+        ((and (consp x) (eq (car x) 'expt) (eql (third x) 2) (rationalp (second x)))
+         (abs (second x)))
+        (t (list 'sqrt x))))
+
+(defun pi-multiple (x)
+  "The rational R when X is structurally R*PI (or 0), else NIL."
+  (cond ((eql x 0) 0)
+        ((eq x 'pi) 1)
+        ((and (consp x) (eq (car x) '*))
+         (multiple-value-bind (c fs) (product-factors x)
+           (and (rationalp c) (equal fs '(pi)) c)))
+        ((and (consp x) (eq (car x) '-) (= (length x) 2))
+         (let ((r (pi-multiple (second x)))) (and r (- r))))
+        (t nil)))
+
+(defun special-angle-value (x function)
+  "The exact value of FUNCTION (COS or SIN) at X when X is a multiple of PI/4 or PI/6
+(using square roots of 2 and 3), else NIL."
+  (let ((r (pi-multiple x)))
+    (when r
+      (let ((r (mod r 2)))                ; the angle in [0, 2 pi) as a multiple of pi
+        (flet ((cosine (r)
+                 ;; r in [0, 2): reduce to the first quadrant with signs
+                 (multiple-value-bind (quadrant within) (floor r 1/2)
+                   (let* ((angle (if (oddp quadrant) (- 1/2 within) within))
+                          (magnitude (case angle
+                                       (0 1) (1/6 (e* 1/2 (esqrt 3))) (1/4 (e* 1/2 (esqrt 2)))
+                                       (1/3 1/2) (1/2 0) (t nil))))
+                     (and magnitude
+                          (if (member quadrant '(1 2)) (e- magnitude) magnitude))))))
+          (ecase function
+            (cos (cosine r))
+            (sin (cosine (mod (- r 1/2) 2)))))))))
+
+(defun two-argument-atan-p (x)
+  (and (consp x) (eq (car x) 'atan) (= (length x) 3)))
+
+(defun ecos (x)
+  "The cosine of X; cos(atan(y, x)) = x / sqrt(x^2 + y^2)."
+  (cond ((special-angle-value x 'cos))
+        ((two-argument-atan-p x)
+         (e/ (third x) (esqrt (e+ (esquare (second x)) (esquare (third x))))))
+        (t (list 'cos x))))
+
+(defun esin (x)
+  "The sine of X; sin(atan(y, x)) = y / sqrt(x^2 + y^2)."
+  (cond ((special-angle-value x 'sin))
+        ((two-argument-atan-p x)
+         (e/ (second x) (esqrt (e+ (esquare (second x)) (esquare (third x))))))
+        (t (list 'sin x))))
+
+(defun etan (x)
+  "The tangent of X."
+  (let ((r (pi-multiple x)))
+    (if (and r (integerp r)) 0 (list 'tan x))))
+
+(defun constant-sign (x)
+  "The sign (-1, 0 or 1) of the constant expression X when it is clear, else NIL."
+  (let ((exact (rational-value x)))
+    (if exact
+        (signum exact)
+        (when (constant-expression-p x)
+          (let ((value (float-value x)))
+            (and value (> (abs value) 1d-9) (round (signum value))))))))
+
+(defun special-atan2 (y x)
+  "The angle of (X, Y) as a multiple of PI when X and Y are constants making a
+multiple of PI/6 or PI/4, else NIL."
+  (let ((sx (constant-sign x)) (sy (constant-sign y)))
+    (when (and sx sy)
+      (cond ((and (zerop sy) (zerop sx)) nil)
+            ((zerop sy) (if (plusp sx) 0 1))
+            ((zerop sx) (if (plusp sy) 1/2 -1/2))
+            (t (let* ((ratio (e/ y x))
+                      (slope (let ((r (rational-value ratio))) (and r (abs r))))
+                      (slope-squared (rational-value (e* ratio ratio)))
+                      (first-quadrant (cond ((eql slope 1) 1/4)
+                                            ((eql slope-squared 3) 1/3)
+                                            ((eql slope-squared 1/3) 1/6))))
+                 (when first-quadrant
+                   (cond ((and (plusp sx) (plusp sy)) first-quadrant)
+                         ((plusp sy) (- 1 first-quadrant))
+                         ((plusp sx) (- first-quadrant))
+                         (t (- first-quadrant 1))))))))))
+
+(defun eatan2 (y x)
+  "The angle of the direction (X, Y), in (-PI, PI], as (ATAN Y X) unless exact."
+  (let ((special (special-atan2 y x)))
+    (if special
+        (e* special 'pi)
+        (list 'atan y x))))
+
+(defun normalize-expression (expression)
+  "EXPRESSION rebuilt bottom-up through the simplifying constructors: numbers folded,
+like terms collected. Quantity terms and unknown forms are kept as they are."
+  (cond ((atom expression) expression)
+        ((quantity-term-p expression) expression)
+        (t (let ((operator (car expression))
+                 (arguments (mapcar #'normalize-expression (cdr expression))))
+             (case operator
+               (+ (apply #'e+ arguments))
+               (- (apply #'e- arguments))
+               (* (apply #'e* arguments))
+               (/ (if (rest arguments)
+                      (reduce #'e/ arguments)
+                      (e/ 1 (first arguments))))
+               (expt (eexpt (first arguments) (second arguments)))
+               (sqrt (esqrt (first arguments)))
+               (cos (ecos (first arguments)))
+               (sin (esin (first arguments)))
+               (tan (etan (first arguments)))
+               (atan (if (rest arguments)
+                         (eatan2 (first arguments) (second arguments))
+                         (list 'atan (first arguments))))
+               (t (cons operator arguments)))))))
+
+;;; Evaluation of constant expressions.
+
+(defun rational-value (expression)
+  "The exact rational value of EXPRESSION when it is built from rationals with
++ - * /, integer powers and square roots of rational squares; else NIL."
+  (labels ((value (x)
+             (cond ((rationalp x) x)
+                   ((atom x) (return-from rational-value nil))
+                   (t (let ((args (mapcar #'value (cdr x))))
+                        (case (car x)
+                          (+ (apply #'+ args))
+                          (- (apply #'- args))
+                          (* (apply #'* args))
+                          (/ (if (some #'zerop (if (rest args) (rest args) args))
+                                 (return-from rational-value nil)
+                                 (apply #'/ args)))
+                          (expt (if (and (integerp (second args))
+                                         (not (and (zerop (first args)) (minusp (second args)))))
+                                    (expt (first args) (second args))
+                                    (return-from rational-value nil)))
+                          (sqrt (or (square-root-of-rational (first args))
+                                    (return-from rational-value nil)))
+                          (t (return-from rational-value nil))))))))
+    (value expression)))
+
+(defun float-value (expression &optional bindings)
+  "The double-float value of EXPRESSION, with the variables bound by the alist BINDINGS
+(symbol . number); NIL when a variable is unbound, a function leaves the reals or an
+arithmetic error occurs."
+  (labels ((fail () (return-from float-value nil))
+           (real-or-fail (v) (if (and (realp v) (= v v)) v (fail)))
+           (value (x)
+             (cond ((realp x) (coerce x 'double-float))
+                   ((eq x 'pi) pi)
+                   ((symbolp x) (let ((entry (assoc x bindings)))
+                                  (if entry (coerce (cdr entry) 'double-float) (fail))))
+                   ((quantity-term-p x)
+                    (let ((entry (assoc x bindings :test #'equal)))
+                      (if entry (coerce (cdr entry) 'double-float) (fail))))
+                   (t (let ((args (mapcar #'value (cdr x))))
+                        (real-or-fail
+                         (case (car x)
+                           (+ (apply #'+ args))
+                           (- (apply #'- args))
+                           (* (apply #'* args))
+                           (/ (apply #'/ args))
+                           (expt (if (or (plusp (first args))
+                                         (= (second args) (fround (second args))))
+                                     (expt (first args)
+                                           (if (= (second args) (fround (second args)))
+                                               (round (second args))
+                                               (second args)))
+                                     (fail)))
+                           (sqrt (if (minusp (first args)) (fail) (sqrt (first args))))
+                           (exp (exp (first args)))
+                           (log (if (plusp (first args)) (log (first args)) (fail)))
+                           (sin (sin (first args)))
+                           (cos (cos (first args)))
+                           (tan (tan (first args)))
+                           (asin (if (<= -1 (first args) 1) (asin (first args)) (fail)))
+                           (acos (if (<= -1 (first args) 1) (acos (first args)) (fail)))
+                           (atan (if (rest args)
+                                     (if (and (zerop (first args)) (zerop (second args)))
+                                         (fail)
+                                         (atan (first args) (second args)))
+                                     (atan (first args))))
+                           (t (fail)))))))))
+    (handler-case (value expression)
+      (arithmetic-error () nil))))
+
+;;; Derivatives (of relative trajectories and gap functions with respect to time).
+
+(defun differentiate (expression variable)
+  "The derivative of EXPRESSION with respect to the variable VARIABLE. Quantity terms
+and other variables are constants. Signals MALFORMED-EXPRESSION for an operator it
+does not know."
+  (labels ((d (x)
+             (cond ((eq x variable) 1)
+                   ((or (atom x) (quantity-term-p x)) 0)
+                   (t (let ((args (cdr x)))
+                        (case (car x)
+                          (+ (apply #'e+ (mapcar #'d args)))
+                          (- (apply #'e- (mapcar #'d args)))
+                          (* (apply #'e+
+                                    (loop for i from 0 below (length args)
+                                          collect (apply #'e*
+                                                         (loop for a in args for j from 0
+                                                               collect (if (= i j) (d a) a))))))
+                          (/ (if (rest args)
+                                 (let ((u (first args)) (v (apply #'e* (rest args))))
+                                   (e/ (e- (e* (d u) v) (e* u (d v))) (esquare v)))
+                                 (e/ (e- (d (first args))) (esquare (first args)))))
+                          (expt (destructuring-bind (u n) args
+                                  (if (free-of-p variable n)
+                                      (e* n (eexpt u (e- n 1)) (d u))
+                                      (d (list 'exp (list '* n (list 'log u)))))))
+                          (sqrt (e/ (d (first args)) (e* 2 (esqrt (first args)))))
+                          (exp (e* x (d (first args))))
+                          (log (e/ (d (first args)) (first args)))
+                          (sin (e* (ecos (first args)) (d (first args))))
+                          (cos (e- (e* (esin (first args)) (d (first args)))))
+                          (tan (e/ (d (first args)) (esquare (ecos (first args)))))
+                          (asin (e/ (d (first args)) (esqrt (e- 1 (esquare (first args))))))
+                          (acos (e- (e/ (d (first args)) (esqrt (e- 1 (esquare (first args)))))))
+                          (atan (if (rest args)
+                                    (destructuring-bind (y u) args
+                                      (e/ (e- (e* u (d y)) (e* y (d u)))
+                                          (e+ (esquare u) (esquare y))))
+                                    (e/ (d (first args)) (e+ 1 (esquare (first args))))))
+                          (t (error 'malformed-expression
+                                    :datum x :expression expression
+                                    :detail "cannot differentiate this operator"))))))))
+    (d expression)))

@@ -1,0 +1,361 @@
+;;;; src/maxima-bridge/bridge.lisp -- the bridge object: one Maxima process, its framed protocol, timeouts, restarts, cache.
+;;;;
+;;;; The process is Debian's `maxima` script run with `-p maxima-server.lisp`; the script
+;;;; `exec`s the GCL binary, so the pid SBCL knows is the pid that must receive SIGINT.
+;;;; Requests are lines `(ID :EVAL FORM)`, each preceded by an empty line (a SIGINT that
+;;;; lands while the server waits eats one character); replies are frames between markers
+;;;; that carry a random nonce, so nothing Maxima prints by itself can be taken for a reply.
+;;;; Reading never blocks past the deadline: characters are taken with READ-CHAR-NO-HANG
+;;;; and the descriptor is waited on with a timeout.
+
+(in-package #:ames.maxima)
+
+(defconstant +sigint+ 2 "The signal that interrupts a busy GCL Maxima.")
+(defconstant +sigkill+ 9 "The signal that ends a wedged Maxima.")
+
+(defparameter *server-file*
+  (asdf:system-relative-pathname "ames" "src/maxima-bridge/maxima-server.lisp")
+  "The Lisp file Maxima preloads: the request server.")
+
+(defstruct (assumption-frame (:constructor make-assumption-frame (context facts maxima-facts)))
+  "One WITH-ASSUMPTIONS scope: its Maxima context, the facts as given, and the facts as
+assumed in Maxima (including derived trigonometric sign facts)."
+  context facts maxima-facts)
+
+(defclass bridge ()
+  ((program :initarg :program :reader bridge-program
+            :documentation "The command that starts Maxima (searched on PATH).")
+   (timeout :initarg :timeout :accessor bridge-timeout
+            :documentation "Seconds a request may take before it is interrupted.")
+   (interrupt-grace :initarg :interrupt-grace :initform 2 :accessor bridge-interrupt-grace
+                    :documentation "Seconds an interrupted request may take to stop
+before the process is killed and replaced.")
+   (process :initform nil :accessor bridge-process)
+   (nonce :initform nil :accessor bridge-nonce)
+   (frame-begin :initform nil :accessor bridge-frame-begin)
+   (frame-end :initform nil :accessor bridge-frame-end)
+   (buffer :initform (make-array 256 :element-type 'character :adjustable t :fill-pointer 0)
+           :reader bridge-buffer
+           :documentation "Characters read from Maxima and not yet consumed.")
+   (next-id :initform 1 :accessor bridge-next-id)
+   (names :initform (make-instance 'name-table) :reader bridge-names)
+   (frames :initform '() :accessor bridge-frames
+           :documentation "Active assumption frames, innermost first.")
+   (cache :initform (make-hash-table :test 'equal) :reader bridge-cache)
+   (statistics :initform (make-statistics) :accessor bridge-statistics-record))
+  (:documentation "A connection to one persistent Maxima process, started lazily, with
+its name table, assumption scopes, cache and counters. Use a bridge from one thread."))
+
+(defstruct statistics
+  (calls 0) (cache-hits 0) (maxima-calls 0) (restarts 0) (timeouts 0) (questions 0)
+  (errors 0) (maxima-seconds 0d0) (round-trip-seconds 0d0))
+
+(defun make-bridge (&key (timeout 20) (program "maxima"))
+  "A new BRIDGE to Maxima. No process starts until the first request. TIMEOUT is the
+number of seconds one request may take (settable with (SETF BRIDGE-TIMEOUT))."
+  (check-type timeout (real (0)))
+  (check-type program string)
+  (make-instance 'bridge :timeout timeout :program program))
+
+(defmethod print-object ((bridge bridge) stream)
+  (print-unreadable-object (bridge stream :type t :identity t)
+    (format stream "~A ~:[idle~;running~]" (bridge-program bridge) (bridge-alive-p bridge))))
+
+(defun bridge-statistics (bridge)
+  "A plist of BRIDGE's counters: :CALLS (requests asked of the bridge), :CACHE-HITS,
+:MAXIMA-CALLS (round trips to Maxima), :RESTARTS (processes started), :TIMEOUTS,
+:QUESTIONS, :ERRORS, :MAXIMA-SECONDS (evaluation time measured inside Maxima) and
+:ROUND-TRIP-SECONDS (wall time of the round trips)."
+  (let ((s (bridge-statistics-record bridge)))
+    (list :calls (statistics-calls s) :cache-hits (statistics-cache-hits s)
+          :maxima-calls (statistics-maxima-calls s) :restarts (statistics-restarts s)
+          :timeouts (statistics-timeouts s) :questions (statistics-questions s)
+          :errors (statistics-errors s) :maxima-seconds (statistics-maxima-seconds s)
+          :round-trip-seconds (statistics-round-trip-seconds s))))
+
+(defun reset-bridge-statistics (bridge)
+  "Set every counter of BRIDGE to zero (the cache itself is kept)."
+  (setf (bridge-statistics-record bridge) (make-statistics))
+  bridge)
+
+(defun clear-bridge-cache (bridge)
+  "Forget every cached answer of BRIDGE (for benchmarks; answers never go stale)."
+  (clrhash (bridge-cache bridge))
+  bridge)
+
+(defun bridge-alive-p (bridge)
+  "True when BRIDGE has a running Maxima process."
+  (let ((process (bridge-process bridge)))
+    (and process (sb-ext:process-alive-p process) t)))
+
+(defun bridge-process-id (bridge)
+  "The pid of BRIDGE's Maxima process (the GCL binary itself), or NIL when none runs."
+  (and (bridge-alive-p bridge) (sb-ext:process-pid (bridge-process bridge))))
+
+(defun now ()
+  "Wall-clock seconds, as a double-float."
+  (/ (get-internal-real-time) (coerce internal-time-units-per-second 'double-float)))
+
+;;; The process
+
+(defun discard-process (bridge)
+  "Forget BRIDGE's process, ending it with SIGKILL when it still runs, and reap it."
+  (let ((process (bridge-process bridge)))
+    (setf (bridge-process bridge) nil
+          (fill-pointer (bridge-buffer bridge)) 0)
+    (when process
+      (when (sb-ext:process-alive-p process)
+        (sb-ext:process-kill process +sigkill+))
+      ;; SIGKILL ends it at once; waiting reaps it, so that no zombie stays behind.
+      (sb-ext:process-wait process)
+      (sb-ext:process-close process))))
+
+(defun close-bridge (bridge)
+  "Stop BRIDGE's Maxima process, if any. The bridge stays usable: the next request
+starts a new process and replays the active assumptions. Returns BRIDGE."
+  (let ((process (bridge-process bridge)))
+    (when process
+      (when (sb-ext:process-alive-p process)
+        ;; End of input makes the server leave Maxima; wait a moment, then insist.
+        (close (sb-ext:process-input process) :abort t)
+        (let ((deadline (+ (now) 1)))
+          (loop while (and (sb-ext:process-alive-p process) (< (now) deadline))
+                do (sleep 0.01))))
+      (discard-process bridge)))
+  bridge)
+
+(define-condition server-gone (error) ()
+  (:documentation "Internal: the pipe to Maxima closed (the process ended)."))
+
+(defun start-process (bridge)
+  "Start a Maxima process for BRIDGE, greet it, and replay the assumption frames.
+Signals MAXIMA-PROCESS-DIED when Maxima cannot be started."
+  (let ((process
+          (handler-case
+              (sb-ext:run-program (bridge-program bridge)
+                                  (list "--very-quiet" "--init=ames-bridge-no-init"
+                                        "-p" (namestring (truename *server-file*)))
+                                  :search t :wait nil :input :stream :output :stream
+                                  :error :output :external-format :latin-1)
+            (error (c)
+              (error 'maxima-process-died
+                     :datum (bridge-program bridge)
+                     :detail (format nil "cannot start ~A: ~A" (bridge-program bridge) c))))))
+    (unless (and process (sb-ext:process-alive-p process))
+      (error 'maxima-process-died :datum (bridge-program bridge)
+                                  :detail "Maxima exited at once"))
+    (incf (statistics-restarts (bridge-statistics-record bridge)))
+    (setf (bridge-process bridge) process
+          (fill-pointer (bridge-buffer bridge)) 0
+          (bridge-nonce bridge) (random (expt 2 60) (make-random-state t)))
+    (setf (bridge-frame-begin bridge) (format nil "@AMES~D@BEGIN" (bridge-nonce bridge))
+          (bridge-frame-end bridge) (format nil "@AMES~D@END" (bridge-nonce bridge)))
+    (multiple-value-bind (status data)
+        (round-trip bridge (list :hello (bridge-nonce bridge)))
+      (unless (eq status :ok)
+        (discard-process bridge)
+        (error 'maxima-process-died :datum (bridge-program bridge)
+                                    :detail (format nil "Maxima did not greet: ~S ~S" status data))))
+    (replay-assumptions bridge)
+    process))
+
+(defun ensure-process (bridge)
+  "Make sure BRIDGE has a live Maxima process (starting one, replaying its set-up)."
+  (unless (bridge-alive-p bridge)
+    (when (bridge-process bridge) (discard-process bridge))
+    (start-process bridge)))
+
+;;; Framing
+
+(defun print-request (id kind arguments)
+  "The request line for ID, KIND and ARGUMENTS, as the server reads it."
+  (let ((*package* (find-package '#:ames.maxima.wire))
+        (*print-pretty* nil) (*print-base* 10) (*print-radix* nil) (*print-case* :upcase)
+        (*print-readably* nil) (*print-circle* nil) (*print-level* nil) (*print-length* nil)
+        (*read-default-float-format* 'double-float))
+    (format nil "~%~S~%" (list* id kind arguments))))
+
+(defun send-line (bridge text)
+  "Write TEXT to BRIDGE's process. Signals SERVER-GONE when the pipe is closed."
+  (let ((stream (sb-ext:process-input (bridge-process bridge))))
+    (handler-case (progn (write-string text stream) (finish-output stream))
+      (stream-error () (error 'server-gone)))))
+
+(defun take-frame (bridge)
+  "The text of the first complete frame in BRIDGE's buffer, removed from it, or NIL."
+  (let* ((buffer (bridge-buffer bridge))
+         (end (search (bridge-frame-end bridge) buffer)))
+    (when end
+      (let* ((begin (search (bridge-frame-begin bridge) buffer :end2 end :from-end t))
+             (text (and begin (subseq buffer (+ begin (length (bridge-frame-begin bridge))) end)))
+             (rest-start (+ end (length (bridge-frame-end bridge))))
+             (rest (subseq buffer rest-start)))
+        (setf (fill-pointer buffer) 0)
+        (loop for c across rest do (vector-push-extend c buffer))
+        (or text "")))))
+
+(defun parse-frame (text)
+  "The reply (ID STATUS SECONDS . DATA) in frame TEXT, or NIL when unreadable."
+  (let ((*read-eval* nil)
+        (*package* (find-package '#:ames.maxima.wire))
+        (*read-default-float-format* 'double-float)
+        (*read-base* 10))
+    (handler-case (let ((reply (read-from-string text)))
+                    (and (consp reply) (consp (cdr reply)) (consp (cddr reply)) reply))
+      (reader-error () nil)
+      (end-of-file () nil))))
+
+(defun read-available (bridge)
+  "Move what Maxima has written into the buffer. Returns :EOF at end of output, T when
+something was read, NIL otherwise."
+  (let ((stream (sb-ext:process-output (bridge-process bridge)))
+        (buffer (bridge-buffer bridge))
+        (got nil))
+    (loop (let ((c (read-char-no-hang stream nil :eof)))
+            (cond ((eq c :eof) (return :eof))
+                  ((null c) (return got))
+                  (t (vector-push-extend c buffer) (setf got t)))))))
+
+(defun await-reply (bridge id deadline)
+  "Wait until DEADLINE for the reply to request ID. Returns the reply
+(ID STATUS SECONDS . DATA), or :TIMEOUT. Signals SERVER-GONE when the process ends."
+  (let ((fd (sb-sys:fd-stream-fd (sb-ext:process-output (bridge-process bridge)))))
+    (loop
+      (let ((text (take-frame bridge)))
+        (if text
+            (let ((reply (parse-frame text)))
+              ;; Only one request is ever outstanding. Frames of earlier (interrupted)
+              ;; requests are dropped; a frame without id (NIL: the server could not read
+              ;; the request) is ours, and so is a frame SBCL cannot read.
+              (cond ((null reply)
+                     (return (list id :lisp-error 0
+                                   (format nil "unreadable reply: ~A"
+                                           (subseq text 0 (min 200 (length text)))))))
+                    ((or (eql (first reply) id) (eq (first reply) +false+))
+                     (return reply))))
+            (let ((got (read-available bridge)))
+              (cond ((eq got :eof) (error 'server-gone))
+                    (got)
+                    (t (let ((remaining (- deadline (now))))
+                         (when (<= remaining 0) (return :timeout))
+                         (sb-sys:wait-until-fd-usable fd :input remaining))))))))))
+
+(defun round-trip (bridge request)
+  "Send REQUEST (KIND . ARGUMENTS) and return the reply's STATUS, DATA and SECONDS as
+values; on timeout, interrupt Maxima and return :TIMEOUT (killing the process when the
+interrupt does not take). Signals SERVER-GONE when the process ends."
+  (let* ((id (prog1 (bridge-next-id bridge) (incf (bridge-next-id bridge))))
+         (start (now))
+         (record (bridge-statistics-record bridge)))
+    (send-line bridge (print-request id (first request) (rest request)))
+    (incf (statistics-maxima-calls record))
+    (let ((reply (await-reply bridge id (+ start (bridge-timeout bridge)))))
+      (when (eq reply :timeout)
+        (incf (statistics-timeouts record))
+        (sb-ext:process-kill (bridge-process bridge) +sigint+)
+        (let ((late (handler-case (await-reply bridge id (+ (now) (bridge-interrupt-grace bridge)))
+                      (server-gone () :gone))))
+          (when (member late '(:timeout :gone)) (discard-process bridge))
+          (setf reply (if (and (consp late) (eq (second late) :ok)) late :timeout))))
+      (incf (statistics-round-trip-seconds record) (- (now) start))
+      (if (eq reply :timeout)
+          (values :timeout nil (- (now) start))
+          (destructuring-bind (reply-id status seconds &rest data) reply
+            (declare (ignore reply-id))
+            (when (realp seconds) (incf (statistics-maxima-seconds record) seconds))
+            (values status data seconds))))))
+
+;;; Requests
+
+(defun assumption-key (bridge)
+  "What the answer to a request may depend on besides the request: the facts in force."
+  (mapcar #'assumption-frame-maxima-facts (bridge-frames bridge)))
+
+(defun unmangle-text (bridge text)
+  "TEXT (printed by Maxima) with each mangled name replaced by the AMES name it stands for."
+  (cl-ppcre:regex-replace-all
+   "(?i)\\$?amesv([a-z]+)" text
+   (lambda (match letters)
+     (multiple-value-bind (name found)
+         (user-name (bridge-names bridge) (wire (concatenate 'string "$AMESV" (string-upcase letters))))
+       (if found (let ((*print-case* :downcase)) (prin1-to-string name)) match)))
+   :simple-calls t))
+
+(defun question-condition (bridge parts datum)
+  "The MAXIMA-QUESTION for the question PARTS (strings and Maxima forms)."
+  (let ((expressions '()))
+    (flet ((render (part)
+             (if (stringp part)
+                 part
+                 (handler-case (let ((expression (from-maxima (bridge-names bridge) part)))
+                                 (push expression expressions)
+                                 (let ((*print-case* :downcase)) (prin1-to-string expression)))
+                   (untranslatable-result () (unmangle-text bridge (prin1-to-string part)))))))
+      (let ((text (format nil "~{~A~}" (mapcar #'render parts))))
+        (make-condition 'maxima-question :text text :expressions (nreverse expressions)
+                                         :datum datum)))))
+
+(defun maxima-request (bridge form &key (cache t) datum)
+  "Evaluate the Maxima FORM (built by the bridge's translation) in BRIDGE's Maxima and
+return Maxima's answer as a wire form. Identical requests under identical assumptions
+are answered from the cache when CACHE is true. DATUM (prefix algebra) names what the
+request is about in conditions. Signals MAXIMA-ERROR, MAXIMA-QUESTION (restart
+ASSUME-AND-RETRY), MAXIMA-TIMEOUT or MAXIMA-PROCESS-DIED."
+  (let* ((record (bridge-statistics-record bridge))
+         (key (and cache (cons form (assumption-key bridge)))))
+    (incf (statistics-calls record))
+    (multiple-value-bind (answer found) (if key (gethash key (bridge-cache bridge)) (values nil nil))
+      (when found
+        (incf (statistics-cache-hits record))
+        (return-from maxima-request answer)))
+    (multiple-value-bind (status data) (request-with-restart bridge form datum)
+      (ecase status
+        (:ok (let ((answer (first data)))
+               (when key (setf (gethash key (bridge-cache bridge)) answer))
+               answer))
+        (:timeout
+         (error 'maxima-timeout :seconds (bridge-timeout bridge) :datum datum
+                                :detail "the computation was interrupted"))
+        (:interrupted
+         (incf (statistics-errors record))
+         (error 'maxima-error :datum datum :message "interrupted"
+                              :detail "the computation was interrupted from outside"))
+        ((:error :lisp-error)
+         (incf (statistics-errors record))
+         (error 'maxima-error :datum datum :message (unmangle-text bridge (first data))))
+        (:rejected
+         (incf (statistics-errors record))
+         (error 'maxima-error :datum datum :message (first data)
+                              :detail "the server refused a request of the bridge"))
+        (:question
+         (incf (statistics-questions record))
+         (let ((condition (question-condition bridge data datum)))
+           (restart-case (error condition)
+             (assume-and-retry (facts)
+               :report "Assume some facts and ask again."
+               :interactive (lambda ()
+                              (format *query-io* "~&Facts (a list of relations): ")
+                              (finish-output *query-io*)
+                              (list (let ((*read-eval* nil)) (read *query-io*))))
+               (call-with-assumptions bridge facts
+                                      (lambda ()
+                                        (maxima-request bridge form :cache cache :datum datum)))))))))))
+
+(defun request-with-restart (bridge form datum)
+  "Send FORM on a live process; when the process turns out to be gone, start a fresh one
+and try once more. Returns the reply's STATUS and DATA."
+  (flet ((attempt ()
+           (ensure-process bridge)
+           (round-trip bridge (list :eval form))))
+    (handler-case (attempt)
+      (server-gone ()
+        (discard-process bridge)
+        (handler-case (attempt)
+          (server-gone ()
+            (discard-process bridge)
+            (error 'maxima-process-died :datum datum
+                                        :detail "Maxima ended twice while answering")))))))
+
+(defun request-list (bridge forms &rest keys)
+  "Evaluate the Maxima FORMS in one round trip; return the list of answers."
+  (mlist-items (apply #'maxima-request bridge (mlist forms) keys)))

@@ -1,0 +1,323 @@
+;;;; src/maxima-bridge/operations.lisp -- what the rest of AMES asks of Maxima: simplify, solve, decide, equivalence.
+;;;;
+;;;; Every operation takes and returns AMES's prefix algebra. The earliest root, the
+;;;; autonomous ODE, numeric values and LaTeX are in roots.lisp and ode.lisp.
+
+(in-package #:ames.maxima)
+
+(defun to-mx (bridge expression &optional (kind :arithmetic))
+  "EXPRESSION translated for BRIDGE's Maxima (see TO-MAXIMA)."
+  (to-maxima (bridge-names bridge) expression :kind kind))
+
+(defun from-mx (bridge form)
+  "Maxima's FORM translated back for BRIDGE (see FROM-MAXIMA)."
+  (from-maxima (bridge-names bridge) form))
+
+(defun mcall (name &rest arguments)
+  "The Maxima call NAME(ARGUMENTS...), NAME a constant string such as \"$RATSIMP\"."
+  (apply #'mform (wire name) arguments))
+
+(defun mdifference (a b)
+  "The Maxima form of A - B."
+  (mform +mplus+ a (mform +mtimes+ -1 b)))
+
+(defun expression-size (expression)
+  "The number of atoms and operators in the prefix EXPRESSION."
+  (if (atom expression) 1 (reduce #'+ (mapcar #'expression-size expression))))
+
+;;; Simplification
+
+(defparameter *simplification-strategies* '(:ratsimp :trigsimp :radcan :full)
+  "The strategies SIMPLIFY knows.")
+
+(defun simplification-form (strategy form)
+  "The Maxima request simplifying FORM by STRATEGY (one of :RATSIMP :TRIGSIMP :RADCAN)."
+  (ecase strategy
+    (:ratsimp (mcall "$RATSIMP" form))
+    (:trigsimp (mcall "$TRIGSIMP" form))
+    (:radcan (mcall "$RADCAN" form))))
+
+(defun simplify (bridge expression &key (strategy :ratsimp))
+  "EXPRESSION (an arithmetic expression or a relation) simplified by Maxima under the
+current assumptions. STRATEGY is :RATSIMP (rational canonical form), :TRIGSIMP
+(trigonometric identities), :RADCAN (radicals, logs, exponentials) or :FULL (the
+smallest of ratsimp, trigsimp, ratsimp after trigsimp, factor after ratsimp, radcan).
+Signals UNTRANSLATABLE-EXPRESSION, INVALID-BRIDGE-ARGUMENT for an unknown strategy,
+UNTRANSLATABLE-RESULT, MAXIMA-ERROR, MAXIMA-TIMEOUT."
+  (unless (member strategy *simplification-strategies*)
+    (error 'invalid-bridge-argument :datum strategy
+                                    :detail (format nil "the strategy must be one of ~{~S~^ ~}"
+                                                    *simplification-strategies*)))
+  (let ((form (to-mx bridge expression :any)))
+    (if (eq strategy :full)
+        (simplest-form bridge form expression)
+        (from-mx bridge (maxima-request bridge (simplification-form strategy form)
+                                        :datum expression)))))
+
+(defun simplest-form (bridge form expression)
+  "The smallest translatable result of several simplifications of FORM."
+  (let* ((ratsimped (mcall "$RATSIMP" form))
+         (candidates (request-list bridge
+                                   (list ratsimped
+                                         (mcall "$TRIGSIMP" form)
+                                         (mcall "$RATSIMP" (mcall "$TRIGSIMP" form))
+                                         (mcall "$FACTOR" ratsimped)
+                                         (mcall "$RADCAN" form))
+                                   :datum expression))
+         (best nil))
+    (dolist (candidate candidates)
+      (let ((translated (handler-case (from-mx bridge candidate)
+                          (untranslatable-result () nil))))
+        (when (and translated
+                   (or (null best) (< (expression-size translated) (expression-size best))))
+          (setf best translated))))
+    (or best (from-mx bridge (first candidates)))))
+
+;;; Equivalence
+
+(defun equivalent-p (bridge a b)
+  "True when the arithmetic expressions A and B are equal: A - B simplifies to 0 by
+ratsimp, by trigsimp (then ratsimp; also after trigexpand, for multiple angles) or by
+radcan, under the current assumptions. NIL
+means no proof was found, not that they differ.
+Signals UNTRANSLATABLE-EXPRESSION, MAXIMA-ERROR, MAXIMA-TIMEOUT."
+  (let ((difference (mdifference (to-mx bridge a) (to-mx bridge b)))
+        (datum (list '- a b)))
+    (flet ((zero-p (form) (eql 0 (maxima-request bridge form :datum datum))))
+      (and (or (zero-p (mcall "$RATSIMP" difference))
+               (zero-p (mcall "$RATSIMP" (mcall "$TRIGSIMP" difference)))
+               (zero-p (mcall "$RATSIMP" (mcall "$TRIGSIMP" (mcall "$TRIGEXPAND" difference))))
+               (zero-p (mcall "$RATSIMP" (mcall "$RADCAN" difference))))
+           t))))
+
+;;; Solving equations
+
+(defun equation-to-maxima (bridge equation)
+  "The Maxima equation for EQUATION: a relation (= lhs rhs), or an expression meaning
+expression = 0."
+  (if (and (consp equation) (eq (expression-operator equation) '=))
+      (to-mx bridge equation :condition)
+      (mform +mequal+ (to-mx bridge equation :arithmetic) 0)))
+
+(defun solve-equations (bridge equations unknowns)
+  "Solve EQUATIONS (a list of relations (= lhs rhs), or expressions meaning = 0) for
+UNKNOWNS (variables or quantity terms). Returns every solution Maxima finds, each an
+alist ((unknown . expression) ...) in the order of UNKNOWNS; NIL when there is none.
+Complex solutions are left out; for periodic functions of an unknown Maxima gives the
+principal solution only.
+Signals SOLVE-FAILED when Maxima gives up, answers implicitly, or leaves a solution
+with free parameters (an underdetermined system); INVALID-BRIDGE-ARGUMENT when an
+unknown is not a name; UNTRANSLATABLE-EXPRESSION, MAXIMA-ERROR, MAXIMA-QUESTION,
+MAXIMA-TIMEOUT."
+  (unless (and (consp equations) (alexandria:proper-list-p equations))
+    (error 'invalid-bridge-argument :datum equations :detail "a non-empty list of equations is expected"))
+  (unless (and (consp unknowns) (alexandria:proper-list-p unknowns) (every #'subject-p unknowns))
+    (error 'invalid-bridge-argument :datum unknowns
+                                    :detail "the unknowns must be a non-empty list of variables or quantity terms"))
+  (let* ((equation-forms (mapcar (lambda (e) (equation-to-maxima bridge e)) equations))
+         (unknown-forms (mapcar (lambda (u) (to-mx bridge u)) unknowns))
+         (answer (maxima-request bridge (mcall "$SOLVE" (mlist equation-forms) (mlist unknown-forms))
+                                 :datum equations)))
+    (flet ((fail (detail) (error 'solve-failed :datum equations :detail detail)))
+      (when (eq answer +all+)
+        (fail "every value of the unknowns is a solution"))
+      (let ((items (handler-case (mlist-items answer)
+                     (untranslatable-result () (fail "Maxima's answer is not a list of solutions"))))
+            (solutions '()))
+        (dolist (item items (nreverse solutions))
+          (let ((bindings (cond ((mform-p item +mequal+) (list item))
+                                ((mform-p item +mlist+) (mform-arguments item))
+                                (t (fail "Maxima's answer is not a list of solutions")))))
+            (unless (and (= (length bindings) (length unknowns))
+                         (every (lambda (b) (and (mform-p b +mequal+)
+                                                 (member (second b) unknown-forms)))
+                                bindings))
+              (fail "Maxima answered implicitly (not every unknown is isolated)"))
+            (let ((solution (solution-alist bridge bindings unknowns unknown-forms equations)))
+              (when solution (push solution solutions)))))))))
+
+(defun contains-symbol-p (symbol form)
+  "True when the Maxima FORM mentions SYMBOL."
+  (cond ((eq form symbol) t)
+        ((consp form) (some (lambda (x) (contains-symbol-p symbol x)) (cdr form)))
+        (t nil)))
+
+(defun solution-alist (bridge bindings unknowns unknown-forms equations)
+  "The alist for one solution, NIL when it is complex; signals SOLVE-FAILED when a value
+has free parameters or is outside the algebra."
+  (if (some (lambda (b) (contains-symbol-p +i+ (third b))) bindings)
+      nil
+      (loop for unknown in unknowns
+            for unknown-form in unknown-forms
+            for binding = (find unknown-form bindings :key #'second)
+            collect (cons unknown
+                          (handler-case (from-mx bridge (third binding))
+                            (untranslatable-result (c)
+                              (error 'solve-failed
+                                     :datum equations
+                                     :detail (format nil "the value of ~S is not in the algebra (~A~@[ ~A~])"
+                                                     unknown (ames-error-detail c)
+                                                     (let ((part (ames-error-datum c)))
+                                                       (and (symbolp part) (string-downcase (symbol-name part))))))))))))
+
+;;; Deciding relations
+
+(defparameter *sign-sets*
+  '(("$POS" :positive) ("$NEG" :negative) ("$ZERO" :zero) ("$PZ" :positive :zero)
+    ("$NZ" :negative :zero) ("$PN" :positive :negative) ("$PNZ" :positive :negative :zero))
+  "Maxima's sign answers and the signs each allows.")
+
+(defun sign-set (answer)
+  "The list of signs (:POSITIVE :NEGATIVE :ZERO) Maxima's sign ANSWER allows."
+  (or (rest (assoc (symbol-name answer) *sign-sets* :test #'string=))
+      (list :positive :negative :zero)))
+
+(defun sign-requests (form)
+  "The sign() requests whose answers together bound the sign of the Maxima FORM: FORM
+itself, factor(ratsimp(FORM)), factorsum(FORM) (which groups terms, e.g.
+2 acc l - 2 acc x0 into 2 acc (l - x0)) and trigsimp(FORM)."
+  (list (mcall "$SIGN" form)
+        (mcall "$SIGN" (mcall "$FACTOR" (mcall "$RATSIMP" form)))
+        (mcall "$SIGN" (mcall "$FACTORSUM" form))
+        (mcall "$SIGN" (mcall "$TRIGSIMP" form))))
+
+(defun forms-signs (bridge forms &key datum)
+  "For each of the real Maxima FORMS, the signs (:POSITIVE :NEGATIVE :ZERO) it may have
+under the current assumptions: the intersection of what sign() says of its forms (see
+SIGN-REQUESTS). One round trip."
+  (let* ((count (length (sign-requests 0)))
+         (answers (request-list bridge (mapcan #'sign-requests forms) :datum datum)))
+    (loop for rest on answers by (lambda (list) (nthcdr count list))
+          collect (let ((signs (list :positive :negative :zero)))
+                    (dolist (answer (subseq rest 0 count) signs)
+                      (when (symbolp answer)
+                        (setf signs (intersection signs (sign-set answer)))))))))
+
+(defun form-signs (bridge form &key datum)
+  "The signs the real Maxima FORM may have under the current assumptions (see FORMS-SIGNS)."
+  (first (forms-signs bridge (list form) :datum datum)))
+
+(defun square-root-kernel (form)
+  "Some subform sqrt(A) = ((MEXPT) A 1/2) of the Maxima FORM, or NIL."
+  (cond ((atom form) nil)
+        ((and (mform-p form +mexpt+) (mform-p (third form) +rat+)
+              (eql (second (third form)) 1) (eql (third (third form)) 2))
+         form)
+        (t (some #'square-root-kernel (cdr form)))))
+
+(defun sign-product (a b)
+  "The signs a product may have when its factors may have the signs A and B."
+  (remove-duplicates
+   (loop for x in a
+         append (loop for y in b
+                      collect (cond ((or (eq x :zero) (eq y :zero)) :zero)
+                                    ((eq x y) :positive)
+                                    (t :negative))))))
+
+(defun radical-signs (bridge difference &key datum)
+  "The signs of DIFFERENCE (a Maxima form) found by clearing one square root: written
+as (a + b sqrt(A)) / c, its numerator has the sign of a when b = 0 and, when a and b
+have opposite signs, the sign of b^2 A - a^2 times that of b. NIL when no square root
+is there or the form is not linear in it."
+  (destructuring-bind (numerator denominator)
+      (request-list bridge (list (mcall "$NUM" (mcall "$RATSIMP" difference))
+                                 (mcall "$DENOM" (mcall "$RATSIMP" difference)))
+                    :datum datum)
+    (let ((kernel (square-root-kernel numerator)))
+      (when (and kernel (eql 1 (maxima-request bridge (mcall "$HIPOW" (mcall "$EXPAND" numerator) kernel)
+                                              :datum datum)))
+        (destructuring-bind (a b)
+            (request-list bridge (list (mcall "$RATCOEF" (mcall "$EXPAND" numerator) kernel 0)
+                                       (mcall "$RATCOEF" (mcall "$EXPAND" numerator) kernel 1))
+                          :datum datum)
+          (let* ((radicand (second kernel))
+                 (gap (mdifference (mform +mtimes+ (mform +mexpt+ b 2) radicand)
+                                   (mform +mexpt+ a 2))))
+            (destructuring-bind (a-signs b-signs gap-signs radicand-signs denominator-signs)
+                (forms-signs bridge (list a b gap radicand denominator) :datum datum)
+              (flet ((only (signs &rest allowed) (and signs (subsetp signs allowed))))
+                (let* ((real (only radicand-signs :positive :zero))
+                       (numerator-signs
+                        (cond ((or (null a-signs) (null b-signs)) nil)
+                              ;; b sqrt(A) against a: the larger in size wins. When
+                              ;; b^2 A > a^2 >= 0, A > 0 follows, so sqrt(A) is real.
+                              ((and (only a-signs :negative :zero) (only b-signs :positive))
+                               (cond ((only gap-signs :positive) '(:positive))
+                                     (real gap-signs)))
+                              ((and (only a-signs :positive :zero) (only b-signs :negative))
+                               (cond ((only gap-signs :positive) '(:negative))
+                                     (real (sign-product gap-signs '(:negative)))))
+                              ((not real) nil)
+                              ;; a and b sqrt(A) of one sign
+                              ((and (only a-signs :positive :zero) (only b-signs :positive :zero))
+                               (if (or (only a-signs :positive)
+                                       (and (only b-signs :positive) (only radicand-signs :positive)))
+                                   '(:positive) '(:positive :zero)))
+                              ((and (only a-signs :negative :zero) (only b-signs :negative :zero))
+                               (if (or (only a-signs :negative)
+                                       (and (only b-signs :negative) (only radicand-signs :positive)))
+                                   '(:negative) '(:negative :zero)))
+                              (t nil))))
+                  (and numerator-signs (only denominator-signs :positive :negative)
+                       (sign-product numerator-signs denominator-signs)))))))))))
+
+(defun relation-verdict (operator signs)
+  "The truth of (OPERATOR d 0) when d may have only SIGNS."
+  (flet ((only (&rest allowed) (and signs (subsetp signs allowed)))
+         (none (&rest excluded) (and signs (null (intersection signs excluded)))))
+    (cond ((null signs) :unknown)
+          (t (ecase operator
+               (> (cond ((only :positive) :true) ((none :positive) :false) (t :unknown)))
+               (>= (cond ((only :positive :zero) :true) ((only :negative) :false) (t :unknown)))
+               (< (cond ((only :negative) :true) ((none :negative) :false) (t :unknown)))
+               (<= (cond ((only :negative :zero) :true) ((only :positive) :false) (t :unknown)))
+               (= (cond ((only :zero) :true) ((none :zero) :false) (t :unknown)))
+               (/= (cond ((none :zero) :true) ((only :zero) :false) (t :unknown))))))))
+
+(defun decide-relation (bridge relation)
+  "The truth of one RELATION (= /= < > <= >=) under the current assumptions."
+  (let* ((operator (expression-operator relation))
+         (lhs (to-mx bridge (relation-lhs relation)))
+         (rhs (to-mx bridge (relation-rhs relation)))
+         (question (case operator
+                     (= (mform +equal+ lhs rhs))
+                     (/= (mform +notequal+ lhs rhs))
+                     (t (mform (cdr (assoc operator *relation-heads*)) lhs rhs))))
+         (verdict (maxima-truth (maxima-request bridge (mcall "$IS" question) :datum relation))))
+    (when (eq verdict :unknown)
+      (setf verdict (relation-verdict operator (form-signs bridge (mdifference lhs rhs)
+                                                           :datum relation))))
+    (when (eq verdict :unknown)
+      (let ((signs (radical-signs bridge (mdifference lhs rhs) :datum relation)))
+        (when signs (setf verdict (relation-verdict operator signs)))))
+    (when (and (eq verdict :unknown) (member operator '(= /=))
+               (equivalent-p bridge (relation-lhs relation) (relation-rhs relation)))
+      (setf verdict (if (eq operator '=) :true :false)))
+    verdict))
+
+(defun decide (bridge relation)
+  "Decide RELATION (a relation of the algebra, or AND / OR / NOT of relations) under the
+current assumptions: :TRUE, :FALSE or :UNKNOWN. Uses Maxima's is(), then the sign of the
+difference of the two sides in several simplified forms, then the same after clearing a
+square root (so that roots of quadratics can be compared); connectives are combined in
+three-valued logic.
+Signals UNTRANSLATABLE-EXPRESSION, MAXIMA-ERROR, MAXIMA-TIMEOUT."
+  (check-translatable relation :condition)
+  (labels ((verdict (condition)
+             (case (expression-operator condition)
+               (not (ecase (verdict (second condition))
+                      (:true :false) (:false :true) (:unknown :unknown)))
+               (and (let ((result :true))
+                      (dolist (part (expression-arguments condition) result)
+                        (ecase (verdict part)
+                          (:false (return :false))
+                          (:unknown (setf result :unknown))
+                          (:true)))))
+               (or (let ((result :false))
+                     (dolist (part (expression-arguments condition) result)
+                       (ecase (verdict part)
+                         (:true (return :true))
+                         (:unknown (setf result :unknown))
+                         (:false)))))
+               (t (decide-relation bridge condition)))))
+    (verdict relation)))

@@ -1,0 +1,216 @@
+;;;; src/maxima-bridge/roots.lisp -- the earliest root of an expression after a given value, proven earliest.
+;;;;
+;;;; A termination condition of a qualitative state is the earliest time at which some
+;;;; expression reaches zero. With symbolic coefficients Maxima's sign() of a single root is
+;;;; usually pnz, while the signs of the product and sum of the roots and of the
+;;;; discriminant are decided. So after shifting the variable to start at AFTER, a
+;;;; polynomial of degree 1 or 2 is handled through those signs (Vieta); higher degrees and
+;;;; other expressions go through solve() and pairwise comparison. A root is returned only
+;;;; when it is proven to be the earliest; otherwise the answer is :UNKNOWN with the
+;;;; candidates.
+
+(in-package #:ames.maxima)
+
+(defun numeric-form-p (form)
+  "True when the Maxima FORM is a plain number (integer, float or RAT)."
+  (or (realp form) (mform-p form +rat+)))
+
+(defun mquotient (a b)
+  (mform +mtimes+ a (mform +mexpt+ b -1)))
+
+(defun root-verdict (signs strictly)
+  "Whether a root offset with SIGNS lies after the start: :YES, :NO or :MAYBE."
+  (flet ((only (&rest allowed) (and signs (subsetp signs allowed))))
+    (cond ((null signs) :maybe)
+          (strictly (cond ((only :positive) :yes)
+                          ((not (member :positive signs)) :no)
+                          (t :maybe)))
+          (t (cond ((only :positive :zero) :yes)
+                   ((only :negative) :no)
+                   (t :maybe))))))
+
+(defstruct (root-search (:conc-name search-))
+  "What EARLIEST-ROOT knows while it works: the bridge, the original expression (for
+conditions), the shift, and whether the root must lie strictly after it."
+  bridge expression after-form strictly)
+
+(defun root-expression (search offset)
+  "The root AFTER + OFFSET (OFFSET a Maxima form), simplified, in prefix algebra."
+  (let ((bridge (search-bridge search)))
+    (simplest-form bridge (mform +mplus+ (search-after-form search) offset)
+                   (search-expression search))))
+
+(defun root-candidates (search offsets)
+  "The translatable roots AFTER + OFFSET for OFFSETS."
+  (loop for offset in offsets
+        for root = (handler-case (root-expression search offset)
+                     (untranslatable-result () nil))
+        when root collect root))
+
+(defun found (search offset)
+  (values (root-expression search offset) :found))
+
+(defun unknown (search offsets)
+  (values :unknown (root-candidates search offsets)))
+
+(defun signs-of (search form)
+  (form-signs (search-bridge search) form :datum (search-expression search)))
+
+(defun earliest-root (bridge expression variable &key (after 0) (strictly t))
+  "The earliest real root of EXPRESSION = 0 in VARIABLE greater than AFTER (or equal to
+it, when STRICTLY is false), proven earliest under the current assumptions. Returns
+  (values ROOT :FOUND)          the proven earliest root (prefix algebra);
+  (values :NONE NIL)            proven: no real root after AFTER;
+  (values :UNKNOWN CANDIDATES)  not decided; CANDIDATES are the roots Maxima found that
+                                could not be ruled out (possibly none).
+Polynomials of degree at most 2 are decided through the signs of the product and sum
+of their roots and of their discriminant; other polynomials through solve() and
+pairwise comparison (numeric ones through Sturm sequences, realroots(), giving a
+float); other expressions never yield :FOUND or :NONE, since solve() may miss roots.
+Signals UNTRANSLATABLE-EXPRESSION, INVALID-BRIDGE-ARGUMENT (VARIABLE not a name, AFTER
+depending on VARIABLE), MAXIMA-ERROR, MAXIMA-TIMEOUT."
+  (check-translatable expression :arithmetic)
+  (check-translatable after :arithmetic)
+  (unless (subject-p variable)
+    (error 'invalid-bridge-argument :datum variable
+                                    :detail "the variable must be a variable or a quantity term"))
+  (unless (free-of-p variable after)
+    (error 'invalid-bridge-argument :datum after
+                                    :detail (format nil "the start may not depend on ~S" variable)))
+  (let* ((shifted (if (eql after 0)
+                      expression
+                      (substitute-expressions (list (cons variable (list '+ variable after)))
+                                              expression)))
+         (offset-variable (to-mx bridge variable))
+         (form (to-mx bridge shifted))
+         (search (make-root-search :bridge bridge :expression expression
+                                   :after-form (to-mx bridge after) :strictly strictly))
+         (coefficients (maxima-request bridge (mcall "$AMES_POLYNOMIAL_COEFFICIENTS"
+                                                     form offset-variable)
+                                       :datum expression)))
+    (if (eq coefficients +false+)
+        (solved-earliest-root search form offset-variable nil)
+        (let ((coefficients (mlist-items coefficients)))
+          (case (1- (length coefficients))
+            (0 (constant-earliest-root search (first coefficients)))
+            (1 (linear-earliest-root search coefficients))
+            (2 (quadratic-earliest-root search coefficients form offset-variable))
+            (t (solved-earliest-root search form offset-variable coefficients)))))))
+
+(defun constant-earliest-root (search constant)
+  "EXPRESSION does not depend on the variable: no root, or (identically zero) every value."
+  (let ((signs (signs-of search constant)))
+    (cond ((not (member :zero signs)) (values :none nil))
+          ((and (equal signs '(:zero)) (not (search-strictly search))) (found search 0))
+          (t (values :unknown nil)))))
+
+(defun linear-earliest-root (search coefficients)
+  "c0 + c1 s = 0: the one root -c0/c1, when c1 cannot vanish."
+  (destructuring-bind (c0 c1) coefficients
+    (let ((offset (mform +mtimes+ -1 (mquotient c0 c1))))
+      (if (member :zero (signs-of search c1))
+          (unknown search (list offset))
+          (ecase (root-verdict (signs-of search offset) (search-strictly search))
+            (:yes (found search offset))
+            (:no (values :none nil))
+            (:maybe (unknown search (list offset))))))))
+
+(defun quadratic-earliest-root (search coefficients form offset-variable)
+  "c0 + c1 s + c2 s^2 = 0, through the product P = c0/c2 and sum S = -c1/c2 of the roots
+and the reduced discriminant S^2/4 - P: the roots are S/2 -+ sqrt(S^2/4 - P)."
+  (destructuring-bind (c0 c1 c2) coefficients
+    (when (member :zero (signs-of search c2))
+      (return-from quadratic-earliest-root
+        (solved-earliest-root search form offset-variable coefficients)))
+    (let* ((product (mquotient c0 c2))
+           (sum (mform +mtimes+ -1 (mquotient c1 c2)))
+           (half-sum (mform +mtimes+ (mform +rat+ 1 2) sum))
+           (discriminant (mdifference (mform +mexpt+ half-sum 2) product))
+           (root-of-discriminant (mform +mexpt+ discriminant (mform +rat+ 1 2)))
+           (larger (mform +mplus+ half-sum root-of-discriminant))
+           (smaller (mdifference half-sum root-of-discriminant))
+           (product-signs (signs-of search product))
+           (strictly (search-strictly search)))
+      (flet ((only (signs &rest allowed) (and signs (subsetp signs allowed))))
+        (cond
+          ;; Roots of opposite signs: the larger is the only one after the start.
+          ((only product-signs :negative) (found search larger))
+          ;; A root at the start itself; the other is S.
+          ((equal product-signs '(:zero))
+           (if (not strictly)
+               (found search 0)
+               (ecase (root-verdict (signs-of search sum) t)
+                 (:yes (found search sum))
+                 (:no (values :none nil))
+                 (:maybe (unknown search (list sum))))))
+          ;; Roots of the same sign (or complex): both before the start when S <= 0.
+          ((only product-signs :positive)
+           (let ((sum-signs (signs-of search sum)))
+             (cond ((only sum-signs :negative :zero) (values :none nil))
+                   ((only sum-signs :positive)
+                    (let ((discriminant-signs (signs-of search discriminant)))
+                      (cond ((only discriminant-signs :negative) (values :none nil))
+                            ((only discriminant-signs :positive :zero) (found search smaller))
+                            (t (unknown search (list smaller larger))))))
+                   (t (unknown search (list smaller larger))))))
+          (t (unknown search (list smaller larger))))))))
+
+(defun solved-earliest-root (search form offset-variable coefficients)
+  "The general case: the roots solve() finds, compared pairwise. COEFFICIENTS is the
+list of polynomial coefficients, or NIL when FORM is no polynomial (then solve() may
+miss roots and nothing is proven)."
+  (let* ((bridge (search-bridge search))
+         (strictly (search-strictly search))
+         (answer (maxima-request bridge (mcall "$SOLVE" (mlist (list (mform +mequal+ form 0)))
+                                               (mlist (list offset-variable)))
+                                 :datum (search-expression search)))
+         (items (if (mform-p answer +mlist+) (mlist-items answer) '()))
+         (explicit (loop for item in items
+                         when (and (mform-p item +mequal+) (eq (second item) offset-variable))
+                           collect (third item)))
+         (complete (and coefficients (= (length explicit) (length items))))
+         (proven '()) (undecided '()))
+    (dolist (offset explicit)
+      (if (contains-symbol-p +i+ offset)
+          (push offset undecided)
+          (ecase (root-verdict (signs-of search offset) strictly)
+            (:yes (push offset proven))
+            (:no)
+            (:maybe (push offset undecided)))))
+    (setf proven (nreverse proven) undecided (nreverse undecided))
+    (cond
+      ((and complete (null undecided))
+       (if (null proven)
+           (values :none nil)
+           (let ((earliest (find-if (lambda (candidate)
+                                      (every (lambda (other)
+                                               (or (eq other candidate)
+                                                   (subsetp (signs-of search (mdifference other candidate))
+                                                            '(:positive :zero))))
+                                             proven))
+                                    proven)))
+             (if earliest (found search earliest) (unknown search proven)))))
+      ((and coefficients (every #'numeric-form-p coefficients))
+       (numeric-earliest-root search form offset-variable))
+      (t (unknown search (append proven undecided))))))
+
+(defun numeric-earliest-root (search form offset-variable)
+  "A polynomial with numeric coefficients: Sturm sequences (realroots) isolate every real
+root; the earliest after the start is returned as a float."
+  (let* ((bridge (search-bridge search))
+         (answer (maxima-request bridge (mcall "$REALROOTS" form)
+                                 :datum (search-expression search)))
+         (offsets (loop for item in (mlist-items answer)
+                        when (and (mform-p item +mequal+) (eq (second item) offset-variable))
+                          collect (let ((value (from-mx bridge (third item))))
+                                    (if (realp value) value (return-from numeric-earliest-root
+                                                              (values :unknown nil))))))
+         (after (remove-if-not (lambda (offset)
+                                 (if (search-strictly search) (plusp offset) (>= offset 0)))
+                               offsets)))
+    (if (null after)
+        (values :none nil)
+        (let ((offset (coerce (reduce #'min after) 'double-float))
+              (start (from-mx bridge (search-after-form search))))
+          ;; Not through Maxima: ratsimp would turn the float back into a ratio.
+          (values (if (realp start) (+ start offset) (list '+ start offset)) :found)))))

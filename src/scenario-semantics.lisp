@@ -1,0 +1,250 @@
+;;;; src/scenario-semantics.lisp -- the checks of a scenario that need Maxima: assumptions, signs, orientation.
+;;;;
+;;;; PARSE-SCENARIO decides what numbers decide. What depends on symbolic parameters
+;;;; is decided here, through the Maxima bridge, under the scenario's own assumptions:
+;;;;   - the assumptions are consistent (the bridge's INCONSISTENT-ASSUMPTIONS becomes a
+;;;;     CONTRADICTORY-ASSUMPTIONS-ERROR naming the parameter);
+;;;;   - every mass is positive, every radius positive, every :until time positive;
+;;;;   - every arc runs counter-clockwise by at most a full turn;
+;;;;   - every polygon's vertices run counter-clockwise (its signed area is positive).
+;;;; A fact that is false is the matching SCENARIO-ERROR; a fact that Maxima cannot
+;;;; decide is a MISSING-ASSUMPTION-ERROR naming it (the scenario-language page: "where
+;;;; it cannot be decided, the scenario is rejected with an error naming the fact that
+;;;; is missing").
+;;;;
+;;;; CHECK-SCENARIO-GEOMETRY then hands every shape to the geometry layer's parser
+;;;; (self-intersecting polygons, outlines that do not join...) and builds the
+;;;; configuration-space contacts of every pair of bodies that are not both fixed, to
+;;;; reject bodies that overlap at the start. Fixed bodies are all part of the fixed
+;;;; frame: they may touch or overlap each other (a floor and a wall). Geometry's
+;;;; conditions are wrapped into SCENARIO-ERRORs naming the body or the pair.
+;;;; CHECK-SCENARIO runs both under one scope of the scenario's assumptions.
+
+(in-package #:ames)
+
+(define-condition missing-assumption-error (scenario-error)
+  ((fact :initarg :fact :initform nil :reader missing-assumption-fact
+         :documentation "The relation that the assumptions neither prove nor refute."))
+  (:documentation "A fact the scenario needs (a positive mass, a counter-clockwise
+polygon...) that its parameter assumptions do not decide. DATUM is the fact."))
+
+(defun scenario-detail (scenario control &rest arguments)
+  "The detail string of a condition about SCENARIO: CONTROL applied to ARGUMENTS,
+forms printed short and in the scenario's package."
+  (with-standard-io-syntax
+    (let ((*print-readably* nil) (*print-level* 4) (*print-length* 8)
+          (*package* (form-package (scenario-name scenario))))
+      (apply #'format nil control arguments))))
+
+(defun semantic-reject (scenario class location datum control &rest arguments)
+  "Signal a scenario error of CLASS about SCENARIO at LOCATION (a string)."
+  (error class :scenario (scenario-name scenario) :location location
+               :source (scenario-source scenario) :datum datum
+               :detail (apply #'scenario-detail scenario control arguments)))
+
+(defun polygon-signed-area (polygon)
+  "Twice the signed area of the checked POLYGON, as an expression: positive when its
+vertices run counter-clockwise."
+  (let ((vertices (rest polygon)))
+    (cons '+ (loop for (a b) on (append vertices (list (first vertices)))
+                   while b
+                   collect `(- (* ,(first a) ,(second b)) (* ,(first b) ,(second a)))))))
+
+(defun shape-facts (shape)
+  "The facts SHAPE (checked) needs, as a list of (RELATION WHAT CLASS)."
+  (flet ((arc-facts (arc)
+           (destructuring-bind (&key radius from to &allow-other-keys) (rest arc)
+             (list (list `(> ,radius 0) "the arc's radius is positive" 'scenario-shape-error)
+                   (list `(> ,to ,from) "the arc's :to exceeds its :from" 'scenario-shape-error)
+                   (list `(<= (- ,to ,from) (* 2 pi)) "the arc turns at most a full circle"
+                         'scenario-shape-error)))))
+    (ecase (shape-kind shape)
+      ((:point :segment :half-plane) '())
+      (:circle (list (list `(> ,(second shape) 0) "the circle's radius is positive"
+                           'scenario-shape-error)))
+      (:arc (arc-facts shape))
+      (:outline (loop for piece in (rest shape)
+                      when (eq (first piece) 'ames-scenario:arc)
+                        append (arc-facts piece)))
+      (:polygon (list (list `(> ,(polygon-signed-area shape) 0)
+                            "the polygon's vertices run counter-clockwise"
+                            'scenario-shape-error))))))
+
+(defun scenario-facts (scenario)
+  "Every fact SCENARIO needs, as a list of (LOCATION RELATION WHAT CLASS)."
+  (append
+   (loop for body in (scenario-bodies scenario)
+         for location = (format nil "body ~A" (symbol-name (scenario-body-name body)))
+         append (append
+                 (when (scenario-body-mass body)
+                   (list (list location `(> ,(scenario-body-mass body) 0)
+                               "the mass is positive" 'scenario-expression-error)))
+                 (mapcar (lambda (fact) (cons location fact))
+                         (shape-facts (scenario-body-shape body)))))
+   (when (scenario-until scenario)
+     (list (list "clause SIMULATE" `(> ,(scenario-until scenario) 0)
+                 "the :until time is positive" 'scenario-expression-error)))))
+
+(defun decide-fact (bridge relation)
+  "The truth of RELATION under the bridge's current assumptions; when Maxima's first
+answer is :UNKNOWN, asks again about the fully simplified difference of its sides."
+  (let ((verdict (ames.maxima:decide bridge relation)))
+    (if (eq verdict :unknown)
+        (ames.maxima:decide bridge
+                            (make-relation (first relation)
+                                           (ames.maxima:simplify
+                                            bridge `(- ,(relation-lhs relation)
+                                                       ,(relation-rhs relation))
+                                            :strategy :full)
+                                           0))
+        verdict)))
+
+(defun assumption-location (scenario fact)
+  "Where SCENARIO declares the assumption FACT: \"parameter X\", or the clause."
+  (let ((parameter (find-if (lambda (parameter)
+                              (member fact (scenario-parameter-assumptions parameter)
+                                      :test (lambda (fact assumption)
+                                              (equal fact (assumption-relation
+                                                           (scenario-parameter-name parameter)
+                                                           assumption)))))
+                            (scenario-parameters scenario))))
+    (if parameter
+        (format nil "parameter ~A" (symbol-name (scenario-parameter-name parameter)))
+        "clause PARAMETERS")))
+
+(defun call-with-scenario-assumptions (scenario bridge thunk)
+  "Call THUNK with SCENARIO's parameter assumptions in force in BRIDGE; return its
+values. Signals CONTRADICTORY-ASSUMPTIONS-ERROR, naming the parameter, when Maxima
+finds the assumptions inconsistent (the bridge's INCONSISTENT-ASSUMPTIONS is its CAUSE)."
+  (handler-case
+      (ames.maxima:call-with-assumptions bridge (scenario-assumption-relations scenario) thunk)
+    (ames.maxima:inconsistent-assumptions (condition)
+      (let ((fact (ames.maxima:inconsistent-assumptions-fact condition)))
+        (error 'contradictory-assumptions-error
+               :scenario (scenario-name scenario)
+               :location (assumption-location scenario fact)
+               :source (scenario-source scenario)
+               :datum (or fact (scenario-assumption-relations scenario))
+               :cause condition
+               :detail (scenario-detail scenario "the assumption ~S contradicts the others"
+                                        fact))))))
+
+(defun check-facts (scenario bridge)
+  "Decide every fact SCENARIO needs (see SCENARIO-FACTS) under the assumptions in
+force; signal for the first that is false or undecided."
+  (loop for (location relation what class) in (scenario-facts scenario)
+        do (ecase (decide-fact bridge relation)
+             (:true)
+             (:false (semantic-reject scenario class location relation
+                                      "it is false that ~A" what))
+             (:unknown
+              (error 'missing-assumption-error
+                     :scenario (scenario-name scenario) :location location
+                     :source (scenario-source scenario) :datum relation :fact relation
+                     :detail (scenario-detail scenario "the assumptions do not show that ~A; ~
+                                                        declare what makes ~S hold"
+                                              what relation))))))
+
+(defun check-scenario-assumptions (scenario bridge)
+  "Check, through the Maxima BRIDGE and under SCENARIO's parameter assumptions, what
+PARSE-SCENARIO could not decide with numbers: that the assumptions are consistent, that
+masses, radii and the :until time are positive, that arcs and polygons run
+counter-clockwise. Returns SCENARIO.
+Signals CONTRADICTORY-ASSUMPTIONS-ERROR (wrapping the bridge's INCONSISTENT-ASSUMPTIONS)
+naming the parameter, SCENARIO-EXPRESSION-ERROR or SCENARIO-SHAPE-ERROR naming the body
+for a fact that is false, MISSING-ASSUMPTION-ERROR naming the fact that the assumptions
+do not decide, and the bridge's own conditions when Maxima fails."
+  (call-with-scenario-assumptions scenario bridge
+                                  (lambda () (check-facts scenario bridge)))
+  scenario)
+
+(defun call-wrapping-geometry-conditions (scenario location thunk)
+  "Call THUNK; turn the geometry layer's INVALID-SHAPE, UNSUPPORTED-SHAPE-PAIR and
+UNDECIDABLE-GEOMETRIC-FACT into SCENARIO-ERRORs of SCENARIO at LOCATION."
+  (flet ((wrap (class condition datum &rest initargs)
+           (apply #'error class
+                  :scenario (scenario-name scenario) :location location
+                  :source (scenario-source scenario) :cause condition
+                  :datum (or datum location)
+                  :detail (ames-error-detail condition)
+                  initargs)))
+    (handler-case (funcall thunk)
+      (ames.geometry:invalid-shape (condition)
+        (wrap 'scenario-shape-error condition (ames-error-datum condition)))
+      (ames.geometry:unsupported-shape-pair (condition)
+        (wrap 'scenario-shape-error condition (ames-error-datum condition)))
+      (ames.geometry:undecidable-geometric-fact (condition)
+        (let ((fact (ames.geometry:undecidable-fact condition)))
+          (error 'missing-assumption-error
+                 :scenario (scenario-name scenario) :location location
+                 :source (scenario-source scenario) :cause condition
+                 :datum (or fact location) :fact fact
+                 :detail (scenario-detail scenario "the geometry needs to know whether ~S, ~
+                                                    and ~A"
+                                          fact (ames-error-detail condition))))))))
+
+(defun scenario-geometry (scenario bridge)
+  "Parse every shape of SCENARIO with the geometry layer and check that no two bodies,
+not both fixed, overlap at the start. Call under the scenario's assumptions."
+  (let ((shapes
+          (loop for body in (scenario-bodies scenario)
+                collect (let ((body body))
+                          (call-wrapping-geometry-conditions
+                           scenario (format nil "body ~A" (symbol-name (scenario-body-name body)))
+                           (lambda ()
+                             (ames.geometry:parse-shape (scenario-body-shape body)
+                                                        :bridge bridge)))))))
+    (loop for (body . more-bodies) on (scenario-bodies scenario)
+          for (shape . more-shapes) on shapes
+          do (loop for other in more-bodies
+                   for other-shape in more-shapes
+                   unless (and (scenario-body-fixed-p body) (scenario-body-fixed-p other))
+                     do (let ((location (format nil "bodies ~A and ~A"
+                                                (symbol-name (scenario-body-name body))
+                                                (symbol-name (scenario-body-name other))))
+                              (body body) (other other) (shape shape)
+                              (other-shape other-shape))
+                          (call-wrapping-geometry-conditions
+                           scenario location
+                           (lambda ()
+                             (let* ((pair (ames.geometry:make-contact-pair
+                                           (scenario-body-name body) shape
+                                           (scenario-body-name other) other-shape
+                                           :bridge bridge))
+                                    (observer (if (eq (ames.geometry:pair-observer pair)
+                                                      (scenario-body-name body))
+                                                  body other))
+                                    (obstacle (if (eq observer body) other body)))
+                               (when (ames.geometry:penetrates-p
+                                      pair (ames.geometry:relative-position
+                                            pair (scenario-body-position observer)
+                                            (scenario-body-position obstacle)))
+                                 (semantic-reject
+                                  scenario 'overlapping-bodies-error location
+                                  (list (scenario-body-name body) (scenario-body-name other))
+                                  "~A and ~A overlap at the start"
+                                  (symbol-name (scenario-body-name body))
+                                  (symbol-name (scenario-body-name other))))))))))
+    shapes))
+
+(defun check-scenario-geometry (scenario bridge)
+  "Check SCENARIO's shapes with the geometry layer (ames.geometry:parse-shape) and that
+no two of its bodies (not both fixed) overlap at the start, through the Maxima BRIDGE
+under the scenario's assumptions. Returns SCENARIO.
+Signals SCENARIO-SHAPE-ERROR naming the body (wrapping geometry's INVALID-SHAPE) or the
+pair (UNSUPPORTED-SHAPE-PAIR), OVERLAPPING-BODIES-ERROR naming the pair,
+MISSING-ASSUMPTION-ERROR for a geometric fact that the assumptions do not decide, and
+CONTRADICTORY-ASSUMPTIONS-ERROR."
+  (call-with-scenario-assumptions scenario bridge
+                                  (lambda () (scenario-geometry scenario bridge)))
+  scenario)
+
+(defun check-scenario (scenario bridge)
+  "Every check of SCENARIO that needs Maxima and geometry, under one scope of its
+assumptions: CHECK-SCENARIO-ASSUMPTIONS, then CHECK-SCENARIO-GEOMETRY. Returns
+SCENARIO; signals what they signal."
+  (call-with-scenario-assumptions scenario bridge
+                                  (lambda ()
+                                    (check-facts scenario bridge)
+                                    (scenario-geometry scenario bridge)))
+  scenario)
