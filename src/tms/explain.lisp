@@ -43,10 +43,16 @@ A node reached along several paths shares one subtree (the result is a DAG)."
                                                    (justification-antecedents support))))))))))
       (tree node))))
 
+(defun datum-string (jtms datum)
+  "DATUM (a node datum, an informant or a reason) as JTMS's node printer writes it."
+  (with-output-to-string (stream)
+    (funcall (jtms-node-printer jtms) datum stream)))
+
 (defun print-node-status (node stream)
-  "Write one line's worth on NODE: its datum, label and immediate support.
-Return true when the support has antecedents to explain further."
-  (let ((support (node-support node)))
+  "Write one line's worth on NODE: its datum, label and immediate support (the
+informant and reasons written by the node printer). Return true when the support
+has antecedents to explain further."
+  (let ((support (node-support node)) (jtms (node-jtms node)))
     (write-string (node-string node) stream)
     (cond ((node-out-p node)
            (format stream " is OUT~[ (it has no justification)~:;: none of its ~:*~D ~
@@ -54,13 +60,16 @@ Return true when the support has antecedents to explain further."
                    (length (node-justifications node)))
            nil)
           ((eq support :enabled-assumption)
-           (format stream " is an enabled assumption~@[ (~A)~]."
-                   (node-enabling-reason node))
+           (format stream " is an enabled assumption~@[: ~A~]."
+                   (and (node-enabling-reason node)
+                        (datum-string jtms (node-enabling-reason node))))
            nil)
           ((null (justification-antecedents support))
-           (format stream " is a premise (~A)." (justification-informant support))
+           (format stream " is a premise (~A)."
+                   (datum-string jtms (justification-informant support)))
            nil)
-          (t (format stream " is IN, by ~A, from:" (justification-informant support))
+          (t (format stream " is IN, by ~A, from:"
+                     (datum-string jtms (justification-informant support)))
              t))))
 
 (defun why-node (node &optional (stream *standard-output*))
@@ -76,7 +85,7 @@ support and the antecedents. Returns NODE."
 (defun why (node &optional (stream *standard-output*))
   "Print NODE's whole justification tree on STREAM, one node per line, indented by
 depth, naming the informant of every justification and the reason of every enabled
-assumption. A node already explained higher up is shown once more with
+assumption (both written, like the data, by the JTMS's node printer). A node already explained higher up is shown once more with
 \"(explained above)\". Returns NODE."
   (let ((explained (make-hash-table :test #'eq)))
     (labels ((explain (node depth)
