@@ -229,7 +229,7 @@ to give APPLY-TRANSITION when it fires: (:deactivate KEY), (:activate KEY) or
 
 ;;; Template expansion
 
-(defparameter *template-depth-limit* 64
+(defconstant +template-depth-limit+ 64
   "How deeply template functions may expand into one another before the engine
 reports a loop.")
 
@@ -252,7 +252,7 @@ the algebra."
                         (cons (car form) (mapcar (lambda (x) (walk x depth)) (cdr form))))
                        (t (let ((registered (find-template kb (car form))))
                             (cond ((null registered) form)
-                                  ((> depth *template-depth-limit*)
+                                  ((> depth +template-depth-limit+)
                                    (fail form "Template functions expand into one another ~
                                                without end."))
                                   (t (walk (apply (template-function registered)
