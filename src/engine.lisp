@@ -63,8 +63,8 @@ knowledge base. Signals COMPONENT-DEPENDENCY-CYCLE when there is no such order."
   (mode-nodes '() :type list)            ; alist mode name -> (:mode KEY MODE) node
   (mode-supports '() :type list)         ; alist mode name -> entry antecedent lists
   (collections nil :type list)           ; alist ?var -> values, while active
-  (closure nil)                          ; the enabled (:collection ...) node
-  (closures (make-hash-table :test #'equal))  ; collections -> (node . belief nodes)
+  (closure nil)                          ; the current (closure-node . belief nodes)
+  (closures (make-hash-table :test #'equal))  ; (collections . belief nodes) -> closure
   (equation-justifications '() :type list)   ; justifications of equations it made
   (made (make-hash-table :test #'equal))      ; equation templates already expanded
   (expansions (make-hash-table :test #'equal))) ; expanded condition templates
@@ -188,7 +188,9 @@ there is none."
                (:instance (instance-node instance))
                (:activation (instance-activation-node instance))
                (:mode (cdr (assoc (third datum) (instance-mode-nodes instance))))
-               (:collection (car (gethash (third datum) (instance-closures instance)))))))
+               (:collection (loop for closure being the hash-values of (instance-closures instance)
+                                  when (equal datum (ames.tms:node-datum (car closure)))
+                                    return (car closure))))))
       (and (consp datum) (consp (cdr datum)) (symbolp (second datum))
            (let ((node (gethash (second datum) (model-entity-nodes model))))
              (and node (equal (ames.tms:node-datum node) datum) node)))))
@@ -632,7 +634,7 @@ its mode assumptions; and its qualitative assertions, justified by it."
   (let ((closure (instance-closure instance)))
     (when closure
       (setf (instance-closure instance) nil)
-      (retract model closure))))
+      (retract model (car closure)))))
 
 (defun set-mode (model instance mode reason)
   "Put INSTANCE in MODE: enable its assumption with REASON, retract the others."
@@ -688,18 +690,21 @@ the alist (?VAR . canonically sorted values), the nodes the beliefs that matched
 its closed-world assumption to the new values when they changed."
   (when (component-collection-arguments (instance-component instance))
     (multiple-value-bind (collections nodes) (current-collections model instance)
-      (unless (and (instance-closure instance) (equal collections (instance-collections instance)))
+      (unless (and (instance-closure instance)
+                   (equal collections (instance-collections instance))
+                   (equal nodes (cdr (instance-closure instance))))
         (forget-collections model instance)
-        (let ((entry (or (gethash collections (instance-closures instance))
-                         (setf (gethash collections (instance-closures instance))
-                               (cons (ames.tms:make-node
-                                      (model-jtms model)
-                                      (list :collection (instance-key instance) collections)
-                                      :assumption t)
-                                     nodes)))))
+        (let* ((memo (cons collections nodes))
+               (closure (or (gethash memo (instance-closures instance))
+                            (setf (gethash memo (instance-closures instance))
+                                  (cons (ames.tms:make-node
+                                         (model-jtms model)
+                                         (list :collection (instance-key instance) collections)
+                                         :assumption t)
+                                        nodes)))))
           (setf (instance-collections instance) collections
-                (instance-closure instance) (car entry))
-          (enable model (car entry)
+                (instance-closure instance) closure)
+          (enable model (car closure)
                   (list :closed-world
                         (mapcar (lambda (argument)
                                   (substitute-bindings (instance-bindings instance)
@@ -716,20 +721,16 @@ collected."
          (mode (instance-mode instance))
          (collection-variables (mapcar #'argument-variable
                                        (component-collection-arguments component)))
-         (closure-entry (and (instance-closure instance)
-                             (gethash (instance-collections instance)
-                                      (instance-closures instance)))))
+         (closure (instance-closure instance)))
     (flet ((make-equations (templates mode-name)
              (dolist (template templates)
                (let* ((reads-collections (intersection (form-variables template)
                                                        collection-variables))
-                      (memo (list template mode-name
-                                  (and reads-collections (instance-collections instance)))))
+                      (memo (list template mode-name (and reads-collections (car closure)))))
                  (unless (gethash memo (instance-made instance))
                    (setf (gethash memo (instance-made instance)) t)
                    (let ((base (append (list (instance-node instance))
-                                       (and reads-collections
-                                            (cons (car closure-entry) (cdr closure-entry))))))
+                                       (and reads-collections closure))))
                      (dolist (equation (expand-template model instance template :equation t))
                        (let ((node (equation-node model equation)))
                          (if mode-name

@@ -431,3 +431,34 @@ broken) and doors between random pairs of rooms."
                    (when (ames.engine:check-incremental model :signal nil)
                      (setf agree nil)))))
       (is-true agree))))
+
+(test a-collection-follows-its-beliefs-not-only-its-values
+  ;; Two sources assert beliefs that collect to the same value: when one source
+  ;; stops, the collection's value is unchanged but now rests on the other belief.
+  (let ((kb (ames.engine:make-knowledge-base)))
+    (ames.engine:register-template kb 'size (lambda (situation items)
+                                              (declare (ignore situation))
+                                              (length items)))
+    (ames.engine:defcomponent source (:knowledge-base kb)
+      "A running source supplies the shared main of its room."
+      (:arguments (?source :entity source :where (:room ?room :tag ?tag)))
+      (:activation (> (level ?source) 0))
+      (:deactivation (<= (level ?source) 0))
+      (:assert (supply main :into ?room :tag ?tag)))
+    (ames.engine:defcomponent supplies (:knowledge-base kb)
+      "A room counts its distinct supplies."
+      (:arguments (?room :entity room)
+                  (?all :collect ?s :matching (supply ?s :into ?room)))
+      (:equations (= (supplies ?room) (size ?all))))
+    (let ((model (ames.engine:build-model
+                  (ames.engine:make-engine kb)
+                  (ames.engine:make-situation '((room r) (source s1 :room r :tag a)
+                                                (source s2 :room r :tag b)))
+                  :decider (table-decider '(((level s1) . 1) ((level s2) . 1))))))
+      (is (equal '((= (supplies r) 1)) (ames.engine:model-equations model)))
+      (ames.engine:apply-transition model '((:deactivate (source s1))))
+      (is (equal '((= (supplies r) 1)) (ames.engine:model-equations model)))
+      (is (null (ames.engine:check-incremental model)))
+      (ames.engine:apply-transition model '((:deactivate (source s2))))
+      (is (equal '((= (supplies r) 0)) (ames.engine:model-equations model)))
+      (is (null (ames.engine:check-incremental model))))))
