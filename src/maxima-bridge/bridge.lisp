@@ -13,6 +13,9 @@
 (defconstant +sigint+ 2 "The signal that interrupts a busy GCL Maxima.")
 (defconstant +sigkill+ 9 "The signal that ends a wedged Maxima.")
 
+(defparameter *cache-limit* 100000
+  "When a bridge's cache holds this many answers, it is emptied before the next is stored.")
+
 (defparameter *server-file*
   (asdf:system-relative-pathname "ames" "src/maxima-bridge/maxima-server.lisp")
   "The Lisp file Maxima preloads: the request server.")
@@ -310,8 +313,11 @@ ASSUME-AND-RETRY), MAXIMA-TIMEOUT or MAXIMA-PROCESS-DIED."
         (return-from maxima-request answer)))
     (multiple-value-bind (status data) (request-with-restart bridge form datum)
       (ecase status
-        (:ok (let ((answer (first data)))
-               (when key (setf (gethash key (bridge-cache bridge)) answer))
+        (:ok (let ((answer (first data))
+                   (cache (bridge-cache bridge)))
+               (when key
+                 (when (>= (hash-table-count cache) *cache-limit*) (clrhash cache))
+                 (setf (gethash key cache) answer))
                answer))
         (:timeout
          (error 'maxima-timeout :seconds (bridge-timeout bridge) :datum datum
