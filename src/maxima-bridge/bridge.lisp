@@ -55,9 +55,14 @@ its name table, assumption scopes, cache and counters. Use a bridge from one thr
 
 (defun make-bridge (&key (timeout 20) (program "maxima"))
   "A new BRIDGE to Maxima. No process starts until the first request. TIMEOUT is the
-number of seconds one request may take (settable with (SETF BRIDGE-TIMEOUT))."
-  (check-type timeout (real (0)))
-  (check-type program string)
+number of seconds one request may take (settable with (SETF BRIDGE-TIMEOUT)); PROGRAM
+the command that starts Debian's GCL Maxima, searched on PATH.
+Signals INVALID-BRIDGE-ARGUMENT for a timeout that is not a positive number or a
+program that is not a string."
+  (unless (and (realp timeout) (plusp timeout))
+    (error 'invalid-bridge-argument :datum timeout :detail "the timeout must be a positive number of seconds"))
+  (unless (stringp program)
+    (error 'invalid-bridge-argument :datum program :detail "the program must be a string"))
   (make-instance 'bridge :timeout timeout :program program))
 
 (defmethod print-object ((bridge bridge) stream)
