@@ -13,6 +13,9 @@
 (defconstant +sigint+ 2 "The signal that interrupts a busy GCL Maxima.")
 (defconstant +sigkill+ 9 "The signal that ends a wedged Maxima.")
 
+(defparameter *cache-limit* 100000
+  "When a bridge's cache holds this many answers, it is emptied before the next is stored.")
+
 (defparameter *server-file*
   (asdf:system-relative-pathname "ames" "src/maxima-bridge/maxima-server.lisp")
   "The Lisp file Maxima preloads: the request server.")
@@ -52,9 +55,14 @@ its name table, assumption scopes, cache and counters. Use a bridge from one thr
 
 (defun make-bridge (&key (timeout 20) (program "maxima"))
   "A new BRIDGE to Maxima. No process starts until the first request. TIMEOUT is the
-number of seconds one request may take (settable with (SETF BRIDGE-TIMEOUT))."
-  (check-type timeout (real (0)))
-  (check-type program string)
+number of seconds one request may take (settable with (SETF BRIDGE-TIMEOUT)); PROGRAM
+the command that starts Debian's GCL Maxima, searched on PATH.
+Signals INVALID-BRIDGE-ARGUMENT for a timeout that is not a positive number or a
+program that is not a string."
+  (unless (and (realp timeout) (plusp timeout))
+    (error 'invalid-bridge-argument :datum timeout :detail "the timeout must be a positive number of seconds"))
+  (unless (stringp program)
+    (error 'invalid-bridge-argument :datum program :detail "the program must be a string"))
   (make-instance 'bridge :timeout timeout :program program))
 
 (defmethod print-object ((bridge bridge) stream)
@@ -310,8 +318,11 @@ ASSUME-AND-RETRY), MAXIMA-TIMEOUT or MAXIMA-PROCESS-DIED."
         (return-from maxima-request answer)))
     (multiple-value-bind (status data) (request-with-restart bridge form datum)
       (ecase status
-        (:ok (let ((answer (first data)))
-               (when key (setf (gethash key (bridge-cache bridge)) answer))
+        (:ok (let ((answer (first data))
+                   (cache (bridge-cache bridge)))
+               (when key
+                 (when (>= (hash-table-count cache) *cache-limit*) (clrhash cache))
+                 (setf (gethash key cache) answer))
                answer))
         (:timeout
          (error 'maxima-timeout :seconds (bridge-timeout bridge) :datum datum
