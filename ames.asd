@@ -57,7 +57,8 @@ frictionless translating rigid bodies evolve (after Leon Wong's 1994 MIT thesis)
                  (:file "engine")))
    (:module "kb" :pathname "src/kb/" :serial t
     :depends-on ("engine" "geometry")
-    :components ((:file "package")))
+    :components ((:file "package")
+                 (:file "mechanics")))
    (:module "simulator" :pathname "src/" :serial t
     :depends-on ("kb")
     :components ((:file "package")
@@ -65,7 +66,11 @@ frictionless translating rigid bodies evolve (after Leon Wong's 1994 MIT thesis)
                  (:file "scenario-numbers")
                  (:file "scenario")
                  (:file "scenario-reader")
-                 (:file "scenario-semantics"))))
+                 (:file "scenario-semantics")
+                 (:file "history")
+                 (:file "simulator")
+                 (:file "report")
+                 (:file "cli"))))
   :in-order-to ((test-op (test-op "ames/tests"))))
 
 (defsystem "ames/tests"

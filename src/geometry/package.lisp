@@ -33,7 +33,7 @@ which the normal force pushes the observer.")
    #:contact-tangent-angle #:contact-normal-angle
    #:position-on-contact-p #:contact-parameter
    ;; path coordinates
-   #:path-velocity #:path-acceleration
+   #:path-velocity #:path-acceleration #:differentiate
    ;; meeting and leaving contacts
    #:contact-meeting #:meeting #:meeting-contact #:meeting-gap #:meeting-rate
    #:meeting-extent #:meeting-conditions

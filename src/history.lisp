@@ -1,0 +1,60 @@
+;;;; src/history.lisp -- what a simulation returns: qualitative states and their history.
+;;;;
+;;;; A SIMULATION-HISTORY is the value of AMES:SIMULATE. It holds the validated scenario and one
+;;;; QUALITATIVE-STATE per period that one mathematical model describes. Every expression in it is
+;;;; in the prefix algebra over the scenario's parameters and the state-local time TAU.
+
+(in-package #:ames)
+
+(defclass qualitative-state ()
+  ((index :initarg :index :reader state-index
+          :documentation "0 for the first state, then 1, 2, ...")
+   (start :initarg :start :reader state-start
+          :documentation "Global time at which the state starts (an expression).")
+   (duration :initarg :duration :initform :forever :accessor state-duration
+             :documentation "How long the state lasts: an expression, :FOREVER, or
+(:NO-CLOSED-FORM ...) when the end is known only implicitly.")
+   (contacts :initarg :contacts :initform '() :reader state-contacts
+             :documentation "List of (BODY1 BODY2 :FEATURE F): the simple contacts that hold.")
+   (accelerations :initarg :accelerations :initform '() :accessor state-accelerations
+                  :documentation "List of (BODY (AX AY)) in the fixed frame.")
+   (forces :initarg :forces :initform '() :accessor state-forces
+           :documentation "List of (:NORMAL B1 B2 MAGNITUDE), (:GRAVITY B (FX FY)),
+(:EXTERNAL NAME B (FX FY)).")
+   (positions :initarg :positions :initform '() :accessor state-positions
+              :documentation "List of (BODY (X-of-TAU Y-of-TAU)).")
+   (velocities :initarg :velocities :initform '() :accessor state-velocities
+               :documentation "List of (BODY (VX-of-TAU VY-of-TAU)).")
+   (end-event :initarg :end-event :initform :none :accessor state-end-event
+              :documentation "How the state ends: (:LEAVES A B :ENDPOINT), (:LIFT-OFF A B),
+(:CONTACT A B), (:COLLISION A B), a list of simultaneous events (:SIMULTANEOUS E ...), or :NONE.")
+   (final-positions :initarg :final-positions :initform '() :accessor state-final-positions
+                    :documentation "List of (BODY (X Y)) at the end, or NIL when it never ends.")
+   (final-velocities :initarg :final-velocities :initform '()
+                     :accessor state-final-velocities
+                     :documentation "List of (BODY (VX VY)) at the end, or NIL.")
+   (notes :initarg :notes :initform '() :accessor state-notes
+          :documentation "Extra facts a person should know: energy integrals, numeric values
+under --set, contact-breaking positions ...; a plist."))
+  (:documentation "One qualitative state: a period over which one model describes the motion."))
+
+(defclass simulation-history ()
+  ((scenario :initarg :scenario :reader history-scenario
+             :documentation "The validated SCENARIO that was simulated.")
+   (states :initarg :states :initform '() :accessor history-states
+           :documentation "The QUALITATIVE-STATEs in order.")
+   (outcome :initarg :outcome :initform :complete :accessor history-outcome
+            :documentation ":COMPLETE (nothing more changes), :STATE-LIMIT, :TIME-LIMIT,
+:COLLISION (no collision model: the run ends there), or :AMBIGUOUS.")
+   (parameter-values :initarg :parameter-values :initform '()
+                     :reader history-parameter-values
+                     :documentation "Alist (PARAMETER . NUMBER) used for numeric values.")
+   (notes :initform '() :accessor history-notes
+          :documentation "A plist: :STOPPED-BY holds the condition that stopped the run early.")
+   (rederived :initform '() :accessor history-rederived
+              :documentation "How many component instances each transition re-derived."))
+  (:documentation "The value of SIMULATE: a scenario's qualitative states in order."))
+
+(defun body-entry (alist body)
+  "The value recorded for BODY in a state's per-body list such as STATE-ACCELERATIONS."
+  (second (assoc body alist)))

@@ -1,0 +1,235 @@
+;;;; src/kb/mechanics.lisp -- AMES's knowledge of frictionless translational mechanics.
+;;;;
+;;;; One DEFCOMPONENT per piece of the thesis's knowledge (sections 2.5.2-2.5.7 and figures
+;;;; 2-6 to 2-9). The simulator describes each state's situation with these entities:
+;;;;   (body NAME :fixed T-or-NIL :mass EXPR)
+;;;;   (gravity-field NAME :strength EXPR)                      pointing -y
+;;;;   (external-force NAME :on BODY :fx EXPR :fy EXPR)
+;;;;   (simple-contact K :observer A :obstacle B :geometry C)   C an ames.geometry contact
+;;;; and reads back equations over these quantity terms (fixed frame, cartesian unless said):
+;;;;   (acc B :x)  (vel B :x)  (pos B :x)        acceleration, velocity, position of body B
+;;;;   (vel0 B :x) (pos0 B :x)                   their values when the state starts
+;;;;   (rel-acc A B :x)                          A's acceleration measured in B's frame
+;;;;   (fx KIND ...) (fy KIND ...)               components of the force named (KIND ...)
+;;;;   (normal-force K)                          magnitude of contact K's normal force
+;;;;   (path-acc K :tangential) (path-acc K :normal)   A's relative acceleration in contact K's
+;;;;                                             path coordinates (normal: toward the obstacle)
+;;;;   (path-position K) (path-speed K)          arc length s and its rate along contact K
+;;;;   (contact-gap K)                           how far A is from contact K's locus
+;;;; Forces are named by lists: (gravity B), (external F), (normal K) on the observer and
+;;;; (reaction K) on the obstacle.
+
+(in-package #:ames.kb)
+
+(defvar *mechanics* (make-knowledge-base :name "mechanics"
+                                         :documentation "Frictionless translational mechanics (Wong 1994, chapter 2).")
+  "The mechanics knowledge base. The components below register themselves in it.")
+
+(defun mechanics-knowledge-base ()
+  "The knowledge base of AMES's mechanics."
+  *mechanics*)
+
+;;; Template functions: how the components read the situation
+
+(defun entity-named (situation name)
+  "The entity NAME of SITUATION (the simulator always describes every name it uses)."
+  (find-entity situation name))
+
+(defun contact-geometry (situation contact)
+  "The ames.geometry simple contact behind the situation's contact entity CONTACT."
+  (entity-property (entity-named situation contact) :geometry))
+
+(defun axis-component (vector axis)
+  "The :X or :Y component of the two-element VECTOR."
+  (ecase axis (:x (first vector)) (:y (second vector))))
+
+(defun force-component-term (head)
+  "A template function turning a force name such as (normal 3) into the quantity term
+(HEAD normal 3)."
+  (lambda (situation force)
+    (declare (ignore situation))
+    (cons head force)))
+
+(defun sum-of-forces (situation forces axis)
+  "Template SUM-OF: the sum of the AXIS components of the forces named in FORCES."
+  (declare (ignore situation))
+  (let ((head (ecase axis (:x 'fx) (:y 'fy))))
+    (if forces (cons '+ (mapcar (lambda (force) (cons head force)) forces)) 0)))
+
+(defun along-contact (function)
+  "A template function of (CONTACT AXIS) giving the AXIS component of the vector
+FUNCTION returns for the contact's geometry at its current arc length (path-position)."
+  (lambda (situation contact axis)
+    (axis-component (funcall function (contact-geometry situation contact)
+                             (list 'path-position contact))
+                    axis)))
+
+(defun contact-touching (situation contact)
+  "Template TOUCHING: the relation saying that the observer lies on CONTACT's locus."
+  (declare (ignore situation))
+  (list '= (list 'contact-gap contact) 0))
+
+(defun contact-endpoints-passed (situation contact)
+  "Template PAST-AN-END: the relation saying that the observer has moved past an end of
+CONTACT's locus; an empty disjunction (never) for a whole line or circle."
+  (let* ((geometry (contact-geometry situation contact))
+         (s (list 'path-position contact)))
+    (if (member (ames.geometry:contact-kind geometry) '(:line :circle))
+        '(or)
+        (list 'or (list '< s 0) (list '> s (ames.geometry:contact-length geometry))))))
+
+(defun register-mechanics-templates (kb)
+  "Register in KB the template functions the mechanics components use."
+  (flet ((property (key)
+           (lambda (situation name) (entity-property (entity-named situation name) key))))
+    (register-template kb 'mass (property :mass)
+                       :documentation "A body's mass.")
+    (register-template kb 'strength (property :strength)
+                       :documentation "A gravitational field's strength.")
+    (register-template kb 'force-value
+                       (lambda (situation force axis)
+                         (entity-property (entity-named situation force)
+                                          (ecase axis (:x :fx) (:y :fy))))
+                       :documentation "A component of a given external force.")
+    (register-template kb 'force-x (force-component-term 'fx)
+                       :documentation "The x component of a named force.")
+    (register-template kb 'force-y (force-component-term 'fy)
+                       :documentation "The y component of a named force.")
+    (register-template kb 'sum-of #'sum-of-forces
+                       :documentation "The sum of one component of a list of forces.")
+    (register-template kb 'outward-normal (along-contact #'ames.geometry:contact-outward-normal)
+                       :documentation "The unit normal along which the obstacle pushes.")
+    (register-template kb 'inward-normal (along-contact #'ames.geometry:contact-inward-normal)
+                       :documentation "The unit normal pointing toward the obstacle.")
+    (register-template kb 'unit-tangent (along-contact #'ames.geometry:contact-unit-tangent)
+                       :documentation "The unit tangent of a contact's locus.")
+    (register-template kb 'curvature
+                       (lambda (situation contact)
+                         (ames.geometry:contact-curvature (contact-geometry situation contact)))
+                       :documentation "The signed curvature of a contact's locus.")
+    (register-template kb 'touching #'contact-touching
+                       :documentation "The observer lies on the contact's locus.")
+    (register-template kb 'past-an-end #'contact-endpoints-passed
+                       :documentation "The observer has moved past an end of the locus.")))
+
+(register-mechanics-templates *mechanics*)
+
+;;; Contact analysis (section 2.5.2, figure 2-6)
+
+(defcomponent contact (:knowledge-base *mechanics*)
+  "Two bodies touch while the observer's position relative to the obstacle lies on a
+simple contact of its configuration-space obstacle. The contact ends when the observer
+moves past an end of the contact's locus, or when keeping it would need an attractive
+normal force (figure 2-6)."
+  (:arguments (?contact :entity simple-contact :where (:observer ?body1 :obstacle ?body2)))
+  (:activation (touching ?contact))
+  (:deactivation (< (normal-force ?contact) 0)
+                 (past-an-end ?contact))
+  (:assert (in-contact ?body1 ?body2 :along ?contact)))
+
+;;; Kinematics (section 2.5.3)
+
+(defcomponent kinematic-restriction (:knowledge-base *mechanics*)
+  "A contact restricts the observer's motion relative to the obstacle to the contact's
+locus, a one-dimensional path: measured in the path's coordinates, the relative
+acceleration has no normal part but the centripetal one, speed squared times the
+curvature (section 2.5.3, with the velocity constraint differentiated)."
+  (:arguments (?contact :belief (in-contact ?body1 ?body2 :along ?contact)))
+  (:assert (restricted ?body1 :wrt ?body2 :along ?contact)
+           (path-coordinates ?contact :of ?body1 :wrt ?body2))
+  (:equations (= (path-acc ?contact :normal)
+                 (* (expt (path-speed ?contact) 2) (curvature ?contact)))))
+
+(defcomponent fixed-body (:knowledge-base *mechanics*)
+  "A body glued to the fixed frame does not move: a zero-dimensional restriction
+(section 2.5.3). Its reaction forces take whatever values the others need."
+  (:arguments (?body :entity body :where (:fixed t)))
+  (:equations (= (acc ?body :x) 0)
+              (= (acc ?body :y) 0)))
+
+;;; Dynamics (section 2.5.4, figure 2-7)
+
+(defcomponent normal-force (:knowledge-base *mechanics*)
+  "A contact brings an action-reaction pair of normal forces. Each is directed along the
+normal of the contact's locus; its magnitude is not given: it is the compensating force
+that the kinematic restriction fixes (section 2.5.4)."
+  (:arguments (?contact :belief (in-contact ?body1 ?body2 :along ?contact)))
+  (:assert (force (normal ?contact) :type normal :from ?body2 :on ?body1 :contact ?contact)
+           (force (reaction ?contact) :type normal :from ?body1 :on ?body2 :contact ?contact))
+  (:equations (= (force-x (normal ?contact))
+                 (* (normal-force ?contact) (outward-normal ?contact :x)))
+              (= (force-y (normal ?contact))
+                 (* (normal-force ?contact) (outward-normal ?contact :y)))))
+
+(defcomponent terrestrial-gravitation (:knowledge-base *mechanics*)
+  "A terrestrial field pulls every free body down, -y, with its mass times the field's
+strength (figure 2-7)."
+  (:arguments (?body :entity body :where (:fixed nil))
+              (?field :entity gravity-field))
+  (:assert (force (gravity ?body) :type gravity :from ?field :on ?body))
+  (:equations (= (force-x (gravity ?body)) 0)
+              (= (force-y (gravity ?body)) (- (* (mass ?body) (strength ?field))))))
+
+(defcomponent external-force (:knowledge-base *mechanics*)
+  "A constant force from outside the scenario acts on a body with the value the user
+gave (section 2.5.4)."
+  (:arguments (?force :entity external-force :where (:on ?body)))
+  (:assert (force (external ?force) :type external :from environment :on ?body))
+  (:equations (= (force-x (external ?force)) (force-value ?force :x))
+              (= (force-y (external ?force)) (force-value ?force :y))))
+
+;;; Newtonian mechanics (section 2.5.5, figures 2-8 and 2-9)
+
+(defcomponent newtons-second-law (:knowledge-base *mechanics*)
+  "The sum of every force on a free body equals its mass times its acceleration in the
+fixed frame, in cartesian coordinates (figure 2-8)."
+  (:arguments (?body :entity body :where (:fixed nil))
+              (?forces :collect ?f :matching (force ?f :on ?body)))
+  (:equations (= (sum-of ?forces :x) (* (mass ?body) (acc ?body :x)))
+              (= (sum-of ?forces :y) (* (mass ?body) (acc ?body :y)))))
+
+(defcomponent newtons-third-law (:knowledge-base *mechanics*)
+  "The two forces of one interaction, of one type and between the same two bodies in
+opposite directions, are vector negations of each other (figure 2-9)."
+  (:arguments (?force1 :belief (force ?force1 :type ?type :from ?body2 :on ?body1
+                                      :contact ?contact))
+              (?force2 :belief (force ?force2 :type ?type :from ?body1 :on ?body2
+                                      :contact ?contact)))
+  (:equations (= (force-x ?force1) (- (force-x ?force2)))
+              (= (force-y ?force1) (- (force-y ?force2)))))
+
+(defcomponent derivative-relations (:knowledge-base *mechanics*)
+  "Velocity is the time derivative of position and acceleration that of velocity. While
+the acceleration is constant over the state (every contact straight), they integrate to
+the familiar polynomials in the state's time tau (section 2.5.5). On a curved contact
+the simulator integrates the path-coordinate equation instead."
+  (:arguments (?body :entity body :where (:fixed nil)))
+  (:equations (= (vel ?body :x) (+ (vel0 ?body :x) (* (acc ?body :x) tau)))
+              (= (vel ?body :y) (+ (vel0 ?body :y) (* (acc ?body :y) tau)))
+              (= (pos ?body :x) (+ (pos0 ?body :x) (* (vel0 ?body :x) tau)
+                                   (* 1/2 (acc ?body :x) (expt tau 2))))
+              (= (pos ?body :y) (+ (pos0 ?body :y) (* (vel0 ?body :y) tau)
+                                   (* 1/2 (acc ?body :y) (expt tau 2))))))
+
+;;; Reference frames (section 2.5.6) and coordinate systems (section 2.5.7)
+
+(defcomponent reference-frame-conversion (:knowledge-base *mechanics*)
+  "A body's acceleration in the fixed frame is its acceleration measured in another
+body's frame plus that frame's own acceleration in the fixed frame (section 2.5.6).
+Instantiated for every pair whose relative motion a contact describes."
+  (:arguments (?contact :belief (restricted ?body1 :wrt ?body2 :along ?contact)))
+  (:assert (frame-conversion ?body1 :wrt ?body2))
+  (:equations (= (acc ?body1 :x) (+ (rel-acc ?body1 ?body2 :x) (acc ?body2 :x)))
+              (= (acc ?body1 :y) (+ (rel-acc ?body1 ?body2 :y) (acc ?body2 :y)))))
+
+(defcomponent path-coordinate-conversion (:knowledge-base *mechanics*)
+  "Path coordinates on a contact's locus measure the relative acceleration along the
+unit tangent and the inward normal at the observer's arc length s; rotating them back
+gives cartesian components in the obstacle's frame (section 2.5.7, figure 2-4)."
+  (:arguments (?contact :belief (path-coordinates ?contact :of ?body1 :wrt ?body2)))
+  (:equations (= (rel-acc ?body1 ?body2 :x)
+                 (+ (* (path-acc ?contact :tangential) (unit-tangent ?contact :x))
+                    (* (path-acc ?contact :normal) (inward-normal ?contact :x))))
+              (= (rel-acc ?body1 ?body2 :y)
+                 (+ (* (path-acc ?contact :tangential) (unit-tangent ?contact :y))
+                    (* (path-acc ?contact :normal) (inward-normal ?contact :y))))))

@@ -1,0 +1,161 @@
+;;;; src/report.lisp -- a simulation history as a report for people and as a readable s-expression.
+
+(in-package #:ames)
+
+(defun history-sexp (history)
+  "HISTORY as the s-expression of the scenario language's output section:
+(:scenario NAME :states ((:index 0 :start ... :duration ... :contacts ... :accelerations
+... :forces ... :positions ... :end-event ... :final-positions ... :final-velocities ...)
+...) :outcome ...), with extra keys :velocities, :events and :numeric where known."
+  (list* :scenario (scenario-name (history-scenario history))
+         :states (mapcar #'state-sexp (history-states history))
+         :outcome (history-outcome history)
+         (let ((stopped (getf (history-notes history) :stopped-by)))
+           (when (typep stopped 'ambiguous-transition)
+             (list :ambiguity (list :missing-fact (ambiguous-transition-missing-fact stopped)
+                                    :candidates (ambiguous-transition-candidates stopped)))))))
+
+(defun state-sexp (state)
+  "One QUALITATIVE-STATE as a plist (see HISTORY-SEXP)."
+  (let ((notes (state-notes state)))
+    (append
+     (list :index (state-index state)
+           :start (state-start state)
+           :duration (state-duration state)
+           :contacts (state-contacts state)
+           :accelerations (state-accelerations state)
+           :forces (state-forces-of state)
+           :positions (state-positions state)
+           :velocities (state-velocities state)
+           :end-event (state-end-event state)
+           :final-positions (state-final-positions state)
+           :final-velocities (state-final-velocities state))
+     (loop for (key value) on notes by #'cddr
+           unless (eq key :numeric-duration)
+             append (list key value)))))
+
+(defun state-forces-of (state)
+  "The forces slot of STATE (named apart from the report function STATE-FORCES)."
+  (slot-value state 'forces))
+
+(defun print-history-sexp (history stream)
+  "Print HISTORY-SEXP of HISTORY readably on STREAM, symbols in lower case."
+  (with-standard-io-syntax
+    (let ((*package* (find-package '#:ames-scenario))
+          (*print-case* :downcase)
+          (*print-readably* nil)
+          (*print-right-margin* 100)
+          (*print-pretty* t))
+      (pprint (history-sexp history) stream)
+      (terpri stream))))
+
+(defun infix (expression)
+  "A compact one-line rendering of EXPRESSION for people (prefix algebra, lower case)."
+  (let ((*print-case* :downcase) (*print-pretty* nil) (*package* (find-package '#:ames-scenario)))
+    (labels ((render (x)
+               (cond ((and (consp x) (member (first x) '(+ * -)) (rest x))
+                      (if (and (eq (first x) '-) (null (cddr x)))
+                          (format nil "-~A" (render-factor (second x)))
+                          (format nil "~{~A~^ ~}"
+                                  (loop for (a . more) on (rest x)
+                                        for first = t then nil
+                                        collect (if first (render-factor a) (render-factor a))
+                                        when more collect (string-downcase (string (first x)))))))
+                     ((and (consp x) (eq (first x) '/))
+                      (format nil "~A/~A" (render-factor (second x))
+                              (if (cddr x) (render-factor (cons '* (cddr x))) "")))
+                     ((and (consp x) (eq (first x) 'expt))
+                      (format nil "~A^~A" (render-factor (second x)) (render-factor (third x))))
+                     ((and (consp x) (member (first x) '(sin cos tan asin acos atan sqrt exp log)))
+                      (format nil "~(~A~)(~{~A~^, ~})" (first x) (mapcar #'render (rest x))))
+                     ((consp x) (format nil "~S" x))
+                     ((and (rationalp x) (not (integerp x))) (format nil "~A" x))
+                     (t (format nil "~A" x))))
+             (render-factor (x)
+               (if (and (consp x) (member (first x) '(+ - / *)) (cddr x))
+                   (format nil "(~A)" (render x))
+                   (render x))))
+      (render expression))))
+
+(defun print-history-text (history stream)
+  "Print HISTORY on STREAM as a report for people: state by state, the contacts named by
+their features, the forces, accelerations and trajectories, the end event and its time."
+  (let* ((scenario (history-scenario history))
+         (*print-case* :downcase))
+    (format stream "~&Scenario ~(~A~)~@[: ~A~]~%" (scenario-name scenario)
+            (scenario-description scenario))
+    (when (history-parameter-values history)
+      (format stream "  with ~{~{~(~A~) = ~A~}~^, ~}~%"
+              (mapcar (lambda (e) (list (car e) (cdr e))) (history-parameter-values history))))
+    (dolist (state (history-states history))
+      (let ((numeric (getf (state-notes state) :numeric)))
+        (format stream "~%State ~D, from t = ~A" (state-index state) (infix (state-start state)))
+        (when (and numeric (getf numeric :start)) (format stream " (~,4F)" (getf numeric :start)))
+        (format stream "~%  contacts:~:[ none~;~]~%" (state-contacts state))
+        (dolist (contact (state-contacts state))
+          (destructuring-bind (b1 b2 &key feature observer-feature) contact
+            (format stream "    ~(~A~) on ~(~A~): ~A against ~A~%" b1 b2
+                    (feature-phrase observer-feature) (feature-phrase feature))))
+        (format stream "  forces:~%")
+        (dolist (force (state-forces-of state))
+          (case (first force)
+            (:normal (format stream "    normal force of ~(~A~) on ~(~A~): N = ~A~%"
+                             (third force) (second force) (infix (fourth force))))
+            (:gravity (format stream "    weight of ~(~A~): (~A, ~A)~%" (second force)
+                              (infix (first (third force))) (infix (second (third force)))))
+            (:external (format stream "    external force ~(~A~) on ~(~A~): (~A, ~A)~%"
+                               (second force) (third force)
+                               (infix (first (fourth force))) (infix (second (fourth force)))))))
+        (format stream "  accelerations (fixed frame):~%")
+        (dolist (entry (state-accelerations state))
+          (format stream "    ~(~A~): (~A, ~A)~%" (first entry)
+                  (infix (first (second entry))) (infix (second (second entry)))))
+        (format stream "  positions over the state (tau from its start):~%")
+        (dolist (entry (state-positions state))
+          (format stream "    ~(~A~): ~A~%" (first entry)
+                  (if (and (consp (second entry)) (keywordp (first (second entry))))
+                      (second entry)
+                      (format nil "(~A, ~A)" (infix (first (second entry)))
+                              (infix (second (second entry)))))))
+        (loop for (key value) on (state-notes state) by #'cddr
+              unless (member key '(:numeric :numeric-duration))
+                do (format stream "  ~(~A~): ~S~%" key value))
+        (let ((duration (state-duration state)))
+          (format stream "  ends: ~A~%" (event-phrase (state-end-event state)))
+          (format stream "  duration: ~A~@[ (~,4F)~]~%"
+                  (cond ((eq duration :forever) "forever")
+                        ((consp duration) (if (keywordp (first duration))
+                                              (format nil "~S" duration) (infix duration)))
+                        (t (infix duration)))
+                  (and numeric (realp (getf numeric :duration)) (getf numeric :duration))))
+        (when (state-final-positions state)
+          (format stream "  at the end:~%")
+          (loop for (body position) in (state-final-positions state)
+                for velocity = (second (assoc body (state-final-velocities state)))
+                for numbers = (and numeric (second (assoc body (getf numeric :final-positions))))
+                do (format stream "    ~(~A~) at (~A, ~A)~@[ ~A~], velocity (~A, ~A)~%" body
+                           (infix (first position)) (infix (second position))
+                           (and numbers (every #'realp numbers)
+                                (format nil "= (~,4F, ~,4F)" (first numbers) (second numbers)))
+                           (infix (first velocity)) (infix (second velocity)))))))
+    (format stream "~%Outcome: ~(~A~)~%" (history-outcome history))
+    (let ((stopped (getf (history-notes history) :stopped-by)))
+      (when stopped (format stream "  ~A~%" stopped)))))
+
+(defun feature-phrase (feature)
+  "A phrase naming a contact FEATURE such as (:edge 1 :of wedge)."
+  (if feature (ames.geometry:feature-description feature) "?"))
+
+(defun event-phrase (event)
+  "A phrase for an end EVENT."
+  (if (eq event :none)
+      "never (nothing more changes)"
+      (destructuring-bind (kind &rest more) event
+        (case kind
+          (:leaves (format nil "~(~A~) leaves ~(~A~) past the end of the contact" (first more) (second more)))
+          (:lift-off (format nil "~(~A~) lifts off ~(~A~) (the normal force would turn attractive)"
+                             (first more) (second more)))
+          (:contact (format nil "~(~A~) comes into contact with ~(~A~)" (first more) (second more)))
+          (:collision (format nil "~(~A~) collides with ~(~A~) (no collision model: the simulation ends)"
+                              (first more) (second more)))
+          (t (format nil "~(~S~)" event))))))

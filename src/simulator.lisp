@@ -1,0 +1,698 @@
+;;;; src/simulator.lisp -- the qualitative-state simulator (thesis sections 2.5.8 and 3.2.3).
+;;;;
+;;;; For each qualitative state:
+;;;;   1. the contacts: from the geometry for the first state, from the transition afterwards;
+;;;;   2. the model: the mechanics knowledge base instantiated by the engine (every belief
+;;;;      justified in its JTMS);
+;;;;   3. the solution, through the Maxima bridge: accelerations and contact forces; on straight
+;;;;      contacts motion is polynomial in the state's time TAU; on a curved contact the
+;;;;      path-coordinate equation is integrated (closed form, or the energy integral);
+;;;;   4. termination: the earliest of the termination conditions, proven earliest under the
+;;;;      scenario's assumptions, or an AMBIGUOUS-TRANSITION naming the missing fact;
+;;;;   5. the next state: positions and velocities carry over, and what changed qualitatively
+;;;;      comes from the condition that fired, applied to the model incrementally (checked
+;;;;      against a rebuild from scratch on every transition).
+
+(in-package #:ames)
+
+;;; Conditions
+
+(define-condition simulation-error (ames-error) ()
+  (:documentation "The simulation cannot go on. DATUM names the state, model or fact."))
+
+(define-condition ambiguous-transition (simulation-error)
+  ((candidates :initarg :candidates :reader ambiguous-transition-candidates
+               :documentation "The termination candidates, each (EVENT TIME).")
+   (missing-fact :initarg :missing-fact :reader ambiguous-transition-missing-fact
+                 :documentation "A relation the assumptions do not decide."))
+  (:documentation "Which termination condition comes first cannot be decided under the
+scenario's assumptions (branching on it comes later). Restart: STOP-SIMULATION.")
+  (:report (lambda (condition stream)
+             (format stream "Ambiguous transition: which event ends the state is not decided by the assumptions.~%  missing fact: ~S~%  candidates:~{~%    ~S~}"
+                     (ambiguous-transition-missing-fact condition)
+                     (ambiguous-transition-candidates condition)))))
+
+(define-condition unsolvable-model (simulation-error) ()
+  (:documentation "The state's model has no solution, or no unique one."))
+
+(define-condition unsupported-situation (simulation-error) ()
+  (:documentation "The state is outside what AMES can model yet (named in DETAIL)."))
+
+;;; The run: everything one simulation works with
+
+(defclass run ()
+  ((scenario :initarg :scenario :reader run-scenario)
+   (bridge :initarg :bridge :reader run-bridge)
+   (shapes :initarg :shapes :reader run-shapes
+           :documentation "Alist body name -> ames.geometry shape.")
+   (contacts :initarg :contacts :reader run-contacts
+             :documentation "Alist contact entity name -> ames.geometry simple contact.")
+   (model :initform nil :accessor run-model)
+   (positions :initarg :positions :accessor run-positions
+              :documentation "Alist body -> (X Y) at the start of the current state.")
+   (velocities :initarg :velocities :accessor run-velocities
+               :documentation "Alist body -> (VX VY) at the start of the current state.")
+   (time :initform 0 :accessor run-time
+         :documentation "Global time at which the current state starts.")
+   (rederived :initform '() :accessor run-rederived
+              :documentation "Instances re-derived at each transition (for benchmarks)."))
+  (:documentation "The working context of one simulation."))
+
+(defun run-body (run name)
+  "The scenario body called NAME."
+  (find-scenario-body name (run-scenario run)))
+
+(defun body-fixed-p (run name)
+  "True when body NAME is glued to the fixed frame."
+  (scenario-body-fixed-p (run-body run name)))
+
+(defun contact-geometry (run contact)
+  "The ames.geometry simple contact behind the contact entity CONTACT."
+  (cdr (assoc contact (run-contacts run))))
+
+(defun tidy (run expression &optional (strategy :full))
+  "EXPRESSION simplified by Maxima."
+  (ames.maxima:simplify (run-bridge run) expression :strategy strategy))
+
+;;; Vectors of expressions
+
+(defun vec+ (a b) (list `(+ ,(first a) ,(first b)) `(+ ,(second a) ,(second b))))
+(defun vec- (a b) (list `(- ,(first a) ,(first b)) `(- ,(second a) ,(second b))))
+(defun vec-dot (a b) `(+ (* ,(first a) ,(first b)) (* ,(second a) ,(second b))))
+
+;;; Setting a run up
+
+(defun contact-entity-name (index)
+  "The symbol naming the INDEXth simple contact in the engine's situation."
+  (intern (format nil "CONTACT-~D" index) '#:ames))
+
+(defun body-shapes (scenario bridge)
+  "Alist body name -> geometry shape for every body of SCENARIO."
+  (mapcar (lambda (body)
+            (cons (scenario-body-name body)
+                  (ames.geometry:parse-shape (scenario-body-shape body) :bridge bridge)))
+          (scenario-bodies scenario)))
+
+(defun all-simple-contacts (scenario shapes bridge)
+  "Alist contact name -> geometry contact for every pair of bodies not both fixed."
+  (let ((contacts '()) (index 0))
+    (loop for (body-1 . rest) on (scenario-bodies scenario)
+          do (dolist (body-2 rest)
+               (unless (and (scenario-body-fixed-p body-1) (scenario-body-fixed-p body-2))
+                 (let* ((name-1 (scenario-body-name body-1))
+                        (name-2 (scenario-body-name body-2))
+                        (pair (ames.geometry:make-contact-pair
+                               name-1 (cdr (assoc name-1 shapes))
+                               name-2 (cdr (assoc name-2 shapes))
+                               :bridge bridge)))
+                   (dolist (contact (ames.geometry:pair-contacts pair))
+                     (push (cons (contact-entity-name index) contact) contacts)
+                     (incf index))))))
+    (nreverse contacts)))
+
+(defun situation-entities (run)
+  "The entities the mechanics knowledge base reads (see src/kb/mechanics.lisp)."
+  (let ((scenario (run-scenario run)))
+    (append
+     (mapcar (lambda (body)
+               (list 'ames.kb:body (scenario-body-name body)
+                     :fixed (and (scenario-body-fixed-p body) t)
+                     :mass (scenario-body-mass body)))
+             (scenario-bodies scenario))
+     (when (scenario-gravity scenario)
+       (list (list 'ames.kb:gravity-field 'earth :strength (scenario-gravity scenario))))
+     (mapcar (lambda (force)
+               (list 'ames.kb:external-force (scenario-force-name force)
+                     :on (scenario-force-body force)
+                     :fx (first (scenario-force-value force))
+                     :fy (second (scenario-force-value force))))
+             (scenario-forces scenario))
+     (mapcar (lambda (entry)
+               (let ((contact (cdr entry)))
+                 (list 'ames.kb:simple-contact (car entry)
+                       :observer (ames.geometry:contact-observer contact)
+                       :obstacle (ames.geometry:contact-obstacle contact)
+                       :geometry contact)))
+             (run-contacts run)))))
+
+;;; Relative motion on contacts
+
+(defun body-position (run body) (second (assoc body (run-positions run))))
+(defun body-velocity (run body) (second (assoc body (run-velocities run))))
+
+(defun relative-initial-state (run contact)
+  "The observer's position and velocity relative to the obstacle at the state's start."
+  (let ((geometry (contact-geometry run contact)))
+    (values (vec- (body-position run (ames.geometry:contact-observer geometry))
+                  (body-position run (ames.geometry:contact-obstacle geometry)))
+            (vec- (body-velocity run (ames.geometry:contact-observer geometry))
+                  (body-velocity run (ames.geometry:contact-obstacle geometry))))))
+
+(defun touching-now (run contact)
+  "Whether CONTACT holds at the start of the state: the relative position lies on its
+locus and the relative velocity has no normal part. :TRUE or :FALSE."
+  (let ((geometry (contact-geometry run contact)))
+    (multiple-value-bind (q v) (relative-initial-state run contact)
+      (if (not (ames.geometry:position-on-contact-p geometry q))
+          :false
+          (let* ((s (ames.geometry:contact-parameter geometry q))
+                 (normal (ames.geometry:contact-outward-normal geometry s)))
+            (if (eq (ames.maxima:decide (run-bridge run) `(= ,(vec-dot v normal) 0)) :true)
+                :true
+                :false))))))
+
+(defun state-decider (run)
+  "The decider the engine uses for the quantitative activation conditions of this state:
+TOUCHING relations go to the geometry, everything else to Maxima."
+  (lambda (relation)
+    (if (and (consp relation) (eq (first relation) '=)
+             (consp (second relation)) (eq (first (second relation)) 'ames.kb:contact-gap))
+        (touching-now run (second (second relation)))
+        (ames.maxima:decide (run-bridge run) relation))))
+
+;;; Solving a state's model
+
+(defun derivative-equation-p (model equation)
+  "True when EQUATION comes from a DERIVATIVE-RELATIONS instance of MODEL."
+  (some (lambda (instance)
+          (and (eq (ames.engine:component-name (ames.engine:instance-component instance))
+                   'ames.kb::derivative-relations)
+               (member equation (ames.engine:instance-equations instance) :test #'equal)))
+        (ames.engine:model-active-instances model)))
+
+(defun state-value-term-p (term)
+  "True for the quantity terms that are the state's given values, not unknowns."
+  (member (first term) '(ames.kb:pos0 ames.kb:vel0 ames.kb:path-position ames.kb:path-speed)))
+
+(defun active-contacts (run)
+  "The contact entities whose CONTACT instance is active in the current model."
+  (loop for (name) in (run-contacts run)
+        for instance = (ames.engine:find-instance (run-model run) (list 'ames.kb::contact name))
+        when (and instance (ames.engine:instance-active-p instance))
+          collect name))
+
+(defun solve-instantaneous-model (run equations)
+  "Solve the model's EQUATIONS (without the derivative relations) for every unknown
+quantity term. Returns the solution alist. Signals UNSOLVABLE-MODEL."
+  (let ((unknowns (remove-if #'state-value-term-p
+                             (remove-if-not #'quantity-term-p
+                                            (remove-duplicates
+                                             (mapcan #'expression-variables equations)
+                                             :test #'equal)))))
+    (let ((solutions (handler-case
+                         (ames.maxima:solve-equations (run-bridge run) equations unknowns)
+                       (ames.maxima:solve-failed (condition)
+                         (error 'unsolvable-model :datum equations
+                                                  :detail (format nil "Maxima cannot solve the state's model: ~A"
+                                                                  (ames-error-detail condition)))))))
+      (cond ((null solutions)
+             (error 'unsolvable-model :datum equations
+                                      :detail "The state's model has no solution."))
+            ((rest solutions)
+             (error 'unsolvable-model :datum equations
+                                      :detail "The state's model has several solutions."))
+            (t (mapcar (lambda (entry) (cons (car entry) (tidy run (cdr entry))))
+                       (first solutions)))))))
+
+(defun solution-value (solution term)
+  "The value of TERM in SOLUTION, or NIL."
+  (cdr (assoc term solution :test #'equal)))
+
+;;; Motion over a state with straight contacts: polynomials in TAU
+
+(defstruct (motion (:constructor make-motion (body position velocity acceleration)))
+  "How one body moves over a state: expressions in TAU (constant for a fixed body)."
+  body position velocity acceleration)
+
+(defun polynomial-motions (run solution derivative-equations)
+  "The MOTION of every body over a state whose accelerations are constant: the
+derivative relations of the model, with the state's initial values and the solved
+accelerations substituted."
+  (mapcar
+   (lambda (body)
+     (let ((name (scenario-body-name body)))
+       (if (scenario-body-fixed-p body)
+           (make-motion name (body-position run name) '(0 0) '(0 0))
+           (let* ((acceleration (list (solution-value solution `(ames.kb:acc ,name :x))
+                                      (solution-value solution `(ames.kb:acc ,name :y))))
+                  (bindings (list (cons `(ames.kb:pos0 ,name :x) (first (body-position run name)))
+                                  (cons `(ames.kb:pos0 ,name :y) (second (body-position run name)))
+                                  (cons `(ames.kb:vel0 ,name :x) (first (body-velocity run name)))
+                                  (cons `(ames.kb:vel0 ,name :y) (second (body-velocity run name)))
+                                  (cons `(ames.kb:acc ,name :x) (first acceleration))
+                                  (cons `(ames.kb:acc ,name :y) (second acceleration)))))
+             (flet ((integrated (term)
+                      (let ((equation (find term derivative-equations
+                                            :key #'relation-lhs :test #'equal)))
+                        (unless equation
+                          (error 'unsolvable-model :datum term
+                                                   :detail "The model has no derivative relation for this quantity."))
+                        (tidy run (substitute-expressions bindings (relation-rhs equation))))))
+               (make-motion name
+                            (list (integrated `(ames.kb:pos ,name :x))
+                                  (integrated `(ames.kb:pos ,name :y)))
+                            (list (integrated `(ames.kb:vel ,name :x))
+                                  (integrated `(ames.kb:vel ,name :y)))
+                            acceleration))))))
+   (scenario-bodies (run-scenario run))))
+
+(defun find-motion (motions body)
+  "BODY's MOTION among MOTIONS."
+  (find body motions :key #'motion-body))
+
+(defun at-time (expression time)
+  "EXPRESSION with TAU replaced by TIME."
+  (substitute-expressions (list (cons 'tau time)) expression))
+
+(defun relative-trajectory (motions geometry)
+  "The observer's position relative to the obstacle of contact GEOMETRY, over TAU."
+  (vec- (motion-position (find-motion motions (ames.geometry:contact-observer geometry)))
+        (motion-position (find-motion motions (ames.geometry:contact-obstacle geometry)))))
+
+(defun path-position-over-time (run motions contact)
+  "The arc length s(TAU) along the straight active CONTACT."
+  (let* ((geometry (contact-geometry run contact))
+         (q0 (relative-initial-state run contact))
+         (s0 (ames.geometry:contact-parameter geometry q0))
+         (tangent (ames.geometry:contact-unit-tangent geometry s0)))
+    (tidy run `(+ ,s0 ,(vec-dot (vec- (relative-trajectory motions geometry) q0) tangent)))))
+
+;;; When does a termination condition fire?
+
+(defun decide (run relation)
+  "RELATION decided under the scenario's assumptions: :TRUE, :FALSE or :UNKNOWN."
+  (ames.maxima:decide (run-bridge run) relation))
+
+(defun time-derivative (expression)
+  "d EXPRESSION / d TAU."
+  (ames.geometry:differentiate expression 'tau))
+
+(defun first-time-negative (run g)
+  "The earliest time TAU >= 0 from which G(TAU) < 0 (G a polynomial in TAU or a
+constant). Returns (values :AT TIME), (values :NEVER) or (values :UNKNOWN FACT) where
+FACT is the relation the assumptions do not decide."
+  (let* ((g (tidy run g))
+         (g0 (tidy run (at-time g 0))))
+    (case (decide run `(< ,g0 0))
+      (:true (return-from first-time-negative (values :at 0)))
+      (:unknown (return-from first-time-negative (values :unknown `(< ,g0 0)))))
+    (when (free-of-p 'tau g)
+      (return-from first-time-negative (values :never)))
+    ;; G starts at zero: it goes negative at once when its first non-zero derivative is
+    (when (eq (decide run `(= ,g0 0)) :true)
+      (let ((derivative g))
+        (loop repeat 3
+              do (setf derivative (tidy run (time-derivative derivative)))
+                 (let ((d0 (tidy run (at-time derivative 0))))
+                   (case (decide run `(< ,d0 0))
+                     (:true (return-from first-time-negative (values :at 0)))
+                     (:unknown (return-from first-time-negative (values :unknown `(< ,d0 0)))))
+                   (unless (eq (decide run `(= ,d0 0)) :true) (return))))))
+    (multiple-value-bind (root status) (ames.maxima:earliest-root (run-bridge run) g 'tau
+                                                                   :after 0 :strictly t)
+      (cond ((eq root :none) (values :never))
+            ((eq root :unknown)
+             (values :unknown `(:earliest-root-of (= ,g 0) :candidates ,status)))
+            (t
+             (let ((slope (tidy run (at-time (time-derivative g) root))))
+               (case (decide run `(< ,slope 0))
+                 (:true (values :at (tidy run root)))
+                 (:false (if (eq (decide run `(= ,slope 0)) :true)
+                             (values :never) ; touches zero and turns back
+                             (values :never)))
+                 (t (values :unknown `(< ,slope 0))))))))))
+
+(defun quantity-over-time (run motions solution term)
+  "The value over TAU of the quantity TERM in a termination condition."
+  (case (first term)
+    (ames.kb:path-position (path-position-over-time run motions (second term)))
+    (t (or (solution-value solution term)
+           (error 'unsolvable-model :datum term
+                                    :detail "A termination condition names a quantity the model does not give.")))))
+
+(defun relation-firing-time (run motions solution relation)
+  "When RELATION, a termination relation over the state's quantities, first holds:
+(values :AT TIME), (values :NEVER) or (values :UNKNOWN FACT)."
+  (flet ((over-time (x) (substitute-expressions
+                         (mapcar (lambda (term) (cons term (quantity-over-time run motions solution term)))
+                                 (remove-if-not #'quantity-term-p (expression-variables x)))
+                         x)))
+    (ecase (first relation)
+      (or (let ((best nil) (unknown nil))
+            (dolist (part (rest relation))
+              (multiple-value-bind (status value) (relation-firing-time run motions solution part)
+                (case status
+                  (:at (if (or (null best) (eq (decide run `(< ,value ,best)) :true))
+                           (setf best value)
+                           (unless (eq (decide run `(<= ,best ,value)) :true)
+                             (setf unknown `(< ,value ,best)))))
+                  (:unknown (setf unknown value)))))
+            (cond (unknown (values :unknown unknown))
+                  (best (values :at best))
+                  (t (values :never)))))
+      ((< <=) (first-time-negative run (over-time `(- ,(relation-lhs relation) ,(relation-rhs relation)))))
+      ((> >=) (first-time-negative run (over-time `(- ,(relation-rhs relation) ,(relation-lhs relation))))))))
+
+(defun contact-meeting-time (run motions contact)
+  "When the relative trajectory first meets the potential CONTACT from its exterior:
+(values :AT TIME RATE), (values :NEVER) or (values :UNKNOWN FACT). RATE is the
+approach rate of the gap at that time (negative: a collision; zero: a grazing contact)."
+  (let* ((geometry (contact-geometry run contact))
+         (meeting (ames.geometry:contact-meeting geometry (relative-trajectory motions geometry)))
+         (gap (tidy run (ames.geometry:meeting-gap meeting)))
+         (after 0))
+    ;; a gap already closed at the start is not a meeting: look strictly after the start,
+    ;; dividing out TAU so that the bridge sees the lowest degree
+    (loop repeat 3
+          while (and (not (free-of-p 'tau gap))
+                     (eq (decide run `(= ,(tidy run (at-time gap 0)) 0)) :true))
+          do (setf gap (tidy run `(/ ,gap tau))))
+    (block search
+     (loop repeat 4
+          do (multiple-value-bind (root status)
+                 (ames.maxima:earliest-root (run-bridge run) gap 'tau :after after :strictly t)
+               (cond ((eq root :none) (return-from search (values :never)))
+                     ((eq root :unknown)
+                      (return-from search (values :unknown `(:earliest-root-of (= ,gap 0) :candidates ,status))))
+                     (t
+                      (let* ((root (tidy run root))
+                             (rate (tidy run (at-time (ames.geometry:meeting-rate meeting) root)))
+                             (extent (mapcar (lambda (r) (at-time r root))
+                                             (ames.geometry:meeting-extent meeting)))
+                             (checks (cons `(<= ,rate 0) extent))
+                             (answers (mapcar (lambda (r) (decide run r)) checks)))
+                        (cond ((every (lambda (a) (eq a :true)) answers)
+                               (return-from search (values :at root rate)))
+                              ((member :unknown answers)
+                               (return-from search (values :unknown (nth (position :unknown answers) checks))))
+                              (t (setf after root))))))))
+     (values :unknown `(:meeting ,contact)))))
+
+;;; The candidates that could end a state, and the earliest of them
+
+(defstruct (candidate (:constructor make-candidate (event time change)))
+  "A termination condition that fires at TIME (an expression in the parameters): the
+EVENT it is for the report and the CHANGE it stands for in the model."
+  event time change)
+
+(defun contact-bodies (run contact)
+  "The observer and obstacle names of CONTACT, as a list."
+  (let ((geometry (contact-geometry run contact)))
+    (list (ames.geometry:contact-observer geometry) (ames.geometry:contact-obstacle geometry))))
+
+(defun mentions-p (head relation)
+  "True when RELATION contains a quantity term headed by HEAD."
+  (some (lambda (v) (and (consp v) (eq (first v) head))) (expression-variables relation)))
+
+(defun termination-candidates (run motions solution)
+  "Every termination condition of the current model that fires, as CANDIDATEs, and the
+facts that could not be decided for the others (a list of relations)."
+  (let ((candidates '()) (unknown '()))
+    (dolist (condition (ames.engine:model-termination-conditions (run-model run)))
+      (let* ((change (ames.engine:termination-condition-change condition))
+             (relation (ames.engine:termination-condition-relation condition))
+             (key (second change))
+             (contact (and (consp key) (eq (first key) 'ames.kb::contact) (second key))))
+        (multiple-value-bind (status time rate)
+            (if (eq (ames.engine:termination-condition-kind condition) :activation)
+                (contact-meeting-time run motions contact)
+                (relation-firing-time run motions solution relation))
+          (case status
+            (:at
+             (let ((event
+                     (cond ((eq (ames.engine:termination-condition-kind condition) :activation)
+                            (list* (if (eq (decide run `(< ,rate 0)) :true) :collision :contact)
+                                   (contact-bodies run contact)))
+                           ((mentions-p 'ames.kb:normal-force relation)
+                            (list* :lift-off (contact-bodies run contact)))
+                           (contact
+                            (append (list :leaves) (contact-bodies run contact) (list :endpoint)))
+                           (t (list :mode-change key)))))
+               (push (make-candidate event time change) candidates)))
+            (:unknown (push (list time change) unknown))))))
+    (values (nreverse candidates) (nreverse unknown))))
+
+(defun earliest-candidates (run candidates unknown)
+  "The candidates that fire first, all at one time, proven earliest. Signals
+AMBIGUOUS-TRANSITION (restart STOP-SIMULATION) when that cannot be decided."
+  (flet ((ambiguous (fact)
+           (error 'ambiguous-transition
+                  :datum fact :missing-fact fact
+                  :candidates (append (mapcar (lambda (c) (list (candidate-event c) (candidate-time c)))
+                                              candidates)
+                                      (mapcar (lambda (u) (list (second u) :undecided (first u)))
+                                              unknown))
+                  :detail "Which event ends the state is not decided by the assumptions.")))
+    (when unknown (ambiguous (first (first unknown))))
+    (when candidates
+      (let ((first (find-if (lambda (c)
+                              (every (lambda (o)
+                                       (or (eq o c)
+                                           (eq (decide run `(<= ,(candidate-time c) ,(candidate-time o)))
+                                               :true)))
+                                     candidates))
+                            candidates)))
+        (unless first
+          (let ((pair (loop for c in candidates
+                            thereis (loop for o in candidates
+                                          unless (or (eq o c)
+                                                     (member (decide run `(<= ,(candidate-time c) ,(candidate-time o)))
+                                                             '(:true :false)))
+                                            return (list c o)))))
+            (ambiguous (if pair
+                           `(<= ,(candidate-time (first pair)) ,(candidate-time (second pair)))
+                           (candidate-time (first candidates))))))
+        (remove-if-not (lambda (o)
+                         (or (eq o first)
+                             (eq (decide run `(= ,(candidate-time o) ,(candidate-time first))) :true)
+                             (ames.maxima:equivalent-p (run-bridge run) (candidate-time o)
+                                                       (candidate-time first))))
+                       candidates)))))
+
+;;; One straight state
+
+(defun state-forces (run solution contacts)
+  "The forces of the state for the report."
+  (let ((scenario (run-scenario run)))
+    (append
+     (mapcar (lambda (contact)
+               (list* :normal (append (contact-bodies run contact)
+                                      (list (solution-value solution `(ames.kb:normal-force ,contact))))))
+             contacts)
+     (when (scenario-gravity scenario)
+       (loop for body in (scenario-moving-bodies scenario)
+             for name = (scenario-body-name body)
+             collect (list :gravity name
+                           (list 0 (tidy run `(- (* ,(scenario-body-mass body)
+                                                     ,(scenario-gravity scenario))))))))
+     (mapcar (lambda (force)
+               (list :external (scenario-force-name force) (scenario-force-body force)
+                     (scenario-force-value force)))
+             (scenario-forces scenario)))))
+
+(defun state-contact-descriptions (run contacts)
+  "Each active contact as (BODY1 BODY2 :FEATURE F :OBSERVER-FEATURE G)."
+  (mapcar (lambda (contact)
+            (let ((geometry (contact-geometry run contact)))
+              (append (contact-bodies run contact)
+                      (list :feature (ames.geometry:contact-obstacle-feature geometry)
+                            :observer-feature (ames.geometry:contact-observer-feature geometry)))))
+          contacts))
+
+(defun end-event-of (events)
+  "The one event a state reports as its end: a collision first, else the first."
+  (or (find :collision events :key #'first) (first events)))
+
+(defun analyse-straight-state (run index equations derivative-equations contacts)
+  "Solve and end the state INDEX whose contacts are all straight. Returns the
+QUALITATIVE-STATE and the fired CANDIDATEs (NIL when the state lasts forever)."
+  (let* ((solution (solve-instantaneous-model run equations))
+         (motions (polynomial-motions run solution derivative-equations)))
+    (multiple-value-bind (candidates unknown) (termination-candidates run motions solution)
+      (let* ((fired (earliest-candidates run candidates unknown))
+             (end (and fired (candidate-time (first fired))))
+             (state (make-instance
+                     'qualitative-state
+                     :index index :start (run-time run)
+                     :duration (or end :forever)
+                     :contacts (state-contact-descriptions run contacts)
+                     :accelerations (mapcar (lambda (m) (list (motion-body m) (motion-acceleration m)))
+                                            motions)
+                     :forces (state-forces run solution contacts)
+                     :positions (mapcar (lambda (m) (list (motion-body m) (motion-position m))) motions)
+                     :velocities (mapcar (lambda (m) (list (motion-body m) (motion-velocity m))) motions)
+                     :end-event (if fired (end-event-of (mapcar #'candidate-event fired)) :none)
+                     :notes (when (rest fired)
+                              (list :events (mapcar #'candidate-event fired))))))
+        (when fired
+          (setf (state-final-positions state)
+                (mapcar (lambda (m) (list (motion-body m)
+                                          (mapcar (lambda (x) (tidy run (at-time x end)))
+                                                  (motion-position m))))
+                        motions)
+                (state-final-velocities state)
+                (mapcar (lambda (m) (list (motion-body m)
+                                          (mapcar (lambda (x) (tidy run (at-time x end)))
+                                                  (motion-velocity m))))
+                        motions)))
+        (values state fired)))))
+
+;;; The state loop
+
+(defun curved-contact-p (run contact)
+  "True when CONTACT's locus is an arc or a circle."
+  (member (ames.geometry:contact-kind (contact-geometry run contact)) '(:arc :circle)))
+
+(defun analyse-state (run index)
+  "Build, solve and end the current state. Returns the QUALITATIVE-STATE and the fired
+CANDIDATEs."
+  (let* ((model (run-model run))
+         (all (ames.engine:model-equations model))
+         (derivative (remove-if-not (lambda (e) (derivative-equation-p model e)) all))
+         (instantaneous (set-difference all derivative :test #'equal))
+         (contacts (active-contacts run)))
+    (if (some (lambda (c) (curved-contact-p run c)) contacts)
+        (analyse-curved-state run index instantaneous contacts)
+        (analyse-straight-state run index instantaneous derivative contacts))))
+
+(defun initial-motion-state (scenario)
+  "The alists body -> position and body -> velocity at the start of SCENARIO."
+  (values (mapcar (lambda (body) (list (scenario-body-name body) (scenario-body-position body)))
+                  (scenario-bodies scenario))
+          (mapcar (lambda (body) (list (scenario-body-name body)
+                                       (or (scenario-body-velocity body) '(0 0))))
+                  (scenario-bodies scenario))))
+
+(defun enter-next-state (run state fired &key (check-incremental t))
+  "Carry the final positions and velocities of STATE over, and apply the changes the
+FIRED candidates stand for to the model, incrementally (checked against a rebuild from
+scratch when CHECK-INCREMENTAL)."
+  (setf (run-positions run) (state-final-positions state)
+        (run-velocities run) (state-final-velocities state)
+        (run-time run) (tidy run `(+ ,(run-time run) ,(state-duration state))))
+  (let ((changes (remove-duplicates (mapcar #'candidate-change fired) :test #'equal)))
+    (multiple-value-bind (model report)
+        (ames.engine:apply-transition (run-model run) changes :decider (state-decider run))
+      (declare (ignore model))
+      (push (ames.engine:transition-report-rederived-count report) (run-rederived run)))
+    (when check-incremental
+      (ames.engine:check-incremental (run-model run)))))
+
+(defvar *bridge* nil
+  "The current Maxima bridge of the REPL and the command line, made on first use.")
+
+(defun current-bridge ()
+  "The current Maxima bridge, made on first use."
+  (or *bridge* (setf *bridge* (ames.maxima:make-bridge))))
+
+(defparameter *default-state-limit* 12
+  "How many states a scenario runs when its (simulate ...) clause sets no :states.")
+
+(defun simulate (scenario &key (bridge (current-bridge)) parameter-values
+                            (check-incremental t))
+  "Simulate SCENARIO (a SCENARIO object, or a scenario form as in a file) and return its
+SIMULATION-HISTORY. BRIDGE is the Maxima bridge (by default the current one).
+PARAMETER-VALUES, an alist (PARAMETER-NAME . NUMBER) matched by name, adds numeric
+values to the report. CHECK-INCREMENTAL compares every incrementally updated model with
+a rebuild from scratch.
+Signals SCENARIO-ERROR for a defective scenario, AMBIGUOUS-TRANSITION (restart
+STOP-SIMULATION, which returns the history so far) when the assumptions do not decide
+which event ends a state, UNSOLVABLE-MODEL and UNSUPPORTED-SITUATION, and the Maxima
+bridge's conditions."
+  (let ((scenario (if (scenario-p scenario) scenario (parse-scenario scenario))))
+    (check-scenario scenario bridge)
+    (ames.maxima:with-assumptions (bridge (scenario-assumption-relations scenario))
+      (multiple-value-bind (positions velocities) (initial-motion-state scenario)
+        (let* ((shapes (body-shapes scenario bridge))
+               (run (make-instance 'run :scenario scenario :bridge bridge :shapes shapes
+                                        :contacts (all-simple-contacts scenario shapes bridge)
+                                        :positions positions :velocities velocities))
+               (situation (ames.engine:make-situation (situation-entities run) :data run))
+               (history (make-instance 'simulation-history
+                                       :scenario scenario
+                                       :parameter-values (resolve-parameter-values
+                                                          scenario parameter-values)))
+               (limit (or (scenario-states scenario) *default-state-limit*)))
+          (setf (run-model run)
+                (ames.engine:build-model (ames.engine:make-engine (ames.kb:mechanics-knowledge-base))
+                                         situation :decider (state-decider run)))
+          (restart-case
+              (loop for index from 0
+                    do (when (>= index limit)
+                         (setf (history-outcome history) :state-limit)
+                         (return))
+                       (multiple-value-bind (state fired) (analyse-state run index)
+                         (setf (history-states history)
+                               (append (history-states history) (list state)))
+                         (cond ((null fired)
+                                (setf (history-outcome history) :complete)
+                                (return))
+                               ((find :collision fired :key (lambda (c) (first (candidate-event c))))
+                                (setf (history-outcome history) :collision)
+                                (return))
+                               (t (enter-next-state run state fired
+                                                    :check-incremental check-incremental)))))
+            (stop-simulation (&optional condition)
+              :report "Stop the simulation here and return the states so far."
+              (setf (history-outcome history) (if (typep condition 'ambiguous-transition)
+                                                  :ambiguous
+                                                  :stopped))
+              (setf (getf (history-notes history) :stopped-by) condition)))
+          (add-numeric-values history bridge)
+          (setf (history-rederived history) (reverse (run-rederived run)))
+          history)))))
+
+(defun stop-simulation (&optional condition)
+  "Invoke the STOP-SIMULATION restart: end the simulation and return the history so far."
+  (invoke-restart 'stop-simulation condition))
+
+;;; Numbers beside the formulas
+
+(defun resolve-parameter-values (scenario settings)
+  "The alist (PARAMETER . NUMBER) for SETTINGS, an alist whose keys are parameter
+symbols or names (strings), matched by name. Signals SCENARIO-ERROR naming a setting
+that is not a parameter of SCENARIO."
+  (mapcar (lambda (setting)
+            (let ((parameter (find-scenario-parameter (car setting) scenario)))
+              (unless parameter
+                (error 'undeclared-symbol-error
+                       :scenario (scenario-name scenario) :datum (car setting)
+                       :detail (format nil "~A is not a parameter of this scenario" (car setting))))
+              (cons (scenario-parameter-name parameter) (cdr setting))))
+          settings))
+
+(defun numeric-or-nil (bridge expression values)
+  "The number EXPRESSION takes under VALUES, or NIL when it has none (a symbol left over,
+or not a real)."
+  (and (not (keywordp expression))
+       (handler-case (ames.maxima:numeric-value bridge expression values)
+         (ames.maxima:numeric-evaluation-failed () nil))))
+
+(defun add-numeric-values (history bridge)
+  "When HISTORY has parameter values, record in each state's notes (:NUMERIC plist) the
+numeric start, duration and final positions and velocities."
+  (let ((values (history-parameter-values history)))
+    (when values
+      (dolist (state (history-states history))
+        (flet ((number-of (x) (numeric-or-nil bridge x values))
+               (numbers-of (alist) (mapcar (lambda (entry)
+                                             (list (first entry)
+                                                   (mapcar (lambda (x) (numeric-or-nil bridge x values))
+                                                           (second entry))))
+                                           alist)))
+          (setf (getf (state-notes state) :numeric)
+                (list :start (number-of (state-start state))
+                      :duration (let ((d (state-duration state)))
+                                  (if (consp d)
+                                      (or (getf (state-notes state) :numeric-duration) d)
+                                      (number-of d)))
+                      :final-positions (numbers-of (state-final-positions state))
+                      :final-velocities (numbers-of (state-final-velocities state)))))))))
+
+;;; A state on a curved contact
+
+(defun analyse-curved-state (run index equations contacts)
+  "Solve and end a state with a curved contact (see the file header)."
+  (declare (ignore index equations))
+  (error 'unsupported-situation :datum contacts
+                                :detail "A state on a curved contact is not supported yet."))
