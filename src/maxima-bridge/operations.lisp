@@ -297,7 +297,45 @@ is there or the form is not linear in it."
     (when (and (eq verdict :unknown) (member operator '(= /=))
                (equivalent-p bridge (relation-lhs relation) (relation-rhs relation)))
       (setf verdict (if (eq operator '=) :true :false)))
+    (when (eq verdict :unknown)
+      (setf verdict (decide-by-order-substitution bridge relation)))
     verdict))
+
+(defvar *substituting-orders* nil
+  "True while DECIDE-BY-ORDER-SUBSTITUTION works, so that it does not recurse.")
+
+(defun order-facts (bridge relation)
+  "The facts in force of the form X > Y (or Y < X) where X is a variable of RELATION and
+Y an expression free of X: the orderings Maxima's sign() does not use inside sums."
+  (loop for fact in (current-assumptions bridge)
+        for operator = (expression-operator fact)
+        for (big small) = (case operator
+                            ((> >=) (list (relation-lhs fact) (relation-rhs fact)))
+                            ((< <=) (list (relation-rhs fact) (relation-lhs fact))))
+        when (and big (variable-symbol-p big) (free-of-p big small)
+                  (not (numberp small)) (not (free-of-p big relation)))
+          collect (list big small (member operator '(>= <=)))))
+
+(defun decide-by-order-substitution (bridge relation)
+  "Decide RELATION once more after writing each ordered variable X (a fact X > Y in force,
+Y not a number) as Y + D with D > 0 fresh: sums such as mb g (l1 - l2)^2 + f (l1 - l2)
+then show their sign term by term. Sound: every admissible X is some Y + D. :UNKNOWN when
+there is no such fact."
+  (let ((orders (and (not *substituting-orders*) (order-facts bridge relation))))
+    (if (null orders)
+        :unknown
+        (let* ((*substituting-orders* t)
+               (deltas (loop for order in orders
+                             collect (make-symbol (format nil "~A-EXCESS" (first order)))))
+               (bindings (loop for (big small) in orders
+                               for delta in deltas
+                               collect (cons big (list '+ small delta))))
+               (facts (loop for (nil nil weak) in orders
+                            for delta in deltas
+                            collect (list (if weak '>= '>) delta 0))))
+          (call-with-assumptions bridge facts
+                                 (lambda ()
+                                   (decide bridge (substitute-expressions bindings relation))))))))
 
 (defun decide (bridge relation)
   "Decide RELATION (a relation of the algebra, or AND / OR / NOT of relations) under the
