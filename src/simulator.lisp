@@ -690,9 +690,223 @@ numeric start, duration and final positions and velocities."
                       :final-velocities (numbers-of (state-final-velocities state)))))))))
 
 ;;; A state on a curved contact
+;;;
+;;; On an arc the acceleration changes with the position, so the motion is not polynomial in
+;;; TAU. The model is solved at a general arc length s and speed w (the path coordinates of
+;;; section 2.5.7), which gives s'' = F(s) for the path-coordinate ODE and the normal force
+;;; N(s, w). The bridge integrates the ODE: in closed form where Maxima can, otherwise as the
+;;; energy integral w^2 = E(s), and N(s) follows by putting E(s) for w^2 (thesis 2.6.3).
+;;; The state ends where N(s) reaches zero (lift-off) or at an end of the arc, whichever the
+;;; observer reaches first in its direction of motion. The time of that end has no closed
+;;; form in general: the state says so, and gives a number when parameter values are known.
+;;; Supported: one free body on one curved contact with a fixed obstacle, and no other
+;;; contact the body could meet (others are reported as UNSUPPORTED-SITUATION).
+
+(defconstant +arc-length+ 'arc-length
+  "The variable standing for the arc length s along a curved contact.")
+
+(defconstant +arc-speed+ 'arc-speed
+  "The variable standing for the speed ds/dtau along a curved contact.")
+
+(defun check-curved-state-supported (run contacts)
+  "Signal UNSUPPORTED-SITUATION unless the state is one free body on one curved contact
+with a fixed obstacle and nothing else it could meet. Returns that contact."
+  (flet ((unsupported (detail)
+           (error 'unsupported-situation :datum (state-contact-descriptions run contacts)
+                                         :detail detail)))
+    (let* ((curved (remove-if-not (lambda (c) (curved-contact-p run c)) contacts))
+           (contact (first curved))
+           (free (scenario-moving-bodies (run-scenario run))))
+      (unless (and (= (length curved) 1) (= (length contacts) 1))
+        (unsupported "A curved contact together with other contacts is not supported yet."))
+      (destructuring-bind (observer obstacle) (contact-bodies run contact)
+        (unless (body-fixed-p run obstacle)
+          (unsupported "A curved contact against a moving body is not supported yet."))
+        (unless (and (= (length free) 1) (eq (scenario-body-name (first free)) observer))
+          (unsupported "A curved contact while other bodies move is not supported yet."))
+        (when (some (lambda (entry)
+                      (and (not (eq (car entry) contact))
+                           (member observer (contact-bodies run (car entry)))
+                           (not (eq (ames.geometry:contact-obstacle (cdr entry)) obstacle))))
+                    (run-contacts run))
+          (unsupported "A body on a curved contact that could meet another body is not supported yet.")))
+      contact)))
+
+(defun speed-free (run expression energy)
+  "EXPRESSION with the arc speed's square replaced by the energy integral ENERGY (the
+speed enters the model only through the centripetal term)."
+  (tidy run (substitute-expressions (list (cons +arc-speed+ `(sqrt ,energy))) expression)))
+
+(defun gauss-legendre-nodes ()
+  "Sixteen-point Gauss-Legendre nodes and weights on [0, 1]."
+  (let ((x '(0.0950125098376374d0 0.2816035507792589d0 0.4580167776572274d0 0.6178762444026438d0
+             0.7554044083550030d0 0.8656312023878318d0 0.9445750230732326d0 0.9894009349916499d0))
+        (w '(0.1894506104550685d0 0.1826034150449236d0 0.1691565193950025d0 0.1495959888165767d0
+             0.1246289712555339d0 0.0951585116824928d0 0.0622535239386479d0 0.0271524594117541d0)))
+    (loop for xi in x for wi in w
+          append (list (cons (/ (- 1 xi) 2) (/ wi 2)) (cons (/ (+ 1 xi) 2) (/ wi 2))))))
+
+(defun numeric-travel-time (run energy s0 s1 values)
+  "The time to travel from arc length S0 to S1 when the speed squared is ENERGY (in
++ARC-LENGTH+), with parameter VALUES: the integral of ds / sqrt(ENERGY), computed with
+s = s0 + (s1 - s0) u^2 so that a start at rest is no singularity. NIL when a value is not
+a real number."
+  (let* ((bridge (run-bridge run))
+         (start (numeric-or-nil bridge s0 values))
+         (end (numeric-or-nil bridge s1 values)))
+    (when (and start end)
+      (let ((span (- end start)) (total 0d0))
+        (loop for (u . weight) in (gauss-legendre-nodes)
+              for s = (+ start (* span u u))
+              for e = (numeric-or-nil bridge energy (acons +arc-length+ s values))
+              do (unless (and e (plusp e)) (return-from numeric-travel-time nil))
+                 (incf total (* weight (/ (* 2 (abs span) u) (sqrt e)))))
+        total))))
 
 (defun analyse-curved-state (run index equations contacts)
-  "Solve and end a state with a curved contact (see the file header)."
-  (declare (ignore index equations))
-  (error 'unsupported-situation :datum contacts
-                                :detail "A state on a curved contact is not supported yet."))
+  "Solve and end the state INDEX in which one free body slides on a curved contact (see
+the section header). Returns the QUALITATIVE-STATE and the fired CANDIDATEs."
+  (let* ((contact (check-curved-state-supported run contacts))
+         (geometry (contact-geometry run contact))
+         (s-term `(ames.kb:path-position ,contact))
+         (w-term `(ames.kb:path-speed ,contact))
+         (symbols (list (cons s-term +arc-length+) (cons w-term +arc-speed+)))
+         (solution (mapcar (lambda (entry)
+                             (cons (car entry) (substitute-expressions symbols (cdr entry))))
+                           (solve-instantaneous-model run equations)))
+         (tangential (solution-value solution `(ames.kb:path-acc ,contact :tangential)))
+         (normal (solution-value solution `(ames.kb:normal-force ,contact))))
+    (destructuring-bind (observer obstacle) (contact-bodies run contact)
+      (multiple-value-bind (q0 v0) (relative-initial-state run contact)
+        (let* ((s0 (ames.geometry:contact-parameter geometry q0))
+               (w0 (tidy run (vec-dot v0 (ames.geometry:contact-unit-tangent geometry s0))))
+               (ode (ames.maxima:solve-autonomous-ode (run-bridge run) tangential +arc-length+
+                                                      :velocity +arc-speed+
+                                                      :initial-position s0 :initial-velocity w0))
+               (energy (tidy run (ames.maxima:ode-solution-speed-squared ode)))
+               (normal-along (speed-free run normal energy))
+               (direction (let ((sign (decide run `(> ,w0 0))))
+                            (cond ((eq sign :true) 1)
+                                  ((eq (decide run `(< ,w0 0)) :true) -1)
+                                  ((eq (decide run `(> ,(at-arc tangential s0) 0)) :true) 1)
+                                  ((eq (decide run `(< ,(at-arc tangential s0) 0)) :true) -1)
+                                  (t (error 'ambiguous-transition
+                                            :datum w0 :missing-fact `(> ,w0 0) :candidates '()
+                                            :detail "The direction of motion on the curve is not decided.")))))
+               (candidates (curved-candidates run contact normal-along s0 direction)))
+          (let* ((first (and candidates (first (sort-by-arc run candidates s0 direction))))
+                 (s1 (and first (candidate-time first)))
+                 (zero-duration (and s1 (eq (decide run `(= ,s1 ,s0)) :true)))
+                 (end-point (and s1 (vec+ (body-position run obstacle)
+                                          (ames.geometry:contact-point geometry s1))))
+                 (end-speed (and s1 (tidy run `(* ,direction (sqrt ,(at-arc energy s1))))))
+                 (end-velocity (and s1 (mapcar (lambda (x) (tidy run `(* ,end-speed ,x)))
+                                               (ames.geometry:contact-unit-tangent geometry s1))))
+                 (position-on-path (vec+ (body-position run obstacle)
+                                         (ames.geometry:contact-point geometry +arc-length+)))
+                 (state (make-instance
+                         'qualitative-state
+                         :index index :start (run-time run)
+                         :duration (cond ((null s1) :forever)
+                                         (zero-duration 0)
+                                         (t `(:no-closed-form :from-arc-length ,s0 :to-arc-length ,s1)))
+                         :contacts (state-contact-descriptions run contacts)
+                         :accelerations
+                         (mapcar (lambda (body)
+                                   (let ((name (scenario-body-name body)))
+                                     (list name
+                                           (if (eq name observer)
+                                               (list (speed-free run (solution-value solution `(ames.kb:acc ,name :x)) energy)
+                                                     (speed-free run (solution-value solution `(ames.kb:acc ,name :y)) energy))
+                                               '(0 0)))))
+                                 (scenario-bodies (run-scenario run)))
+                         :forces (cons (list :normal observer obstacle normal-along)
+                                       (rest (state-forces run solution contacts)))
+                         :positions (mapcar (lambda (body)
+                                              (let ((name (scenario-body-name body)))
+                                                (list name (if (eq name observer)
+                                                               (list :on-path (mapcar (lambda (x) (tidy run x)) position-on-path)
+                                                                     :arc-length +arc-length+)
+                                                               (body-position run name)))))
+                                            (scenario-bodies (run-scenario run)))
+                         :end-event (if first (candidate-event first) :none)
+                         :notes (list :path-coordinates
+                                      (list :arc-length-from s0
+                                            :tangential-acceleration (tidy run tangential)
+                                            :energy-integral `(= (expt ,+arc-speed+ 2) ,energy)
+                                            :normal-force normal-along
+                                            :ode (ames.maxima:ode-solution-kind ode))))))
+            (when first
+              (setf (state-final-positions state)
+                    (mapcar (lambda (body)
+                              (let ((name (scenario-body-name body)))
+                                (list name (if (eq name observer)
+                                               (mapcar (lambda (x) (tidy run x)) end-point)
+                                               (body-position run name)))))
+                            (scenario-bodies (run-scenario run)))
+                    (state-final-velocities state)
+                    (mapcar (lambda (body)
+                              (let ((name (scenario-body-name body)))
+                                (list name (if (eq name observer) end-velocity '(0 0)))))
+                            (scenario-bodies (run-scenario run))))
+              (setf (getf (state-notes state) :lift-off-arc-length) s1))
+            (values state (and first (list first)))))))))
+
+(defun at-arc (expression s)
+  "EXPRESSION at arc length S."
+  (substitute-expressions (list (cons +arc-length+ s)) expression))
+
+(defun curved-candidates (run contact normal-along s0 direction)
+  "The ways the curved state on CONTACT can end, as CANDIDATEs whose TIME slot holds the
+arc length where they happen: lift-off where the normal force NORMAL-ALONG (a function of
+the arc length) reaches zero, and the arc's ends."
+  (let* ((geometry (contact-geometry run contact))
+         (bodies (contact-bodies run contact))
+         (change (list :deactivate (list 'ames.kb::contact contact)))
+         (candidates '()))
+    (flet ((ahead-p (s)
+             ;; on a circle, an angle difference of less than a quarter turn has the sign of
+             ;; its sine, which Maxima can expand where inverse trigonometric terms defeat sign()
+             (let ((answer (decide run `(> (* ,direction (- ,s ,s0)) 0)))
+                   (radius (ames.geometry:contact-radius geometry)))
+               (if (and (eq answer :unknown) radius)
+                   (let ((turn (tidy run `(/ (- ,s ,s0) ,radius) :trigsimp)))
+                     (if (eq (decide run `(> (cos ,turn) 0)) :true)
+                         (decide run `(> (* ,direction (sin ,turn)) 0))
+                         :unknown))
+                   answer))))
+      (case (decide run `(< ,(at-arc normal-along s0) 0))
+        (:true (return-from curved-candidates
+                 (list (make-candidate (list* :lift-off bodies) s0 change))))
+        (:unknown (error 'ambiguous-transition
+                         :datum normal-along :missing-fact `(> ,(at-arc normal-along s0) 0)
+                         :candidates '() :detail "The sign of the normal force is not decided.")))
+      (dolist (root (ames.maxima:solve-equations (run-bridge run) (list `(= ,normal-along 0))
+                                                 (list +arc-length+)))
+        (let ((s (tidy run (cdr (first root)))))
+          (case (ahead-p s)
+            (:true (push (make-candidate (list* :lift-off bodies) s change) candidates))
+            (:unknown (error 'ambiguous-transition
+                             :datum s :missing-fact `(> (* ,direction (- ,s ,s0)) 0)
+                             :candidates '() :detail "Where the normal force vanishes is not decided.")))))
+      (when (eq (ames.geometry:contact-kind geometry) :arc)
+        (dolist (end (list 0 (ames.geometry:contact-length geometry)))
+          (when (eq (ahead-p end) :true)
+            (push (make-candidate (append (list :leaves) bodies (list :endpoint)) end change)
+                  candidates))))
+      candidates)))
+
+(defun sort-by-arc (run candidates s0 direction)
+  "CANDIDATES sorted by how far ahead of S0 they are in DIRECTION; signals
+AMBIGUOUS-TRANSITION when the order is not decided."
+  (sort (copy-list candidates)
+        (lambda (a b)
+          (let ((answer (decide run `(< (* ,direction (- ,(candidate-time a) ,s0))
+                                        (* ,direction (- ,(candidate-time b) ,s0))))))
+            (when (eq answer :unknown)
+              (error 'ambiguous-transition
+                     :datum (list a b) :missing-fact `(< ,(candidate-time a) ,(candidate-time b))
+                     :candidates (mapcar (lambda (c) (list (candidate-event c) (candidate-time c)))
+                                         candidates)
+                     :detail "Which end of the curved state comes first is not decided."))
+            (eq answer :true)))))
