@@ -191,17 +191,16 @@ ranges, in counter-clockwise order from R1's start."
       (angle-of-vector decider (direction-vector direction))))
 
 (defun range-sweep (decider range)
-  "The angle RANGE sweeps, an expression in [0, 2 PI] (2 PI for the full circle). When
-both ends carry given angles whose difference is evidently the sweep, that difference
-is used; otherwise the angle between the end vectors."
+  "The angle RANGE sweeps, an expression in [0, 2 PI] (2 PI for the full circle): the
+difference of its ends' angles, shifted by a full turn if need be, so that the end of
+an arc built on it is exactly at its end direction's angle."
   (let ((class (range-sweep-class decider range)))
     (if (member class '(:full :empty))
         (if (eq class :full) (e* 2 'pi) 0)
         (let* ((a (direction-vector (angular-range-from range)))
                (b (direction-vector (angular-range-to range)))
-               (from-angle (direction-angle-slot (angular-range-from range)))
-               (to-angle (direction-angle-slot (angular-range-to range)))
-               (difference (and from-angle to-angle (e- to-angle from-angle))))
+               (difference (e- (direction-angle-decided decider (angular-range-to range))
+                               (direction-angle-decided decider (angular-range-from range)))))
           (flet ((fits (x)
                    (and (fact-known-p decider (list '> x 0))
                         (ecase class
@@ -209,8 +208,9 @@ is used; otherwise the angle between the end vectors."
                           (:pi (fact-known-p decider (list '= x 'pi)))
                           (:above-pi (and (fact-known-p decider (list '> x 'pi))
                                           (fact-known-p decider (list '< x (e* 2 'pi)))))))))
-            (cond ((and difference (fits difference)) difference)
-                  ((and difference (fits (e+ difference (e* 2 'pi)))) (e+ difference (e* 2 'pi)))
+            (cond ((fits difference) difference)
+                  ((fits (e+ difference (e* 2 'pi))) (e+ difference (e* 2 'pi)))
+                  ((fits (e- difference (e* 2 'pi))) (e- difference (e* 2 'pi)))
                   (t (ecase class
                        (:below-pi (eatan2 (cross a b) (dot a b)))
                        (:pi 'pi)
