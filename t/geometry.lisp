@@ -603,3 +603,19 @@ PATH-ACCELERATION with the derivatives of S-OF-TAU, at the SAMPLE-TIMES (numeric
     (is (g-point= '(5/4 5/4) (ames.geometry:contact-start (g-contact pair '(:edge 3)))))
     (is (ames.geometry:penetrates-p pair '(1 1)))
     (is (not (ames.geometry:penetrates-p pair '(3/2 3/2))))))
+
+(test geometry-straight-runs-of-edges
+  ;; a 4 x 2 block whose bottom has a vertex in its middle, observed by a unit square:
+  ;; the two halves of the bottom stay two contacts that together span the whole face
+  (let* ((pair (ames.geometry:make-contact-pair-with-observer
+                'square (g-shape '(polygon (0 0) (1 0) (1 1) (0 1)))
+                'block (g-shape '(polygon (0 0) (2 0) (4 0) (4 2) (0 2)))))
+         (left-half (g-contact pair '(:edge 0)))
+         (right-half (g-contact pair '(:edge 1))))
+    (is (= 5 (length (ames.geometry:pair-contacts pair))))
+    (is (g-contacts-chain-p pair))
+    (is (g-point= '(-1 -1) (ames.geometry:contact-start left-half)))
+    (is (g-point= '(1 -1) (ames.geometry:contact-end left-half)))
+    (is (g-point= '(1 -1) (ames.geometry:contact-start right-half)))
+    (is (g-point= '(4 -1) (ames.geometry:contact-end right-half)))
+    (is (equal '(:edge 2 :of square) (ames.geometry:contact-observer-feature right-half)))))

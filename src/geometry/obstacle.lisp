@@ -95,12 +95,13 @@ decided."
                                        :decider decider))))))
 
 (defun link-neighbours (decider contacts)
-  "Record, for each contact, the contact that continues past each of its ends."
+  "Record, for each contact, the contact that continues past each of its ends (when
+the two ends are known to coincide)."
   (dolist (a contacts)
     (when (contact-end a)
       (dolist (b contacts)
         (when (and (not (eq a b)) (member (contact-kind b) '(:segment :arc))
-                   (vector-equal-p decider (contact-end a) (contact-start b)))
+                   (vector-known-equal-p decider (contact-end a) (contact-start b)))
           (push (cons :end b) (contact-neighbours a))
           (push (cons :start a) (contact-neighbours b)))))))
 

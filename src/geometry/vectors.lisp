@@ -34,6 +34,12 @@
   (and (zero-p decider (e- (vx a) (vx b)))
        (zero-p decider (e- (vy a) (vy b)))))
 
+(defun vector-known-equal-p (decider a b)
+  "True when A and B are known to be the same vector; NIL when they differ or when it
+cannot be decided (never signals)."
+  (and (fact-known-p decider (list '= (vx a) (vx b)))
+       (fact-known-p decider (list '= (vy a) (vy b)))))
+
 (defun vector-expression-p (x)
   "True when X is a list of two valid arithmetic expressions."
   (and (consp x) (alexandria:proper-list-p x) (= (length x) 2)
