@@ -12,12 +12,12 @@
 
 (in-suite geometry-properties)
 
-(defun cross-2d (o a b)
+(defun g-cross (o a b)
   "The z component of (A - O) x (B - O), for rational points (lists)."
   (- (* (- (first a) (first o)) (- (second b) (second o)))
      (* (- (second a) (second o)) (- (first b) (first o)))))
 
-(defun convex-hull-2d (points)
+(defun g-convex-hull (points)
   "The strictly convex hull of the rational POINTS, counter-clockwise (monotone chain)."
   (let ((sorted (sort (remove-duplicates (copy-list points) :test #'equal)
                       (lambda (p q) (or (< (first p) (first q))
@@ -27,68 +27,68 @@
         (flet ((half (points)
                  (let ((chain '()))
                    (dolist (p points)
-                     (loop while (and (rest chain) (<= (cross-2d (second chain) (first chain) p) 0))
+                     (loop while (and (rest chain) (<= (g-cross (second chain) (first chain) p) 0))
                            do (pop chain))
                      (push p chain))
                    (rest chain))))
           (append (reverse (half sorted)) (reverse (half (reverse sorted))))))))
 
-(defun gen-convex-polygon (&key (points 6) (size 8))
+(defun g-gen-convex-polygon (&key (points 6) (size 8))
   "A generator of convex polygons (counter-clockwise rational vertices, at least three)
 as hulls of random integer points."
   (lambda ()
     (loop
-      (let ((hull (convex-hull-2d
+      (let ((hull (g-convex-hull
                    (loop repeat (+ 3 (random (- points 2)))
                          collect (list (- (random (1+ (* 2 size))) size)
                                        (- (random (1+ (* 2 size))) size))))))
         (when (>= (length hull) 3) (return hull))))))
 
-(defun vertex-differences (b a)
+(defun g-vertex-differences (b a)
   (loop for p in b nconc (loop for q in a collect (list (- (first p) (first q)) (- (second p) (second q))))))
 
-(defun polygon-form (vertices) (cons 'polygon vertices))
+(defun g-polygon-form (vertices) (cons 'polygon vertices))
 
-(defun sum-pair (a b)
+(defun g-sum-pair (a b)
   "The contact pair of the polygon A observing the polygon B."
   (ames.geometry:make-contact-pair-with-observer
-   'a (g-shape (polygon-form a)) 'b (g-shape (polygon-form b))))
+   'a (g-shape (g-polygon-form a)) 'b (g-shape (g-polygon-form b))))
 
-(defun same-point-set-p (ps qs)
+(defun g-same-point-set-p (ps qs)
   (and (= (length ps) (length qs))
        (every (lambda (p) (member p qs :test #'equal)) ps)))
 
-(defun strictly-inside-hull-p (q hull)
+(defun g-strictly-inside-hull-p (q hull)
   (loop for (a b) on (append hull (list (first hull))) while b
-        always (plusp (cross-2d a b q))))
+        always (plusp (g-cross a b q))))
 
-(defun on-hull-boundary-p (q hull)
+(defun g-on-hull-boundary-p (q hull)
   (and (loop for (a b) on (append hull (list (first hull))) while b
-             always (>= (cross-2d a b q) 0))
+             always (>= (g-cross a b q) 0))
        (loop for (a b) on (append hull (list (first hull))) while b
-             thereis (zerop (cross-2d a b q)))))
+             thereis (zerop (g-cross a b q)))))
 
 (test geometry-obstacle-vertices-are-the-hull-of-differences
-  (for-all ((a (gen-convex-polygon)) (b (gen-convex-polygon)))
-    (let* ((pair (sum-pair a b))
+  (for-all ((a (g-gen-convex-polygon)) (b (g-gen-convex-polygon)))
+    (let* ((pair (g-sum-pair a b))
            (starts (mapcar (lambda (c) (mapcar #'g-exact (ames.geometry:contact-start c)))
                            (ames.geometry:pair-contacts pair))))
-      (is (same-point-set-p (convex-hull-2d (vertex-differences b a)) starts)
+      (is (g-same-point-set-p (g-convex-hull (g-vertex-differences b a)) starts)
           "A ~S observing B ~S: contact starts ~S" a b starts)
       (is (every (lambda (c) (eq :segment (ames.geometry:contact-kind c)))
                  (ames.geometry:pair-contacts pair))))))
 
-(defun support-value (direction points)
+(defun g-support-value (direction points)
   "max over POINTS of DIRECTION . point, numerically (DIRECTION expressions)."
   (loop for p in points
         maximize (+ (* (g-value (first direction)) (first p))
                     (* (g-value (second direction)) (second p)))))
 
 (test geometry-contact-points-lie-on-the-boundary-with-the-stated-normal
-  (for-all ((a (gen-convex-polygon)) (b (gen-convex-polygon)))
-    (let* ((pair (sum-pair a b))
-           (differences (vertex-differences b a))
-           (hull (convex-hull-2d differences)))
+  (for-all ((a (g-gen-convex-polygon)) (b (g-gen-convex-polygon)))
+    (let* ((pair (g-sum-pair a b))
+           (differences (g-vertex-differences b a))
+           (hull (g-convex-hull differences)))
       (dolist (c (ames.geometry:pair-contacts pair))
         (dolist (fraction '(0 1/3 1/2 7/9 1))
           (let* ((s (ames.geometry::e* fraction (ames.geometry:contact-length c)))
@@ -96,32 +96,32 @@ as hulls of random integer points."
                  (normal (ames.geometry:contact-outward-normal c s))
                  (exact (mapcar #'g-exact point)))
             ;; the point is exact, on the hull's boundary
-            (is (on-hull-boundary-p exact hull) "~S not on the boundary of ~S" exact hull)
+            (is (g-on-hull-boundary-p exact hull) "~S not on the boundary of ~S" exact hull)
             ;; the normal is a unit vector supporting the hull at the point
             (is (g-close-p (ames.geometry::norm-squared normal) 1))
-            (is (< (abs (- (support-value normal differences)
+            (is (< (abs (- (g-support-value normal differences)
                            (+ (* (g-value (first normal)) (first exact))
                               (* (g-value (second normal)) (second exact)))))
                    1d-9))))))))
 
 (test geometry-penetration-and-contact-agree-with-the-hull
-  (for-all ((a (gen-convex-polygon)) (b (gen-convex-polygon))
+  (for-all ((a (g-gen-convex-polygon)) (b (g-gen-convex-polygon))
             (x (gen-integer :min -24 :max 24)) (y (gen-integer :min -24 :max 24)))
-    (let* ((pair (sum-pair a b))
-           (hull (convex-hull-2d (vertex-differences b a)))
+    (let* ((pair (g-sum-pair a b))
+           (hull (g-convex-hull (g-vertex-differences b a)))
            (q (list (/ x 2) (/ y 2))))
-      (is (eq (strictly-inside-hull-p q hull) (ames.geometry:penetrates-p pair q)))
-      (is (eq (on-hull-boundary-p q hull) (not (null (ames.geometry:contacts-at pair q)))))
+      (is (eq (g-strictly-inside-hull-p q hull) (ames.geometry:penetrates-p pair q)))
+      (is (eq (g-on-hull-boundary-p q hull) (not (null (ames.geometry:contacts-at pair q)))))
       ;; every hull vertex touches two contacts and penetrates nothing
       (let ((corner (first hull)))
         (is (not (ames.geometry:penetrates-p pair corner)))
         (is (= 2 (length (ames.geometry:contacts-at pair corner))))))))
 
 (test geometry-disc-obstacle-is-the-polygon-pushed-out-by-the-radius
-  (for-all ((b (gen-convex-polygon)) (radius (gen-integer :min 1 :max 5)))
+  (for-all ((b (g-gen-convex-polygon)) (radius (gen-integer :min 1 :max 5)))
     (let* ((rho (/ radius 2))
            (pair (ames.geometry:make-contact-pair-with-observer
-                  'disc (g-shape (list 'circle rho)) 'b (g-shape (polygon-form b))))
+                  'disc (g-shape (list 'circle rho)) 'b (g-shape (g-polygon-form b))))
            (contacts (ames.geometry:pair-contacts pair)))
       (is (= (* 2 (length b)) (length contacts)))
       (is (g-close-p (reduce #'+ (mapcar (lambda (c) (g-value (ames.geometry:contact-length c)))
@@ -134,28 +134,28 @@ as hulls of random integer points."
                  (normal (ames.geometry:contact-outward-normal c s)))
             (is (g-close-p (ames.geometry::norm-squared normal) 1))
             ;; h(n) of B (+) disc = h_B(n) + rho, reached at the point
-            (is (< (abs (- (+ (support-value normal b) rho)
+            (is (< (abs (- (+ (g-support-value normal b) rho)
                            (g-value (ames.geometry::dot normal point))))
                    1d-9))))))))
 
 (test geometry-polygon-observing-a-disc
   ;; the disc as obstacle: B (+) (-A) has h(n) = rho + max(-a . n)
-  (for-all ((a (gen-convex-polygon)) (radius (gen-integer :min 1 :max 5)))
+  (for-all ((a (g-gen-convex-polygon)) (radius (gen-integer :min 1 :max 5)))
     (let* ((rho (/ radius 2))
            (pair (ames.geometry:make-contact-pair-with-observer
-                  'a (g-shape (polygon-form a)) 'disc (g-shape (list 'circle rho))))
+                  'a (g-shape (g-polygon-form a)) 'disc (g-shape (list 'circle rho))))
            (negated (mapcar (lambda (p) (mapcar #'- p)) a)))
       (is (= (* 2 (length a)) (length (ames.geometry:pair-contacts pair))))
       (dolist (c (ames.geometry:pair-contacts pair))
         (let* ((s (ames.geometry::e* 1/2 (ames.geometry:contact-length c)))
                (normal (ames.geometry:contact-outward-normal c s)))
-          (is (< (abs (- (+ (support-value normal negated) rho)
+          (is (< (abs (- (+ (g-support-value normal negated) rho)
                          (g-value (ames.geometry::dot normal (ames.geometry:contact-point c s)))))
                  1d-9)))))))
 
 ;;; Random non-convex (star-shaped) polygons
 
-(defun gen-star-polygon (&key (points 8) (size 9))
+(defun g-gen-star-polygon (&key (points 8) (size 9))
   "A generator of simple counter-clockwise polygons, star-shaped about the origin and
 usually not convex: random integer points sorted by angle."
   (lambda ()
@@ -165,24 +165,24 @@ usually not convex: random integer points sorted by angle."
                                              (- (random (1+ (* 2 size))) size))))
              (points (remove-duplicates
                       (remove '(0 0) candidates :test #'equal)
-                      :test (lambda (p q) (and (zerop (cross-2d '(0 0) p q))
+                      :test (lambda (p q) (and (zerop (g-cross '(0 0) p q))
                                                (plusp (+ (* (first p) (first q))
                                                          (* (second p) (second q))))))))
              (sorted (sort (copy-list points) #'<
                            :key (lambda (p) (atan (float (second p) 1d0) (float (first p) 1d0))))))
         (when (and (>= (length sorted) 4)
                    (loop for (p q) on (append sorted (list (first sorted))) while q
-                         always (plusp (cross-2d '(0 0) p q))))
+                         always (plusp (g-cross '(0 0) p q))))
           (return sorted))))))
 
-(defun point-in-polygon-p (q polygon)
+(defun g-point-in-polygon-p (q polygon)
   "True when Q lies strictly inside POLYGON (exact crossing number, boundary excluded)."
   (let ((inside nil))
     (loop for (a b) on (append polygon (list (first polygon))) while b
-          do (when (and (zerop (cross-2d a b q))
+          do (when (and (zerop (g-cross a b q))
                         (<= (min (first a) (first b)) (first q) (max (first a) (first b)))
                         (<= (min (second a) (second b)) (second q) (max (second a) (second b))))
-               (return-from point-in-polygon-p nil))
+               (return-from g-point-in-polygon-p nil))
              (when (and (not (eq (> (second a) (second q)) (> (second b) (second q))))
                         (< (first q) (+ (first a) (/ (* (- (second q) (second a)) (- (first b) (first a)))
                                                      (- (second b) (second a))))))
@@ -190,20 +190,20 @@ usually not convex: random integer points sorted by angle."
     inside))
 
 (test geometry-point-in-random-star-polygons
-  (for-all ((b (gen-star-polygon))
+  (for-all ((b (g-gen-star-polygon))
             (x (gen-integer :min -20 :max 20)) (y (gen-integer :min -20 :max 20)))
-    (let ((pair (ames.geometry:make-contact-pair 'p (g-shape 'point) 'b (g-shape (polygon-form b))))
+    (let ((pair (ames.geometry:make-contact-pair 'p (g-shape 'point) 'b (g-shape (g-polygon-form b))))
           (q (list (/ x 2) (/ y 2))))
       ;; one contact per edge (edges that continue straight on stay apart)
       (is (= (length b) (length (ames.geometry:pair-contacts pair))))
-      (is (eq (point-in-polygon-p q b) (ames.geometry:penetrates-p pair q))
+      (is (eq (g-point-in-polygon-p q b) (ames.geometry:penetrates-p pair q))
           "~S in ~S" q b))))
 
 (test geometry-block-contacts-bound-the-penetration-region
   ;; just outside a contact the block is free, just inside it penetrates
-  (for-all ((b (gen-star-polygon)))
+  (for-all ((b (g-gen-star-polygon)))
     (let ((pair (ames.geometry:make-contact-pair-with-observer
-                 'block (g-shape '(polygon (0 0) (1 0) (1 1) (0 1))) 'b (g-shape (polygon-form b)))))
+                 'block (g-shape '(polygon (0 0) (1 0) (1 1) (0 1))) 'b (g-shape (g-polygon-form b)))))
       (dolist (c (ames.geometry:pair-contacts pair))
         (let* ((start (mapcar #'g-exact (ames.geometry:contact-start c)))
                (end (mapcar #'g-exact (ames.geometry:contact-end c)))

@@ -103,7 +103,7 @@ for a closed boundary, all but one when OPEN (a thin surface's contacts)."
   (is (eq :infinite (ames.geometry:shape-area (g-shape '(half-plane (1 0) (0 0))))))
   (is (g-close-p (ames.geometry:shape-area (g-shape '(circle 2))) (* 4 pi))))
 
-(defparameter *invalid-shapes*
+(defparameter *g-invalid-shapes*
   '((polygon (0 0) (0 1) (1 0))                          ; clockwise
     (polygon (0 0) (1 0))                                ; too few vertices
     (polygon (0 0) (1 0) (2 0))                          ; no area
@@ -134,7 +134,7 @@ for a closed boundary, all but one when OPEN (a thin surface's contacts)."
   "Shape forms that each must signal INVALID-SHAPE.")
 
 (test geometry-invalid-shapes-signal-their-condition
-  (dolist (form *invalid-shapes*)
+  (dolist (form *g-invalid-shapes*)
     (let ((condition (handler-case (progn (g-shape form) nil)
                        (ames.geometry:invalid-shape (c) c))))
       (is (typep condition 'ames.geometry:invalid-shape) "~S was accepted" form)
@@ -322,7 +322,7 @@ for a closed boundary, all but one when OPEN (a thin surface's contacts)."
                    (ames.geometry::vscale 'sdot (ames.geometry:contact-unit-tangent circle 's))
                    '((s . 0.4d0) (sdot . 3d0))))))
 
-(defun path-kinematics-agree-p (contact s-of-tau sample-times)
+(defun g-path-kinematics-agree-p (contact s-of-tau sample-times)
   "True when the second time derivative of CONTACT's point at S-OF-TAU equals
 PATH-ACCELERATION with the derivatives of S-OF-TAU, at the SAMPLE-TIMES (numerically)."
   (let* ((sdot (ames.geometry::differentiate s-of-tau 'tau))
@@ -346,7 +346,7 @@ PATH-ACCELERATION with the derivatives of S-OF-TAU, at the SAMPLE-TIMES (numeric
                                                 :solid :outside)))))
         (slope (g-contact (g-pair 'p 'point 'wedge '(polygon (0 0) (4 0) (0 3))) '(:edge 1))))
     (dolist (contact (list circle bowl slope))
-      (is (path-kinematics-agree-p contact '(+ (* 1/3 (expt tau 3)) (* 2 tau) 1/2) '(0 0.3d0 1.1d0))
+      (is (g-path-kinematics-agree-p contact '(+ (* 1/3 (expt tau 3)) (* 2 tau) 1/2) '(0 0.3d0 1.1d0))
           "~A" contact))))
 
 ;;; Meeting and leaving contacts
@@ -430,7 +430,7 @@ PATH-ACCELERATION with the derivatives of S-OF-TAU, at the SAMPLE-TIMES (numeric
   (signals ames.geometry:unsupported-shape-pair
     (g-pair 'disc '(circle 3)
             'bowl '(arc :center (0 0) :radius 2 :from pi :to (* 2 pi) :solid :outside)))
-  (let ((condition (handler-case (g-pair 'disc '(circle 1/4) 'bitten *bitten-square*)
+  (let ((condition (handler-case (g-pair 'disc '(circle 1/4) 'bitten *g-bitten-square*)
                      (ames.geometry:unsupported-shape-pair (c) c))))
     (is (typep condition 'ames-error))
     (is (eq 'bitten (ames.geometry:unsupported-obstacle condition)))
@@ -519,7 +519,7 @@ PATH-ACCELERATION with the derivatives of S-OF-TAU, at the SAMPLE-TIMES (numeric
     (is (ames.geometry:penetrates-p pair '(0 1/2)))
     (is (not (ames.geometry:penetrates-p pair '(0 -1/2))))))
 
-(defparameter *bitten-square*
+(defparameter *g-bitten-square*
   '(outline (line (0 0) (4 0)) (line (4 0) (4 4)) (line (4 4) (3 4))
             (arc :center (2 4) :radius 1 :from 0 :to (- pi))
             (line (1 4) (0 4)) (line (0 4) (0 0)))
@@ -535,7 +535,7 @@ PATH-ACCELERATION with the derivatives of S-OF-TAU, at the SAMPLE-TIMES (numeric
     (is (g-close-p (cdr (first (ames.geometry:contacts-at pair '(3 1)))) (/ pi 2)))
     (is (ames.geometry:penetrates-p pair '(5/2 1)))
     (is (not (ames.geometry:penetrates-p pair '(7/2 1)))))
-  (let* ((pair (g-pair 'particle 'point 'bitten *bitten-square*))
+  (let* ((pair (g-pair 'particle 'point 'bitten *g-bitten-square*))
          (bite (g-contact pair '(:arc 3))))
     (is (= 6 (length (ames.geometry:pair-contacts pair))))
     (is (eql -1 (ames.geometry:contact-sense bite)))
@@ -549,11 +549,11 @@ PATH-ACCELERATION with the derivatives of S-OF-TAU, at the SAMPLE-TIMES (numeric
 
 ;;; Non-convex shapes
 
-(defparameter *l-shape* '(polygon (0 0) (2 0) (2 1) (1 1) (1 2) (0 2))
+(defparameter *g-l-shape* '(polygon (0 0) (2 0) (2 1) (1 1) (1 2) (0 2))
   "An L: [0,2]x[0,1] and [0,1]x[1,2].")
 
 (test geometry-point-against-l-shape
-  (let ((pair (g-pair 'particle 'point 'l *l-shape*)))
+  (let ((pair (g-pair 'particle 'point 'l *g-l-shape*)))
     (is (= 6 (length (ames.geometry:pair-contacts pair))))
     (is (equal '(0 1 2 3 4 5)
                (sort (mapcar (lambda (c) (second (ames.geometry:contact-obstacle-feature c)))
@@ -567,7 +567,7 @@ PATH-ACCELERATION with the derivatives of S-OF-TAU, at the SAMPLE-TIMES (numeric
 (test geometry-block-against-l-shape
   ;; L (+) -[0,1/2]^2 = [-1/2,2]x[-1/2,1] union [-1/2,1]x[1/2,2]: six faces, the
   ;; reflex corner at (1 1)
-  (let* ((pair (g-pair 'block '(polygon (0 0) (1/2 0) (1/2 1/2) (0 1/2)) 'l *l-shape*)))
+  (let* ((pair (g-pair 'block '(polygon (0 0) (1/2 0) (1/2 1/2) (0 1/2)) 'l *g-l-shape*)))
     (is (eq 'block (ames.geometry:pair-observer pair)))
     (is (= 6 (length (ames.geometry:pair-contacts pair))))
     (is (g-contacts-chain-p pair))
@@ -590,7 +590,7 @@ PATH-ACCELERATION with the derivatives of S-OF-TAU, at the SAMPLE-TIMES (numeric
     (is (= 2 (length (ames.geometry:contacts-at pair '(1 1)))))))
 
 (test geometry-disc-against-l-shape
-  (let ((pair (g-pair 'disc '(circle 1/4) 'l *l-shape*)))
+  (let ((pair (g-pair 'disc '(circle 1/4) 'l *g-l-shape*)))
     (is (= 11 (length (ames.geometry:pair-contacts pair))))
     (is (= 5 (count :arc (ames.geometry:pair-contacts pair) :key #'ames.geometry:contact-kind)))
     (is (g-contacts-chain-p pair))
