@@ -81,6 +81,23 @@
      (is (not (ames.maxima:bridge-alive-p b)))
      (is (eq :false (ames.maxima:decide b '(> 1 2)))))))
 
+(test a-missing-maxima-is-a-condition
+  (call-with-bridge
+   (lambda (b)
+     (signals ames.maxima:maxima-process-died (ames.maxima:decide b '(> 2 1))))
+   :program "no-such-maxima-program"))
+
+(test stack-overflows-in-maxima-leave-the-bridge-usable
+  ;; GCL's bind stack overflows at a depth of a few hundred; the second overflow in one
+  ;; process may end it. Either way the call fails with a condition and the next works.
+  (call-with-bridge
+   (lambda (b)
+     (let ((deep 'x))
+       (dotimes (i 300) (setf deep (list 'sin deep)))
+       (dotimes (i 3)
+         (signals ames.maxima:maxima-condition (ames.maxima:simplify b deep :strategy :trigsimp))
+         (is (eq :true (ames.maxima:decide b `(> ,(+ 2 i) 1)))))))))
+
 (test a-maxima-error-carries-maxima-s-message
   (call-with-bridge
    (lambda (b)

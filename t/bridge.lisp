@@ -192,6 +192,10 @@ relative to the wedge, down the slope (direction (cos a, -sin a)).")
        (ames.maxima:solve-equations b '((= (- x x) 0)) '(x)))
      (signals ames.maxima:invalid-bridge-argument
        (ames.maxima:solve-equations b '((= x 1)) '((+ x 1))))
+     (signals ames.maxima:invalid-bridge-argument
+       (ames.maxima:solve-equations b '((< x 1)) '(x)))
+     ;; an expression stands for expression = 0
+     (is (equal '(((x . 3))) (ames.maxima:solve-equations b '((- x 3)) '(x))))
      ;; quantity terms are unknowns like any other
      (let ((solution (first (ames.maxima:solve-equations
                              b '((= (* m (acc particle :x)) f)) '((acc particle :x))))))

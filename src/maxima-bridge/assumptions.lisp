@@ -177,7 +177,7 @@ facts not included)."
   (dolist (frame (reverse (bridge-frames bridge)))
     (multiple-value-bind (status data) (round-trip bridge (list :eval (frame-setup-form frame)))
       (unless (eq status :ok)
-        (discard-process bridge :kill t)
+        (discard-process bridge)
         (error 'maxima-process-died
                :datum (assumption-frame-facts frame)
                :detail (format nil "replaying assumptions failed: ~S ~S" status data))))))
@@ -194,7 +194,7 @@ the process is discarded: a new one is built from the remaining frames."
           (maxima-request bridge (mform (wire "$AMES_POP_CONTEXT")
                                         (assumption-frame-context frame) parent)
                           :cache nil)
-        (maxima-condition () (discard-process bridge :kill t))))))
+        (maxima-condition () (discard-process bridge))))))
 
 (defun call-with-assumptions (bridge facts thunk)
   "Call THUNK with FACTS (a list of relations in prefix algebra, e.g.

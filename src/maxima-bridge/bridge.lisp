@@ -13,6 +13,9 @@
 (defconstant +sigint+ 2 "The signal that interrupts a busy GCL Maxima.")
 (defconstant +sigkill+ 9 "The signal that ends a wedged Maxima.")
 
+(defparameter *cache-limit* 100000
+  "When a bridge's cache holds this many answers, it is emptied before the next is stored.")
+
 (defparameter *server-file*
   (asdf:system-relative-pathname "ames" "src/maxima-bridge/maxima-server.lisp")
   "The Lisp file Maxima preloads: the request server.")
@@ -52,9 +55,14 @@ its name table, assumption scopes, cache and counters. Use a bridge from one thr
 
 (defun make-bridge (&key (timeout 20) (program "maxima"))
   "A new BRIDGE to Maxima. No process starts until the first request. TIMEOUT is the
-number of seconds one request may take (settable with (SETF BRIDGE-TIMEOUT))."
-  (check-type timeout (real (0)))
-  (check-type program string)
+number of seconds one request may take (settable with (SETF BRIDGE-TIMEOUT)); PROGRAM
+the command that starts Debian's GCL Maxima, searched on PATH.
+Signals INVALID-BRIDGE-ARGUMENT for a timeout that is not a positive number or a
+program that is not a string."
+  (unless (and (realp timeout) (plusp timeout))
+    (error 'invalid-bridge-argument :datum timeout :detail "the timeout must be a positive number of seconds"))
+  (unless (stringp program)
+    (error 'invalid-bridge-argument :datum program :detail "the program must be a string"))
   (make-instance 'bridge :timeout timeout :program program))
 
 (defmethod print-object ((bridge bridge) stream)
@@ -78,6 +86,11 @@ number of seconds one request may take (settable with (SETF BRIDGE-TIMEOUT))."
   (setf (bridge-statistics-record bridge) (make-statistics))
   bridge)
 
+(defun clear-bridge-cache (bridge)
+  "Forget every cached answer of BRIDGE (for benchmarks; answers never go stale)."
+  (clrhash (bridge-cache bridge))
+  bridge)
+
 (defun bridge-alive-p (bridge)
   "True when BRIDGE has a running Maxima process."
   (let ((process (bridge-process bridge)))
@@ -93,14 +106,16 @@ number of seconds one request may take (settable with (SETF BRIDGE-TIMEOUT))."
 
 ;;; The process
 
-(defun discard-process (bridge &key kill)
-  "Forget BRIDGE's process; with KILL, end it with SIGKILL first."
+(defun discard-process (bridge)
+  "Forget BRIDGE's process, ending it with SIGKILL when it still runs, and reap it."
   (let ((process (bridge-process bridge)))
     (setf (bridge-process bridge) nil
           (fill-pointer (bridge-buffer bridge)) 0)
     (when process
-      (when (and kill (sb-ext:process-alive-p process))
+      (when (sb-ext:process-alive-p process)
         (sb-ext:process-kill process +sigkill+))
+      ;; SIGKILL ends it at once; waiting reaps it, so that no zombie stays behind.
+      (sb-ext:process-wait process)
       (sb-ext:process-close process))))
 
 (defun close-bridge (bridge)
@@ -114,7 +129,7 @@ starts a new process and replays the active assumptions. Returns BRIDGE."
         (let ((deadline (+ (now) 1)))
           (loop while (and (sb-ext:process-alive-p process) (< (now) deadline))
                 do (sleep 0.01))))
-      (discard-process bridge :kill t)))
+      (discard-process bridge)))
   bridge)
 
 (define-condition server-gone (error) ()
@@ -146,7 +161,7 @@ Signals MAXIMA-PROCESS-DIED when Maxima cannot be started."
     (multiple-value-bind (status data)
         (round-trip bridge (list :hello (bridge-nonce bridge)))
       (unless (eq status :ok)
-        (discard-process bridge :kill t)
+        (discard-process bridge)
         (error 'maxima-process-died :datum (bridge-program bridge)
                                     :detail (format nil "Maxima did not greet: ~S ~S" status data))))
     (replay-assumptions bridge)
@@ -155,7 +170,7 @@ Signals MAXIMA-PROCESS-DIED when Maxima cannot be started."
 (defun ensure-process (bridge)
   "Make sure BRIDGE has a live Maxima process (starting one, replaying its set-up)."
   (unless (bridge-alive-p bridge)
-    (when (bridge-process bridge) (discard-process bridge :kill t))
+    (when (bridge-process bridge) (discard-process bridge))
     (start-process bridge)))
 
 ;;; Framing
@@ -217,10 +232,15 @@ something was read, NIL otherwise."
       (let ((text (take-frame bridge)))
         (if text
             (let ((reply (parse-frame text)))
-              ;; Frames of earlier (interrupted) requests, or torn ones, are dropped; a frame
-              ;; without id (NIL: the server could not read the request) is ours.
-              (when (and reply (or (eql (first reply) id) (eq (first reply) +false+)))
-                (return reply)))
+              ;; Only one request is ever outstanding. Frames of earlier (interrupted)
+              ;; requests are dropped; a frame without id (NIL: the server could not read
+              ;; the request) is ours, and so is a frame SBCL cannot read.
+              (cond ((null reply)
+                     (return (list id :lisp-error 0
+                                   (format nil "unreadable reply: ~A"
+                                           (subseq text 0 (min 200 (length text)))))))
+                    ((or (eql (first reply) id) (eq (first reply) +false+))
+                     (return reply))))
             (let ((got (read-available bridge)))
               (cond ((eq got :eof) (error 'server-gone))
                     (got)
@@ -243,7 +263,7 @@ interrupt does not take). Signals SERVER-GONE when the process ends."
         (sb-ext:process-kill (bridge-process bridge) +sigint+)
         (let ((late (handler-case (await-reply bridge id (+ (now) (bridge-interrupt-grace bridge)))
                       (server-gone () :gone))))
-          (when (member late '(:timeout :gone)) (discard-process bridge :kill t))
+          (when (member late '(:timeout :gone)) (discard-process bridge))
           (setf reply (if (and (consp late) (eq (second late) :ok)) late :timeout))))
       (incf (statistics-round-trip-seconds record) (- (now) start))
       (if (eq reply :timeout)
@@ -298,8 +318,11 @@ ASSUME-AND-RETRY), MAXIMA-TIMEOUT or MAXIMA-PROCESS-DIED."
         (return-from maxima-request answer)))
     (multiple-value-bind (status data) (request-with-restart bridge form datum)
       (ecase status
-        (:ok (let ((answer (first data)))
-               (when key (setf (gethash key (bridge-cache bridge)) answer))
+        (:ok (let ((answer (first data))
+                   (cache (bridge-cache bridge)))
+               (when key
+                 (when (>= (hash-table-count cache) *cache-limit*) (clrhash cache))
+                 (setf (gethash key cache) answer))
                answer))
         (:timeout
          (error 'maxima-timeout :seconds (bridge-timeout bridge) :datum datum
@@ -337,10 +360,10 @@ and try once more. Returns the reply's STATUS and DATA."
            (round-trip bridge (list :eval form))))
     (handler-case (attempt)
       (server-gone ()
-        (discard-process bridge :kill t)
+        (discard-process bridge)
         (handler-case (attempt)
           (server-gone ()
-            (discard-process bridge :kill t)
+            (discard-process bridge)
             (error 'maxima-process-died :datum datum
                                         :detail "Maxima ended twice while answering")))))))
 

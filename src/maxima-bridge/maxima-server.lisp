@@ -16,7 +16,7 @@
 ;;;; Maxima prints by itself (warnings) falls outside the frames and is ignored by the client.
 ;;;;
 ;;;; Safety: GCL's reader evaluates #.(...) even with *READ-EVAL* nil (measured), so a request
-;;;; line is read only when every character is in AMES-REQUEST-CHARACTER-P's small set (letters,
+;;;; line is read only when every character is in AMES-REQUEST-LINE-P's small set (letters,
 ;;;; digits, blanks and ( ) $ % _ . : + -; no # | \ " ' ` , ;). FORM must then pass AMES-VALIDATE
 ;;;; before MEVAL sees it:
 ;;;; every operator and function is on a whitelist, every other symbol is a mangled AMES name
@@ -37,6 +37,14 @@
 
 (defvar *ames-frame-begin* "@AMES@BEGIN")
 (defvar *ames-frame-end* "@AMES@END")
+
+(defvar *ames-input* nil
+  "The request pipe: /dev/stdin opened afresh (GCL reads it about twice as fast as
+*TERMINAL-IO*).")
+
+(defvar *ames-output* nil
+  "The reply pipe: /dev/stdout opened afresh. Maxima's own printing still goes to
+*STANDARD-OUTPUT*, outside the frames.")
 
 (defvar *ames-readtable* (copy-readtable nil)
   "A standard readtable, whatever Maxima did to the current one.")
@@ -72,10 +80,15 @@
       (and (eq (symbol-package symbol) (find-package :maxima))
            (or (letters-after "$AMESV") (letters-after "$AMESCTX"))))))
 
-(defun ames-request-character-p (char)
-  "True for the only characters a request line may contain."
-  (or (char<= #\A char #\Z) (char<= #\a char #\z) (char<= #\0 char #\9)
-      (member char '(#\Space #\Tab #\( #\) #\$ #\% #\_ #\. #\: #\+ #\-))))
+(defvar *ames-request-pattern* "^[A-Za-z0-9 ()$%_.:+-]*$"
+  "The request alphabet, as a regular expression GCL matches in C (SI::STRING-MATCH): far
+faster than a predicate called per character by GCL's interpreter.")
+
+(defun ames-request-line-p (line)
+  "True when every character of LINE is in the request alphabet. (The C matcher stops at
+a NUL character, so NUL is looked for separately.)"
+  (and (eql 0 (si::string-match *ames-request-pattern* line))
+       (not (find (code-char 0) line))))
 
 (defun ames-validate (form)
   "Return NIL when FORM is acceptable, else a string saying what was rejected."
@@ -202,12 +215,12 @@ coefficients free of VAR and its denominator is free of VAR; false otherwise."
                     (*package* (find-package :maxima)))
                 (format nil "~%~A~%~S~%~A~%" *ames-frame-begin*
                         (list* id status seconds data) *ames-frame-end*))))
-    (write-string text *standard-output*)
-    (finish-output *standard-output*)))
+    (write-string text *ames-output*)
+    (finish-output *ames-output*)))
 
 (defun ames-read-request (line)
   "The request form on LINE, or :FORBIDDEN-CHARACTER when LINE leaves the alphabet."
-  (if (notevery #'ames-request-character-p line)
+  (if (not (ames-request-line-p line))
       :forbidden-character
       (let ((*read-eval* nil) (*readtable* *ames-readtable*)
             (*package* (find-package :maxima))
@@ -254,9 +267,11 @@ coefficients free of VAR and its denominator is free of VAR; false otherwise."
 (defun ames-serve ()
   "Read requests from the pipe until end of input, then leave Maxima."
   (setq $display2d nil $ratprint nil $solvetrigwarn nil $programmode t
-        $errormsg nil)
+        $errormsg nil
+        *ames-input* (open "/dev/stdin")
+        *ames-output* (open "/dev/stdout" :direction :output :if-exists :append))
   (loop
-    (let ((line (handler-case (read-line *terminal-io* nil :eof)
+    (let ((line (handler-case (read-line *ames-input* nil :eof)
                   (error () :interrupted))))
       (cond ((eq line :eof) (return))
             ((eq line :interrupted))

@@ -94,10 +94,14 @@ Signals UNTRANSLATABLE-EXPRESSION, MAXIMA-ERROR, MAXIMA-TIMEOUT."
 
 (defun equation-to-maxima (bridge equation)
   "The Maxima equation for EQUATION: a relation (= lhs rhs), or an expression meaning
-expression = 0."
-  (if (and (consp equation) (eq (expression-operator equation) '=))
-      (to-mx bridge equation :condition)
-      (mform +mequal+ (to-mx bridge equation :arithmetic) 0)))
+expression = 0. Signals INVALID-BRIDGE-ARGUMENT for other relations and connectives."
+  (cond ((and (consp equation) (eq (expression-operator equation) '=))
+         (to-mx bridge equation :condition))
+        ((and (consp equation) (or (relation-operator-p (expression-operator equation))
+                                   (logical-operator-p (expression-operator equation))))
+         (error 'invalid-bridge-argument :datum equation
+                                         :detail "only equations (=) can be solved"))
+        (t (mform +mequal+ (to-mx bridge equation :arithmetic) 0))))
 
 (defun solve-equations (bridge equations unknowns)
   "Solve EQUATIONS (a list of relations (= lhs rhs), or expressions meaning = 0) for

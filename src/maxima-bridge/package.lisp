@@ -9,7 +9,7 @@ only by this package's own translation (see translation.lisp and maxima-server.l
   (:export
    ;; the bridge object
    #:bridge #:make-bridge #:close-bridge #:bridge-timeout #:bridge-alive-p #:bridge-process-id
-   #:bridge-statistics #:reset-bridge-statistics
+   #:bridge-statistics #:reset-bridge-statistics #:clear-bridge-cache
    ;; operations
    #:simplify #:solve-equations #:decide #:equivalent-p
    #:call-with-assumptions #:with-assumptions #:current-assumptions
