@@ -174,3 +174,29 @@ given, by their values agreeing at every sample."
    (lambda (bridge)
      (is (ames.geometry:shape-convex-p (g-shape '(polygon (0 0) (x 0) (0 1)) bridge)))
      (signals ames.geometry:invalid-shape (g-shape '(polygon (0 0) (0 1) (x 0)) bridge)))))
+
+(test geometry-earliest-meeting-and-leaving
+  (g-call-with-bridge
+   (list* '(> g 0) *g-wedge-facts*)
+   (lambda (bridge)
+     (let* ((pair (g-pair 'particle 'point 'wedge *g-wedge-form* bridge))
+            (slope (g-contact pair '(:edge 1)))
+            (base (g-contact pair '(:edge 0)))
+            (fall '((/ h (* 2 (tan a))) (- h (* 1/2 g tau tau)))))
+       ;; dropped from above the slope's middle, it lands on the slope at sqrt(h/g)
+       (multiple-value-bind (time status) (ames.geometry:earliest-meeting slope fall bridge)
+         (is (eq :found status))
+         (is (g-same-meaning-p bridge time '(sqrt (/ h g)))))
+       ;; the base's line is crossed later, but from inside the wedge: no meeting
+       (is (eq :none (ames.geometry:earliest-meeting base fall bridge)))
+       ;; sliding down the slope from its middle (s decreasing), it leaves at the bottom end
+       (let ((s '(- (/ h (* 2 (sin a))) (* 1/2 g (sin a) tau tau)))
+             (sdot '(- (* g (sin a) tau))))
+         (multiple-value-bind (time leaving) (ames.geometry:earliest-leaving slope s sdot bridge)
+           (is (typep leaving 'ames.geometry:leaving))
+           (when (typep leaving 'ames.geometry:leaving)
+             (is (eq :start (ames.geometry:leaving-endpoint leaving)))
+             (is (eq base (ames.geometry:leaving-neighbour leaving))))
+           (is (g-same-meaning-p bridge time '(/ (sqrt (/ h g)) (sin a))
+                                 :samples '(((h . 2) (g . 9.8d0) (a . 0.4d0))
+                                            ((h . 1) (g . 1) (a . 1.1d0)))))))))))

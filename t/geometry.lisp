@@ -619,3 +619,16 @@ PATH-ACCELERATION with the derivatives of S-OF-TAU, at the SAMPLE-TIMES (numeric
     (is (g-point= '(1 -1) (ames.geometry:contact-start right-half)))
     (is (g-point= '(4 -1) (ames.geometry:contact-end right-half)))
     (is (equal '(:edge 2 :of square) (ames.geometry:contact-observer-feature right-half)))))
+
+(test geometry-overlapping-start-is-reported
+  (let ((pair (g-pair 'particle 'point 'wedge '(polygon (0 0) (4 0) (0 3)))))
+    (is (equal '(2 3/2) (ames.geometry:check-separation pair '(2 3/2))))
+    (let ((condition (handler-case (ames.geometry:check-separation pair '(1 1))
+                       (ames.geometry:bodies-overlap (c) c))))
+      (is (typep condition 'ames-error))
+      (is (eq 'particle (ames.geometry:overlap-observer condition)))
+      (is (eq 'wedge (ames.geometry:overlap-obstacle condition)))
+      (is (search "overlap" (princ-to-string condition))))
+    ;; the CONTINUE restart lets the caller go on
+    (is (equal '(1 1) (handler-bind ((ames.geometry:bodies-overlap #'continue))
+                        (ames.geometry:check-separation pair '(1 1)))))))

@@ -274,6 +274,15 @@ position(obstacle)."
 obstacle's: an impossible configuration (for instance an invalid start)."
   (funcall (pair-inside-test pair) (pair-decider pair) (mapcar #'normalize-expression q)))
 
+(defun check-separation (pair q)
+  "Signal BODIES-OVERLAP when the relative position Q penetrates (see PENETRATES-P);
+return Q otherwise. The restart CONTINUE ignores the overlap."
+  (when (penetrates-p pair q)
+    (cerror "Go on with the overlapping bodies." 'bodies-overlap
+            :observer (pair-observer pair) :obstacle (pair-obstacle pair) :datum q
+            :detail "the bodies overlap"))
+  q)
+
 (defun relative-position (pair observer-position obstacle-position)
   "The relative position q of PAIR from the two bodies' positions (lists (X Y))."
   (declare (ignore pair))

@@ -14,6 +14,7 @@ which the normal force pushes the observer.")
    #:assume-true #:assume-false
    #:unsupported-shape-pair #:unsupported-observer #:unsupported-obstacle
    #:position-not-on-contact #:position-contact
+   #:bodies-overlap #:overlap-observer #:overlap-obstacle
    ;; shapes
    #:parse-shape #:shape #:shape-form #:shape-kind #:shape-convex-p #:shape-area
    #:shape-surface-p #:shape-closed-p
@@ -21,7 +22,7 @@ which the normal force pushes the observer.")
    #:choose-observer #:make-contact-pair #:make-contact-pair-with-observer
    #:contact-pair #:pair-observer #:pair-obstacle #:pair-observer-shape
    #:pair-obstacle-shape #:pair-contacts
-   #:relative-position #:contacts-at #:penetrates-p
+   #:relative-position #:contacts-at #:penetrates-p #:check-separation
    ;; simple contacts
    #:simple-contact #:contact-kind #:contact-index
    #:contact-observer #:contact-obstacle
@@ -38,4 +39,5 @@ which the normal force pushes the observer.")
    #:contact-meeting #:meeting #:meeting-contact #:meeting-gap #:meeting-rate
    #:meeting-extent #:meeting-conditions
    #:contact-leavings #:leaving #:leaving-contact #:leaving-endpoint #:leaving-point
-   #:leaving-equation #:leaving-direction #:leaving-neighbour))
+   #:leaving-equation #:leaving-direction #:leaving-neighbour
+   #:earliest-meeting #:earliest-leaving))
