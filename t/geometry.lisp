@@ -517,7 +517,19 @@ PATH-ACCELERATION with the derivatives of S-OF-TAU, at the SAMPLE-TIMES (numeric
     (is (g-close-p (cdr (first (ames.geometry:contacts-at pair '(0 1)))) (/ pi 2)))
     (is (null (ames.geometry:contacts-at pair '(0 -1))))
     (is (ames.geometry:penetrates-p pair '(0 1/2)))
-    (is (not (ames.geometry:penetrates-p pair '(0 -1/2))))))
+    (is (not (ames.geometry:penetrates-p pair '(0 -1/2)))))
+  ;; a disc rolling over the dome: an arc of radius 3/2, and a quarter turn round each end
+  (let ((pair (g-pair 'ball '(circle 1/2) 'dome '(arc :center (0 0) :radius 1 :from 0 :to pi))))
+    (is (eq 'ball (ames.geometry:pair-observer pair)))
+    (is (= 3 (length (ames.geometry:pair-contacts pair))))
+    (is (g-contacts-chain-p pair :open t))
+    (is (eql 3/2 (ames.geometry:contact-radius (g-contact pair '(:arc 0)))))
+    (is (g-close-p (ames.geometry:contact-length (g-contact pair '(:arc 0))) (* 3/2 pi)))
+    (dolist (end '((:vertex 0) (:vertex 1)))
+      (is (g-close-p (ames.geometry:contact-length (g-contact pair end)) (/ pi 4))))
+    (is (g-point= '(3/2 0) (ames.geometry:contact-start (g-contact pair '(:arc 0)))))
+    (is (null (ames.geometry:contacts-at pair '(0 -1/2))))
+    (is (ames.geometry:penetrates-p pair '(0 1)))))
 
 (defparameter *g-bitten-square*
   '(outline (line (0 0) (4 0)) (line (4 0) (4 4)) (line (4 4) (3 4))

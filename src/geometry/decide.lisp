@@ -127,11 +127,13 @@ or cannot be decided. Never signals: for optional simplifications only."
 
 (defun tidy (decider expression)
   "EXPRESSION in a simpler equal form: unchanged when it is a number or an atom or when
-there is no bridge, else Maxima's :FULL simplification under the current assumptions."
+there is no bridge, else Maxima's :FULL simplification under the current assumptions
+(unchanged too when Maxima's answer falls outside the algebra, e.g. an absolute value)."
   (let ((bridge (decider-bridge decider)))
     (if (or (null bridge) (atom expression) (rational-value expression))
         expression
-        (ames.maxima:simplify bridge expression :strategy :full))))
+        (handler-case (ames.maxima:simplify bridge expression :strategy :full)
+          (ames.maxima:untranslatable-result () expression)))))
 
 (defun tidy-vector (decider v)
   "The vector V with both components tidied."
