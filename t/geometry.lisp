@@ -225,6 +225,7 @@ for a closed boundary, all but one when OPEN (a thin surface's contacts)."
   (let* ((pair (g-pair 'particle 'point 'wedge '(polygon (0 0) (4 0) (0 3))))
          (slope (g-contact pair '(:edge 1))))
     (is (eq 'particle (ames.geometry:pair-observer pair)))
+    (is (g-point= '(2 3/2) (ames.geometry:relative-position pair '(7 5/2) '(5 1))))
     (is (= 3 (length (ames.geometry:pair-contacts pair))))
     (is (equal '(:point :of particle) (ames.geometry:contact-observer-feature slope)))
     (is (eql 5 (ames.geometry:contact-length slope)))

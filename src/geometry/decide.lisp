@@ -123,7 +123,6 @@ or cannot be decided. Never signals: for optional simplifications only."
 (defun negative-p (decider x) "X < 0." (fact-holds-p decider (list '< x 0)))
 (defun zero-p (decider x) "X = 0." (fact-holds-p decider (list '= x 0)))
 (defun nonnegative-p (decider x) "X >= 0." (fact-holds-p decider (list '>= x 0)))
-(defun nonpositive-p (decider x) "X <= 0." (fact-holds-p decider (list '<= x 0)))
 
 (defun tidy (decider expression)
   "EXPRESSION in a simpler equal form: unchanged when it is a number or an atom or when

@@ -40,11 +40,6 @@ cannot be decided (never signals)."
   (and (fact-known-p decider (list '= (vx a) (vx b)))
        (fact-known-p decider (list '= (vy a) (vy b)))))
 
-(defun vector-expression-p (x)
-  "True when X is a list of two valid arithmetic expressions."
-  (and (consp x) (alexandria:proper-list-p x) (= (length x) 2)
-       (every (lambda (e) (valid-expression-p e :kind :arithmetic :allow-terms nil)) x)))
-
 (defun unit-vector (decider v)
   "V divided by its length. Axis-aligned vectors give exact unit vectors (deciding the
 sign of their one non-zero component); others divide by (SQRT |V|^2)."
@@ -75,12 +70,6 @@ sign of their one non-zero component); others divide by (SQRT |V|^2)."
   "The direction whose angle is ANGLE."
   (%make-direction (polar angle) angle))
 
-(defun direction-angle (direction)
-  "The angle expression of DIRECTION, (ATAN Y X) unless known."
-  (or (direction-angle-slot direction)
-      (let ((v (direction-vector direction)))
-        (eatan2 (vy v) (vx v)))))
-
 (defun direction-angle-slot (direction)
   "The angle expression given for DIRECTION, or NIL."
   (direction-%angle direction))
@@ -94,10 +83,6 @@ sign of their one non-zero component); others divide by (SQRT |V|^2)."
 (defun same-direction-p (decider a b)
   "True when the vectors A and B point the same way (parallel, not opposite)."
   (and (zero-p decider (cross a b)) (positive-p decider (dot a b))))
-
-(defun opposite-direction-p (decider a b)
-  "True when the vectors A and B point opposite ways."
-  (and (zero-p decider (cross a b)) (negative-p decider (dot a b))))
 
 ;;; Angular ranges
 
