@@ -452,6 +452,12 @@ PATH-ACCELERATION with the derivatives of S-OF-TAU, at the SAMPLE-TIMES (numeric
     (is (null (ames.geometry:contacts-at pair '(0 1))))
     (is (ames.geometry:penetrates-p pair '(0 -1/10)))
     (is (not (ames.geometry:penetrates-p pair '(0 1/10)))))
+  ;; the particle on the ground: the ground's own line
+  (let ((pair (g-pair 'ground '(half-plane (1 0) (0 0)) 'particle 'point)))
+    (is (eq 'particle (ames.geometry:pair-observer pair)))
+    (is (equal '(:point :of particle)
+               (ames.geometry:contact-observer-feature (first (ames.geometry:pair-contacts pair)))))
+    (is (= 1 (length (ames.geometry:contacts-at pair '(3 0))))))
   ;; a disc rests on the ground when its centre is one radius up
   (let ((pair (g-pair 'ball '(circle 2) 'ground '(half-plane (1 0) (0 0)))))
     (is (= 1 (length (ames.geometry:contacts-at pair '(5 2)))))

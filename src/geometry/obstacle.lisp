@@ -137,7 +137,7 @@ the penetration test (a function of decider and q)."
                   :detail "an outline with a concave arc can only be touched by a point"))
           ((not (shape-decomposable-p observer-shape))
            (error 'unsupported-shape-pair
-                  :detail "a body with a concave arc can only observe a half-plane"))
+                  :detail "a body with a concave arc can only be touched by a point"))
           ((eq obstacle-kind :half-plane)
            (half-plane-boundary decider observer-shape obstacle-shape))
           (t (general-boundary decider observer-shape obstacle-shape)))))
