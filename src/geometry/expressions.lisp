@@ -475,8 +475,8 @@ arithmetic error occurs."
 ;;; Derivatives (of relative trajectories and gap functions with respect to time).
 
 (defun differentiate (expression variable)
-  "The derivative of EXPRESSION with respect to the variable VARIABLE. Quantity terms
-and other variables are constants. Signals MALFORMED-EXPRESSION for an operator it
+  "The derivative of EXPRESSION (prefix algebra) with respect to the variable VARIABLE,
+lightly simplified. Quantity terms and other variables are constants. Signals MALFORMED-EXPRESSION for an operator it
 does not know."
   (labels ((d (x)
              (cond ((eq x variable) 1)

@@ -51,7 +51,7 @@ and call inside ames.maxima:with-assumptions for symbolic shapes):
    #:contact-tangent-angle #:contact-normal-angle
    #:position-on-contact-p #:contact-parameter
    ;; path coordinates
-   #:path-velocity #:path-acceleration
+   #:path-velocity #:path-acceleration #:differentiate
    ;; meeting and leaving contacts
    #:contact-meeting #:meeting #:meeting-contact #:meeting-gap #:meeting-rate
    #:meeting-extent #:meeting-conditions
