@@ -200,3 +200,35 @@ given, by their values agreeing at every sample."
            (is (g-same-meaning-p bridge time '(/ (sqrt (/ h g)) (sin a))
                                  :samples '(((h . 2) (g . 9.8d0) (a . 0.4d0))
                                             ((h . 1) (g . 1) (a . 1.1d0)))))))))))
+
+(defparameter *g-tilted-block*
+  '(polygon ((- (* (/ b 2) (cos a))) (* (/ b 2) (sin a)))
+            ((* (/ b 2) (cos a)) (- (* (/ b 2) (sin a))))
+            ((+ (* (/ b 2) (cos a)) (* b (sin a))) (+ (- (* (/ b 2) (sin a))) (* b (cos a))))
+            ((+ (- (* (/ b 2) (cos a))) (* b (sin a))) (+ (* (/ b 2) (sin a)) (* b (cos a)))))
+  "scenarios/block-on-incline.lisp: a square of side b tilted to sit on the slope.")
+
+(test geometry-tilted-block-on-symbolic-incline
+  ;; the square sits face on face on the slope's middle; the flat contact runs the
+  ;; slope's length plus the block's side, h / sin a + b
+  (g-call-with-bridge
+   (list* '(> b 0) '(< b h) *g-wedge-facts*)
+   (lambda (bridge)
+     (let* ((pair (ames.geometry:make-contact-pair
+                   'incline (g-shape *g-wedge-form* bridge) 'block (g-shape *g-tilted-block* bridge)
+                   :bridge bridge :fixed '(incline)))
+            (face (g-contact pair '(:edge 1) '(:edge 0)))
+            (start '((/ h (* 2 (tan a))) (/ h 2))))
+       (is (eq 'block (ames.geometry:pair-observer pair)))
+       (is (= 6 (length (ames.geometry:pair-contacts pair))))
+       (is (not (null face)))
+       (when face
+         (is (g-same-meaning-p bridge (ames.geometry:contact-length face) '(+ (/ h (sin a)) b)))
+         (is (g-same-meaning-p bridge (ames.geometry:contact-outward-normal face 's) '((sin a) (cos a))))
+         (let ((at (ames.geometry:contacts-at pair start)))
+           (is (equal (list face) (mapcar #'car at)))
+           (is (g-same-meaning-p bridge (cdr (first at)) '(/ (+ (/ h (sin a)) b) 2)
+                                 :samples '(((h . 2) (a . 0.4d0) (b . 1))
+                                            ((h . 3) (a . 1.2d0) (b . 1/2)))))))
+       (is (not (ames.geometry:penetrates-p pair start)))
+       (is (ames.geometry:penetrates-p pair '((/ h (* 2 (tan a))) (/ h 4))))))))

@@ -417,6 +417,10 @@ PATH-ACCELERATION with the derivatives of S-OF-TAU, at the SAMPLE-TIMES (numeric
     (is (eq 'w (observer 'table '(segment (4 0) (0 0)) 'w '(polygon (0 0) (4 0) (0 3)))))
     (is (eq 'small (observer 'big '(polygon (0 0) (4 0) (4 4) (0 4)) 'small '(circle 1))))
     (is (eq 'small (observer 'small '(circle 1) 'big '(polygon (0 0) (4 0) (4 4) (0 4)))))
+    ;; a fixed body does not observe a moving one, however small
+    (is (eq 'big (nth-value 0 (ames.geometry:choose-observer
+                               'big (g-shape '(polygon (0 0) (4 0) (4 4) (0 4)))
+                               'small (g-shape '(circle 1)) :fixed '(small)))))
     ;; equal sizes: the first body observes
     (is (eq 'a (observer 'a '(polygon (0 0) (1 0) (1 1) (0 1)) 'b '(polygon (0 0) (1 0) (1 1) (0 1)))))
     (is (eq 'p (observer 'p 'point 'bowl '(arc :center (0 0) :radius 1 :from pi :to (* 2 pi)
