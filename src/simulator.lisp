@@ -104,7 +104,9 @@ scenario's assumptions (branching on it comes later). Restart: STOP-SIMULATION."
                         (pair (ames.geometry:make-contact-pair
                                name-1 (cdr (assoc name-1 shapes))
                                name-2 (cdr (assoc name-2 shapes))
-                               :bridge bridge)))
+                               :bridge bridge
+                               :fixed (mapcar #'scenario-body-name
+                                              (scenario-fixed-bodies scenario)))))
                    (dolist (contact (ames.geometry:pair-contacts pair))
                      (push (cons (contact-entity-name index) contact) contacts)
                      (incf index))))))

@@ -122,11 +122,5 @@
    (lambda (bridge)
      (dolist (file (scenario-files))
        (let ((scenario (first (ames:read-scenario-file file))))
-         (if (string= (pathname-name file) "block-on-incline")
-             ;; Known limitation of the geometry layer (reported to the lead): its
-             ;; LINK-NEIGHBOURS asks whether the ends of any two contacts coincide, which
-             ;; for a symbolically tilted square holds only at a = pi/4 and so cannot be
-             ;; decided under 0 < a < pi/2.
-             (skip "block-on-incline: geometry's link-neighbours asks an undecidable equality")
-             (is (eq scenario (ames:check-scenario scenario bridge))
-                 "~A failed the geometry checks" (pathname-name file))))))))
+         (is (eq scenario (ames:check-scenario scenario bridge))
+             "~A failed the geometry checks" (pathname-name file)))))))

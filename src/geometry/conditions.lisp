@@ -55,3 +55,13 @@ but does not. DATUM is the position.")
              (format stream "The relative position ~S does not lie on the contact ~A."
                      (ames-error-datum condition)
                      (position-contact condition)))))
+
+(define-condition bodies-overlap (geometry-error)
+  ((observer :initarg :observer :reader overlap-observer)
+   (obstacle :initarg :obstacle :reader overlap-obstacle))
+  (:documentation "Two bodies placed so that their interiors overlap: an impossible
+(invalid starting) configuration. DATUM is the relative position.")
+  (:report (lambda (condition stream)
+             (format stream "~S and ~S overlap: at the relative position ~S the one penetrates the other."
+                     (overlap-observer condition) (overlap-obstacle condition)
+                     (ames-error-datum condition)))))

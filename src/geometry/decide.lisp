@@ -123,15 +123,16 @@ or cannot be decided. Never signals: for optional simplifications only."
 (defun negative-p (decider x) "X < 0." (fact-holds-p decider (list '< x 0)))
 (defun zero-p (decider x) "X = 0." (fact-holds-p decider (list '= x 0)))
 (defun nonnegative-p (decider x) "X >= 0." (fact-holds-p decider (list '>= x 0)))
-(defun nonpositive-p (decider x) "X <= 0." (fact-holds-p decider (list '<= x 0)))
 
 (defun tidy (decider expression)
   "EXPRESSION in a simpler equal form: unchanged when it is a number or an atom or when
-there is no bridge, else Maxima's :FULL simplification under the current assumptions."
+there is no bridge, else Maxima's :FULL simplification under the current assumptions
+(unchanged too when Maxima's answer falls outside the algebra, e.g. an absolute value)."
   (let ((bridge (decider-bridge decider)))
     (if (or (null bridge) (atom expression) (rational-value expression))
         expression
-        (ames.maxima:simplify bridge expression :strategy :full))))
+        (handler-case (ames.maxima:simplify bridge expression :strategy :full)
+          (ames.maxima:untranslatable-result () expression)))))
 
 (defun tidy-vector (decider v)
   "The vector V with both components tidied."

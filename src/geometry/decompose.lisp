@@ -17,16 +17,6 @@
        (nonnegative-p decider (cross (v- c b) (v- p b)))
        (nonnegative-p decider (cross (v- a c) (v- p c)))))
 
-(defun straightened-polygon (decider vertices)
-  "The indices of VERTICES without the corners where the boundary goes straight on."
-  (let ((n (length vertices)))
-    (loop for i below n
-          for prev = (nth (mod (1- i) n) vertices)
-          for here = (nth i vertices)
-          for next = (nth (mod (1+ i) n) vertices)
-          unless (zero-p decider (cross (v- here prev) (v- next here)))
-            collect i)))
-
 (defun triangulate (decider vertices indices)
   "Ear-clipping triangulation of the simple counter-clockwise polygon whose corners are
 the VERTICES at INDICES: a list of index triples."
@@ -101,14 +91,13 @@ the union stays convex."
 features. (EDGE-NAME I) names the edge from vertex I to I+1, (VERTEX-NAME I) vertex I;
 diagonals get no name and are not exposed."
   (let* ((n (length vertices))
-         (indices (straightened-polygon decider vertices))
+         (indices (alexandria:iota n))
          (original-edge-p (lambda (u v)
-                            ;; u -> v follows the boundary (possibly over straight corners)
+                            ;; u -> v is an edge of the polygon
                             (let ((after (member u indices)))
                               (eql v (if (rest after) (second after) (first indices))))))
          (triangles (triangulate decider vertices indices))
          (parts (merge-convex-parts decider vertices triangles original-edge-p)))
-    (declare (ignorable n))
     (loop for part in parts
           collect (let ((pieces '()) (names '()) (exposure '()))
                     (loop for (u v) on (append part (list (first part)))

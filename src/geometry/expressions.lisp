@@ -299,19 +299,37 @@ for other non-negative rationals."
 (defun two-argument-atan-p (x)
   (and (consp x) (eq (car x) 'atan) (= (length x) 3)))
 
+(defun split-quarter-turns (x)
+  "X as (values REST K) with X = REST + K PI/2 for an integer K taken from X's terms."
+  (let ((k 0) (rest '()))
+    (dolist (term (if (and (consp x) (eq (car x) '+)) (cdr x) (list x)))
+      (let ((r (pi-multiple term)))
+        (if (and r (integerp (* 2 r)))
+            (incf k (* 2 r))
+            (push term rest))))
+    (values (apply #'e+ (nreverse rest)) (mod k 4))))
+
 (defun ecos (x)
-  "The cosine of X; cos(atan(y, x)) = x / sqrt(x^2 + y^2)."
-  (cond ((special-angle-value x 'cos))
-        ((two-argument-atan-p x)
-         (e/ (third x) (esqrt (e+ (esquare (second x)) (esquare (third x))))))
-        (t (list 'cos x))))
+  "The cosine of X: exact at multiples of PI/4 and PI/6; cos(atan(y, x)) =
+x / sqrt(x^2 + y^2); quarter turns in X shifted out."
+  (multiple-value-bind (rest k) (split-quarter-turns x)
+    (cond ((special-angle-value x 'cos))
+          ((and (not (equal rest x)) (not (eql rest 0)))
+           (ecase k (0 (ecos rest)) (1 (e- (esin rest))) (2 (e- (ecos rest))) (3 (esin rest))))
+          ((two-argument-atan-p x)
+           (e/ (third x) (esqrt (e+ (esquare (second x)) (esquare (third x))))))
+          (t (list 'cos x)))))
 
 (defun esin (x)
-  "The sine of X; sin(atan(y, x)) = y / sqrt(x^2 + y^2)."
-  (cond ((special-angle-value x 'sin))
-        ((two-argument-atan-p x)
-         (e/ (second x) (esqrt (e+ (esquare (second x)) (esquare (third x))))))
-        (t (list 'sin x))))
+  "The sine of X: exact at multiples of PI/4 and PI/6; sin(atan(y, x)) =
+y / sqrt(x^2 + y^2); quarter turns in X shifted out."
+  (multiple-value-bind (rest k) (split-quarter-turns x)
+    (cond ((special-angle-value x 'sin))
+          ((and (not (equal rest x)) (not (eql rest 0)))
+           (ecase k (0 (esin rest)) (1 (ecos rest)) (2 (e- (esin rest))) (3 (e- (ecos rest)))))
+          ((two-argument-atan-p x)
+           (e/ (second x) (esqrt (e+ (esquare (second x)) (esquare (third x))))))
+          (t (list 'sin x)))))
 
 (defun etan (x)
   "The tangent of X."
@@ -350,9 +368,15 @@ multiple of PI/6 or PI/4, else NIL."
 (defun eatan2 (y x)
   "The angle of the direction (X, Y), in (-PI, PI], as (ATAN Y X) unless exact."
   (let ((special (special-atan2 y x)))
-    (if special
-        (e* special 'pi)
-        (list 'atan y x))))
+    (cond (special (e* special 'pi))
+          ((and (rationalp y) (rationalp x))
+           ;; reduce (12, -16) to (3, -4)
+           (let ((scale (/ (max (abs x) (abs y)))))
+             (let* ((ny (* y scale)) (nx (* x scale))
+                    (common (/ (lcm (denominator nx) (denominator ny))
+                               (gcd (numerator nx) (numerator ny)))))
+               (list 'atan (* ny common) (* nx common)))))
+          (t (list 'atan y x)))))
 
 (defun normalize-expression (expression)
   "EXPRESSION rebuilt bottom-up through the simplifying constructors: numbers folded,
@@ -451,8 +475,8 @@ arithmetic error occurs."
 ;;; Derivatives (of relative trajectories and gap functions with respect to time).
 
 (defun differentiate (expression variable)
-  "The derivative of EXPRESSION with respect to the variable VARIABLE. Quantity terms
-and other variables are constants. Signals MALFORMED-EXPRESSION for an operator it
+  "The derivative of EXPRESSION (prefix algebra) with respect to the variable VARIABLE,
+lightly simplified. Quantity terms and other variables are constants. Signals MALFORMED-EXPRESSION for an operator it
 does not know."
   (labels ((d (x)
              (cond ((eq x variable) 1)

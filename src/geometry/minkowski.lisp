@@ -41,7 +41,8 @@ EXPOSED is false for features that never give contacts."
 
 (defun merge-collinear-pieces (decider pieces vertex-names)
   "PIECES (a closed chain) and the names of the vertices at their starts, with
-consecutive line pieces that continue straight on merged into one."
+consecutive line pieces of the same name that continue straight on merged into one.
+(Differently named pieces stay apart: CONVEX-SUM handles such straight runs.)"
   (let ((chain (mapcar #'cons pieces vertex-names)))
     (loop
       (let ((n (length chain)) (merged nil))
@@ -49,6 +50,7 @@ consecutive line pieces that continue straight on merged into one."
         (loop for i below n
               for a = (nth i chain) for b = (nth (mod (1+ i) n) chain)
               when (and (line-piece-p (car a)) (line-piece-p (car b))
+                        (equal (line-piece-name (car a)) (line-piece-name (car b)))
                         (same-direction-p decider (line-normal (car a)) (line-normal (car b))))
                 do (let ((joined (cons (make-line-piece (line-piece-start (car a))
                                                         (line-piece-end (car b))
@@ -167,7 +169,9 @@ the convex obstacle B and ALPHAS those of -A (already reflected), both counter-c
                (make-line-piece (v+ (line-piece-start piece) offset-start)
                                 (v+ (line-piece-end piece) offset-end)
                                 :infinite (line-piece-infinite piece)))
-             (edge-of-b (beta)
+             (edge-of-b (beta continued)
+               ;; CONTINUED: the next feature of B is an edge going straight on; the
+               ;; observer's parallel edge is then added after the last edge of the run
                (let* ((n (feature-normal beta))
                       (parallel (find-if (lambda (alpha)
                                            (and (feature-edge-p alpha)
@@ -176,7 +180,9 @@ the convex obstacle B and ALPHAS those of -A (already reflected), both counter-c
                  (if parallel
                      (emit (translated-line (feature-piece beta)
                                             (line-piece-start (feature-piece parallel))
-                                            (line-piece-end (feature-piece parallel)))
+                                            (if continued
+                                                (line-piece-start (feature-piece parallel))
+                                                (line-piece-end (feature-piece parallel))))
                            beta parallel)
                      (let* ((alpha (containing n))
                             (offset (support-point decider alpha n)))
@@ -222,9 +228,14 @@ the convex obstacle B and ALPHAS those of -A (already reflected), both counter-c
                                               deferred)
                              beta (aref alpha-vector j0))))))))
       (loop for beta in betas
+            for i from 0
             for previous-edge-normal in previous-edge-normals
             do (if (feature-edge-p beta)
-                   (edge-of-b beta)
+                   (edge-of-b beta
+                              (let ((next (nth (mod (1+ i) (length betas)) betas)))
+                                (and (not (eq next beta)) (feature-edge-p next)
+                                     (same-direction-p decider (feature-normal beta)
+                                                       (feature-normal next)))))
                    (corner-or-arc-of-b beta previous-edge-normal)))
       (nreverse pieces))))
 

@@ -7,7 +7,8 @@
 ;;;; The observer is chosen as the thesis does (the smaller body observes), with the
 ;;;; rules: a point always observes; a half-plane or another thin surface (segment, arc
 ;;;; track) never does unless both bodies are such; a body with a concave arc does not
-;;;; observe a body without; otherwise the smaller area observes, and when that cannot
+;;;; observe a body without; a fixed body (when the caller says which are fixed) does
+;;;; not observe a moving one; otherwise the smaller area observes, and when that cannot
 ;;;; be decided (or the areas are equal) the first body given observes.
 
 (in-package #:ames.geometry)
@@ -32,10 +33,11 @@ and every simple contact between them."))
     (format stream "~A seen by ~A, ~D contact~:P" (pair-obstacle pair) (pair-observer pair)
             (length (pair-contacts pair)))))
 
-(defun choose-observer (name-1 shape-1 name-2 shape-2 &key bridge)
+(defun choose-observer (name-1 shape-1 name-2 shape-2 &key bridge fixed)
   "Which of two bodies observes the other. Returns (values OBSERVER-NAME OBSERVER-SHAPE
-OBSTACLE-NAME OBSTACLE-SHAPE). See the file header for the rules. Never signals for an
-undecidable size: the first body then observes."
+OBSTACLE-NAME OBSTACLE-SHAPE). FIXED lists the names of the bodies glued to the fixed
+frame. See the file header for the rules. Never signals for an undecidable size: the
+first body then observes."
   (let ((decider (ensure-decider bridge (list name-1 name-2))))
     (flet ((first-observes () (values name-1 shape-1 name-2 shape-2))
            (second-observes () (values name-2 shape-2 name-1 shape-1))
@@ -48,22 +50,24 @@ undecidable size: the first body then observes."
             ((eq (kind shape-2) :half-plane) (first-observes))
             ((and (shape-decomposable-p shape-1) (not (shape-decomposable-p shape-2))) (first-observes))
             ((and (shape-decomposable-p shape-2) (not (shape-decomposable-p shape-1))) (second-observes))
+            ((and (member name-1 fixed) (not (member name-2 fixed))) (second-observes))
+            ((and (member name-2 fixed) (not (member name-1 fixed))) (first-observes))
             (t (let ((a1 (shape-area shape-1)) (a2 (shape-area shape-2)))
                  (if (and (not (fact-known-p decider (list '< a1 a2)))
                           (fact-known-p decider (list '< a2 a1)))
                      (second-observes)
                      (first-observes))))))))
 
-(defun make-contact-pair (name-1 shape-1 name-2 shape-2 &key bridge)
+(defun make-contact-pair (name-1 shape-1 name-2 shape-2 &key bridge fixed)
   "The CONTACT-PAIR of the bodies NAME-1 and NAME-2 with SHAPE-1 and SHAPE-2 (from
-PARSE-SHAPE): the observer is chosen by CHOOSE-OBSERVER and every simple contact of the
-obstacle seen by it is built. BRIDGE decides symbolic facts (call under the scenario's
+PARSE-SHAPE): the observer is chosen by CHOOSE-OBSERVER (FIXED lists the fixed bodies'
+names) and every simple contact of the obstacle seen by it is built. BRIDGE decides symbolic facts (call under the scenario's
 assumptions). Signals UNSUPPORTED-SHAPE-PAIR for pairs this layer cannot handle (two
 half-planes; a concave arc against anything but a point, or a bowl against anything
 but a point or a disc) and UNDECIDABLE-GEOMETRIC-FACT when a needed fact cannot be
 decided."
   (multiple-value-bind (observer observer-shape obstacle obstacle-shape)
-      (choose-observer name-1 shape-1 name-2 shape-2 :bridge bridge)
+      (choose-observer name-1 shape-1 name-2 shape-2 :bridge bridge :fixed fixed)
     (make-contact-pair-with-observer observer observer-shape obstacle obstacle-shape
                                      :bridge bridge)))
 
@@ -95,12 +99,13 @@ decided."
                                        :decider decider))))))
 
 (defun link-neighbours (decider contacts)
-  "Record, for each contact, the contact that continues past each of its ends."
+  "Record, for each contact, the contact that continues past each of its ends (when
+the two ends are known to coincide)."
   (dolist (a contacts)
     (when (contact-end a)
       (dolist (b contacts)
         (when (and (not (eq a b)) (member (contact-kind b) '(:segment :arc))
-                   (vector-equal-p decider (contact-end a) (contact-start b)))
+                   (vector-known-equal-p decider (contact-end a) (contact-start b)))
           (push (cons :end b) (contact-neighbours a))
           (push (cons :start a) (contact-neighbours b)))))))
 
@@ -136,7 +141,7 @@ the penetration test (a function of decider and q)."
                   :detail "an outline with a concave arc can only be touched by a point"))
           ((not (shape-decomposable-p observer-shape))
            (error 'unsupported-shape-pair
-                  :detail "a body with a concave arc can only observe a half-plane"))
+                  :detail "a body with a concave arc can only be touched by a point"))
           ((eq obstacle-kind :half-plane)
            (half-plane-boundary decider observer-shape obstacle-shape))
           (t (general-boundary decider observer-shape obstacle-shape)))))
@@ -272,6 +277,15 @@ position(obstacle)."
   "True when, at the relative position Q, the observer's interior overlaps the
 obstacle's: an impossible configuration (for instance an invalid start)."
   (funcall (pair-inside-test pair) (pair-decider pair) (mapcar #'normalize-expression q)))
+
+(defun check-separation (pair q)
+  "Signal BODIES-OVERLAP when the relative position Q penetrates (see PENETRATES-P);
+return Q otherwise. The restart CONTINUE ignores the overlap."
+  (when (penetrates-p pair q)
+    (cerror "Go on with the overlapping bodies." 'bodies-overlap
+            :observer (pair-observer pair) :obstacle (pair-obstacle pair) :datum q
+            :detail "the bodies overlap"))
+  q)
 
 (defun relative-position (pair observer-position obstacle-position)
   "The relative position q of PAIR from the two bodies' positions (lists (X Y))."

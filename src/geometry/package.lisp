@@ -3,10 +3,27 @@
 (defpackage #:ames.geometry
   (:use #:cl #:ames.base)
   (:documentation "Shapes, configuration-space obstacles split into simple contacts,
-and path coordinates. Relative positions follow one convention: q = position(observer)
-- position(obstacle), in the obstacle's (non-rotating) frame. Simple contacts are
-directed with the obstacle on their left; their outward normal is the direction in
-which the normal force pushes the observer.")
+and path coordinates (thesis sections 2.5.2 and 2.5.7).
+
+Conventions: the relative position of a pair is q = position(observer) -
+position(obstacle), in the obstacle's (non-rotating) frame. A simple contact is
+directed with the obstacle on its left; its outward normal (the unit tangent turned
+clockwise) is the direction in which the normal force pushes the observer. Arc length s
+runs from 0 at the contact's start. Curvature is positive when the contact bends toward
+the obstacle; path acceleration = sddot T + sdot^2 K N, N the inward normal.
+
+Entry points, in the order a simulator uses them (pass the Maxima bridge as :BRIDGE
+and call inside ames.maxima:with-assumptions for symbolic shapes):
+  PARSE-SHAPE form                        -> SHAPE (signals INVALID-SHAPE)
+  MAKE-CONTACT-PAIR n1 s1 n2 s2           -> CONTACT-PAIR (observer chosen by
+                                             CHOOSE-OBSERVER), PAIR-CONTACTS
+  RELATIVE-POSITION, CHECK-SEPARATION /
+  PENETRATES-P pair q                     -> invalid (overlapping) starts
+  CONTACTS-AT pair q                      -> ((contact . s) ...) holding at q
+  CONTACT-OUTWARD-NORMAL / -NORMAL-ANGLE  -> normal force direction at s
+  CONTACT-POINT, -UNIT-TANGENT, -CURVATURE, PATH-VELOCITY, PATH-ACCELERATION
+  CONTACT-MEETING / EARLIEST-MEETING      -> when q(tau) meets a contact
+  CONTACT-LEAVINGS / EARLIEST-LEAVING     -> when s(tau) passes an end")
   (:export
    ;; conditions
    #:geometry-error #:invalid-shape #:invalid-shape-form
@@ -14,6 +31,7 @@ which the normal force pushes the observer.")
    #:assume-true #:assume-false
    #:unsupported-shape-pair #:unsupported-observer #:unsupported-obstacle
    #:position-not-on-contact #:position-contact
+   #:bodies-overlap #:overlap-observer #:overlap-obstacle
    ;; shapes
    #:parse-shape #:shape #:shape-form #:shape-kind #:shape-convex-p #:shape-area
    #:shape-surface-p #:shape-closed-p
@@ -21,7 +39,7 @@ which the normal force pushes the observer.")
    #:choose-observer #:make-contact-pair #:make-contact-pair-with-observer
    #:contact-pair #:pair-observer #:pair-obstacle #:pair-observer-shape
    #:pair-obstacle-shape #:pair-contacts
-   #:relative-position #:contacts-at #:penetrates-p
+   #:relative-position #:contacts-at #:penetrates-p #:check-separation
    ;; simple contacts
    #:simple-contact #:contact-kind #:contact-index
    #:contact-observer #:contact-obstacle
@@ -38,4 +56,5 @@ which the normal force pushes the observer.")
    #:contact-meeting #:meeting #:meeting-contact #:meeting-gap #:meeting-rate
    #:meeting-extent #:meeting-conditions
    #:contact-leavings #:leaving #:leaving-contact #:leaving-endpoint #:leaving-point
-   #:leaving-equation #:leaving-direction #:leaving-neighbour))
+   #:leaving-equation #:leaving-direction #:leaving-neighbour
+   #:earliest-meeting #:earliest-leaving))

@@ -163,7 +163,7 @@ ends, loop after loop (counter-clockwise along each boundary curve)."
                                    (find-if (lambda (sp)
                                               (let ((start (piece-endpoints (sum-piece-piece sp))))
                                                 (and start
-                                                     (vector-equal-p decider (second end) (first start)))))
+                                                     (vector-known-equal-p decider (second end) (first start)))))
                                             remaining))))
                    (unless next (return))
                    (setf remaining (remove next remaining))

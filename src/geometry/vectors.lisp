@@ -34,10 +34,11 @@
   (and (zero-p decider (e- (vx a) (vx b)))
        (zero-p decider (e- (vy a) (vy b)))))
 
-(defun vector-expression-p (x)
-  "True when X is a list of two valid arithmetic expressions."
-  (and (consp x) (alexandria:proper-list-p x) (= (length x) 2)
-       (every (lambda (e) (valid-expression-p e :kind :arithmetic :allow-terms nil)) x)))
+(defun vector-known-equal-p (decider a b)
+  "True when A and B are known to be the same vector; NIL when they differ or when it
+cannot be decided (never signals)."
+  (and (fact-known-p decider (list '= (vx a) (vx b)))
+       (fact-known-p decider (list '= (vy a) (vy b)))))
 
 (defun unit-vector (decider v)
   "V divided by its length. Axis-aligned vectors give exact unit vectors (deciding the
@@ -69,12 +70,6 @@ sign of their one non-zero component); others divide by (SQRT |V|^2)."
   "The direction whose angle is ANGLE."
   (%make-direction (polar angle) angle))
 
-(defun direction-angle (direction)
-  "The angle expression of DIRECTION, (ATAN Y X) unless known."
-  (or (direction-angle-slot direction)
-      (let ((v (direction-vector direction)))
-        (eatan2 (vy v) (vx v)))))
-
 (defun direction-angle-slot (direction)
   "The angle expression given for DIRECTION, or NIL."
   (direction-%angle direction))
@@ -88,10 +83,6 @@ sign of their one non-zero component); others divide by (SQRT |V|^2)."
 (defun same-direction-p (decider a b)
   "True when the vectors A and B point the same way (parallel, not opposite)."
   (and (zero-p decider (cross a b)) (positive-p decider (dot a b))))
-
-(defun opposite-direction-p (decider a b)
-  "True when the vectors A and B point opposite ways."
-  (and (zero-p decider (cross a b)) (negative-p decider (dot a b))))
 
 ;;; Angular ranges
 
@@ -191,17 +182,16 @@ ranges, in counter-clockwise order from R1's start."
       (angle-of-vector decider (direction-vector direction))))
 
 (defun range-sweep (decider range)
-  "The angle RANGE sweeps, an expression in [0, 2 PI] (2 PI for the full circle). When
-both ends carry given angles whose difference is evidently the sweep, that difference
-is used; otherwise the angle between the end vectors."
+  "The angle RANGE sweeps, an expression in [0, 2 PI] (2 PI for the full circle): the
+difference of its ends' angles, shifted by a full turn if need be, so that the end of
+an arc built on it is exactly at its end direction's angle."
   (let ((class (range-sweep-class decider range)))
     (if (member class '(:full :empty))
         (if (eq class :full) (e* 2 'pi) 0)
         (let* ((a (direction-vector (angular-range-from range)))
                (b (direction-vector (angular-range-to range)))
-               (from-angle (direction-angle-slot (angular-range-from range)))
-               (to-angle (direction-angle-slot (angular-range-to range)))
-               (difference (and from-angle to-angle (e- to-angle from-angle))))
+               (difference (e- (direction-angle-decided decider (angular-range-to range))
+                               (direction-angle-decided decider (angular-range-from range)))))
           (flet ((fits (x)
                    (and (fact-known-p decider (list '> x 0))
                         (ecase class
@@ -209,8 +199,9 @@ is used; otherwise the angle between the end vectors."
                           (:pi (fact-known-p decider (list '= x 'pi)))
                           (:above-pi (and (fact-known-p decider (list '> x 'pi))
                                           (fact-known-p decider (list '< x (e* 2 'pi)))))))))
-            (cond ((and difference (fits difference)) difference)
-                  ((and difference (fits (e+ difference (e* 2 'pi)))) (e+ difference (e* 2 'pi)))
+            (cond ((fits difference) difference)
+                  ((fits (e+ difference (e* 2 'pi))) (e+ difference (e* 2 'pi)))
+                  ((fits (e- difference (e* 2 'pi))) (e- difference (e* 2 'pi)))
                   (t (ecase class
                        (:below-pi (eatan2 (cross a b) (dot a b)))
                        (:pi 'pi)
