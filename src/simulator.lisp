@@ -355,6 +355,29 @@ FACT is the relation the assumptions do not decide."
       ((< <=) (first-time-negative run (over-time `(- ,(relation-lhs relation) ,(relation-rhs relation)))))
       ((> >=) (first-time-negative run (over-time `(- ,(relation-rhs relation) ,(relation-lhs relation))))))))
 
+(defun extent-margin (relation)
+  "For an extent RELATION (>= X Y) or (<= X Y), the expression that must be >= 0."
+  (ecase (first relation)
+    ((>= >) `(- ,(relation-lhs relation) ,(relation-rhs relation)))
+    ((<= <) `(- ,(relation-rhs relation) ,(relation-lhs relation)))))
+
+(defun stays-negative-p (run h)
+  "True when H, a polynomial of degree at most 2 in TAU, is proven negative for every
+TAU > 0: H(0) <= 0, H'(0) <= 0 and H'' <= 0, not all zero. A cheap, sound test that
+rules out a meeting without solving for it; NIL when it does not apply."
+  (let* ((h (tidy run h :ratsimp))
+         (d1 (tidy run (time-derivative h) :ratsimp))
+         (d2 (tidy run (time-derivative d1) :ratsimp))
+         (d3 (tidy run (time-derivative d2) :ratsimp)))
+    (and (eql d3 0)
+         (let ((h0 (at-time h 0)) (d10 (at-time d1 0)))
+           (and (eq (decide run `(<= ,h0 0)) :true)
+                (eq (decide run `(<= ,d10 0)) :true)
+                (eq (decide run `(<= ,d2 0)) :true)
+                (or (eq (decide run `(< ,h0 0)) :true)
+                    (eq (decide run `(< ,d10 0)) :true)
+                    (eq (decide run `(< ,d2 0)) :true)))))))
+
 (defun contact-meeting-time (run motions contact)
   "When the relative trajectory first meets the potential CONTACT from its exterior:
 (values :AT TIME RATE), (values :NEVER) or (values :UNKNOWN FACT). RATE is the
@@ -363,6 +386,11 @@ approach rate of the gap at that time (negative: a collision; zero: a grazing co
          (meeting (ames.geometry:contact-meeting geometry (relative-trajectory motions geometry)))
          (gap (tidy run (ames.geometry:meeting-gap meeting)))
          (after 0))
+    ;; a condition that can never hold again rules the meeting out at once
+    (when (some (lambda (h) (stays-negative-p run h))
+                (cons `(- ,gap) ; the gap must close ...
+                      (mapcar #'extent-margin (ames.geometry:meeting-extent meeting)))) ; ... within the ends
+      (return-from contact-meeting-time (values :never)))
     ;; a gap already closed at the start is not a meeting: look strictly after the start,
     ;; dividing out TAU so that the bridge sees the lowest degree
     (loop repeat 3
