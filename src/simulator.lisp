@@ -593,13 +593,26 @@ CANDIDATEs."
                                        (or (scenario-body-velocity body) '(0 0))))
                   (scenario-bodies scenario))))
 
+(defun time-after (run start state)
+  "The global time at which STATE, started at START, ends: an expression, or
+(:END-OF-STATE N [:PLUS EXPR]) when a state's duration has no closed form."
+  (let ((duration (state-duration state)))
+    (cond ((and (consp start) (keywordp (first start)))
+           (if (and (not (keywordp duration)) (not (and (consp duration) (keywordp (first duration)))))
+               (list :end-of-state (second start)
+                     :plus (tidy run `(+ ,(or (getf (cddr start) :plus) 0) ,duration)))
+               (list :end-of-state (state-index state))))
+          ((and (consp duration) (keywordp (first duration)))
+           (list :end-of-state (state-index state)))
+          (t (tidy run `(+ ,start ,duration))))))
+
 (defun enter-next-state (run state fired &key (check-incremental t))
   "Carry the final positions and velocities of STATE over, and apply the changes the
 FIRED candidates stand for to the model, incrementally (checked against a rebuild from
 scratch when CHECK-INCREMENTAL)."
   (setf (run-positions run) (state-final-positions state)
         (run-velocities run) (state-final-velocities state)
-        (run-time run) (tidy run `(+ ,(run-time run) ,(state-duration state))))
+        (run-time run) (time-after run (run-time run) state))
   (let ((changes (remove-duplicates (mapcar #'candidate-change fired) :test #'equal)))
     (multiple-value-bind (model report)
         (ames.engine:apply-transition (run-model run) changes :decider (state-decider run))
@@ -900,9 +913,9 @@ the arc length) reaches zero, and the arc's ends."
              (let ((answer (decide run `(> (* ,direction (- ,s ,s0)) 0)))
                    (radius (ames.geometry:contact-radius geometry)))
                (if (and (eq answer :unknown) radius)
-                   (let ((turn (tidy run `(/ (- ,s ,s0) ,radius) :trigsimp)))
-                     (if (eq (decide run `(> (cos ,turn) 0)) :true)
-                         (decide run `(> (* ,direction (sin ,turn)) 0))
+                   (let ((turn (tidy run `(/ (- ,s ,s0) ,radius) :ratsimp)))
+                     (if (eq (decide run `(> ,(tidy run `(cos ,turn) :trigexpand) 0)) :true)
+                         (decide run `(> (* ,direction ,(tidy run `(sin ,turn) :trigexpand)) 0))
                          :unknown))
                    answer))))
       (case (decide run `(< ,(at-arc normal-along s0) 0))

@@ -27,7 +27,7 @@
 
 ;;; Simplification
 
-(defparameter *simplification-strategies* '(:ratsimp :trigsimp :radcan :full)
+(defparameter *simplification-strategies* '(:ratsimp :trigsimp :trigexpand :radcan :full)
   "The strategies SIMPLIFY knows.")
 
 (defun simplification-form (strategy form)
@@ -35,12 +35,14 @@
   (ecase strategy
     (:ratsimp (mcall "$RATSIMP" form))
     (:trigsimp (mcall "$TRIGSIMP" form))
+    (:trigexpand (mcall "$RATSIMP" (mcall "$TRIGEXPAND" form)))
     (:radcan (mcall "$RADCAN" form))))
 
 (defun simplify (bridge expression &key (strategy :ratsimp))
   "EXPRESSION (an arithmetic expression or a relation) simplified by Maxima under the
 current assumptions. STRATEGY is :RATSIMP (rational canonical form), :TRIGSIMP
-(trigonometric identities), :RADCAN (radicals, logs, exponentials) or :FULL (the
+(trigonometric identities), :TRIGEXPAND (sums and multiples of angles expanded, so that
+sin(asin(u) - atan(v)) becomes algebraic in u and v), :RADCAN (radicals, logs, exponentials) or :FULL (the
 smallest of ratsimp, trigsimp, ratsimp after trigsimp, factor after ratsimp, radcan).
 Signals UNTRANSLATABLE-EXPRESSION, INVALID-BRIDGE-ARGUMENT for an unknown strategy,
 UNTRANSLATABLE-RESULT, MAXIMA-ERROR, MAXIMA-TIMEOUT."
