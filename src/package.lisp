@@ -9,6 +9,7 @@
                 #:sin #:cos #:tan #:asin #:acos #:atan
                 #:= #:/= #:< #:> #:<= #:>= #:and #:or #:not
                 #:pi #:t #:nil)
+  (:import-from #:ames.base #:tau)
   (:export
    ;; the words of the scenario language; validated scenarios hold their shapes with
    ;; these symbols whatever package the user's form was written in

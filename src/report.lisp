@@ -124,10 +124,14 @@ their features, the forces, accelerations and trajectories, the end event and it
           (format stream "  ends: ~A~%" (event-phrase (state-end-event state)))
           (format stream "  duration: ~A~@[ (~,4F)~]~%"
                   (cond ((eq duration :forever) "forever")
-                        ((consp duration) (if (keywordp (first duration))
-                                              (format nil "~S" duration) (infix duration)))
+                        ((and (consp duration) (eq (first duration) :no-closed-form))
+                         (format nil "no closed form in time; it ends after travelling from arc length ~A to ~A along the contact (see the energy integral)"
+                                 (infix (getf (rest duration) :from-arc-length))
+                                 (infix (getf (rest duration) :to-arc-length))))
                         (t (infix duration)))
-                  (and numeric (realp (getf numeric :duration)) (getf numeric :duration))))
+                  (let ((number (or (getf (state-notes state) :numeric-duration)
+                                    (and numeric (getf numeric :duration)))))
+                    (and (realp number) number))))
         (when (state-final-positions state)
           (format stream "  at the end:~%")
           (loop for (body position) in (state-final-positions state)

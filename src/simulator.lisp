@@ -696,7 +696,9 @@ bridge's conditions."
 symbols or names (strings), matched by name. Signals SCENARIO-ERROR naming a setting
 that is not a parameter of SCENARIO."
   (mapcar (lambda (setting)
-            (let ((parameter (find-scenario-parameter (car setting) scenario)))
+            (let ((parameter (find (string (car setting)) (scenario-parameters scenario)
+                                   :key (lambda (p) (symbol-name (scenario-parameter-name p)))
+                                   :test #'string-equal)))
               (unless parameter
                 (error 'undeclared-symbol-error
                        :scenario (scenario-name scenario) :datum (car setting)
@@ -708,13 +710,15 @@ that is not a parameter of SCENARIO."
   "The number EXPRESSION takes under VALUES, or NIL when it has none (a symbol left over,
 or not a real)."
   (and (not (keywordp expression))
+       (not (and (consp expression) (keywordp (first expression))))
        (handler-case (ames.maxima:numeric-value bridge expression values)
          (ames.maxima:numeric-evaluation-failed () nil))))
 
 (defun add-numeric-values (history bridge)
   "When HISTORY has parameter values, record in each state's notes (:NUMERIC plist) the
 numeric start, duration and final positions and velocities."
-  (let ((values (history-parameter-values history)))
+  (let ((values (history-parameter-values history))
+        (clock 0d0))
     (when values
       (dolist (state (history-states history))
         (flet ((number-of (x) (numeric-or-nil bridge x values))
@@ -723,14 +727,25 @@ numeric start, duration and final positions and velocities."
                                                    (mapcar (lambda (x) (numeric-or-nil bridge x values))
                                                            (second entry))))
                                            alist)))
+          (let ((duration (state-duration state))
+                (path (getf (state-notes state) :path-coordinates)))
+            (when (and (consp duration) (eq (first duration) :no-closed-form) path)
+              (let ((time (numeric-travel-time bridge
+                                               (relation-rhs (getf path :energy-integral))
+                                               (getf (rest duration) :from-arc-length)
+                                               (getf (rest duration) :to-arc-length)
+                                               values)))
+                (when time (setf (getf (state-notes state) :numeric-duration) time)))))
           (setf (getf (state-notes state) :numeric)
-                (list :start (number-of (state-start state))
+                (list :start clock
                       :duration (let ((d (state-duration state)))
                                   (if (consp d)
                                       (or (getf (state-notes state) :numeric-duration) d)
                                       (number-of d)))
                       :final-positions (numbers-of (state-final-positions state))
-                      :final-velocities (numbers-of (state-final-velocities state)))))))))
+                      :final-velocities (numbers-of (state-final-velocities state))))
+          (let ((duration (getf (getf (state-notes state) :numeric) :duration)))
+            (setf clock (and clock (realp duration) (+ clock duration)))))))))
 
 ;;; A state on a curved contact
 ;;;
@@ -789,13 +804,12 @@ speed enters the model only through the centripetal term)."
     (loop for xi in x for wi in w
           append (list (cons (/ (- 1 xi) 2) (/ wi 2)) (cons (/ (+ 1 xi) 2) (/ wi 2))))))
 
-(defun numeric-travel-time (run energy s0 s1 values)
+(defun numeric-travel-time (bridge energy s0 s1 values)
   "The time to travel from arc length S0 to S1 when the speed squared is ENERGY (in
 +ARC-LENGTH+), with parameter VALUES: the integral of ds / sqrt(ENERGY), computed with
 s = s0 + (s1 - s0) u^2 so that a start at rest is no singularity. NIL when a value is not
 a real number."
-  (let* ((bridge (run-bridge run))
-         (start (numeric-or-nil bridge s0 values))
+  (let* ((start (numeric-or-nil bridge s0 values))
          (end (numeric-or-nil bridge s1 values)))
     (when (and start end)
       (let ((span (- end start)) (total 0d0))
