@@ -1,5 +1,5 @@
 # AMES -- the Algebraic MEchanics Simulator.
-#   make demo   install missing Debian packages, then run the main job (the wedge)
+#   make demo   install missing Debian packages, then run the main job: bin/ames on the wedge
 #   make test   install missing Debian packages, then run every FiveAM suite
 #   make bench  run the benchmarks (they print numbers)
 
@@ -22,7 +22,7 @@ deps:
 	fi
 
 demo: deps
-	$(LISP) --load bench/wedge-demo.lisp
+	bin/ames run scenarios/particle-on-wedge.lisp
 
 test: deps
 	$(LISP) --load t/run.lisp

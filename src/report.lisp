@@ -50,32 +50,51 @@
       (terpri stream))))
 
 (defun infix (expression)
-  "A compact one-line rendering of EXPRESSION for people (prefix algebra, lower case)."
-  (let ((*print-case* :downcase) (*print-pretty* nil) (*package* (find-package '#:ames-scenario)))
-    (labels ((render (x)
-               (cond ((and (consp x) (member (first x) '(+ * -)) (rest x))
-                      (if (and (eq (first x) '-) (null (cddr x)))
-                          (format nil "-~A" (render-factor (second x)))
-                          (format nil "~{~A~^ ~}"
-                                  (loop for (a . more) on (rest x)
-                                        for first = t then nil
-                                        collect (if first (render-factor a) (render-factor a))
-                                        when more collect (string-downcase (string (first x)))))))
-                     ((and (consp x) (eq (first x) '/))
-                      (format nil "~A/~A" (render-factor (second x))
-                              (if (cddr x) (render-factor (cons '* (cddr x))) "")))
-                     ((and (consp x) (eq (first x) 'expt))
-                      (format nil "~A^~A" (render-factor (second x)) (render-factor (third x))))
-                     ((and (consp x) (member (first x) '(sin cos tan asin acos atan sqrt exp log)))
-                      (format nil "~(~A~)(~{~A~^, ~})" (first x) (mapcar #'render (rest x))))
-                     ((consp x) (format nil "~S" x))
-                     ((and (rationalp x) (not (integerp x))) (format nil "~A" x))
-                     (t (format nil "~A" x))))
-             (render-factor (x)
-               (if (and (consp x) (member (first x) '(+ - / *)) (cddr x))
-                   (format nil "(~A)" (render x))
-                   (render x))))
-      (render expression))))
+  "A one-line conventional rendering of EXPRESSION for people: mp*g*cos(a)/(mw + mp*sin(a)^2).
+Lower case; parentheses only where precedence needs them."
+  (let ((*print-case* :downcase) (*print-pretty* nil)
+        (*package* (find-package '#:ames-scenario)))
+    (labels ((negative-p (x)
+               (or (and (realp x) (minusp x))
+                   (and (consp x) (eq (first x) '-) (null (cddr x)))))
+             (negated (x) (if (realp x) (- x) (second x)))
+             (wrap (text own context) (if (> context own) (format nil "(~A)" text) text))
+             (render (x context)
+               (cond ((and (rationalp x) (not (integerp x)))
+                      (wrap (format nil "~A" x) 2 context))
+                     ((and (realp x) (minusp x)) (wrap (format nil "~A" x) 1 context))
+                     ((atom x) (format nil "~A" x))
+                     ((keywordp (first x)) (format nil "~S" x))
+                     (t
+                      (let ((args (rest x)))
+                        (case (first x)
+                          (+ (wrap (with-output-to-string (out)
+                                     (loop for (term . more) on args
+                                           for first = t then nil
+                                           do (cond (first (write-string (render term 1) out))
+                                                    ((negative-p term)
+                                                     (format out " - ~A" (render (negated term) 2)))
+                                                    (t (format out " + ~A" (render term 1))))))
+                                   1 context))
+                          (- (if (rest args)
+                                 (wrap (format nil "~A~{ - ~A~}" (render (first args) 1)
+                                               (mapcar (lambda (a) (render a 2)) (rest args)))
+                                       1 context)
+                                 (wrap (format nil "-~A" (render (first args) 2)) 1 context)))
+                          (* (wrap (format nil "~{~A~^*~}" (mapcar (lambda (a) (render a 2)) args))
+                                   2 context))
+                          (/ (wrap (if (rest args)
+                                       (format nil "~A/~A" (render (first args) 2)
+                                               (render (if (cddr args) (cons '* (rest args)) (second args)) 3))
+                                       (format nil "1/~A" (render (first args) 3)))
+                                   2 context))
+                          (expt (wrap (format nil "~A^~A" (render (first args) 4) (render (second args) 4))
+                                      3 context))
+                          (t (if (member (first x) '(sin cos tan asin acos atan sqrt exp log))
+                                 (format nil "~(~A~)(~{~A~^, ~})" (first x)
+                                         (mapcar (lambda (a) (render a 0)) args))
+                                 (format nil "~S" x)))))))))
+      (render expression 0))))
 
 (defun print-history-text (history stream)
   "Print HISTORY on STREAM as a report for people: state by state, the contacts named by
@@ -114,12 +133,29 @@ their features, the forces, accelerations and trajectories, the end event and it
         (dolist (entry (state-positions state))
           (format stream "    ~(~A~): ~A~%" (first entry)
                   (if (and (consp (second entry)) (keywordp (first (second entry))))
-                      (second entry)
+                      (let ((path (getf (second entry) :on-path)))
+                        (format nil "on the contact at arc length s: (~A, ~A)"
+                                (infix (first path)) (infix (second path))))
                       (format nil "(~A, ~A)" (infix (first (second entry)))
                               (infix (second (second entry)))))))
         (loop for (key value) on (state-notes state) by #'cddr
-              unless (member key '(:numeric :numeric-duration))
-                do (format stream "  ~(~A~): ~S~%" key value))
+              do (case key
+                   ((:numeric :numeric-duration :lift-off-arc-length))
+                   (:events (format stream "  simultaneous events:~{~%    ~A~}~%"
+                                    (mapcar #'event-phrase value)))
+                   (:path-coordinates
+                    (format stream "  on the curve, with s the arc length along the contact:~%")
+                    (format stream "    s starts at ~A~%" (infix (getf value :arc-length-from)))
+                    (format stream "    tangential acceleration s'' = ~A~%"
+                            (infix (getf value :tangential-acceleration)))
+                    (format stream "    energy integral: (s')^2 = ~A (~A)~%"
+                            (infix (relation-rhs (getf value :energy-integral)))
+                            (if (eq (getf value :ode) :closed-form)
+                                "the ODE also has a closed form"
+                                "the ODE has no closed form in time"))
+                    (format stream "    normal force N(s) = ~A~%" (infix (getf value :normal-force))))
+                   (t (let ((*package* (find-package '#:ames-scenario)))
+                        (format stream "  ~(~A~): ~S~%" key value)))))
         (let ((duration (state-duration state)))
           (format stream "  ends: ~A~%" (event-phrase (state-end-event state)))
           (format stream "  duration: ~A~@[ (~,4F)~]~%"
