@@ -11,9 +11,12 @@
          :states (mapcar #'state-sexp (history-states history))
          :outcome (history-outcome history)
          (let ((stopped (getf (history-notes history) :stopped-by)))
-           (when (typep stopped 'ambiguous-transition)
+           (append
+            (let ((assumed (getf (history-notes history) :assumed)))
+              (when assumed (list :assumed-from-values (reverse assumed))))
+            (when (typep stopped 'ambiguous-transition)
              (list :ambiguity (list :missing-fact (ambiguous-transition-missing-fact stopped)
-                                    :candidates (ambiguous-transition-candidates stopped)))))))
+                                    :candidates (ambiguous-transition-candidates stopped))))))))
 
 (defun state-sexp (state)
   "One QUALITATIVE-STATE as a plist (see HISTORY-SEXP)."
@@ -178,9 +181,19 @@ their features, the forces, accelerations and trajectories, the end event and it
                            (and numbers (every #'realp numbers)
                                 (format nil "= (~,4F, ~,4F)" (first numbers) (second numbers)))
                            (infix (first velocity)) (infix (second velocity)))))))
+    (dolist (assumed (reverse (getf (history-notes history) :assumed)))
+      (format stream "~%Assumed from the given values at state ~D: ~A~%"
+              (getf assumed :state) (infix-relation (getf assumed :fact))))
     (format stream "~%Outcome: ~(~A~)~%" (history-outcome history))
     (let ((stopped (getf (history-notes history) :stopped-by)))
       (when stopped (format stream "  ~A~%" stopped)))))
+
+(defun infix-relation (relation)
+  "A relation such as (> X 0) rendered for people."
+  (if (and (consp relation) (relation-operator-p (first relation)))
+      (format nil "~A ~(~A~) ~A" (infix (relation-lhs relation)) (first relation)
+              (infix (relation-rhs relation)))
+      (infix relation)))
 
 (defun feature-phrase (feature)
   "A phrase naming a contact FEATURE such as (:edge 1 :of wedge)."

@@ -289,6 +289,73 @@ accelerations substituted."
   "d EXPRESSION / d TAU."
   (ames.geometry:differentiate expression 'tau))
 
+(defun quadratic-coefficients (run g)
+  "The coefficients (C0 C1 C2) of G in TAU when G is a polynomial of degree at most 2
+in TAU, else NIL."
+  (let* ((d1 (tidy run (time-derivative g) :ratsimp))
+         (d2 (tidy run (time-derivative d1) :ratsimp)))
+    (when (free-of-p 'tau d2)
+      (list (tidy run (at-time g 0)) (tidy run (at-time d1 0)) (tidy run `(/ ,d2 2))))))
+
+(defun quadratic-earliest-root (run g)
+  "The earliest root TAU > 0 of G, a polynomial of degree at most 2 in TAU, found from
+the signs of its coefficients, product and sum of roots and discriminant as decided
+under the assumptions (with AMES's stronger DECIDE, where the bridge's own search gave
+up): (values ROOT :FOUND), (values :NONE) or (values :UNKNOWN)."
+  (destructuring-bind (&optional c0 c1 c2) (quadratic-coefficients run g)
+    (flet ((sign-of (x)
+             (cond ((eq (decide run `(> ,x 0)) :true) 1)
+                   ((eq (decide run `(< ,x 0)) :true) -1)
+                   ((eq (decide run `(= ,x 0)) :true) 0)
+                   (t (return-from quadratic-earliest-root (values :unknown))))))
+      (unless c0 (return-from quadratic-earliest-root (values :unknown)))
+      (let ((s0 (sign-of c0)) (s1 (sign-of c1)) (s2 (sign-of c2)))
+        (cond ((zerop s0) (values :unknown))          ; a root at the start: the caller divides it out
+              ((zerop s2)                              ; linear
+               (if (and (/= s1 0) (= s0 (- s1)))
+                   (values (tidy run `(- (/ ,c0 ,c1))) :found)
+                   (values :none)))
+              (t
+               (let* ((discriminant (tidy run `(- (* ,c1 ,c1) (* 4 ,c0 ,c2))))
+                      (sd (sign-of discriminant))
+                      (root (lambda (sign)
+                              (tidy run `(/ (+ (- ,c1) (* ,sign ,s2 (sqrt ,discriminant))) (* 2 ,c2))))))
+                 (cond ((minusp sd) (values :none))
+                       ((/= s0 s2) (values (funcall root 1) :found))   ; product < 0: one positive root
+                       ((= s1 s2) (values :none))                      ; product > 0, sum < 0
+                       ((zerop s1) (values :none))
+                       (t (values (funcall root -1) :found))))))))))
+
+(defun earliest-root-after (run g after)
+  "The earliest root of G (a function of TAU) strictly after AFTER, through the bridge,
+then, from the start, by QUADRATIC-EARLIEST-ROOT when the bridge cannot decide.
+Returns what AMES.MAXIMA:EARLIEST-ROOT returns."
+  (multiple-value-bind (root status)
+      (ames.maxima:earliest-root (run-bridge run) g 'tau :after after :strictly t)
+    (if (and (eq root :unknown) (eql after 0))
+        (multiple-value-bind (root2 status2) (quadratic-earliest-root run g)
+          (cond ((eq root2 :none) (values :none nil))
+                ((eq status2 :found) (values root2 :found))
+                (t (values root status))))
+        (values root status))))
+
+(defun undecided-sign-fact (run g candidates)
+  "The relation whose truth would settle where the polynomial G in TAU first vanishes:
+the sign of its first coefficient (from the highest degree down) or of its discriminant
+that the assumptions do not decide. When none is found, (:EARLIEST-ROOT-OF (= G 0)
+:CANDIDATES CANDIDATES)."
+  (let* ((d1 (tidy run (time-derivative g) :ratsimp))
+         (d2 (tidy run (time-derivative d1) :ratsimp))
+         (c0 (tidy run (at-time g 0)))
+         (c1 (tidy run (at-time d1 0)))
+         (c2 (tidy run `(/ ,d2 2))))
+    (or (and (free-of-p 'tau d2)
+             (find :unknown
+                   (list `(> ,c2 0) `(> ,c1 0) `(> ,c0 0)
+                         `(> ,(tidy run `(- (* ,c1 ,c1) (* 4 ,c2 ,c0))) 0))
+                   :key (lambda (fact) (decide run fact))))
+        `(:earliest-root-of (= ,g 0) :candidates ,candidates))))
+
 (defun first-time-negative (run g)
   "The earliest time TAU >= 0 from which G(TAU) < 0 (G a polynomial in TAU or a
 constant). Returns (values :AT TIME), (values :NEVER) or (values :UNKNOWN FACT) where
@@ -310,11 +377,10 @@ FACT is the relation the assumptions do not decide."
                      (:true (return-from first-time-negative (values :at 0)))
                      (:unknown (return-from first-time-negative (values :unknown `(< ,d0 0)))))
                    (unless (eq (decide run `(= ,d0 0)) :true) (return))))))
-    (multiple-value-bind (root status) (ames.maxima:earliest-root (run-bridge run) g 'tau
-                                                                   :after 0 :strictly t)
+    (multiple-value-bind (root status) (earliest-root-after run g 0)
       (cond ((eq root :none) (values :never))
             ((eq root :unknown)
-             (values :unknown `(:earliest-root-of (= ,g 0) :candidates ,status)))
+             (values :unknown (undecided-sign-fact run g status)))
             (t
              (let ((slope (tidy run (at-time (time-derivative g) root))))
                (case (decide run `(< ,slope 0))
@@ -400,10 +466,10 @@ approach rate of the gap at that time (negative: a collision; zero: a grazing co
     (block search
      (loop repeat 4
           do (multiple-value-bind (root status)
-                 (ames.maxima:earliest-root (run-bridge run) gap 'tau :after after :strictly t)
+                 (earliest-root-after run gap after)
                (cond ((eq root :none) (return-from search (values :never)))
                      ((eq root :unknown)
-                      (return-from search (values :unknown `(:earliest-root-of (= ,gap 0) :candidates ,status))))
+                      (return-from search (values :unknown (undecided-sign-fact run gap status))))
                      (t
                       (let* ((root (tidy run root))
                              (rate (tidy run (at-time (ames.geometry:meeting-rate meeting) root)))
@@ -660,21 +726,7 @@ bridge's conditions."
                 (ames.engine:build-model (ames.engine:make-engine (ames.kb:mechanics-knowledge-base))
                                          situation :decider (state-decider run)))
           (restart-case
-              (loop for index from 0
-                    do (when (>= index limit)
-                         (setf (history-outcome history) :state-limit)
-                         (return))
-                       (multiple-value-bind (state fired) (analyse-state run index)
-                         (setf (history-states history)
-                               (append (history-states history) (list state)))
-                         (cond ((null fired)
-                                (setf (history-outcome history) :complete)
-                                (return))
-                               ((find :collision fired :key (lambda (c) (first (candidate-event c))))
-                                (setf (history-outcome history) :collision)
-                                (return))
-                               (t (enter-next-state run state fired
-                                                    :check-incremental check-incremental)))))
+              (run-states run history 0 limit check-incremental)
             (stop-simulation (&optional condition)
               :report "Stop the simulation here and return the states so far."
               (setf (history-outcome history) (if (typep condition 'ambiguous-transition)
@@ -684,6 +736,86 @@ bridge's conditions."
           (add-numeric-values history bridge)
           (setf (history-rederived history) (reverse (run-rederived run)))
           history)))))
+
+(defun factors-of (expression)
+  "The factors of a product or quotient EXPRESSION, each as (FACTOR . POWER-SIGN), POWER-SIGN
+-1 for a denominator."
+  (cond ((and (consp expression) (eq (first expression) '*))
+         (mapcan #'factors-of (rest expression)))
+        ((and (consp expression) (eq (first expression) '/) (rest expression))
+         (append (factors-of (second expression))
+                 (mapcar (lambda (f) (cons (car f) (- (cdr f))))
+                         (mapcan #'factors-of (cddr expression)))))
+        ((and (consp expression) (eq (first expression) '-) (null (cddr expression)))
+         (cons (cons -1 1) (factors-of (second expression))))
+        (t (list (cons expression 1)))))
+
+(defun core-fact (run fact)
+  "FACT, a relation (> X 0), (< X 0) ... with X factored and every factor whose sign the
+assumptions decide divided out: (> (* (- l1 l2) (- f k)) 0) with l1 > l2 becomes
+(> (- f k) 0). FACT itself when nothing can be divided out."
+  (if (not (and (consp fact) (member (first fact) '(< > <= >=))))
+      fact
+      (let* ((x (ames.maxima:simplify (run-bridge run)
+                                      `(- ,(relation-lhs fact) ,(relation-rhs fact))
+                                      :strategy :full))
+             (sign 1) (kept '()))
+        (dolist (factor (factors-of x))
+          (let ((f (car factor)))
+            (cond ((and (realp f) (plusp f)))
+                  ((and (realp f) (minusp f)) (setf sign (- sign)))
+                  ((eq (decide run `(> ,f 0)) :true))
+                  ((eq (decide run `(< ,f 0)) :true) (setf sign (- sign)))
+                  (t (push f kept)))))
+        (if (or (null kept) (rest kept))
+            fact
+            (let ((operator (if (= sign 1)
+                                (first fact)
+                                (ecase (first fact) (> '<) (< '>) (>= '<=) (<= '>=)))))
+              (list operator (first kept) 0))))))
+
+(defun fact-from-values (run fact values)
+  "FACT, or its negation, as the parameter VALUES decide it numerically; NIL when they
+do not (no values, a value missing, or the two sides equal)."
+  (when (and values (consp fact) (member (first fact) '(< > <= >=)))
+    (let ((difference (numeric-or-nil (run-bridge run)
+                                      `(- ,(relation-lhs fact) ,(relation-rhs fact)) values)))
+      (when (and difference (/= difference 0))
+        (let ((holds (ecase (first fact)
+                       ((> >=) (plusp difference))
+                       ((< <=) (minusp difference)))))
+          (if holds
+              fact
+              (list (ecase (first fact) (> '<=) (>= '<) (< '>=) (<= '>))
+                    (relation-lhs fact) (relation-rhs fact))))))))
+
+(defun run-states (run history index limit check-incremental)
+  "Analyse the states of RUN from INDEX on, appending them to HISTORY, until nothing
+more changes, a collision, or LIMIT states. When the assumptions leave the end of a
+state ambiguous but the history's parameter values decide the missing fact, that fact
+is assumed (and noted in the history) for the rest of the run."
+  (loop for index from index
+        do (when (>= index limit)
+             (setf (history-outcome history) :state-limit)
+             (return))
+           (multiple-value-bind (state fired)
+               (handler-case (analyse-state run index)
+                 (ambiguous-transition (condition)
+                   (let ((fact (fact-from-values run (core-fact run (ambiguous-transition-missing-fact condition))
+                                                 (history-parameter-values history))))
+                     (unless fact (error condition))
+                     (push (list :state index :fact fact) (getf (history-notes history) :assumed))
+                     (return-from run-states
+                       (ames.maxima:with-assumptions ((run-bridge run) (list fact))
+                         (run-states run history index limit check-incremental))))))
+             (setf (history-states history) (append (history-states history) (list state)))
+             (cond ((null fired)
+                    (setf (history-outcome history) :complete)
+                    (return))
+                   ((find :collision fired :key (lambda (c) (first (candidate-event c))))
+                    (setf (history-outcome history) :collision)
+                    (return))
+                   (t (enter-next-state run state fired :check-incremental check-incremental))))))
 
 (defun stop-simulation (&optional condition)
   "Invoke the STOP-SIMULATION restart: end the simulation and return the history so far."
