@@ -56,6 +56,19 @@ reader and validator.")
    #:constant-value
    ;; reading scenario files (src/scenario-reader.lisp)
    #:read-scenario-forms #:read-scenarios-from-string #:read-scenario-file
+   ;; the simulator and its history (src/simulator.lisp, src/history.lisp, src/report.lisp)
+   #:simulate #:run-file #:run-files #:main #:*bridge* #:current-bridge
+   #:stop-simulation
+   #:simulation-error #:ambiguous-transition #:ambiguous-transition-candidates
+   #:ambiguous-transition-missing-fact #:unsolvable-model #:unsupported-situation
+   #:usage-error
+   #:simulation-history #:history-scenario #:history-states #:history-outcome
+   #:history-notes #:history-rederived #:history-parameter-values
+   #:qualitative-state #:state-index #:state-start #:state-duration #:state-contacts
+   #:state-accelerations #:state-forces-of #:state-positions #:state-velocities
+   #:state-end-event #:state-final-positions #:state-final-velocities #:state-notes
+   #:body-entry
+   #:history-sexp #:print-history-sexp #:print-history-text
    ;; the checks through Maxima (src/scenario-semantics.lisp)
    #:check-scenario #:check-scenario-assumptions #:check-scenario-geometry
    #:missing-assumption-error #:missing-assumption-fact))
