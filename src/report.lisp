@@ -211,4 +211,5 @@ their features, the forces, accelerations and trajectories, the end event and it
           (:contact (format nil "~(~A~) comes into contact with ~(~A~)" (first more) (second more)))
           (:collision (format nil "~(~A~) collides with ~(~A~) (no collision model: the simulation ends)"
                               (first more) (second more)))
+          (:time-limit (format nil "the simulation reaches its time limit, t = ~A" (infix (first more))))
           (t (format nil "~(~S~)" event))))))

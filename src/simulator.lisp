@@ -605,7 +605,17 @@ QUALITATIVE-STATE and the fired CANDIDATEs (NIL when the state lasts forever)."
   (let* ((solution (solve-instantaneous-model run equations))
          (motions (polynomial-motions run solution derivative-equations)))
     (multiple-value-bind (candidates unknown) (termination-candidates run motions solution)
-      (let* ((fired (earliest-candidates run candidates unknown))
+      (let* ((until (scenario-until (run-scenario run)))
+             (fired (earliest-candidates
+                     run
+                     (if (and until (not (consp (run-time run))) (not (keywordp (run-time run))))
+                         ;; the scenario's (simulate :until T) ends the run at global time T
+                         (cons (make-candidate (list :time-limit until)
+                                               (tidy run `(- ,until ,(run-time run)))
+                                               nil)
+                               candidates)
+                         candidates)
+                     unknown))
              (end (and fired (candidate-time (first fired))))
              (state (make-instance
                      'qualitative-state
@@ -679,7 +689,7 @@ scratch when CHECK-INCREMENTAL)."
   (setf (run-positions run) (state-final-positions state)
         (run-velocities run) (state-final-velocities state)
         (run-time run) (time-after run (run-time run) state))
-  (let ((changes (remove-duplicates (mapcar #'candidate-change fired) :test #'equal)))
+  (let ((changes (remove nil (remove-duplicates (mapcar #'candidate-change fired) :test #'equal))))
     (multiple-value-bind (model report)
         (ames.engine:apply-transition (run-model run) changes :decider (state-decider run))
       (declare (ignore model))
@@ -814,6 +824,9 @@ is assumed (and noted in the history) for the rest of the run."
                     (return))
                    ((find :collision fired :key (lambda (c) (first (candidate-event c))))
                     (setf (history-outcome history) :collision)
+                    (return))
+                   ((find :time-limit fired :key (lambda (c) (first (candidate-event c))))
+                    (setf (history-outcome history) :time-limit)
                     (return))
                    (t (enter-next-state run state fired :check-incremental check-incremental))))))
 
