@@ -332,10 +332,13 @@ then, from the start, by QUADRATIC-EARLIEST-ROOT when the bridge cannot decide.
 Returns what AMES.MAXIMA:EARLIEST-ROOT returns."
   (multiple-value-bind (root status)
       (ames.maxima:earliest-root (run-bridge run) g 'tau :after after :strictly t)
-    (if (and (eq root :unknown) (eql after 0))
-        (multiple-value-bind (root2 status2) (quadratic-earliest-root run g)
+    (if (eq root :unknown)
+        (multiple-value-bind (root2 status2)
+            (quadratic-earliest-root
+             run (if (eql after 0) g (tidy run (substitute-expressions
+                                                (list (cons 'tau `(+ tau ,after))) g))))
           (cond ((eq root2 :none) (values :none nil))
-                ((eq status2 :found) (values root2 :found))
+                ((eq status2 :found) (values (tidy run `(+ ,root2 ,after)) :found))
                 (t (values root status))))
         (values root status))))
 
@@ -350,10 +353,11 @@ that the assumptions do not decide. When none is found, (:EARLIEST-ROOT-OF (= G 
          (c1 (tidy run (at-time d1 0)))
          (c2 (tidy run `(/ ,d2 2))))
     (or (and (free-of-p 'tau d2)
-             (find :unknown
-                   (list `(> ,c2 0) `(> ,c1 0) `(> ,c0 0)
-                         `(> ,(tidy run `(- (* ,c1 ,c1) (* 4 ,c2 ,c0))) 0))
-                   :key (lambda (fact) (decide run fact))))
+             (let ((discriminant (tidy run `(- (* ,c1 ,c1) (* 4 ,c2 ,c0)))))
+               (find :unknown
+                     (loop for c in (list c2 c1 c0 discriminant)
+                           collect `(> ,c 0) collect `(< ,c 0))
+                     :key (lambda (fact) (decide run fact)))))
         `(:earliest-root-of (= ,g 0) :candidates ,candidates))))
 
 (defun first-time-negative (run g)
@@ -813,7 +817,12 @@ is assumed (and noted in the history) for the rest of the run."
                  (ambiguous-transition (condition)
                    (let ((fact (fact-from-values run (core-fact run (ambiguous-transition-missing-fact condition))
                                                  (history-parameter-values history))))
-                     (unless fact (error condition))
+                     (when (or (null fact)
+                               ;; a fact already assumed that did not settle it will not now
+                               (member fact (getf (history-notes history) :assumed)
+                                       :key (lambda (entry) (getf entry :fact)) :test #'equal)
+                               (> (length (getf (history-notes history) :assumed)) 24))
+                       (error condition))
                      (push (list :state index :fact fact) (getf (history-notes history) :assumed))
                      (return-from run-states
                        (ames.maxima:with-assumptions ((run-bridge run) (list fact))
