@@ -9,7 +9,11 @@
 ;;;;   - the two blocks in a corner with the sign of f - mb g (l1 - l2)/l3 assumed: the run
 ;;;;     stops today on (< N_floor 0), which the bridge's DECIDE leaves :UNKNOWN although
 ;;;;     N_floor is a sum of positive terms (it decides it :FALSE when the facts are
-;;;;     assumed in another order), and then on the earliest meeting time of far contacts.
+;;;;     assumed in another order), and then on the earliest meeting time of far contacts;
+;;;;   - found while fuzzing: a body that starts touching another and moving into it passes
+;;;;     through it (no collision at time 0); a body that leaves the end of a face moving
+;;;;     along the face's line stops on the missing fact (:earliest-root-of (= 0 0));
+;;;;     parameter values keyed by strings (as --set gives them) signal a TYPE-ERROR.
 ;;;; Expected results are the scenario files' headers; helpers are in
 ;;;; t/simulator-scenarios.lisp.
 
@@ -156,3 +160,74 @@ lower end at t1 = sqrt(-l3 / a_Ax). Either way the contact between the blocks en
                           (if (eq relation '>)
                               `(sqrt (/ ,(x 'l3) ,a-ax))
                               `(sqrt (- (/ ,(x 'l3) ,a-ax))))))))))))))
+
+;;; Found while fuzzing (see the lead's report)
+
+(defparameter *into-the-ground*
+  '(scenario into-the-ground "A particle on the ground, moving down into it."
+    (parameters (m :positive) (g :positive) (v :positive))
+    (gravity g)
+    (body ground :fixed t :shape (half-plane (1 0) (0 0)))
+    (body particle :mass m :position (0 0) :velocity (0 (- v)) :shape point)
+    (simulate :states 2))
+  "A body that starts touching another and moving into it: today it passes through
+(no contact, free fall forever).")
+
+(test touching-and-approaching-is-a-collision-at-once
+  "A particle that starts on the ground moving down into it collides at once: state 0
+lasts 0 and ends in (:collision particle ground), and the run ends there."
+  (with-fixture simulator-bridge ()
+    (let* ((history (simulate-stopping-when-ambiguous *into-the-ground* bridge))
+           (state (first (ames::history-states history))))
+      (is (eq :collision (ames::history-outcome history)))
+      (is (not (null state)))
+      (when state
+        (is (equal '(:collision "PARTICLE" "GROUND") (event-names (ames::state-end-event state))))
+        (is (eql 0 (ames::state-duration state)))))))
+
+(defparameter *down-a-wall*
+  '(scenario down-a-wall "A particle slides down a frictionless vertical face and falls."
+    (parameters (m :positive) (g :positive) (h :positive))
+    (gravity g)
+    (body block :fixed t :shape (polygon (0 0) (1 0) (1 h) (0 h)))
+    (body particle :mass m :position (0 (/ h 2)) :velocity (0 0) :shape point)
+    (simulate :states 3))
+  "A particle that leaves the end of a face moving along the face's own line: today the
+next state stops on the missing fact (:earliest-root-of (= 0 0) :candidates nil).")
+
+(test leaving-a-face-along-its-line-is-free-fall
+  "The particle slides down the block's left face (N = 0) for sqrt(h/g), leaves it at
+the bottom vertex, then falls freely forever: its gap to the face's line stays 0, which
+is no meeting and no ambiguity."
+  (with-fixture simulator-bridge ()
+    (let* ((scenario (ames:parse-scenario *down-a-wall*))
+           (history (simulate-stopping-when-ambiguous scenario bridge))
+           (states (ames::history-states history)))
+      (flet ((x (form) (in-scenario-terms scenario form)))
+        (is (eq :complete (ames::history-outcome history)))
+        (is (= 2 (length states)))
+        (when (= 2 (length states))
+          (destructuring-bind (slide fall) states
+            (is (equal '(:leaves "PARTICLE" "BLOCK" :endpoint)
+                       (event-names (ames::state-end-event slide))))
+            (is (eq :forever (ames::state-duration fall)))
+            (call-with-scenario-facts
+             bridge scenario
+             (lambda ()
+               (is-same bridge "t1" (ames::state-duration slide) (x '(sqrt (/ h g))))
+               (is-same-vector bridge "free fall" (per-body (ames::state-accelerations fall) "PARTICLE")
+                               (x '(0 (- g))))))))))))
+
+(test parameter-values-by-name
+  "Parameter values may be keyed by names (strings), as the command line's --set gives
+them (AMES::RESOLVE-PARAMETER-VALUES's contract); today FIND-SCENARIO-PARAMETER signals
+a TYPE-ERROR on a string."
+  (with-fixture simulator-bridge ()
+    (let* ((scenario (scenario-named "projectile-off-table"))
+           (history (ames::simulate scenario :bridge bridge
+                                             :parameter-values '(("g" . 10) ("h" . 5) ("d" . 1) ("v0" . 2))))
+           (flight (second (ames::history-states history)))
+           (landing (per-body (getf (getf (ames::state-notes flight) :numeric) :final-positions)
+                              "PARTICLE")))
+      ;; t2 = sqrt(2h/g) = 1, so the particle lands at x = v0 = 2
+      (is (and (realp (first landing)) (< (abs (- (first landing) 2)) 1d-9)) "landing at ~S" landing))))

@@ -535,3 +535,16 @@ justification that names a component contributing it."
                            (with-output-to-string (stream)
                              (ames.engine:explain model newton stream))
                            :test #'char-equal))))))))))
+
+;;; Parameter values
+
+(test parameter-values-must-name-parameters
+  "A numeric value for a name that is not a parameter of the scenario is a scenario
+error naming it."
+  (with-fixture simulator-bridge ()
+    (let ((scenario (scenario-named "projectile-off-table")))
+      (handler-case (progn (ames::simulate scenario :bridge bridge :parameter-values '((zork . 1)))
+                           (fail "a value for ZORK was accepted"))
+        (ames:undeclared-symbol-error (condition)
+          (is (same-name-p* (ames-error-datum condition) "ZORK"))
+          (is (search "ZORK" (princ-to-string condition))))))))
