@@ -365,3 +365,61 @@ Signals UNTRANSLATABLE-EXPRESSION, MAXIMA-ERROR, MAXIMA-TIMEOUT."
                          (:false)))))
                (t (decide-relation bridge condition)))))
     (verdict relation)))
+
+;;; A bare Maxima script (for benchmarks: what Maxima alone takes to solve a model)
+
+(defparameter *infix-heads*
+  `((,+mplus+ . "+") (,+mtimes+ . "*") (,+mexpt+ . "^") (,+mquotient+ . "/")
+    (,+mequal+ . "=") (,+mnotequal+ . "#") (,+mlessp+ . "<") (,+mgreaterp+ . ">")
+    (,+mleqp+ . "<=") (,+mgeqp+ . ">=") (,+mand+ . " and ") (,+mor+ . " or "))
+  "Maxima operators written infix in Maxima's own syntax.")
+
+(defun maxima-source (form)
+  "The text of the Maxima FORM (as TO-MAXIMA makes it) in Maxima's input syntax, fully
+parenthesised: ((MPLUS) $AMESVA 1) gives \"(amesva+1)\"."
+  (labels ((name (symbol)
+             (string-downcase (string-left-trim "$%" (symbol-name symbol))))
+           (text (x)
+             (cond ((integerp x) (if (minusp x) (format nil "(~D)" x) (format nil "~D" x)))
+                   ((floatp x) (format nil "(~,,,,,,'eE)" (coerce x 'double-float)))
+                   ((eq x +pi+) "%pi")
+                   ((eq x +e+) "%e")
+                   ((symbolp x) (name x))
+                   ((mform-p x +rat+) (format nil "(~D/~D)" (second x) (third x)))
+                   ((mform-p x +mminus+) (format nil "(-~A)" (text (second x))))
+                   ((mform-p x +mnot+) (format nil "(not ~A)" (text (second x))))
+                   ((mform-p x +mlist+) (format nil "[~{~A~^,~}]" (mapcar #'text (mform-arguments x))))
+                   ((mform-p x)
+                    (let ((infix (cdr (assoc (mform-head x) *infix-heads*)))
+                          (arguments (mapcar #'text (mform-arguments x))))
+                      (if infix
+                          (format nil "(~{~A~})"
+                                  (loop for (argument . more) on arguments
+                                        collect argument when more collect infix))
+                          (format nil "~A(~{~A~^,~})"
+                                  (if (eq (mform-head x) +abs+) "abs" (name (mform-head x)))
+                                  arguments))))
+                   (t (error 'invalid-bridge-argument :datum x
+                                                      :detail "not a Maxima form the bridge makes")))))
+    (text form)))
+
+(defun solve-script (equations unknowns &key facts)
+  "The text of a batch script for a bare `maxima -b` that does what SOLVE-EQUATIONS asks
+of Maxima for EQUATIONS and UNKNOWNS: in a context of its own, assume FACTS (relations
+of the algebra), solve, print the solutions, and kill the context. Names are mangled
+as a fresh bridge mangles them (no Maxima process is started). For benchmarks.
+Signals UNTRANSLATABLE-EXPRESSION and INVALID-BRIDGE-ARGUMENT as SOLVE-EQUATIONS does."
+  (let* ((scratch (make-bridge))
+         (context (fresh-context-name (bridge-names scratch)))
+         (equation-forms (mapcar (lambda (equation) (equation-to-maxima scratch equation))
+                                 equations))
+         (unknown-forms (mapcar (lambda (unknown) (to-mx scratch unknown)) unknowns))
+         (fact-forms (mapcar (lambda (fact) (fact-to-maxima (bridge-names scratch) fact))
+                             (flatten-facts facts))))
+    (with-output-to-string (stream)
+      (format stream "supcontext(~A)$~%" (maxima-source context))
+      (when fact-forms
+        (format stream "assume(~{~A~^, ~})$~%" (mapcar #'maxima-source fact-forms)))
+      (format stream "solve(~A, ~A);~%" (maxima-source (mlist equation-forms))
+              (maxima-source (mlist unknown-forms)))
+      (format stream "killcontext(~A)$~%" (maxima-source context)))))

@@ -17,6 +17,7 @@ only by this package's own translation (see translation.lisp and maxima-server.l
    #:solve-autonomous-ode #:ode-solution #:ode-solution-kind #:ode-solution-position
    #:ode-solution-velocity #:ode-solution-speed-squared
    #:numeric-value #:latex
+   #:solve-script
    ;; conditions
    #:maxima-condition #:maxima-error #:maxima-error-message
    #:maxima-question #:maxima-question-text #:maxima-question-expressions
