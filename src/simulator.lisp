@@ -304,13 +304,19 @@ under the assumptions (with AMES's stronger DECIDE, where the bridge's own searc
 up): (values ROOT :FOUND), (values :NONE) or (values :UNKNOWN)."
   (destructuring-bind (&optional c0 c1 c2) (quadratic-coefficients run g)
     (flet ((sign-of (x)
-             (cond ((eq (decide run `(> ,x 0)) :true) 1)
-                   ((eq (decide run `(< ,x 0)) :true) -1)
-                   ((eq (decide run `(= ,x 0)) :true) 0)
-                   (t (return-from quadratic-earliest-root (values :unknown))))))
+             (let ((positive (decide run `(> ,x 0)))
+                   (negative (decide run `(< ,x 0))))
+               (cond ((eq positive :true) 1)
+                     ((eq negative :true) -1)
+                     ((and (eq positive :false) (eq negative :false)) 0)
+                     ((eq (decide run `(= ,x 0)) :true) 0)
+                     (t (return-from quadratic-earliest-root (values :unknown)))))))
       (unless c0 (return-from quadratic-earliest-root (values :unknown)))
       (let ((s0 (sign-of c0)) (s1 (sign-of c1)) (s2 (sign-of c2)))
-        (cond ((zerop s0) (values :unknown))          ; a root at the start: the caller divides it out
+        (cond ((zerop s0)                              ; roots 0 and -c1/c2
+               (if (and (/= s2 0) (/= s1 0) (= s1 (- s2)))
+                   (values (tidy run `(- (/ ,c1 ,c2))) :found)
+                   (values :none)))
               ((zerop s2)                              ; linear
                (if (and (/= s1 0) (= s0 (- s1)))
                    (values (tidy run `(- (/ ,c0 ,c1))) :found)
@@ -461,6 +467,20 @@ approach rate of the gap at that time (negative: a collision; zero: a grazing co
                 (cons `(- ,gap) ; the gap must close ...
                       (mapcar #'extent-margin (ames.geometry:meeting-extent meeting)))) ; ... within the ends
       (return-from contact-meeting-time (values :never)))
+    ;; moving along the contact's own line or circle: it is met only by entering its extent
+    (when (eql gap 0)
+      (return-from contact-meeting-time
+        (if (some (lambda (r) (stays-negative-p run (extent-margin r)))
+                  (ames.geometry:meeting-extent meeting))
+            (values :never)
+            (values :unknown `(:moves-along-the-locus-of ,contact)))))
+    ;; touching at the start and moving in: a collision at once
+    (let ((rate0 (tidy run (at-time (ames.geometry:meeting-rate meeting) 0))))
+      (when (and (eq (decide run `(= ,(tidy run (at-time gap 0)) 0)) :true)
+                 (eq (decide run `(< ,rate0 0)) :true)
+                 (every (lambda (r) (eq (decide run (at-time r 0)) :true))
+                        (ames.geometry:meeting-extent meeting)))
+        (return-from contact-meeting-time (values :at 0 rate0))))
     ;; a gap already closed at the start is not a meeting: look strictly after the start,
     ;; dividing out TAU so that the bridge sees the lowest degree
     (loop repeat 3
@@ -571,7 +591,7 @@ AMBIGUOUS-TRANSITION (restart STOP-SIMULATION) when that cannot be decided."
 
 ;;; One straight state
 
-(defun state-forces (run solution contacts)
+(defun reported-forces (run solution contacts)
   "The forces of the state for the report."
   (let ((scenario (run-scenario run)))
     (append
@@ -628,7 +648,7 @@ QUALITATIVE-STATE and the fired CANDIDATEs (NIL when the state lasts forever)."
                      :contacts (state-contact-descriptions run contacts)
                      :accelerations (mapcar (lambda (m) (list (motion-body m) (motion-acceleration m)))
                                             motions)
-                     :forces (state-forces run solution contacts)
+                     :forces (reported-forces run solution contacts)
                      :positions (mapcar (lambda (m) (list (motion-body m) (motion-position m))) motions)
                      :velocities (mapcar (lambda (m) (list (motion-body m) (motion-velocity m))) motions)
                      :end-event (if fired (end-event-of (mapcar #'candidate-event fired)) :none)
@@ -893,7 +913,7 @@ numeric start, duration and final positions and velocities."
           (setf (getf (state-notes state) :numeric)
                 (list :start clock
                       :duration (let ((d (state-duration state)))
-                                  (if (consp d)
+                                  (if (or (keywordp d) (and (consp d) (keywordp (first d))))
                                       (or (getf (state-notes state) :numeric-duration) d)
                                       (number-of d)))
                       :final-positions (numbers-of (state-final-positions state))
@@ -1032,7 +1052,7 @@ the section header). Returns the QUALITATIVE-STATE and the fired CANDIDATEs."
                                                '(0 0)))))
                                  (scenario-bodies (run-scenario run)))
                          :forces (cons (list :normal observer obstacle normal-along)
-                                       (rest (state-forces run solution contacts)))
+                                       (rest (reported-forces run solution contacts)))
                          :positions (mapcar (lambda (body)
                                               (let ((name (scenario-body-name body)))
                                                 (list name (if (eq name observer)

@@ -335,9 +335,14 @@ there is no such fact."
                (facts (loop for (nil nil weak) in orders
                             for delta in deltas
                             collect (list (if weak '>= '>) delta 0))))
-          (call-with-assumptions bridge facts
-                                 (lambda ()
-                                   (decide bridge (substitute-expressions bindings relation))))))))
+          ;; substitute one ordering after another, and again, so that a bound written with
+          ;; another ordered variable (f > mb g (l1 - l2) / l3 with l1 > l2) is rewritten too
+          (let ((rewritten relation))
+            (loop repeat 3
+                  do (dolist (binding bindings)
+                       (setf rewritten (substitute-expressions (list binding) rewritten))))
+            (call-with-assumptions bridge facts
+                                   (lambda () (decide bridge rewritten))))))))
 
 (defun decide (bridge relation)
   "Decide RELATION (a relation of the algebra, or AND / OR / NOT of relations) under the
