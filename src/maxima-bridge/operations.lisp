@@ -307,42 +307,64 @@ is there or the form is not linear in it."
   "True while DECIDE-BY-ORDER-SUBSTITUTION works, so that it does not recurse.")
 
 (defun order-facts (bridge relation)
-  "The facts in force of the form X > Y (or Y < X) where X is a variable of RELATION and
-Y an expression free of X: the orderings Maxima's sign() does not use inside sums."
+  "The facts in force that order a variable V of RELATION against an expression E free of
+V and not a number (V > E, V < E, E > V ...), as lists (V E SIGN WEAK): V is E + SIGN * D
+for some D > 0 (D >= 0 when WEAK). These are the orderings Maxima's sign() does not use
+inside sums."
   (loop for fact in (current-assumptions bridge)
         for operator = (expression-operator fact)
-        for (big small) = (case operator
-                            ((> >=) (list (relation-lhs fact) (relation-rhs fact)))
-                            ((< <=) (list (relation-rhs fact) (relation-lhs fact))))
-        when (and big (variable-symbol-p big) (free-of-p big small)
-                  (not (numberp small)) (not (free-of-p big relation)))
-          collect (list big small (member operator '(>= <=)))))
+        for lhs = (relation-lhs fact)
+        for rhs = (relation-rhs fact)
+        for weak = (and (member operator '(>= <=)) t)
+        for above = (member operator '(> >=))          ; lhs above rhs
+        for order = (cond ((not (member operator '(> >= < <=))) nil)
+                          ((variable-symbol-p lhs) (list lhs rhs (if above 1 -1) weak))
+                          ((variable-symbol-p rhs) (list rhs lhs (if above -1 1) weak)))
+        when (and order
+                  (free-of-p (first order) (second order))
+                  (not (numberp (second order)))
+                  (not (free-of-p (first order) relation)))
+          collect order))
 
 (defun decide-by-order-substitution (bridge relation)
-  "Decide RELATION once more after writing each ordered variable X (a fact X > Y in force,
-Y not a number) as Y + D with D > 0 fresh: sums such as mb g (l1 - l2)^2 + f (l1 - l2)
-then show their sign term by term. Sound: every admissible X is some Y + D. :UNKNOWN when
-there is no such fact."
+  "Decide RELATION once more after writing each ordered variable V (a fact V > E or V < E
+in force, E not a number) as E + D or E - D with D > 0 fresh: sums such as
+mb g (l1 - l2)^2 + f (l1 - l2) then show their sign term by term. Sound: every admissible
+V is some E +/- D. :UNKNOWN when there is no such fact."
   (let ((orders (and (not *substituting-orders*) (order-facts bridge relation))))
-    (if (null orders)
-        :unknown
-        (let* ((*substituting-orders* t)
-               (deltas (loop for order in orders
-                             collect (make-symbol (format nil "~A-EXCESS" (first order)))))
-               (bindings (loop for (big small) in orders
-                               for delta in deltas
-                               collect (cons big (list '+ small delta))))
-               (facts (loop for (nil nil weak) in orders
-                            for delta in deltas
-                            collect (list (if weak '>= '>) delta 0))))
-          ;; substitute one ordering after another, and again, so that a bound written with
-          ;; another ordered variable (f > mb g (l1 - l2) / l3 with l1 > l2) is rewritten too
-          (let ((rewritten relation))
-            (loop repeat 3
-                  do (dolist (binding bindings)
-                       (setf rewritten (substitute-expressions (list binding) rewritten))))
-            (call-with-assumptions bridge facts
-                                   (lambda () (decide bridge rewritten))))))))
+    (cond ((null orders) :unknown)
+          ((null (rest orders)) (decide-with-orders bridge relation orders))
+          ;; all the orderings at once, else each alone (writing V = E - D forgets V > 0)
+          (t (let ((verdict (decide-with-orders bridge relation orders)))
+               (if (eq verdict :unknown)
+                   (loop for order in orders
+                         for single = (decide-with-orders bridge relation (list order))
+                         unless (eq single :unknown) return single
+                         finally (return :unknown))
+                   verdict))))))
+
+(defun decide-with-orders (bridge relation orders)
+  "DECIDE-BY-ORDER-SUBSTITUTION's work for the given ORDERS (see ORDER-FACTS)."
+  (let* ((*substituting-orders* t)
+         (deltas (loop for order in orders
+                       collect (make-symbol (format nil "~A-EXCESS" (first order)))))
+         (bindings (loop for (variable base sign) in orders
+                         for delta in deltas
+                         collect (cons variable (list '+ base (list '* sign delta)))))
+         (facts (loop for (nil nil nil weak) in orders
+                      for delta in deltas
+                      collect (list (if weak '>= '>) delta 0))))
+    ;; substitute one ordering after another, and again, so that a bound written with
+    ;; another ordered variable (f > mb g (l1 - l2) / l3 with l1 > l2) is rewritten too
+    (let ((rewritten relation))
+      (loop repeat 3
+            do (dolist (binding bindings)
+                 (setf rewritten (substitute-expressions (list binding) rewritten))))
+      ;; a rewriting that leaves the reals (a square root of a negative quantity)
+      ;; proves nothing: Maxima's complaint then means :UNKNOWN
+      (handler-case (call-with-assumptions bridge facts
+                                           (lambda () (decide bridge rewritten)))
+        (maxima-error () :unknown)))))
 
 (defun decide (bridge relation)
   "Decide RELATION (a relation of the algebra, or AND / OR / NOT of relations) under the
