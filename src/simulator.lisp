@@ -743,6 +743,19 @@ STOP-SIMULATION, which returns the history so far) when the assumptions do not d
 which event ends a state, UNSOLVABLE-MODEL and UNSUPPORTED-SITUATION, and the Maxima
 bridge's conditions."
   (let ((scenario (if (scenario-p scenario) scenario (parse-scenario scenario))))
+    (handler-bind ((arithmetic-error
+                     ;; numbers beyond floating point (a float times 1e60) in the geometry's
+                     ;; or the simulator's own arithmetic
+                     (lambda (condition)
+                       (error 'simulation-error
+                              :datum (scenario-name scenario)
+                              :detail (format nil "Arithmetic on the scenario's numbers failed (~A); use exact numbers or smaller magnitudes."
+                                              (type-of condition))))))
+      (simulate-checked scenario bridge parameter-values check-incremental))))
+
+(defun simulate-checked (scenario bridge parameter-values check-incremental)
+  "SIMULATE's work on the validated SCENARIO."
+  (progn
     (check-scenario scenario bridge)
     (ames.maxima:with-assumptions (bridge (scenario-assumption-relations scenario))
       (multiple-value-bind (positions velocities) (initial-motion-state scenario)

@@ -29,8 +29,7 @@
 make Maxima's factor() run for minutes; a MAXIMA-TIMEOUT is a proper AMES-ERROR).")
 
 (defparameter *simulator-fuzz-known-failures*
-  '((248 floating-point-overflow
-     "the geometry folds a single float with a huge integer (src/geometry/expressions.lisp E+, E*)"))
+  '()
   "Generated cases known to fail, each (INDEX CONDITION-TYPE REASON): when case INDEX
 ends in a CONDITION-TYPE it is skipped with REASON (and listed in the lead's report)
 instead of failing the suite; any other outcome is checked as usual.")
@@ -69,9 +68,7 @@ instead of failing the suite; any other outcome is checked as usual.")
   "Scenario forms an earlier generator of this fuzz found failing: kept as regressions.")
 
 (defparameter *simulator-fuzz-found-known-failures*
-  '((0 floating-point-overflow "single float times 5e30 in the geometry (AMES.GEOMETRY::E*)")
-    (1 floating-point-overflow "1e60 coerced to a single float in the geometry (AMES.GEOMETRY::E+)")
-    (2 floating-point-overflow "single float times 1e25 in the geometry (AMES.GEOMETRY::E*)"))
+  '()
   "Known failures among *SIMULATOR-FUZZ-FOUND-FORMS*, as in *SIMULATOR-FUZZ-KNOWN-FAILURES*.")
 
 ;;; Random pieces. Each case has a style that sets how odd its numbers are: :SMALL
