@@ -70,8 +70,8 @@ scenario's assumptions (branching on it comes later). Restart: STOP-SIMULATION."
   "The ames.geometry simple contact behind the contact entity CONTACT."
   (cdr (assoc contact (run-contacts run))))
 
-(defun tidy (run expression &optional (strategy :full))
-  "EXPRESSION simplified by Maxima."
+(defun tidy (run expression &optional (strategy :ratsimp))
+  "EXPRESSION simplified by Maxima (rational canonical form unless STRATEGY says)."
   (ames.maxima:simplify (run-bridge run) expression :strategy strategy))
 
 ;;; Vectors of expressions
@@ -213,7 +213,7 @@ quantity term. Returns the solution alist. Signals UNSOLVABLE-MODEL."
             ((rest solutions)
              (error 'unsolvable-model :datum equations
                                       :detail "The state's model has several solutions."))
-            (t (mapcar (lambda (entry) (cons (car entry) (tidy run (cdr entry))))
+            (t (mapcar (lambda (entry) (cons (car entry) (tidy run (cdr entry) :full)))
                        (first solutions)))))))
 
 (defun solution-value (solution term)
@@ -249,7 +249,7 @@ accelerations substituted."
                         (unless equation
                           (error 'unsolvable-model :datum term
                                                    :detail "The model has no derivative relation for this quantity."))
-                        (tidy run (substitute-expressions bindings (relation-rhs equation))))))
+                        (tidy run (substitute-expressions bindings (relation-rhs equation)) :full))))
                (make-motion name
                             (list (integrated `(ames.kb:pos ,name :x))
                                   (integrated `(ames.kb:pos ,name :y)))
@@ -394,7 +394,7 @@ FACT is the relation the assumptions do not decide."
             (t
              (let ((slope (tidy run (at-time (time-derivative g) root))))
                (case (decide run `(< ,slope 0))
-                 (:true (values :at (tidy run root)))
+                 (:true (values :at (tidy run root :full)))
                  (:false (if (eq (decide run `(= ,slope 0)) :true)
                              (values :never) ; touches zero and turns back
                              (values :never)))
@@ -495,7 +495,7 @@ approach rate of the gap at that time (negative: a collision; zero: a grazing co
                      ((eq root :unknown)
                       (return-from search (values :unknown (undecided-sign-fact run gap status))))
                      (t
-                      (let* ((root (tidy run root))
+                      (let* ((root (tidy run root :full))
                              (rate (tidy run (at-time (ames.geometry:meeting-rate meeting) root)))
                              (extent (mapcar (lambda (r) (at-time r root))
                                              (ames.geometry:meeting-extent meeting)))
@@ -657,12 +657,12 @@ QUALITATIVE-STATE and the fired CANDIDATEs (NIL when the state lasts forever)."
         (when fired
           (setf (state-final-positions state)
                 (mapcar (lambda (m) (list (motion-body m)
-                                          (mapcar (lambda (x) (tidy run (at-time x end)))
+                                          (mapcar (lambda (x) (tidy run (at-time x end) :full))
                                                   (motion-position m))))
                         motions)
                 (state-final-velocities state)
                 (mapcar (lambda (m) (list (motion-body m)
-                                          (mapcar (lambda (x) (tidy run (at-time x end)))
+                                          (mapcar (lambda (x) (tidy run (at-time x end) :full))
                                                   (motion-velocity m))))
                         motions)))
         (values state fired)))))
