@@ -1,19 +1,6 @@
-;;;; t/simulator-pending.lisp -- simulator tests for what does not work yet (not listed in ames.asd).
-;;;;
-;;;; Enable by adding (:file "simulator-pending") after "simulator-scenarios" in the
-;;;; "ames/tests" components of ames.asd, once these work:
-;;;;   - particle-on-sphere: states on curved contacts (AMES::ANALYSE-CURVED-STATE signals
-;;;;     UNSUPPORTED-SITUATION today);
-;;;;   - block-on-incline: CHECK-SCENARIO stops on the geometry's undecidable fact
-;;;;     b (cos a - sin a) = 0 (MISSING-ASSUMPTION-ERROR) today;
-;;;;   - the two blocks in a corner with the sign of f - mb g (l1 - l2)/l3 assumed: the run
-;;;;     stops today on (< N_floor 0), which the bridge's DECIDE leaves :UNKNOWN although
-;;;;     N_floor is a sum of positive terms (it decides it :FALSE when the facts are
-;;;;     assumed in another order), and then on the earliest meeting time of far contacts;
-;;;;   - found while fuzzing: a body that starts touching another and moving into it passes
-;;;;     through it (no collision at time 0); a body that leaves the end of a face moving
-;;;;     along the face's line stops on the missing fact (:earliest-root-of (= 0 0));
-;;;;     parameter values keyed by strings (as --set gives them) signal a TYPE-ERROR.
+;;;; t/simulator-pending.lisp -- simulator tests for what first failed: the sphere, the incline,
+;;;; the corner with the push's side assumed, and the cases the fuzz found (a collision at
+;;;; once, leaving a face along its own line, parameter values keyed by strings).
 ;;;; Expected results are the scenario files' headers; helpers are in
 ;;;; t/simulator-scenarios.lisp.
 
