@@ -12,8 +12,9 @@
    (start :initarg :start :reader state-start
           :documentation "Global time at which the state starts (an expression).")
    (duration :initarg :duration :initform :forever :accessor state-duration
-             :documentation "How long the state lasts: an expression, :FOREVER, or
-(:NO-CLOSED-FORM ...) when the end is known only implicitly.")
+             :documentation "How long the state lasts: an expression, :FOREVER,
+(:NO-CLOSED-FORM ...) when the end is known only implicitly, or :UNDECIDED when the
+assumptions do not decide which event ends it (see the history's notes).")
    (contacts :initarg :contacts :initform '() :reader state-contacts
              :documentation "List of (BODY1 BODY2 :FEATURE F): the simple contacts that hold.")
    (accelerations :initarg :accelerations :initform '() :accessor state-accelerations
@@ -27,7 +28,7 @@
                :documentation "List of (BODY (VX-of-TAU VY-of-TAU)).")
    (end-event :initarg :end-event :initform :none :accessor state-end-event
               :documentation "How the state ends: (:LEAVES A B :ENDPOINT), (:LIFT-OFF A B),
-(:CONTACT A B), (:COLLISION A B), a list of simultaneous events (:SIMULTANEOUS E ...), or :NONE.")
+(:CONTACT A B), (:COLLISION A B), (:TIME-LIMIT T), :UNDECIDED (an ambiguous end), or :NONE.")
    (final-positions :initarg :final-positions :initform '() :accessor state-final-positions
                     :documentation "List of (BODY (X Y)) at the end, or NIL when it never ends.")
    (final-velocities :initarg :final-velocities :initform '()

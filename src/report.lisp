@@ -163,6 +163,7 @@ their features, the forces, accelerations and trajectories, the end event and it
           (format stream "  ends: ~A~%" (event-phrase (state-end-event state)))
           (format stream "  duration: ~A~@[ (~,4F)~]~%"
                   (cond ((eq duration :forever) "forever")
+                        ((eq duration :undecided) "undecided")
                         ((and (consp duration) (eq (first duration) :no-closed-form))
                          (format nil "no closed form in time; it ends after travelling from arc length ~A to ~A along the contact (see the energy integral)"
                                  (infix (getf (rest duration) :from-arc-length))
@@ -186,11 +187,22 @@ their features, the forces, accelerations and trajectories, the end event and it
               (getf assumed :state) (infix-relation (getf assumed :fact))))
     (format stream "~%Outcome: ~(~A~)~%" (history-outcome history))
     (let ((stopped (getf (history-notes history) :stopped-by)))
-      (when stopped (format stream "  ~A~%" stopped)))))
+      (cond ((typep stopped 'ambiguous-transition)
+             (format stream "  Which event ends the last state is not decided by the assumptions.~%")
+             (format stream "  Missing fact: ~A~%"
+                     (infix-relation (ambiguous-transition-missing-fact stopped)))
+             (format stream "  Candidates:~%")
+             (dolist (candidate (ambiguous-transition-candidates stopped))
+               (destructuring-bind (event time &rest more) candidate
+                 (if (eq time :undecided)
+                     (format stream "    ~A, at a time not decided: ~A~%"
+                             (event-phrase event) (infix-relation (first more)))
+                     (format stream "    ~A, at t = ~A~%" (event-phrase event) (infix time))))))
+            (stopped (format stream "  ~A~%" stopped))))))
 
 (defun infix-relation (relation)
   "A relation such as (> X 0) rendered for people."
-  (if (and (consp relation) (relation-operator-p (first relation)))
+  (if (and (consp relation) (symbolp (first relation)) (relation-operator-p (first relation)))
       (format nil "~A ~(~A~) ~A" (infix (relation-lhs relation)) (first relation)
               (infix (relation-rhs relation)))
       (infix relation)))
@@ -201,8 +213,10 @@ their features, the forces, accelerations and trajectories, the end event and it
 
 (defun event-phrase (event)
   "A phrase for an end EVENT."
-  (if (eq event :none)
-      "never (nothing more changes)"
+  (case event
+    (:none "never (nothing more changes)")
+    (:undecided "undecided: the assumptions do not decide which event comes first (see below)")
+    (t
       (destructuring-bind (kind &rest more) event
         (case kind
           (:leaves (format nil "~(~A~) leaves ~(~A~) past the end of the contact" (first more) (second more)))
@@ -212,4 +226,5 @@ their features, the forces, accelerations and trajectories, the end event and it
           (:collision (format nil "~(~A~) collides with ~(~A~) (no collision model: the simulation ends)"
                               (first more) (second more)))
           (:time-limit (format nil "the simulation reaches its time limit, t = ~A" (infix (first more))))
-          (t (format nil "~(~S~)" event))))))
+          (:contact-ends (format nil "the contact of ~(~A~) with ~(~A~) ends" (first more) (second more)))
+          (t (format nil "~(~S~)" event)))))))

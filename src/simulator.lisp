@@ -24,7 +24,10 @@
   ((candidates :initarg :candidates :reader ambiguous-transition-candidates
                :documentation "The termination candidates, each (EVENT TIME).")
    (missing-fact :initarg :missing-fact :reader ambiguous-transition-missing-fact
-                 :documentation "A relation the assumptions do not decide."))
+                 :documentation "A relation the assumptions do not decide.")
+   (state :initarg :state :initform nil :accessor ambiguous-transition-state
+          :documentation "The state whose end is ambiguous, as far as it is known (its model
+and motion), or NIL."))
   (:documentation "Which termination condition comes first cannot be decided under the
 scenario's assumptions (branching on it comes later). Restart: STOP-SIMULATION.")
   (:report (lambda (condition stream)
@@ -524,6 +527,15 @@ EVENT it is for the report and the CHANGE it stands for in the model."
   "True when RELATION contains a quantity term headed by HEAD."
   (some (lambda (v) (and (consp v) (eq (first v) head))) (expression-variables relation)))
 
+(defun change-event (run change)
+  "The event a model CHANGE would be, for reports: a contact that would appear or end."
+  (let* ((key (second change))
+         (contact (and (consp key) (eq (first key) 'ames.kb::contact) (second key))))
+    (if contact
+        (list* (if (eq (first change) :activate) :contact :contact-ends)
+               (contact-bodies run contact))
+        change)))
+
 (defun termination-candidates (run motions solution)
   "Every termination condition of the current model that fires, as CANDIDATEs, and the
 facts that could not be decided for the others (a list of relations)."
@@ -549,13 +561,14 @@ facts that could not be decided for the others (a list of relations)."
                             (append (list :leaves) (contact-bodies run contact) (list :endpoint)))
                            (t (list :mode-change key)))))
                (push (make-candidate event time change) candidates)))
-            (:unknown (push (list time change) unknown))))))
+            (:unknown (push (list time (change-event run change)) unknown))))))
     (values (nreverse candidates) (nreverse unknown))))
 
 (defun earliest-candidates (run candidates unknown)
   "The candidates that fire first, all at one time, proven earliest. Signals
 AMBIGUOUS-TRANSITION (restart STOP-SIMULATION) when that cannot be decided."
   (flet ((ambiguous (fact)
+           (setf fact (core-fact run fact))
            (error 'ambiguous-transition
                   :datum fact :missing-fact fact
                   :candidates (append (mapcar (lambda (c) (list (candidate-event c) (candidate-time c)))
@@ -625,35 +638,42 @@ AMBIGUOUS-TRANSITION (restart STOP-SIMULATION) when that cannot be decided."
 
 (defun analyse-straight-state (run index equations derivative-equations contacts)
   "Solve and end the state INDEX whose contacts are all straight. Returns the
-QUALITATIVE-STATE and the fired CANDIDATEs (NIL when the state lasts forever)."
+QUALITATIVE-STATE and the fired CANDIDATEs (NIL when the state lasts forever). When
+which event ends it is ambiguous, the AMBIGUOUS-TRANSITION carries the state as far as
+it is known (its model and motion, duration :UNDECIDED)."
   (let* ((solution (solve-instantaneous-model run equations))
-         (motions (polynomial-motions run solution derivative-equations)))
+         (motions (polynomial-motions run solution derivative-equations))
+         (state (make-instance
+                 'qualitative-state
+                 :index index :start (run-time run)
+                 :duration :undecided
+                 :contacts (state-contact-descriptions run contacts)
+                 :accelerations (mapcar (lambda (m) (list (motion-body m) (motion-acceleration m)))
+                                        motions)
+                 :forces (reported-forces run solution contacts)
+                 :positions (mapcar (lambda (m) (list (motion-body m) (motion-position m))) motions)
+                 :velocities (mapcar (lambda (m) (list (motion-body m) (motion-velocity m))) motions)
+                 :end-event :undecided)))
     (multiple-value-bind (candidates unknown) (termination-candidates run motions solution)
       (let* ((until (scenario-until (run-scenario run)))
-             (fired (earliest-candidates
-                     run
-                     (if (and until (not (consp (run-time run))) (not (keywordp (run-time run))))
-                         ;; the scenario's (simulate :until T) ends the run at global time T
-                         (cons (make-candidate (list :time-limit until)
-                                               (tidy run `(- ,until ,(run-time run)))
-                                               nil)
-                               candidates)
-                         candidates)
-                     unknown))
-             (end (and fired (candidate-time (first fired))))
-             (state (make-instance
-                     'qualitative-state
-                     :index index :start (run-time run)
-                     :duration (or end :forever)
-                     :contacts (state-contact-descriptions run contacts)
-                     :accelerations (mapcar (lambda (m) (list (motion-body m) (motion-acceleration m)))
-                                            motions)
-                     :forces (reported-forces run solution contacts)
-                     :positions (mapcar (lambda (m) (list (motion-body m) (motion-position m))) motions)
-                     :velocities (mapcar (lambda (m) (list (motion-body m) (motion-velocity m))) motions)
-                     :end-event (if fired (end-event-of (mapcar #'candidate-event fired)) :none)
-                     :notes (when (rest fired)
-                              (list :events (mapcar #'candidate-event fired))))))
+             (fired (handler-bind ((ambiguous-transition
+                                     (lambda (condition)
+                                       (setf (ambiguous-transition-state condition) state))))
+                      (earliest-candidates
+                       run
+                       (if (and until (not (consp (run-time run))) (not (keywordp (run-time run))))
+                           ;; the scenario's (simulate :until T) ends the run at global time T
+                           (cons (make-candidate (list :time-limit until)
+                                                 (tidy run `(- ,until ,(run-time run)))
+                                                 nil)
+                                 candidates)
+                           candidates)
+                       unknown)))
+             (end (and fired (candidate-time (first fired)))))
+        (setf (state-duration state) (or end :forever)
+              (state-end-event state) (if fired (end-event-of (mapcar #'candidate-event fired)) :none)
+              (state-notes state) (when (rest fired)
+                                    (list :events (mapcar #'candidate-event fired))))
         (when fired
           (setf (state-final-positions state)
                 (mapcar (lambda (m) (list (motion-body m)
@@ -779,6 +799,11 @@ bridge's conditions."
               (setf (history-outcome history) (if (typep condition 'ambiguous-transition)
                                                   :ambiguous
                                                   :stopped))
+              (when (and (typep condition 'ambiguous-transition)
+                         (ambiguous-transition-state condition))
+                (setf (history-states history)
+                      (append (history-states history)
+                              (list (ambiguous-transition-state condition)))))
               (setf (getf (history-notes history) :stopped-by) condition)))
           (add-numeric-values history bridge)
           (setf (history-rederived history) (reverse (run-rederived run)))
