@@ -103,6 +103,21 @@ CONTACT's locus; an empty disjunction (never) for a whole line or circle."
                        :documentation "The unit normal pointing toward the obstacle.")
     (register-template kb 'unit-tangent (along-contact #'ames.geometry:contact-unit-tangent)
                        :documentation "The unit tangent of a contact's locus.")
+    (register-template kb 'cosine-of-rotation
+                       (lambda (situation contact)
+                         (axis-component (ames.geometry:contact-unit-tangent
+                                          (contact-geometry situation contact)
+                                          (list 'path-position contact))
+                                         :x))
+                       :documentation "cos q, q the rotation of a straight contact's coordinates
+(its tangent angle), as the x component of its unit tangent (simpler for Maxima than q).")
+    (register-template kb 'sine-of-rotation
+                       (lambda (situation contact)
+                         (axis-component (ames.geometry:contact-unit-tangent
+                                          (contact-geometry situation contact)
+                                          (list 'path-position contact))
+                                         :y))
+                       :documentation "sin q, q the rotation of a straight contact's coordinates.")
     (register-template kb 'curvature
                        (lambda (situation contact)
                          (ames.geometry:contact-curvature (contact-geometry situation contact)))
@@ -223,13 +238,26 @@ Instantiated for every pair whose relative motion a contact describes."
               (= (acc ?body1 :y) (+ (rel-acc ?body1 ?body2 :y) (acc ?body2 :y)))))
 
 (defcomponent path-coordinate-conversion (:knowledge-base *mechanics*)
-  "Path coordinates on a contact's locus measure the relative acceleration along the
-unit tangent and the inward normal at the observer's arc length s; rotating them back
-gives cartesian components in the obstacle's frame (section 2.5.7, figure 2-4)."
+  "The relative acceleration measured in a contact's own coordinates, converted to the
+obstacle's cartesian coordinates (section 2.5.7, figure 2-4). On a straight contact those
+coordinates are cartesian, offset and rotated by the contact's constant tangent angle q:
+the conversion is the rotation by q. On a curved contact they are path coordinates, whose
+unit tangent and inward normal turn with the arc length s; the centripetal part of the
+normal component comes from the kinematic restriction."
   (:arguments (?contact :belief (path-coordinates ?contact :of ?body1 :wrt ?body2)))
-  (:equations (= (rel-acc ?body1 ?body2 :x)
-                 (+ (* (path-acc ?contact :tangential) (unit-tangent ?contact :x))
-                    (* (path-acc ?contact :normal) (inward-normal ?contact :x))))
-              (= (rel-acc ?body1 ?body2 :y)
-                 (+ (* (path-acc ?contact :tangential) (unit-tangent ?contact :y))
-                    (* (path-acc ?contact :normal) (inward-normal ?contact :y))))))
+  (:mode :rotated-cartesian
+   (:entry (= (curvature ?contact) 0))
+   (:equations (= (rel-acc ?body1 ?body2 :x)
+                  (- (* (path-acc ?contact :tangential) (cosine-of-rotation ?contact))
+                     (* (path-acc ?contact :normal) (sine-of-rotation ?contact))))
+               (= (rel-acc ?body1 ?body2 :y)
+                  (+ (* (path-acc ?contact :tangential) (sine-of-rotation ?contact))
+                     (* (path-acc ?contact :normal) (cosine-of-rotation ?contact))))))
+  (:mode :path
+   (:entry (/= (curvature ?contact) 0))
+   (:equations (= (rel-acc ?body1 ?body2 :x)
+                  (+ (* (path-acc ?contact :tangential) (unit-tangent ?contact :x))
+                     (* (path-acc ?contact :normal) (inward-normal ?contact :x))))
+               (= (rel-acc ?body1 ?body2 :y)
+                  (+ (* (path-acc ?contact :tangential) (unit-tangent ?contact :y))
+                     (* (path-acc ?contact :normal) (inward-normal ?contact :y)))))))
