@@ -24,9 +24,9 @@
 
 (defun g-value (expression &optional bindings)
   "The floating value of EXPRESSION (an error when it has none)."
-  (let ((value (ames.geometry::float-value expression bindings)))
+  (let ((value (expression-value expression bindings)))
     (assert value () "~S has no numeric value under ~S" expression bindings)
-    value))
+    (float value 1d0)))
 
 (defun g-close-p (a b &optional bindings (tolerance 1d-9))
   "True when the expressions (or lists of expressions) A and B agree numerically."

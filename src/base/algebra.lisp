@@ -94,6 +94,12 @@ no limit).")
   "The relation (OPERATOR LHS RHS)."
   (list operator lhs rhs))
 
+(defun finite-real-p (x)
+  "True when X is a rational or a finite float (neither an infinity nor a NaN)."
+  (or (rationalp x)
+      ;; not by comparison: with SBCL's float traps on, comparing a NaN signals
+      (and (floatp x) (not (sb-ext:float-nan-p x)) (not (sb-ext:float-infinity-p x)))))
+
 (defun check-expression (expression &key (kind :any) (allow-terms t) (allow-floats t))
   "Signal MALFORMED-EXPRESSION unless EXPRESSION belongs to the algebra; return it.
 KIND is :ARITHMETIC (a quantity), :CONDITION (a relation or logical form) or :ANY.
@@ -105,8 +111,7 @@ With ALLOW-TERMS false, quantity terms are rejected; with ALLOW-FLOATS false, fl
              (cond ((realp x)
                     (when (and (floatp x) (not allow-floats))
                       (fail x "a float is not allowed here"))
-                    (unless (or (rationalp x)
-                                (and (floatp x) (= x x) (< (abs x) most-positive-double-float)))
+                    (unless (finite-real-p x)
                       (fail x "not a finite real number")))
                    ((numberp x) (fail x "not a real number"))
                    ((constant-symbol-p x))

@@ -12,9 +12,6 @@
 
 (in-package #:ames.geometry)
 
-(defparameter +float-decision-margin+ 1d-9
-  "A constant expression whose floating value exceeds this in magnitude has that sign.")
-
 (defstruct (decider (:constructor make-decider (&key bridge subject)))
   "What geometry needs to decide facts: the Maxima bridge (or NIL: exact and constant
 facts only) and the subject named when a fact cannot be decided."
@@ -53,19 +50,11 @@ ASSUME-FALSE returns NIL."
       :report "Take the fact as false."
       nil)))
 
-(defun numeric-sign (value)
-  (cond ((plusp value) :positive) ((minusp value) :negative) (t :zero)))
-
 (defun fast-sign (expression)
   "The sign (:NEGATIVE, :ZERO or :POSITIVE) of EXPRESSION when arithmetic alone settles
-it, else NIL."
-  (let ((exact (rational-value expression)))
-    (if exact
-        (numeric-sign exact)
-        (when (null (expression-variables expression))
-          (let ((value (float-value expression)))
-            (when (and value (> (abs value) +float-decision-margin+))
-              (numeric-sign value)))))))
+it (see CONSTANT-SIGN), else NIL."
+  (case (constant-sign expression)
+    (-1 :negative) (0 :zero) (1 :positive)))
 
 (defun bridge-truth (decider relation)
   "The bridge's answer on RELATION (:TRUE, :FALSE or :UNKNOWN); :UNKNOWN without a bridge."
