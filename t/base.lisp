@@ -23,6 +23,41 @@
     (is (equal '(frob "x") (ames-error-datum condition)))
     (is (search "FROB" (princ-to-string condition)))))
 
+(test arity-messages-count-arguments-correctly
+  (flet ((message (expression)
+           (handler-case (progn (check-expression expression) nil)
+             (malformed-expression (c) (ames-error-detail c)))))
+    (is (string= "SIN takes 1 argument" (message '(sin 1 2))))
+    (is (string= "EXPT takes 2 arguments" (message '(expt 2))))
+    (is (string= "ATAN takes 1 or 2 arguments" (message '(atan 1 2 3))))
+    (is (string= "+ takes at least 1 argument" (message '(+))))))
+
+(test reports-of-huge-data-are-cut-short
+  ;; printing a condition must neither exhaust the stack on a very deep datum nor run
+  ;; for ever on a circular one
+  (let ((deep "bad"))
+    (dotimes (i 10000) (setf deep (list '- deep)))
+    (let* ((condition (handler-case (check-expression deep)
+                        (malformed-expression (c) c)))
+           (report (princ-to-string condition)))
+      (is (typep condition 'malformed-expression))
+      (is (search "at fault: \"bad\"" report))
+      (is (search "in: (- (- (- " report))
+      (is (search "#" report))
+      (is (< (length report) 400)))
+    (let ((report (princ-to-string (make-condition 'ames-error :detail "deep" :datum deep))))
+      (is (search "at fault: (- (- " report))
+      (is (< (length report) 400))))
+  (let ((long (make-list 100000 :initial-element 'x))
+        (circular (list '+ 1 2)))
+    (setf (cdr (last circular)) circular)
+    (let ((report (princ-to-string
+                   (make-condition 'malformed-expression
+                                   :detail "long" :datum long :expression circular))))
+      (is (search "(X X X" report))
+      (is (search "..." report))
+      (is (< (length report) 400)))))
+
 (test expression-walkers
   (is (equal '(a (acc p :x) b) (expression-variables '(+ a (* (acc p :x) b pi) a))))
   (is (free-of-p 'c '(+ a (sin b))))

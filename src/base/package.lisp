@@ -10,6 +10,7 @@ bridge translates the algebra to anything else.")
    ;; conditions
    #:ames-error #:ames-error-datum #:ames-error-detail
    #:malformed-expression #:malformed-expression-expression
+   #:format-report
    ;; the algebra
    #:tau
    #:+arithmetic-operators+ #:+relation-operators+ #:+logical-operators+
