@@ -3,10 +3,8 @@
 (in-package #:ames.engine)
 
 (define-condition engine-error (ames-error) ()
-  (:documentation "The parent of every condition the component engine signals.")
-  (:report (lambda (condition stream)
-             (format-report stream "~A~@[~%  at fault: ~S~]" (ames-error-detail condition)
-                            (ames-error-datum condition)))))
+  (:documentation "The parent of every condition the component engine signals (its
+report, unless a subclass has its own, is AMES-ERROR's: the detail and the datum)."))
 
 (define-condition component-definition-error (engine-error)
   ((component :initarg :component :initform nil

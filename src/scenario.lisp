@@ -824,15 +824,23 @@ SCENARIO-SHAPE-ERROR for a bad form (and the expression errors for its coordinat
                        :value (checked-vector validation (keyword-value :value arguments)
                                               "the force's :value"))))))
 
+(defun single-clause (validation word clauses)
+  "The only clause of CLAUSES, the scenario's (WORD ...) clauses, entered for checking;
+NIL when there is none. Signals DUPLICATE-CLAUSE-ERROR naming the second when there
+are more."
+  (when clauses
+    (let ((location (format nil "clause ~A" (symbol-name word))))
+      (when (rest clauses)
+        (enter validation location (second clauses))
+        (reject validation 'duplicate-clause-error (second clauses)
+                "there is more than one (~(~A~) ...) clause" (symbol-name word)))
+      (enter validation location (first clauses))
+      (first clauses))))
+
 (defun checked-gravity (validation clauses)
   "The field strength of the (gravity STRENGTH) clause among CLAUSES, or NIL."
-  (when clauses
-    (enter validation "clause GRAVITY" (second clauses))
-    (when (rest clauses)
-      (reject validation 'duplicate-clause-error (second clauses)
-              "there is more than one (gravity ...) clause"))
-    (let ((clause (first clauses)))
-      (enter validation "clause GRAVITY" clause)
+  (let ((clause (single-clause validation 'ames-scenario:gravity clauses)))
+    (when clause
       (unless (= (length clause) 2)
         (reject validation 'scenario-syntax-error clause
                 "gravity takes one strength: (gravity STRENGTH)"))
@@ -840,13 +848,8 @@ SCENARIO-SHAPE-ERROR for a bad form (and the expression errors for its coordinat
 
 (defun checked-simulate (validation clauses)
   "The :states and :until of the (simulate ...) clause among CLAUSES, as two values."
-  (when clauses
-    (enter validation "clause SIMULATE" (second clauses))
-    (when (rest clauses)
-      (reject validation 'duplicate-clause-error (second clauses)
-              "there is more than one (simulate ...) clause"))
-    (let ((clause (first clauses)))
-      (enter validation "clause SIMULATE" clause)
+  (let ((clause (single-clause validation 'ames-scenario:simulate clauses)))
+    (when clause
       (let* ((arguments (checked-keywords validation (rest clause) '(:states :until)
                                           "simulate"))
              (states (keyword-value :states arguments))

@@ -76,6 +76,14 @@ restarts ASSUME-TRUE / ASSUME-FALSE then answer :POSITIVE / :NEGATIVE."
                     ((undecidable decider (list '> expression 0)) :positive)
                     (t :negative)))))))
 
+(defun sign-satisfies-p (operator sign)
+  "True when (OPERATOR D 0) holds for a D of SIGN (:NEGATIVE, :ZERO or :POSITIVE);
+OPERATOR is one of = /= < > <= >=."
+  (ecase operator
+    (= (eq sign :zero)) (/= (not (eq sign :zero)))
+    (< (eq sign :negative)) (> (eq sign :positive))
+    (<= (not (eq sign :positive))) (>= (not (eq sign :negative)))))
+
 (defun fact-holds-p (decider relation)
   "True when RELATION, (REL LHS RHS) with REL one of = /= < > <= >=, holds; false when
 it fails. Exact and constant facts are settled in Lisp, others by the bridge. Signals
@@ -83,30 +91,22 @@ UNDECIDABLE-GEOMETRIC-FACT naming RELATION when neither can tell."
   (let* ((operator (car relation))
          (difference (e- (relation-lhs relation) (relation-rhs relation)))
          (sign (fast-sign difference)))
-    (flet ((by-sign (sign)
-             (ecase operator
-               (= (eq sign :zero)) (/= (not (eq sign :zero)))
-               (< (eq sign :negative)) (> (eq sign :positive))
-               (<= (not (eq sign :positive))) (>= (not (eq sign :negative))))))
-      (if sign
-          (by-sign sign)
-          (let ((asked (list operator difference 0)))
-            (case (bridge-truth decider asked)
-              (:true t)
-              (:false nil)
-              (t (undecidable decider relation))))))))
+    (if sign
+        (sign-satisfies-p operator sign)
+        (case (bridge-truth decider (list operator difference 0))
+          (:true t)
+          (:false nil)
+          (t (undecidable decider relation))))))
 
 (defun fact-known-p (decider relation)
   "True when RELATION is known to hold (by arithmetic or the bridge); NIL when it fails
 or cannot be decided. Never signals: for optional simplifications only."
-  (let* ((difference (e- (relation-lhs relation) (relation-rhs relation)))
+  (let* ((operator (car relation))
+         (difference (e- (relation-lhs relation) (relation-rhs relation)))
          (sign (fast-sign difference)))
     (if sign
-        (ecase (car relation)
-          (= (eq sign :zero)) (/= (not (eq sign :zero)))
-          (< (eq sign :negative)) (> (eq sign :positive))
-          (<= (not (eq sign :positive))) (>= (not (eq sign :negative))))
-        (eq (bridge-truth decider (list (car relation) difference 0)) :true))))
+        (sign-satisfies-p operator sign)
+        (eq (bridge-truth decider (list operator difference 0)) :true))))
 
 (defun positive-p (decider x) "X > 0." (fact-holds-p decider (list '> x 0)))
 (defun negative-p (decider x) "X < 0." (fact-holds-p decider (list '< x 0)))

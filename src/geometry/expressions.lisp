@@ -302,27 +302,28 @@ for other non-negative rationals."
             (push term rest))))
     (values (apply #'e+ (nreverse rest)) (mod k 4))))
 
-(defun ecos (x)
-  "The cosine of X: exact at multiples of PI/4 and PI/6; cos(atan(y, x)) =
-x / sqrt(x^2 + y^2); quarter turns in X shifted out."
+(defun circular-function (function x)
+  "FUNCTION (COS or SIN) of X: exact at multiples of PI/4 and PI/6; quarter turns in X
+shifted out; at X = atan(y, u), cos = u / sqrt(u^2 + y^2) and sin = y / sqrt(u^2 + y^2)."
   (multiple-value-bind (rest k) (split-quarter-turns x)
-    (cond ((special-angle-value x 'cos))
+    (cond ((special-angle-value x function))
           ((and (not (equal rest x)) (not (eql rest 0)))
-           (ecase k (0 (ecos rest)) (1 (e- (esin rest))) (2 (e- (ecos rest))) (3 (esin rest))))
+           ;; cos(r + k pi/2), and sin(r + k pi/2) = cos(r + (k - 1) pi/2)
+           (ecase (mod (if (eq function 'sin) (1- k) k) 4)
+             (0 (ecos rest)) (1 (e- (esin rest))) (2 (e- (ecos rest))) (3 (esin rest))))
           ((two-argument-atan-p x)
-           (e/ (third x) (esqrt (e+ (esquare (second x)) (esquare (third x))))))
-          (t (list 'cos x)))))
+           (destructuring-bind (y u) (rest x)
+             (e/ (ecase function (cos u) (sin y))
+                 (esqrt (e+ (esquare y) (esquare u))))))
+          (t (list function x)))))
+
+(defun ecos (x)
+  "The cosine of X, simplified as CIRCULAR-FUNCTION says."
+  (circular-function 'cos x))
 
 (defun esin (x)
-  "The sine of X: exact at multiples of PI/4 and PI/6; sin(atan(y, x)) =
-y / sqrt(x^2 + y^2); quarter turns in X shifted out."
-  (multiple-value-bind (rest k) (split-quarter-turns x)
-    (cond ((special-angle-value x 'sin))
-          ((and (not (equal rest x)) (not (eql rest 0)))
-           (ecase k (0 (esin rest)) (1 (ecos rest)) (2 (e- (esin rest))) (3 (e- (ecos rest)))))
-          ((two-argument-atan-p x)
-           (e/ (second x) (esqrt (e+ (esquare (second x)) (esquare (third x))))))
-          (t (list 'sin x)))))
+  "The sine of X, simplified as CIRCULAR-FUNCTION says."
+  (circular-function 'sin x))
 
 (defun etan (x)
   "The tangent of X."

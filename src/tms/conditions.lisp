@@ -34,10 +34,8 @@ assumption that does not support the contradiction. DATUM is the node.")
 
 (define-condition foreign-node (tms-error) ()
   (:documentation "A justification mixed nodes of different JTMSs, or a node was
-given where none is expected. DATUM is the offending object.")
-  (:report (lambda (condition stream)
-             (format-report stream "~A~%  at fault: ~S" (ames-error-detail condition)
-                            (ames-error-datum condition)))))
+given where none is expected. DATUM is the offending object. (Its report is
+AMES-ERROR's: the detail and the datum.)"))
 
 (defun retract-culprit (assumption &optional condition)
   "Invoke the RETRACT-CULPRIT restart of CONDITION (a CONTRADICTION; the most recent
