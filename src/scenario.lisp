@@ -662,16 +662,12 @@ outline), without :solid."
 (defun arc-end-point (arc angle-key)
   "The numeric point of ARC (a checked arc) at its ANGLE-KEY (:FROM or :TO) end, as
 a list (X Y NIL) (NIL: not exact), or NIL when not numeric."
-  (let ((center (getf (rest arc) :center)))
-    (let ((cx (expression-value (first center)))
-          (cy (expression-value (second center)))
-          (r (expression-value (getf (rest arc) :radius)))
-          (angle (expression-value (getf (rest arc) angle-key))))
-      (and cx cy r angle
-           (handler-case (list (+ cx (* r (cos (float angle 1d0))))
-                               (+ cy (* r (sin (float angle 1d0))))
-                               nil)
-             (arithmetic-error () nil))))))
+  (destructuring-bind (cx cy) (getf (rest arc) :center)
+    (let* ((radius (getf (rest arc) :radius))
+           (angle (getf (rest arc) angle-key))
+           (x (expression-value `(+ ,cx (* ,radius (cos ,angle)))))
+           (y (expression-value `(+ ,cy (* ,radius (sin ,angle))))))
+      (and x y (list x y nil)))))
 
 (defun piece-end (piece end)
   "The numeric point (X Y EXACT) where the checked outline PIECE starts (END :START)
