@@ -173,6 +173,14 @@
   (is (equal '(nil nil) (value-and-exactness 'x `((x . ,sb-ext:double-float-positive-infinity)))))
   (is (equal '(nil nil) (value-and-exactness '(+ x 1) '((x . #c(0 1)))))))
 
+(test expression-values-of-deep-expressions
+  (flet ((negated (times)
+           (let ((x 1)) (dotimes (i times x) (setf x (list '- x))))))
+    (is (equal '(1 t) (value-and-exactness (negated 1000))))
+    (is (equal '(nil nil) (value-and-exactness (negated 1001))))
+    ;; no stack exhaustion: too deep is no value
+    (is (equal '(nil nil) (value-and-exactness (negated 100000))))))
+
 (test expression-values-never-signal
   ;; random trees of every operator over awkward numbers: a value is NIL or a finite real
   (for-all ((tree (lambda ()

@@ -19,6 +19,11 @@
   "An exact power whose result could need more bits than this is computed as a float
 instead (so that (expt 10 (expt 10 10)) overflows to NIL rather than filling memory).")
 
+(defconstant +deepest-evaluated-expression+ 1000
+  "EXPRESSION-VALUE gives no value (NIL) for an expression nested deeper than this,
+rather than exhaust the stack: no caller needs one (scenario forms are at most 100
+deep), and NIL only leaves a fact for Maxima to decide.")
+
 (defconstant +largest-exact-root-degree+ 64
   "A rational exponent P/Q with Q above this is taken in floating point, without looking
 for an exact Q-th root.")
@@ -134,10 +139,11 @@ bound variable or term (its value is then taken as given, float or not).
 VALUE and EXACTP are NIL when EXPRESSION has a variable or term that BINDINGS leave
 unbound or bind to something other than a finite real, when it is not an arithmetic
 expression of the algebra (a relation, an unknown operator, a wrong number of
-arguments, an improper list), and when its value is not a finite real: division by
-zero, 0 to a negative power, a negative number to a non-integer power, the square root
-or logarithm of a negative, ASIN or ACOS outside [-1, 1], (atan 0 0), or overflow.
-Signals nothing."
+arguments, an improper list), when it is nested deeper than
++DEEPEST-EVALUATED-EXPRESSION+ (1000), and when its value is not a finite real:
+division by zero, 0 to a negative power, a negative number to a non-integer power, the
+square root or logarithm of a negative, ASIN or ACOS outside [-1, 1], (atan 0 0), or
+overflow. Signals nothing."
   (labels ((give-up () (return-from expression-value (values nil nil)))
            (finite-or-give-up (x)
              (if (and (realp x) (finite-real-p x))
@@ -146,20 +152,23 @@ Signals nothing."
            (bound-value (x)
              (let ((entry (assoc x bindings :test #'equal)))
                (if entry (finite-or-give-up (cdr entry)) (give-up))))
-           (value (x)
+           (value (x depth)
              (cond ((realp x) (finite-or-give-up x))
                    ((constant-symbol-p x) (float pi 1d0))
                    ((and (consp x) (arithmetic-operator-p (car x)))
-                    (unless (and (alexandria:proper-list-p x)
+                    (unless (and (< depth +deepest-evaluated-expression+)
+                                 (alexandria:proper-list-p x)
                                  (arity-allows-p (car x) (length (cdr x))))
                       (give-up))
                     (finite-or-give-up
-                     (or (apply-arithmetic-operator (car x) (mapcar #'value (cdr x)))
+                     (or (apply-arithmetic-operator
+                          (car x) (mapcar (lambda (argument) (value argument (1+ depth)))
+                                          (cdr x)))
                          (give-up))))
                    ((or (variable-symbol-p x) (quantity-term-p x)) (bound-value x))
                    (t (give-up)))))
     (handler-case
-        (let ((result (value expression)))
+        (let ((result (value expression 0)))
           (values result (or (rationalp result)
                              (realp expression)
                              (variable-symbol-p expression)
