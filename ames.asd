@@ -14,7 +14,8 @@ frictionless translating rigid bodies evolve (after Leon Wong's 1994 MIT thesis)
   ((:module "base" :pathname "src/base/" :serial t
     :components ((:file "package")
                  (:file "conditions")
-                 (:file "algebra")))
+                 (:file "algebra")
+                 (:file "evaluation")))
    (:module "maxima-bridge" :pathname "src/maxima-bridge/" :serial t
     :depends-on ("base")
     :components ((:file "package")

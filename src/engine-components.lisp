@@ -263,7 +263,8 @@ the argument and the variables it binds."
 (defun parse-conditions (name section bound collections
                          &key allow-beliefs allow-always allow-never)
   "Parse the items of an activation, deactivation or entry SECTION: returns the
-belief patterns and the relation templates. BOUND are the variables relations may use."
+belief patterns and the relation templates (none when SECTION is NIL, absent). BOUND
+are the variables relations may use."
   (let ((items (section-body name section)) (beliefs '()) (relations '()))
     (dolist (item items)
       (cond ((member item '(:always :never))
@@ -288,7 +289,8 @@ belief patterns and the relation templates. BOUND are the variables relations ma
     (values (nreverse beliefs) (nreverse relations))))
 
 (defun parse-assertions (name section bound collections)
-  "Parse an :ASSERT section: belief patterns whose variables are all in BOUND."
+  "Parse an :ASSERT section: belief patterns whose variables are all in BOUND (none
+when SECTION is NIL, absent)."
   (let ((patterns (section-body name section)))
     (dolist (pattern patterns)
       (check-pattern name pattern pattern "An assertion")
@@ -296,7 +298,8 @@ belief patterns and the relation templates. BOUND are the variables relations ma
     patterns))
 
 (defun parse-equations (name section bound)
-  "Parse an :EQUATIONS section: equation templates whose variables are in BOUND."
+  "Parse an :EQUATIONS section: equation templates whose variables are in BOUND (none
+when SECTION is NIL, absent)."
   (let ((equations (section-body name section)))
     (dolist (equation equations)
       (check-relation-template name equation equation "An equation" :equation t)
@@ -352,18 +355,14 @@ checked by PARSE-COMPONENT)."
                                  '(:entry :assert :equations :transition)
                                  :repeatable '(:transition))))
       (multiple-value-bind (entry-beliefs entry-relations)
-          (if (section :entry parts)
-              (parse-conditions name (section :entry parts) key-bound collections
-                                :allow-beliefs t :allow-always t)
-              (values '() '()))
+          (parse-conditions name (section :entry parts) key-bound collections
+                            :allow-beliefs t :allow-always t)
         (make-mode mode-name
                    :entry-p (and (section :entry parts) t)
                    :entry-beliefs entry-beliefs :entry-relations entry-relations
-                   :assertions (and (section :assert parts)
-                                    (parse-assertions name (section :assert parts)
-                                                      key-bound collections))
-                   :equations (and (section :equations parts)
-                                   (parse-equations name (section :equations parts) all-bound))
+                   :assertions (parse-assertions name (section :assert parts)
+                                                 key-bound collections)
+                   :equations (parse-equations name (section :equations parts) all-bound)
                    :transitions (loop for transition in (cdr (assoc :transition parts))
                                       collect (parse-transition name transition all-bound
                                                                 collections)))))))
@@ -395,14 +394,11 @@ grammar). Signals COMPONENT-DEFINITION-ERROR naming the clause at fault."
            (key-bound (set-difference bound collections))
            (all-bound bound))
       (multiple-value-bind (activation-beliefs activation-relations)
-          (if (section :activation parts)
-              (parse-conditions name (section :activation parts) key-bound collections
-                                :allow-beliefs t :allow-always t)
-              (values '() '()))
+          (parse-conditions name (section :activation parts) key-bound collections
+                            :allow-beliefs t :allow-always t)
         (let ((deactivation-relations
-                (and (section :deactivation parts)
-                     (nth-value 1 (parse-conditions name (section :deactivation parts)
-                                                    all-bound collections :allow-never t))))
+                (nth-value 1 (parse-conditions name (section :deactivation parts)
+                                               all-bound collections :allow-never t)))
               (modes (loop for clause in (cdr (assoc :mode parts))
                            collect (parse-mode name clause key-bound all-bound collections))))
           (check-modes name modes (cdr (assoc :mode parts)))
@@ -411,10 +407,8 @@ grammar). Signals COMPONENT-DEFINITION-ERROR naming the clause at fault."
            :activation-beliefs activation-beliefs
            :activation-relations activation-relations
            :deactivation-relations deactivation-relations
-           :assertions (and (section :assert parts)
-                            (parse-assertions name (section :assert parts) key-bound collections))
-           :equations (and (section :equations parts)
-                           (parse-equations name (section :equations parts) all-bound))
+           :assertions (parse-assertions name (section :assert parts) key-bound collections)
+           :equations (parse-equations name (section :equations parts) all-bound)
            :modes modes
            :definition sections))))))
 

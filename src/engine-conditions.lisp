@@ -3,10 +3,8 @@
 (in-package #:ames.engine)
 
 (define-condition engine-error (ames-error) ()
-  (:documentation "The parent of every condition the component engine signals.")
-  (:report (lambda (condition stream)
-             (format stream "~A~@[~%  at fault: ~S~]" (ames-error-detail condition)
-                     (ames-error-datum condition)))))
+  (:documentation "The parent of every condition the component engine signals (its
+report, unless a subclass has its own, is AMES-ERROR's: the detail and the datum)."))
 
 (define-condition component-definition-error (engine-error)
   ((component :initarg :component :initform nil
@@ -19,12 +17,13 @@ malformed. DATUM is the smallest clause at fault (read it with
 COMPONENT-DEFINITION-ERROR-CLAUSE); DETAIL says what is wrong. DEFCOMPONENT signals
 it at macroexpansion time.")
   (:report (lambda (condition stream)
-             (format stream "Malformed DEFCOMPONENT ~S: ~A~%  clause: ~S~@[~%  in section: ~S~]"
-                     (component-definition-error-component condition)
-                     (ames-error-detail condition)
-                     (ames-error-datum condition)
-                     (let ((section (slot-value condition 'section)))
-                       (and (not (eq section (ames-error-datum condition))) section))))))
+             (format-report stream "Malformed DEFCOMPONENT ~S: ~A~%  clause: ~S~
+                                    ~@[~%  in section: ~S~]"
+                            (component-definition-error-component condition)
+                            (ames-error-detail condition)
+                            (ames-error-datum condition)
+                            (let ((section (slot-value condition 'section)))
+                              (and (not (eq section (ames-error-datum condition))) section))))))
 
 (defun component-definition-error-clause (condition)
   "The clause at fault in a COMPONENT-DEFINITION-ERROR."
@@ -37,10 +36,10 @@ it at macroexpansion time.")
 form a cycle (each reads a belief the previous one asserts), so there is no order
 in which to instantiate them.")
   (:report (lambda (condition stream)
-             (format stream "The components ~{~S~^ -> ~} -> ~S depend on each other's ~
-                             assertions: there is no order to instantiate them in."
-                     (dependency-cycle-components condition)
-                     (first (dependency-cycle-components condition))))))
+             (format-report stream "The components ~{~S~^ -> ~} -> ~S depend on each other's ~
+                                    assertions: there is no order to instantiate them in."
+                            (dependency-cycle-components condition)
+                            (first (dependency-cycle-components condition))))))
 
 (define-condition unknown-component (engine-error) ()
   (:documentation "A knowledge base has no component of the name given (DATUM)."))
@@ -58,10 +57,10 @@ faulty entity description."))
 instance did not give an expression of the algebra of the right kind (or template
 functions called each other without end). DATUM is the expansion at fault.")
   (:report (lambda (condition stream)
-             (format stream "~A~%  instance: ~S~%  template: ~S~%  expansion: ~S"
-                     (ames-error-detail condition)
-                     (slot-value condition 'instance) (slot-value condition 'template)
-                     (ames-error-datum condition)))))
+             (format-report stream "~A~%  instance: ~S~%  template: ~S~%  expansion: ~S"
+                            (ames-error-detail condition)
+                            (slot-value condition 'instance) (slot-value condition 'template)
+                            (ames-error-datum condition)))))
 
 (define-condition duplicate-instance (engine-error) ()
   (:documentation "Two different bindings of a component's arguments give the same
@@ -86,10 +85,10 @@ entry condition (it answered :UNKNOWN): the engine does not guess. The restart
 USE-DECISION (value :TRUE or :FALSE) supplies the answer, which the model records as
 assumed. DATUM is the relation.")
   (:report (lambda (condition stream)
-             (format stream "Cannot decide whether ~S holds in the initial state,~%  ~
-                             needed by the instance ~S."
-                     (undecided-relation-relation condition)
-                     (undecided-relation-instance condition)))))
+             (format-report stream "Cannot decide whether ~S holds in the initial state,~%  ~
+                                    needed by the instance ~S."
+                            (undecided-relation-relation condition)
+                            (undecided-relation-instance condition)))))
 
 (defun use-decision (decision &optional condition)
   "Invoke the USE-DECISION restart of CONDITION (an UNDECIDED-RELATION, the most
@@ -109,9 +108,9 @@ exhaustive and mutually exclusive, hold for none or for several of them. The res
 CHOOSE-MODE (a mode name) picks one.")
   (:report (lambda (condition stream)
              (let ((candidates (mode-selection-error-candidates condition)))
-               (format stream "~:[No mode's entry conditions hold~;~:*The entry conditions ~
-                               of several modes hold (~{~S~^, ~})~] for the instance ~S."
-                       candidates (slot-value condition 'instance))))))
+               (format-report stream "~:[No mode's entry conditions hold~;~:*The entry conditions ~
+                                      of several modes hold (~{~S~^, ~})~] for the instance ~S."
+                              candidates (slot-value condition 'instance))))))
 
 (defun choose-mode (mode &optional condition)
   "Invoke the CHOOSE-MODE restart of CONDITION (a MODE-SELECTION-ERROR, the most
@@ -132,6 +131,6 @@ not the current mode. DATUM is the change."))
   (:documentation "The incrementally updated model differs from the model rebuilt
 from scratch from the same situation and decisions.")
   (:report (lambda (condition stream)
-             (format stream "The incremental model differs from the rebuild from scratch:~
-                             ~{~%  ~S~}"
-                     (incremental-mismatch-difference condition)))))
+             (format-report stream "The incremental model differs from the rebuild from scratch:~
+                                    ~{~%  ~S~}"
+                            (incremental-mismatch-difference condition)))))

@@ -158,21 +158,22 @@ REBUILD-FROM-SCRATCH starts from them.")
   "The instance of MODEL whose key is KEY, or NIL."
   (values (gethash key (model-instance-table model))))
 
+(defun believed-data (table)
+  "The data of TABLE (a hash table from datum to JTMS node) whose nodes are IN, in
+canonical order."
+  (let ((data '()))
+    (maphash (lambda (datum node)
+               (when (ames.tms:node-in-p node) (push datum data)))
+             table)
+    (canonical-sort data)))
+
 (defun model-equations (model)
   "The model proper: the equations believed in MODEL, in canonical order."
-  (let ((equations '()))
-    (maphash (lambda (equation node)
-               (when (ames.tms:node-in-p node) (push equation equations)))
-             (model-equation-table model))
-    (canonical-sort equations)))
+  (believed-data (model-equation-table model)))
 
 (defun model-beliefs (model)
   "The qualitative assertions believed in MODEL, in canonical order."
-  (let ((beliefs '()))
-    (maphash (lambda (belief node)
-               (when (ames.tms:node-in-p node) (push belief beliefs)))
-             (model-belief-table model))
-    (canonical-sort beliefs)))
+  (believed-data (model-belief-table model)))
 
 (defun find-node (model datum)
   "The JTMS node of MODEL standing for DATUM: a qualitative assertion, an equation,

@@ -406,7 +406,7 @@ symbol of a parameter. Signals for anything else."
   (when (consp expression)
     (when (eq (car expression) '/)
       (dolist (divisor (if (rest (cdr expression)) (cddr expression) (cdr expression)))
-        (let ((value (constant-value divisor)))
+        (let ((value (expression-value divisor)))
           (when (and value (zerop value))
             (reject validation 'scenario-expression-error expression
                     "~A divides by zero" (show expression))))))
@@ -451,7 +451,7 @@ their declared symbols. Signals SCENARIO-EXPRESSION-ERROR or UNDECLARED-SYMBOL-E
 
 (defun check-positive-constant (validation expression what class)
   "Signal CLASS when EXPRESSION is a number that is not positive."
-  (multiple-value-bind (value exact) (constant-value expression)
+  (multiple-value-bind (value exact) (expression-value expression)
     (when (and value (member (compare-values value exact 0 t) '(:less :equal)))
       (reject validation class expression "~A must be positive, not ~A" what (show expression)))))
 
@@ -515,7 +515,7 @@ their declared symbols. Signals SCENARIO-EXPRESSION-ERROR or UNDECLARED-SYMBOL-E
         for assumption in (scenario-parameter-assumptions parameter)
         for relation = (assumption-relation name assumption)
         for operator = (first relation)
-        append (multiple-value-bind (value exact) (constant-value (relation-rhs relation))
+        append (multiple-value-bind (value exact) (expression-value (relation-rhs relation))
                  (and value
                       (list (list (if (member operator '(> >=)) :lower :upper)
                                   value exact (and (member operator '(> <)) t)
@@ -551,8 +551,8 @@ violate one of their assumptions (decided where every parameter involved has one
       (let ((name (scenario-parameter-name parameter)))
         (dolist (assumption (scenario-parameter-assumptions parameter))
           (let ((relation (assumption-relation name assumption)))
-            (multiple-value-bind (lhs lhs-exact) (constant-value (relation-lhs relation) bindings)
-              (multiple-value-bind (rhs rhs-exact) (constant-value (relation-rhs relation) bindings)
+            (multiple-value-bind (lhs lhs-exact) (expression-value (relation-lhs relation) bindings)
+              (multiple-value-bind (rhs rhs-exact) (expression-value (relation-rhs relation) bindings)
                 (when (and lhs rhs
                            (eq (relation-holds-p (first relation) lhs lhs-exact rhs rhs-exact)
                                :false))
@@ -582,8 +582,8 @@ violate one of their assumptions (decided where every parameter involved has one
 
 (defun numeric-point (point)
   "The numeric coordinates of POINT as (values X Y EXACT), or NIL."
-  (multiple-value-bind (x x-exact) (constant-value (first point))
-    (multiple-value-bind (y y-exact) (constant-value (second point))
+  (multiple-value-bind (x x-exact) (expression-value (first point))
+    (multiple-value-bind (y y-exact) (expression-value (second point))
       (and x y (values x y (and x-exact y-exact))))))
 
 (defun points-coincide-p (a b)
@@ -648,8 +648,8 @@ outline), without :solid."
       (unless (member solid '(:inside :outside))
         (shape-reject validation shape ":solid takes :inside or :outside, not ~A" (show solid)))
       (check-positive-constant validation radius "the arc's radius" 'scenario-shape-error)
-      (multiple-value-bind (a1 a1-exact) (constant-value from)
-        (multiple-value-bind (a2 a2-exact) (constant-value to)
+      (multiple-value-bind (a1 a1-exact) (expression-value from)
+        (multiple-value-bind (a2 a2-exact) (expression-value to)
           (when (and a1 a2)
             (unless (eq (compare-values a2 a2-exact a1 a1-exact) :greater)
               (shape-reject validation shape
@@ -662,16 +662,12 @@ outline), without :solid."
 (defun arc-end-point (arc angle-key)
   "The numeric point of ARC (a checked arc) at its ANGLE-KEY (:FROM or :TO) end, as
 a list (X Y NIL) (NIL: not exact), or NIL when not numeric."
-  (let ((center (getf (rest arc) :center)))
-    (let ((cx (constant-value (first center)))
-          (cy (constant-value (second center)))
-          (r (constant-value (getf (rest arc) :radius)))
-          (angle (constant-value (getf (rest arc) angle-key))))
-      (and cx cy r angle
-           (handler-case (list (+ cx (* r (cos (float angle 1d0))))
-                               (+ cy (* r (sin (float angle 1d0))))
-                               nil)
-             (arithmetic-error () nil))))))
+  (destructuring-bind (cx cy) (getf (rest arc) :center)
+    (let* ((radius (getf (rest arc) :radius))
+           (angle (getf (rest arc) angle-key))
+           (x (expression-value `(+ ,cx (* ,radius (cos ,angle)))))
+           (y (expression-value `(+ ,cy (* ,radius (sin ,angle))))))
+      (and x y (list x y nil)))))
 
 (defun piece-end (piece end)
   "The numeric point (X Y EXACT) where the checked outline PIECE starts (END :START)
@@ -761,7 +757,7 @@ SCENARIO-SHAPE-ERROR for a bad form (and the expression errors for its coordinat
 (defun zero-vector-p (vector)
   "True when the checked VECTOR is numerically (0 0)."
   (every (lambda (coordinate)
-           (let ((value (constant-value coordinate))) (and value (zerop value))))
+           (let ((value (expression-value coordinate))) (and value (zerop value))))
          vector))
 
 (defun checked-body (validation clause)
@@ -824,15 +820,23 @@ SCENARIO-SHAPE-ERROR for a bad form (and the expression errors for its coordinat
                        :value (checked-vector validation (keyword-value :value arguments)
                                               "the force's :value"))))))
 
+(defun single-clause (validation word clauses)
+  "The only clause of CLAUSES, the scenario's (WORD ...) clauses, entered for checking;
+NIL when there is none. Signals DUPLICATE-CLAUSE-ERROR naming the second when there
+are more."
+  (when clauses
+    (let ((location (format nil "clause ~A" (symbol-name word))))
+      (when (rest clauses)
+        (enter validation location (second clauses))
+        (reject validation 'duplicate-clause-error (second clauses)
+                "there is more than one (~(~A~) ...) clause" (symbol-name word)))
+      (enter validation location (first clauses))
+      (first clauses))))
+
 (defun checked-gravity (validation clauses)
   "The field strength of the (gravity STRENGTH) clause among CLAUSES, or NIL."
-  (when clauses
-    (enter validation "clause GRAVITY" (second clauses))
-    (when (rest clauses)
-      (reject validation 'duplicate-clause-error (second clauses)
-              "there is more than one (gravity ...) clause"))
-    (let ((clause (first clauses)))
-      (enter validation "clause GRAVITY" clause)
+  (let ((clause (single-clause validation 'ames-scenario:gravity clauses)))
+    (when clause
       (unless (= (length clause) 2)
         (reject validation 'scenario-syntax-error clause
                 "gravity takes one strength: (gravity STRENGTH)"))
@@ -840,13 +844,8 @@ SCENARIO-SHAPE-ERROR for a bad form (and the expression errors for its coordinat
 
 (defun checked-simulate (validation clauses)
   "The :states and :until of the (simulate ...) clause among CLAUSES, as two values."
-  (when clauses
-    (enter validation "clause SIMULATE" (second clauses))
-    (when (rest clauses)
-      (reject validation 'duplicate-clause-error (second clauses)
-              "there is more than one (simulate ...) clause"))
-    (let ((clause (first clauses)))
-      (enter validation "clause SIMULATE" clause)
+  (let ((clause (single-clause validation 'ames-scenario:simulate clauses)))
+    (when clause
       (let* ((arguments (checked-keywords validation (rest clause) '(:states :until)
                                           "simulate"))
              (states (keyword-value :states arguments))

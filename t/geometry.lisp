@@ -13,6 +13,12 @@
 
 ;;; Helpers
 
+(defparameter *g-bitten-square*
+  '(outline (line (0 0) (4 0)) (line (4 0) (4 4)) (line (4 4) (3 4))
+            (arc :center (2 4) :radius 1 :from 0 :to (- pi))
+            (line (1 4) (0 4)) (line (0 4) (0 0)))
+  "A 4 x 4 square with a half-disc bite out of its top: a concave arc.")
+
 (defun g-shape (form &optional bridge)
   "FORM parsed as a shape."
   (ames.geometry:parse-shape form :bridge bridge))
@@ -24,9 +30,9 @@
 
 (defun g-value (expression &optional bindings)
   "The floating value of EXPRESSION (an error when it has none)."
-  (let ((value (ames.geometry::float-value expression bindings)))
+  (let ((value (expression-value expression bindings)))
     (assert value () "~S has no numeric value under ~S" expression bindings)
-    value))
+    (float value 1d0)))
 
 (defun g-close-p (a b &optional bindings (tolerance 1d-9))
   "True when the expressions (or lists of expressions) A and B agree numerically."
@@ -541,12 +547,6 @@ PATH-ACCELERATION with the derivatives of S-OF-TAU, at the SAMPLE-TIMES (numeric
     (is (g-point= '(3/2 0) (ames.geometry:contact-start (g-contact pair '(:arc 0)))))
     (is (null (ames.geometry:contacts-at pair '(0 -1/2))))
     (is (ames.geometry:penetrates-p pair '(0 1)))))
-
-(defparameter *g-bitten-square*
-  '(outline (line (0 0) (4 0)) (line (4 0) (4 4)) (line (4 4) (3 4))
-            (arc :center (2 4) :radius 1 :from 0 :to (- pi))
-            (line (1 4) (0 4)) (line (0 4) (0 0)))
-  "A 4 x 4 square with a half-disc bite out of its top: a concave arc.")
 
 (test geometry-outlines-convex-and-concave
   (let* ((pair (g-pair 'particle 'point 'd '(outline (line (0 0) (2 0))

@@ -94,6 +94,20 @@ no limit).")
   "The relation (OPERATOR LHS RHS)."
   (list operator lhs rhs))
 
+(defun finite-real-p (x)
+  "True when X is a rational or a finite float (neither an infinity nor a NaN)."
+  (or (rationalp x)
+      ;; not by comparison: with SBCL's float traps on, comparing a NaN signals
+      (and (floatp x) (not (sb-ext:float-nan-p x)) (not (sb-ext:float-infinity-p x)))))
+
+(defun arity-description (operator least most)
+  "A sentence saying how many arguments OPERATOR takes: at least LEAST and at most MOST
+(NIL: no limit), e.g. \"SIN takes 1 argument\", \"ATAN takes 1 or 2 arguments\"."
+  (cond ((eql least most) (format nil "~A takes ~D argument~:P" operator least))
+        ((null most) (format nil "~A takes at least ~D argument~:P" operator least))
+        (t (format nil "~A takes ~D ~:[to~;or~] ~D arguments"
+                   operator least (= most (1+ least)) most))))
+
 (defun check-expression (expression &key (kind :any) (allow-terms t) (allow-floats t))
   "Signal MALFORMED-EXPRESSION unless EXPRESSION belongs to the algebra; return it.
 KIND is :ARITHMETIC (a quantity), :CONDITION (a relation or logical form) or :ANY.
@@ -105,8 +119,7 @@ With ALLOW-TERMS false, quantity terms are rejected; with ALLOW-FLOATS false, fl
              (cond ((realp x)
                     (when (and (floatp x) (not allow-floats))
                       (fail x "a float is not allowed here"))
-                    (unless (or (rationalp x)
-                                (and (floatp x) (= x x) (< (abs x) most-positive-double-float)))
+                    (unless (finite-real-p x)
                       (fail x "not a finite real number")))
                    ((numberp x) (fail x "not a real number"))
                    ((constant-symbol-p x))
@@ -118,9 +131,7 @@ With ALLOW-TERMS false, quantity terms are rejected; with ALLOW-FLOATS false, fl
                     (destructuring-bind (least most) (rest (assoc (car x) +arithmetic-operators+))
                       (let ((n (length (cdr x))))
                         (when (or (< n least) (and most (> n most)))
-                          (fail x (format nil "~A takes ~:[at least ~D~;~D~*~]~:[~; to ~D~] argument~:P"
-                                          (car x) (eql least most) least least
-                                          (and most (not (eql least most))) most))))
+                          (fail x (arity-description (car x) least most))))
                       (mapc #'check-arithmetic (cdr x))))
                    ((or (relation-operator-p (car x)) (logical-operator-p (car x)))
                     (fail x "a condition where a quantity is expected"))

@@ -2,13 +2,15 @@
 
 (defpackage #:ames.base
   (:use #:cl)
-  (:documentation "What every AMES layer shares: the root condition AMES-ERROR and
+  (:documentation "What every AMES layer shares: the root condition AMES-ERROR,
 the prefix algebra (expressions such as (= (* mp (acc particle :x)) f)) that every
-layer speaks. Only the Maxima bridge translates the algebra to anything else.")
+layer speaks, and the numeric value of its constant expressions. Only the Maxima
+bridge translates the algebra to anything else.")
   (:export
    ;; conditions
    #:ames-error #:ames-error-datum #:ames-error-detail
    #:malformed-expression #:malformed-expression-expression
+   #:format-report
    ;; the algebra
    #:tau
    #:+arithmetic-operators+ #:+relation-operators+ #:+logical-operators+
@@ -18,4 +20,6 @@ layer speaks. Only the Maxima bridge translates the algebra to anything else.")
    #:expression-operator #:expression-arguments #:make-expression
    #:relation-lhs #:relation-rhs #:make-relation
    #:expression-variables #:free-of-p #:substitute-expressions
-   #:check-expression #:valid-expression-p))
+   #:check-expression #:valid-expression-p #:finite-real-p
+   ;; numeric values of constant expressions
+   #:expression-value #:rational-root))

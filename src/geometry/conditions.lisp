@@ -14,11 +14,11 @@ a malformed coordinate, a clockwise or self-intersecting polygon, outline pieces
 do not join, a zero radius, a degenerate segment, ... DATUM is the offending part,
 SHAPE the whole form, DETAIL says what is wrong.")
   (:report (lambda (condition stream)
-             (format stream "Invalid shape: ~A~%  at fault: ~S~@[~%  in shape: ~S~]"
-                     (ames-error-detail condition)
-                     (ames-error-datum condition)
-                     (let ((whole (invalid-shape-form condition)))
-                       (and (not (equal whole (ames-error-datum condition))) whole))))))
+             (format-report stream "Invalid shape: ~A~%  at fault: ~S~@[~%  in shape: ~S~]"
+                            (ames-error-detail condition)
+                            (ames-error-datum condition)
+                            (let ((whole (invalid-shape-form condition)))
+                              (and (not (equal whole (ames-error-datum condition))) whole))))))
 
 (define-condition undecidable-geometric-fact (geometry-error)
   ((fact :initarg :fact :reader undecidable-fact
@@ -30,10 +30,10 @@ parameters) that neither exact arithmetic nor the Maxima bridge could decide und
 the current assumptions. Signalled with the restarts ASSUME-TRUE and ASSUME-FALSE,
 through which a caller may choose the answer.")
   (:report (lambda (condition stream)
-             (format stream "Cannot decide the geometric fact ~S~@[ about ~S~]~@[ (~A)~]."
-                     (undecidable-fact condition)
-                     (undecidable-subject condition)
-                     (ames-error-detail condition)))))
+             (format-report stream "Cannot decide the geometric fact ~S~@[ about ~S~]~@[ (~A)~]."
+                            (undecidable-fact condition)
+                            (undecidable-subject condition)
+                            (ames-error-detail condition)))))
 
 (define-condition unsupported-shape-pair (geometry-error)
   ((observer :initarg :observer :initform nil :reader unsupported-observer)
@@ -42,19 +42,19 @@ through which a caller may choose the answer.")
 cannot build (for instance two unbounded half-planes, or a concave arc against a
 polygon). OBSERVER and OBSTACLE name the bodies; DETAIL says why.")
   (:report (lambda (condition stream)
-             (format stream "Cannot build the contacts of ~S seen by ~S: ~A"
-                     (unsupported-obstacle condition)
-                     (unsupported-observer condition)
-                     (ames-error-detail condition)))))
+             (format-report stream "Cannot build the contacts of ~S seen by ~S: ~A"
+                            (unsupported-obstacle condition)
+                            (unsupported-observer condition)
+                            (ames-error-detail condition)))))
 
 (define-condition position-not-on-contact (geometry-error)
   ((contact :initarg :contact :reader position-contact))
   (:documentation "A relative position that was required to lie on a simple contact
 but does not. DATUM is the position.")
   (:report (lambda (condition stream)
-             (format stream "The relative position ~S does not lie on the contact ~A."
-                     (ames-error-datum condition)
-                     (position-contact condition)))))
+             (format-report stream "The relative position ~S does not lie on the contact ~A."
+                            (ames-error-datum condition)
+                            (position-contact condition)))))
 
 (define-condition bodies-overlap (geometry-error)
   ((observer :initarg :observer :reader overlap-observer)
@@ -62,6 +62,7 @@ but does not. DATUM is the position.")
   (:documentation "Two bodies placed so that their interiors overlap: an impossible
 (invalid starting) configuration. DATUM is the relative position.")
   (:report (lambda (condition stream)
-             (format stream "~S and ~S overlap: at the relative position ~S the one penetrates the other."
-                     (overlap-observer condition) (overlap-obstacle condition)
-                     (ames-error-datum condition)))))
+             (format-report stream "~S and ~S overlap: at the relative position ~S the one ~
+                                    penetrates the other."
+                            (overlap-observer condition) (overlap-obstacle condition)
+                            (ames-error-datum condition)))))

@@ -12,9 +12,6 @@
 
 (in-package #:ames.geometry)
 
-(defparameter +float-decision-margin+ 1d-9
-  "A constant expression whose floating value exceeds this in magnitude has that sign.")
-
 (defstruct (decider (:constructor make-decider (&key bridge subject)))
   "What geometry needs to decide facts: the Maxima bridge (or NIL: exact and constant
 facts only) and the subject named when a fact cannot be decided."
@@ -53,19 +50,11 @@ ASSUME-FALSE returns NIL."
       :report "Take the fact as false."
       nil)))
 
-(defun numeric-sign (value)
-  (cond ((plusp value) :positive) ((minusp value) :negative) (t :zero)))
-
 (defun fast-sign (expression)
   "The sign (:NEGATIVE, :ZERO or :POSITIVE) of EXPRESSION when arithmetic alone settles
-it, else NIL."
-  (let ((exact (rational-value expression)))
-    (if exact
-        (numeric-sign exact)
-        (when (null (expression-variables expression))
-          (let ((value (float-value expression)))
-            (when (and value (> (abs value) +float-decision-margin+))
-              (numeric-sign value)))))))
+it (see CONSTANT-SIGN), else NIL."
+  (case (constant-sign expression)
+    (-1 :negative) (0 :zero) (1 :positive)))
 
 (defun bridge-truth (decider relation)
   "The bridge's answer on RELATION (:TRUE, :FALSE or :UNKNOWN); :UNKNOWN without a bridge."
@@ -87,6 +76,14 @@ restarts ASSUME-TRUE / ASSUME-FALSE then answer :POSITIVE / :NEGATIVE."
                     ((undecidable decider (list '> expression 0)) :positive)
                     (t :negative)))))))
 
+(defun sign-satisfies-p (operator sign)
+  "True when (OPERATOR D 0) holds for a D of SIGN (:NEGATIVE, :ZERO or :POSITIVE);
+OPERATOR is one of = /= < > <= >=."
+  (ecase operator
+    (= (eq sign :zero)) (/= (not (eq sign :zero)))
+    (< (eq sign :negative)) (> (eq sign :positive))
+    (<= (not (eq sign :positive))) (>= (not (eq sign :negative)))))
+
 (defun fact-holds-p (decider relation)
   "True when RELATION, (REL LHS RHS) with REL one of = /= < > <= >=, holds; false when
 it fails. Exact and constant facts are settled in Lisp, others by the bridge. Signals
@@ -94,30 +91,22 @@ UNDECIDABLE-GEOMETRIC-FACT naming RELATION when neither can tell."
   (let* ((operator (car relation))
          (difference (e- (relation-lhs relation) (relation-rhs relation)))
          (sign (fast-sign difference)))
-    (flet ((by-sign (sign)
-             (ecase operator
-               (= (eq sign :zero)) (/= (not (eq sign :zero)))
-               (< (eq sign :negative)) (> (eq sign :positive))
-               (<= (not (eq sign :positive))) (>= (not (eq sign :negative))))))
-      (if sign
-          (by-sign sign)
-          (let ((asked (list operator difference 0)))
-            (case (bridge-truth decider asked)
-              (:true t)
-              (:false nil)
-              (t (undecidable decider relation))))))))
+    (if sign
+        (sign-satisfies-p operator sign)
+        (case (bridge-truth decider (list operator difference 0))
+          (:true t)
+          (:false nil)
+          (t (undecidable decider relation))))))
 
 (defun fact-known-p (decider relation)
   "True when RELATION is known to hold (by arithmetic or the bridge); NIL when it fails
 or cannot be decided. Never signals: for optional simplifications only."
-  (let* ((difference (e- (relation-lhs relation) (relation-rhs relation)))
+  (let* ((operator (car relation))
+         (difference (e- (relation-lhs relation) (relation-rhs relation)))
          (sign (fast-sign difference)))
     (if sign
-        (ecase (car relation)
-          (= (eq sign :zero)) (/= (not (eq sign :zero)))
-          (< (eq sign :negative)) (> (eq sign :positive))
-          (<= (not (eq sign :positive))) (>= (not (eq sign :negative))))
-        (eq (bridge-truth decider (list (car relation) difference 0)) :true))))
+        (sign-satisfies-p operator sign)
+        (eq (bridge-truth decider (list operator difference 0)) :true))))
 
 (defun positive-p (decider x) "X > 0." (fact-holds-p decider (list '> x 0)))
 (defun negative-p (decider x) "X < 0." (fact-holds-p decider (list '< x 0)))

@@ -149,51 +149,53 @@ a quarter turn beyond each end, on its exterior side."
             (make-angular-range (make-direction end-normal) (make-direction (rot-ccw end-normal))
                                 :sweep-class :below-pi))))
 
+(defun track-features (decider track back role)
+  "The features of the thin TRACK (a segment or an arc track) as a closed convex part:
+TRACK exposed, BACK (its reverse, or its chord) not, its ends as vertices 0 and 1. As
+an obstacle (ROLE :OBSTACLE) its ends give contacts only over TRACK-CONTACT-RANGES."
+  (multiple-value-bind (start-range end-range) (track-contact-ranges track)
+    (closed-convex-features decider (list track back) (list '(:vertex 0) '(:vertex 1))
+                            :exposed (list t nil)
+                            :contact-ranges (if (eq role :obstacle)
+                                                (list start-range end-range)
+                                                (list nil nil)))))
+
 (defun convex-parts (decider shape &key (role :obstacle))
   "SHAPE as a list of convex parts, each a list of features (counter-clockwise). ROLE
 :OBSTACLE marks the back and far ends of thin surfaces as giving no contacts; as
 :OBSERVER a thin surface is its whole plate. Signals UNSUPPORTED-SHAPE-PAIR (without
 names; the caller adds them) for concave arcs."
   (let ((boundary (shape-boundary shape)))
-    (ecase (shape-kind shape)
-      (:point (list (list (vertex-feature (vec 0 0) (full-angular-range) '(:point)))))
-      (:circle (list (list (arc-feature (first boundary)))))
-      (:polygon
-       (if (shape-convex-p shape)
-           (list (closed-convex-features decider boundary
-                                         (loop for i below (length boundary) collect (list :vertex i))))
-           (polygon-parts decider (shape-vertices shape)
-                          (lambda (i) (list :edge i)) (lambda (i) (list :vertex i)))))
-      (:outline
-       (cond ((shape-convex-p shape)
-              (list (closed-convex-features decider boundary
-                                            (loop for i below (length boundary) collect (list :vertex i)))))
-             ((shape-decomposable-p shape) (outline-parts decider boundary))
-             (t (error 'unsupported-shape-pair
-                       :detail "an outline with a concave arc can only be touched by a point"))))
-      (:segment
-       (let* ((front (first boundary))
-              (back (make-line-piece (line-piece-end front) (line-piece-start front))))
-         (multiple-value-bind (start-range end-range) (track-contact-ranges front)
-           (list (closed-convex-features
-                  decider (list front back) (list '(:vertex 0) '(:vertex 1))
-                  :exposed (list t nil)
-                  :contact-ranges (if (eq role :obstacle)
-                                      (list start-range end-range)
-                                      (list nil nil)))))))
-      (:arc
-       (let ((arc (first boundary)))
-         (cond ((eq (shape-solid-side shape) :outside)
-                (error 'unsupported-shape-pair
-                       :detail "a bowl (an arc track with its solid outside) can only be touched by a point or a disc"))
-               ((arc-piece-full arc) (list (list (arc-feature arc))))
-               (t (let ((chord (make-line-piece (piece-end arc) (piece-start arc))))
-                    (multiple-value-bind (start-range end-range) (track-contact-ranges arc)
-                      (list (closed-convex-features
-                             decider (list arc chord) (list '(:vertex 0) '(:vertex 1))
-                             :exposed (list t nil)
-                             :contact-ranges (if (eq role :obstacle)
-                                                 (list start-range end-range)
-                                                 (list nil nil))))))))))
-      (:half-plane
-       (list (list (edge-feature (first boundary))))))))
+    (flet ((whole-convex-boundary ()
+             (list (closed-convex-features decider boundary
+                                           (loop for i below (length boundary)
+                                                 collect (list :vertex i))))))
+      (ecase (shape-kind shape)
+        (:point (list (list (vertex-feature (vec 0 0) (full-angular-range) '(:point)))))
+        (:circle (list (list (arc-feature (first boundary)))))
+        (:polygon
+         (if (shape-convex-p shape)
+             (whole-convex-boundary)
+             (polygon-parts decider (shape-vertices shape)
+                            (lambda (i) (list :edge i)) (lambda (i) (list :vertex i)))))
+        (:outline
+         (cond ((shape-convex-p shape) (whole-convex-boundary))
+               ((shape-decomposable-p shape) (outline-parts decider boundary))
+               (t (error 'unsupported-shape-pair
+                         :detail "an outline with a concave arc can only be touched by a point"))))
+        (:segment
+         (let ((front (first boundary)))
+           (list (track-features decider front
+                                 (make-line-piece (line-piece-end front) (line-piece-start front))
+                                 role))))
+        (:arc
+         (let ((arc (first boundary)))
+           (cond ((eq (shape-solid-side shape) :outside)
+                  (error 'unsupported-shape-pair
+                         :detail "a bowl (an arc track with its solid outside) can only be touched by a point or a disc"))
+                 ((arc-piece-full arc) (list (list (arc-feature arc))))
+                 (t (list (track-features decider arc
+                                          (make-line-piece (piece-end arc) (piece-start arc))
+                                          role))))))
+        (:half-plane
+         (list (list (edge-feature (first boundary)))))))))

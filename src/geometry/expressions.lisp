@@ -4,7 +4,7 @@
 ;;;; fold numbers, drop neutral elements and collect like terms, so that rational inputs
 ;;;; stay exact rationals and symbolic results stay readable. They never decide a sign:
 ;;;; everything that depends on a parameter's value is left for DECIDE (decide.lisp).
-;;;; Also here: exact and floating evaluation of constant expressions, and the
+;;;; Also here: the exact value and the clear sign of a constant expression, and the
 ;;;; derivative of an expression with respect to a variable (for contact approach rates).
 
 (in-package #:ames.geometry)
@@ -217,13 +217,6 @@ DIVISION-BY-ZERO for a literal zero denominator."
       (error 'division-by-zero :operation 'e/ :operands (list numerator denominator))
       (e* numerator (eexpt denominator -1))))
 
-(defun square-root-of-rational (q)
-  "The exact square root of the non-negative rational Q when it is rational, else NIL."
-  (when (and (rationalp q) (>= q 0))
-    (let ((n (isqrt (numerator q))) (d (isqrt (denominator q))))
-      (when (and (= (* n n) (numerator q)) (= (* d d) (denominator q)))
-        (/ n d)))))
-
 (defun eexpt (base power)
   "BASE raised to POWER."
   (cond ((eql power 0) 1)
@@ -258,7 +251,7 @@ division; a large cofactor is kept whole in K)."
 (defun esqrt (x)
   "The square root of X: exact for rational squares, M * (SQRT K) with K square-free
 for other non-negative rationals."
-  (cond ((square-root-of-rational x))
+  (cond ((rational-root x 2))
         ((and (rationalp x) (plusp x))
          (multiple-value-bind (m k) (square-free-split (* (numerator x) (denominator x)))
            (e* (/ m (denominator x)) (list 'sqrt k))))
@@ -309,41 +302,46 @@ for other non-negative rationals."
             (push term rest))))
     (values (apply #'e+ (nreverse rest)) (mod k 4))))
 
-(defun ecos (x)
-  "The cosine of X: exact at multiples of PI/4 and PI/6; cos(atan(y, x)) =
-x / sqrt(x^2 + y^2); quarter turns in X shifted out."
+(defun circular-function (function x)
+  "FUNCTION (COS or SIN) of X: exact at multiples of PI/4 and PI/6; quarter turns in X
+shifted out; at X = atan(y, u), cos = u / sqrt(u^2 + y^2) and sin = y / sqrt(u^2 + y^2)."
   (multiple-value-bind (rest k) (split-quarter-turns x)
-    (cond ((special-angle-value x 'cos))
+    (cond ((special-angle-value x function))
           ((and (not (equal rest x)) (not (eql rest 0)))
-           (ecase k (0 (ecos rest)) (1 (e- (esin rest))) (2 (e- (ecos rest))) (3 (esin rest))))
+           ;; cos(r + k pi/2), and sin(r + k pi/2) = cos(r + (k - 1) pi/2)
+           (ecase (mod (if (eq function 'sin) (1- k) k) 4)
+             (0 (ecos rest)) (1 (e- (esin rest))) (2 (e- (ecos rest))) (3 (esin rest))))
           ((two-argument-atan-p x)
-           (e/ (third x) (esqrt (e+ (esquare (second x)) (esquare (third x))))))
-          (t (list 'cos x)))))
+           (destructuring-bind (y u) (rest x)
+             (e/ (ecase function (cos u) (sin y))
+                 (esqrt (e+ (esquare y) (esquare u))))))
+          (t (list function x)))))
+
+(defun ecos (x)
+  "The cosine of X, simplified as CIRCULAR-FUNCTION says."
+  (circular-function 'cos x))
 
 (defun esin (x)
-  "The sine of X: exact at multiples of PI/4 and PI/6; sin(atan(y, x)) =
-y / sqrt(x^2 + y^2); quarter turns in X shifted out."
-  (multiple-value-bind (rest k) (split-quarter-turns x)
-    (cond ((special-angle-value x 'sin))
-          ((and (not (equal rest x)) (not (eql rest 0)))
-           (ecase k (0 (esin rest)) (1 (ecos rest)) (2 (e- (esin rest))) (3 (e- (ecos rest)))))
-          ((two-argument-atan-p x)
-           (e/ (second x) (esqrt (e+ (esquare (second x)) (esquare (third x))))))
-          (t (list 'sin x)))))
+  "The sine of X, simplified as CIRCULAR-FUNCTION says."
+  (circular-function 'sin x))
 
 (defun etan (x)
   "The tangent of X."
   (let ((r (pi-multiple x)))
     (if (and r (integerp r)) 0 (list 'tan x))))
 
+(defparameter +float-decision-margin+ 1d-9
+  "A constant expression whose floating value exceeds this in magnitude has that sign.")
+
 (defun constant-sign (x)
-  "The sign (-1, 0 or 1) of the constant expression X when it is clear, else NIL."
-  (let ((exact (rational-value x)))
-    (if exact
-        (signum exact)
-        (when (constant-expression-p x)
-          (let ((value (float-value x)))
-            (and value (> (abs value) 1d-9) (round (signum value))))))))
+  "The sign (-1, 0 or 1) of the expression X when arithmetic alone settles it: always
+when its value is an exact rational, else when its double-float value lies farther than
++FLOAT-DECISION-MARGIN+ from zero; NIL otherwise (and whenever X has a variable)."
+  (multiple-value-bind (value exact) (expression-value x)
+    (cond ((null value) nil)
+          ((and exact (rationalp value)) (signum value))
+          ((> (abs value) +float-decision-margin+) (round (signum value)))
+          (t nil))))
 
 (defun special-atan2 (y x)
   "The angle of (X, Y) as a multiple of PI when X and Y are constants making a
@@ -402,75 +400,13 @@ like terms collected. Quantity terms and unknown forms are kept as they are."
                          (list 'atan (first arguments))))
                (t (cons operator arguments)))))))
 
-;;; Evaluation of constant expressions.
+;;; Evaluation of constant expressions (AMES.BASE:EXPRESSION-VALUE does the arithmetic).
 
 (defun rational-value (expression)
-  "The exact rational value of EXPRESSION when it is built from rationals with
-+ - * /, integer powers and square roots of rational squares; else NIL."
-  (labels ((value (x)
-             (cond ((rationalp x) x)
-                   ((atom x) (return-from rational-value nil))
-                   (t (let ((args (mapcar #'value (cdr x))))
-                        (case (car x)
-                          (+ (apply #'+ args))
-                          (- (apply #'- args))
-                          (* (apply #'* args))
-                          (/ (if (some #'zerop (if (rest args) (rest args) args))
-                                 (return-from rational-value nil)
-                                 (apply #'/ args)))
-                          (expt (if (and (integerp (second args))
-                                         (not (and (zerop (first args)) (minusp (second args)))))
-                                    (expt (first args) (second args))
-                                    (return-from rational-value nil)))
-                          (sqrt (or (square-root-of-rational (first args))
-                                    (return-from rational-value nil)))
-                          (t (return-from rational-value nil))))))))
-    (value expression)))
-
-(defun float-value (expression &optional bindings)
-  "The double-float value of EXPRESSION, with the variables bound by the alist BINDINGS
-(symbol . number); NIL when a variable is unbound, a function leaves the reals or an
-arithmetic error occurs."
-  (labels ((fail () (return-from float-value nil))
-           (real-or-fail (v) (if (and (realp v) (= v v)) v (fail)))
-           (value (x)
-             (cond ((realp x) (coerce x 'double-float))
-                   ((eq x 'pi) pi)
-                   ((symbolp x) (let ((entry (assoc x bindings)))
-                                  (if entry (coerce (cdr entry) 'double-float) (fail))))
-                   ((quantity-term-p x)
-                    (let ((entry (assoc x bindings :test #'equal)))
-                      (if entry (coerce (cdr entry) 'double-float) (fail))))
-                   (t (let ((args (mapcar #'value (cdr x))))
-                        (real-or-fail
-                         (case (car x)
-                           (+ (apply #'+ args))
-                           (- (apply #'- args))
-                           (* (apply #'* args))
-                           (/ (apply #'/ args))
-                           (expt (if (or (plusp (first args))
-                                         (= (second args) (fround (second args))))
-                                     (expt (first args)
-                                           (if (= (second args) (fround (second args)))
-                                               (round (second args))
-                                               (second args)))
-                                     (fail)))
-                           (sqrt (if (minusp (first args)) (fail) (sqrt (first args))))
-                           (exp (exp (first args)))
-                           (log (if (plusp (first args)) (log (first args)) (fail)))
-                           (sin (sin (first args)))
-                           (cos (cos (first args)))
-                           (tan (tan (first args)))
-                           (asin (if (<= -1 (first args) 1) (asin (first args)) (fail)))
-                           (acos (if (<= -1 (first args) 1) (acos (first args)) (fail)))
-                           (atan (if (rest args)
-                                     (if (and (zerop (first args)) (zerop (second args)))
-                                         (fail)
-                                         (atan (first args) (second args)))
-                                     (atan (first args))))
-                           (t (fail)))))))))
-    (handler-case (value expression)
-      (arithmetic-error () nil))))
+  "The exact rational value of the constant EXPRESSION when it has one (built from
+rationals with + - * /, integer powers and rational roots), else NIL."
+  (multiple-value-bind (value exact) (expression-value expression)
+    (and exact (rationalp value) value)))
 
 ;;; Derivatives (of relative trajectories and gap functions with respect to time).
 

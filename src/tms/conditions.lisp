@@ -17,26 +17,25 @@ if it is still believed afterwards), and CONTINUE, which leaves the contradictio
 believed. DATUM is the contradiction node's datum.")
   (:report (lambda (condition stream)
              (let ((node (contradiction-node condition)))
-               (format stream "Contradiction: ~A is believed.~%  It rests on ~
-                               ~:[no assumption (premises only)~;the assumptions~:*~{~%    ~A~}~]"
-                       (node-string node)
-                       (mapcar #'node-string (contradiction-assumptions condition)))))))
+               (format-report stream "Contradiction: ~A is believed.~%  It rests on ~
+                                      ~:[no assumption (premises only)~;the assumptions~
+                                      ~:*~{~%    ~A~}~]"
+                              (node-string node)
+                              (mapcar #'node-string (contradiction-assumptions condition)))))))
 
 (define-condition not-an-assumption (tms-error) ()
   (:documentation "An assumption operation (enable, retract, retract-culprit) was
 applied to a node that is not an assumption, or RETRACT-CULPRIT was given an
 assumption that does not support the contradiction. DATUM is the node.")
   (:report (lambda (condition stream)
-             (format stream "~A~%  node: ~A" (ames-error-detail condition)
-                     (let ((node (ames-error-datum condition)))
-                       (if (node-p node) (node-string node) node))))))
+             (format-report stream "~A~%  node: ~A" (ames-error-detail condition)
+                            (let ((node (ames-error-datum condition)))
+                              (if (node-p node) (node-string node) node))))))
 
 (define-condition foreign-node (tms-error) ()
   (:documentation "A justification mixed nodes of different JTMSs, or a node was
-given where none is expected. DATUM is the offending object.")
-  (:report (lambda (condition stream)
-             (format stream "~A~%  at fault: ~S" (ames-error-detail condition)
-                     (ames-error-datum condition)))))
+given where none is expected. DATUM is the offending object. (Its report is
+AMES-ERROR's: the detail and the datum.)"))
 
 (defun retract-culprit (assumption &optional condition)
   "Invoke the RETRACT-CULPRIT restart of CONDITION (a CONTRADICTION; the most recent
