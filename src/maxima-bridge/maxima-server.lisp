@@ -20,7 +20,7 @@
 ;;;; digits, blanks and ( ) $ % _ . : + -; no # | \ " ' ` , ;). FORM must then pass AMES-VALIDATE
 ;;;; before MEVAL sees it:
 ;;;; every operator and function is on a whitelist, every other symbol is a mangled AMES name
-;;;; ($AMESV<letters> or $AMESCTX<letters>) or one of a few constants, and the only atoms are
+;;;; ($AMESV<letters>, $AMESX<letters> or $AMESCTX<letters>) or one of a few constants, and the only atoms are
 ;;;; integers and floats (no strings, no ratios, no vectors). The bridge builds requests itself
 ;;;; from its own translation, so this check is a second wall, not the first.
 ;;;;
@@ -60,7 +60,8 @@
     $ode2 $ic2 $integrate $diff $substitute $ratsubst $hipow $ratcoef $freeof $num $denom
     $realroots $rhs $lhs
     ;; helpers defined in this file
-    $ames_pop_context $ames_polynomial_coefficients $ames_expression_size)
+    $ames_pop_context $ames_polynomial_coefficients $ames_expression_size
+    $ames_simplification_candidates)
   "The only heads (operators and functions) a request may contain.")
 
 (defvar *ames-allowed-atoms* '(nil t $%pi $%e $all $initial)
@@ -70,7 +71,8 @@
   "Flags that may follow a head in a request, e.g. ((MPLUS SIMP) ...).")
 
 (defun ames-mangled-name-p (symbol)
-  "True for the names the bridge generates: $AMESV<letters> and $AMESCTX<letters>."
+  "True for the names the bridge generates: $AMESV<letters>, $AMESX<letters> and
+$AMESCTX<letters>."
   (let ((name (symbol-name symbol)))
     (flet ((letters-after (prefix)
              (let ((n (length prefix)))
@@ -78,7 +80,7 @@
                     (string= prefix name :end2 n)
                     (every #'(lambda (c) (char<= #\A c #\Z)) (subseq name n))))))
       (and (eq (symbol-package symbol) (find-package :maxima))
-           (or (letters-after "$AMESV") (letters-after "$AMESCTX"))))))
+           (or (letters-after "$AMESV") (letters-after "$AMESX") (letters-after "$AMESCTX"))))))
 
 (defvar *ames-request-pattern* "^[A-Za-z0-9 ()$%_.:+-]*$"
   "The request alphabet, as a regular expression GCL matches in C (SI::STRING-MATCH): far
@@ -164,6 +166,24 @@ coefficients free of VAR and its denominator is free of VAR; false otherwise."
 (defun $ames_expression_size (expr)
   "The number of atoms and operators in EXPR (to pick the simplest of several forms)."
   (if (atom expr) 1 (1+ (reduce #'+ (mapcar #'$ames_expression_size (cdr expr))))))
+
+(defun $ames_simplification_candidates (expr trigonometric)
+  "The forms the bridge's simplest-form compares, each computed once (a request listing
+them as separate calls computes ratsimp(EXPR) and trigsimp(EXPR) twice):
+[ratsimp(EXPR), trigsimp(EXPR), ratsimp(trigsimp(EXPR)), factor(ratsimp(EXPR)), radcan(EXPR)].
+When TRIGONOMETRIC is false (EXPR has no sin, cos or tan, so that trigsimp(EXPR) is
+ratsimp(EXPR) again), the two trigsimp forms are left out:
+[ratsimp(EXPR), factor(ratsimp(EXPR)), radcan(EXPR)]."
+  (flet ((call (function argument)
+           ;; as meval evaluates function(argument) in a request, the result simplified
+           ;; again, the argument (already a value) quoted so it is not evaluated twice
+           (meval (list (list function) (list '(mquote) argument)))))
+    (let ((ratsimped (call '$ratsimp expr)))
+      (if trigonometric
+          (let ((trigsimped (call '$trigsimp expr)))
+            (list '(mlist simp) ratsimped trigsimped (call '$ratsimp trigsimped)
+                  (call '$factor ratsimped) (call '$radcan expr)))
+          (list '(mlist simp) ratsimped (call '$factor ratsimped) (call '$radcan expr))))))
 
 ;;; The loop.
 

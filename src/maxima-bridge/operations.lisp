@@ -56,16 +56,23 @@ UNTRANSLATABLE-RESULT, MAXIMA-ERROR, MAXIMA-TIMEOUT."
         (from-mx bridge (maxima-request bridge (simplification-form strategy form)
                                         :datum expression)))))
 
+(defun trigonometric-form-p (form)
+  "True when the Maxima FORM contains sin, cos or tan. Without them trigsimp() is
+ratsimp() again (its rules rewrite only tan, sec, csc, cot and squares of sin and cos,
+then it ratsimps), and trigexpand() changes nothing, so those steps can be skipped."
+  (and (consp form)
+       (or (and (mform-p form) (member (mform-head form) (list +sin+ +cos+ +tan+)))
+           (some #'trigonometric-form-p (cdr form)))))
+
 (defun simplest-form (bridge form expression)
-  "The smallest translatable result of several simplifications of FORM."
-  (let* ((ratsimped (mcall "$RATSIMP" form))
-         (candidates (request-list bridge
-                                   (list ratsimped
-                                         (mcall "$TRIGSIMP" form)
-                                         (mcall "$RATSIMP" (mcall "$TRIGSIMP" form))
-                                         (mcall "$FACTOR" ratsimped)
-                                         (mcall "$RADCAN" form))
-                                   :datum expression))
+  "The smallest translatable result of several simplifications of FORM: ratsimp,
+trigsimp, ratsimp after trigsimp, factor after ratsimp and radcan (the first of equal
+size wins), each computed once in one round trip; the trigsimp ones only when FORM has
+sin, cos or tan (otherwise they equal the ratsimp one)."
+  (let* ((candidates (mlist-items
+                      (maxima-request bridge (mcall "$AMES_SIMPLIFICATION_CANDIDATES" form
+                                                    (if (trigonometric-form-p form) +true+ +false+))
+                                      :datum expression)))
          (best nil))
     (dolist (candidate candidates)
       (let ((translated (handler-case (from-mx bridge candidate)
@@ -83,12 +90,15 @@ ratsimp, by trigsimp (then ratsimp; also after trigexpand, for multiple angles) 
 radcan, under the current assumptions. NIL
 means no proof was found, not that they differ.
 Signals UNTRANSLATABLE-EXPRESSION, MAXIMA-ERROR, MAXIMA-TIMEOUT."
-  (let ((difference (mdifference (to-mx bridge a) (to-mx bridge b)))
-        (datum (list '- a b)))
+  (let* ((difference (mdifference (to-mx bridge a) (to-mx bridge b)))
+         (trigonometric (trigonometric-form-p difference))
+         (datum (list '- a b)))
     (flet ((zero-p (form) (eql 0 (maxima-request bridge form :datum datum))))
+      ;; without sin, cos or tan the trigsimp and trigexpand steps are ratsimp again
       (and (or (zero-p (mcall "$RATSIMP" difference))
-               (zero-p (mcall "$RATSIMP" (mcall "$TRIGSIMP" difference)))
-               (zero-p (mcall "$RATSIMP" (mcall "$TRIGSIMP" (mcall "$TRIGEXPAND" difference))))
+               (and trigonometric
+                    (or (zero-p (mcall "$RATSIMP" (mcall "$TRIGSIMP" difference)))
+                        (zero-p (mcall "$RATSIMP" (mcall "$TRIGSIMP" (mcall "$TRIGEXPAND" difference))))))
                (zero-p (mcall "$RATSIMP" (mcall "$RADCAN" difference))))
            t))))
 
@@ -179,13 +189,20 @@ has free parameters or is outside the algebra."
       (list :positive :negative :zero)))
 
 (defun sign-requests (form)
-  "The sign() requests whose answers together bound the sign of the Maxima FORM: FORM
-itself, factor(ratsimp(FORM)), factorsum(FORM) (which groups terms, e.g.
-2 acc l - 2 acc x0 into 2 acc (l - x0)) and trigsimp(FORM)."
+  "The sign() requests whose answers together bound the sign of the Maxima FORM,
+cheapest first: FORM itself, factor(ratsimp(FORM)), factorsum(FORM) (which groups
+terms, e.g. 2 acc l - 2 acc x0 into 2 acc (l - x0)) and trigsimp(FORM) (ratsimp(FORM)
+when FORM has no sin, cos or tan, for which trigsimp gives the same form, slower)."
   (list (mcall "$SIGN" form)
         (mcall "$SIGN" (mcall "$FACTOR" (mcall "$RATSIMP" form)))
         (mcall "$SIGN" (mcall "$FACTORSUM" form))
-        (mcall "$SIGN" (mcall "$TRIGSIMP" form))))
+        (mcall "$SIGN" (if (trigonometric-form-p form)
+                           (mcall "$TRIGSIMP" form)
+                           (mcall "$RATSIMP" form)))))
+
+(defun narrowed-signs (signs answer)
+  "SIGNS (a list of :POSITIVE :NEGATIVE :ZERO) narrowed by Maxima's sign ANSWER."
+  (if (symbolp answer) (intersection signs (sign-set answer)) signs))
 
 (defun forms-signs (bridge forms &key datum)
   "For each of the real Maxima FORMS, the signs (:POSITIVE :NEGATIVE :ZERO) it may have
@@ -194,14 +211,20 @@ SIGN-REQUESTS). One round trip."
   (let* ((count (length (sign-requests 0)))
          (answers (request-list bridge (mapcan #'sign-requests forms) :datum datum)))
     (loop for rest on answers by (lambda (list) (nthcdr count list))
-          collect (let ((signs (list :positive :negative :zero)))
-                    (dolist (answer (subseq rest 0 count) signs)
-                      (when (symbolp answer)
-                        (setf signs (intersection signs (sign-set answer)))))))))
+          collect (reduce #'narrowed-signs (subseq rest 0 count)
+                          :initial-value (list :positive :negative :zero)))))
 
-(defun form-signs (bridge form &key datum)
-  "The signs the real Maxima FORM may have under the current assumptions (see FORMS-SIGNS)."
-  (first (forms-signs bridge (list form) :datum datum)))
+(defun form-signs (bridge form &key datum (enough (constantly nil)))
+  "The signs the real Maxima FORM may have under the current assumptions: what the
+answers to SIGN-REQUESTS allow together. They are asked one at a time, cheapest first
+(each answer cached on its own), and the asking stops once at most one sign is left or
+ENOUGH, a predicate on the signs found so far, is true; further answers could only
+narrow the signs (an empty intersection would mean contradictory answers)."
+  (let ((signs (list :positive :negative :zero)))
+    (dolist (request (sign-requests form) signs)
+      (setf signs (narrowed-signs signs (maxima-request bridge request :datum datum)))
+      (when (or (null (rest signs)) (funcall enough signs))
+        (return signs)))))
 
 (defun square-root-kernel (form)
   "Some subform sqrt(A) = ((MEXPT) A 1/2) of the Maxima FORM, or NIL."
@@ -291,8 +314,13 @@ is there or the form is not linear in it."
                      (t (mform (cdr (assoc operator *relation-heads*)) lhs rhs))))
          (verdict (maxima-truth (maxima-request bridge (mcall "$IS" question) :datum relation))))
     (when (eq verdict :unknown)
-      (setf verdict (relation-verdict operator (form-signs bridge (mdifference lhs rhs)
-                                                           :datum relation))))
+      ;; the signs are asked for only until they decide the relation
+      (setf verdict (relation-verdict operator
+                                      (form-signs bridge (mdifference lhs rhs)
+                                                  :datum relation
+                                                  :enough (lambda (signs)
+                                                            (not (eq (relation-verdict operator signs)
+                                                                     :unknown)))))))
     (when (eq verdict :unknown)
       (let ((signs (radical-signs bridge (mdifference lhs rhs) :datum relation)))
         (when signs (setf verdict (relation-verdict operator signs)))))
@@ -343,11 +371,24 @@ V is some E +/- D. :UNKNOWN when there is no such fact."
                          finally (return :unknown))
                    verdict))))))
 
+(defun order-excess-name (bridge variable)
+  "The fresh variable D standing for the excess of VARIABLE over its bound (V = E + D or
+E - D) in DECIDE-BY-ORDER-SUBSTITUTION: an uninterned symbol, so no user name can be
+it, and the same one each time for a VARIABLE of BRIDGE, so that the rewritten requests
+are answered from the cache when they come again."
+  (let ((table (bridge-excess-names bridge)))
+    (or (gethash variable table)
+        (let ((excess (make-symbol (format nil "~A-EXCESS" variable))))
+          ;; named apart from the algebra's variables ($AMESX...), so that it takes none
+          ;; of their letters
+          (maxima-name (bridge-names bridge) excess "$AMESX")
+          (setf (gethash (copy-tree variable) table) excess)))))
+
 (defun decide-with-orders (bridge relation orders)
   "DECIDE-BY-ORDER-SUBSTITUTION's work for the given ORDERS (see ORDER-FACTS)."
   (let* ((*substituting-orders* t)
          (deltas (loop for order in orders
-                       collect (make-symbol (format nil "~A-EXCESS" (first order)))))
+                       collect (order-excess-name bridge (first order))))
          (bindings (loop for (variable base sign) in orders
                          for delta in deltas
                          collect (cons variable (list '+ base (list '* sign delta)))))
@@ -371,9 +412,22 @@ V is some E +/- D. :UNKNOWN when there is no such fact."
 current assumptions: :TRUE, :FALSE or :UNKNOWN. Uses Maxima's is(), then the sign of the
 difference of the two sides in several simplified forms, then the same after clearing a
 square root (so that roots of quadratics can be compared); connectives are combined in
-three-valued logic.
+three-valued logic. Verdicts are cached under the facts in force, like requests.
 Signals UNTRANSLATABLE-EXPRESSION, MAXIMA-ERROR, MAXIMA-TIMEOUT."
   (check-translatable relation :condition)
+  (let* ((cache (bridge-cache bridge))
+         (key (list* :decide *substituting-orders* relation (assumption-key bridge)))
+         (record (bridge-statistics-record bridge)))
+    (multiple-value-bind (verdict found) (gethash key cache)
+      (incf (statistics-calls record))
+      (if found
+          (progn (incf (statistics-cache-hits record)) verdict)
+          (let ((verdict (decide-uncached bridge relation)))
+            (when (>= (hash-table-count cache) *cache-limit*) (clrhash cache))
+            (setf (gethash (copy-tree key) cache) verdict))))))
+
+(defun decide-uncached (bridge relation)
+  "DECIDE's work, without its cache of verdicts."
   (labels ((verdict (condition)
              (case (expression-operator condition)
                (not (ecase (verdict (second condition))
