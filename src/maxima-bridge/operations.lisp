@@ -176,7 +176,191 @@ has free parameters or is outside the algebra."
                                                      (let ((part (ames-error-datum c)))
                                                        (and (symbolp part) (string-downcase (symbol-name part))))))))))))
 
+;;; Numeric witnesses: a quick proof that an inequality is not decided
+;;;
+;;; An inequality that holds at one admissible point (one that satisfies every fact in
+;;; force) and fails at another is decided neither way by any sound method, so DECIDE may
+;;; answer :UNKNOWN at once instead of trying every strategy (the costliest case: each
+;;; strategy fails). Points are drawn at random (from a fixed seed) within the numeric
+;;; bounds of each variable; values are computed in double floats as balls (center and
+;;; radius) that enclose the exact value, rounding included, and a sign, of the relation or
+;;; of a fact, counts only when the whole ball has it. A point where anything is undefined
+;;; or not real (a square root or logarithm of a ball reaching zero or below, a division
+;;; by a ball holding zero, a pole of tan, an overflow) is left out. Finding no witnesses
+;;; proves nothing, and the strategies run as before.
+
+(defparameter *witness-draws* 120
+  "How many random points WITNESSED-BOTH-WAYS-P draws at most.")
+
+(defparameter *witness-admissible-points* 30
+  "How many admissible points WITNESSED-BOTH-WAYS-P evaluates the relation at, at most.")
+
+(defstruct (ball (:constructor make-ball (center radius)))
+  "A real number known to lie within RADIUS of CENTER (double floats)."
+  center radius)
+
+(defun rounded-ball (center radius)
+  "The ball CENTER +/- RADIUS widened by the rounding of computing CENTER."
+  (make-ball center (+ radius (* 8 double-float-epsilon (abs center)) least-positive-normalized-double-float)))
+
+(defun ball-sign (ball)
+  ":POSITIVE or :NEGATIVE when every number of BALL has that sign, else NIL."
+  (cond ((> (- (ball-center ball) (ball-radius ball)) 0) :positive)
+        ((< (+ (ball-center ball) (ball-radius ball)) 0) :negative)
+        (t nil)))
+
+(defun ball+ (a b)
+  (rounded-ball (+ (ball-center a) (ball-center b)) (+ (ball-radius a) (ball-radius b))))
+
+(defun ball-negation (a)
+  (make-ball (- (ball-center a)) (ball-radius a)))
+
+(defun ball* (a b)
+  (let ((x (ball-center a)) (rx (ball-radius a)) (y (ball-center b)) (ry (ball-radius b)))
+    (rounded-ball (* x y) (+ (* (abs x) ry) (* (abs y) rx) (* rx ry)))))
+
+(defun ball-reciprocal (a)
+  "1/A, or NIL when A may hold zero."
+  (let ((x (ball-center a)) (rx (ball-radius a)))
+    (when (> (abs x) rx)
+      (rounded-ball (/ 1 x) (/ rx (* (abs x) (- (abs x) rx)))))))
+
+(defun ball-integer-power (a n)
+  "A^N for an integer N (NIL when N < 0 and A may hold zero)."
+  (cond ((minusp n) (let ((power (ball-integer-power a (- n))))
+                      (and power (ball-reciprocal power))))
+        (t (let ((result (make-ball 1d0 0d0)))
+             (dotimes (i n result) (setf result (ball* result a)))))))
+
+(defun positive-ball-p (a)
+  (> (- (ball-center a) (ball-radius a)) 0))
+
+(defun ball-function (operator a)
+  "OPERATOR (sqrt exp log sin cos tan asin acos atan) of the ball A, or NIL where it is
+undefined or not real somewhere in A."
+  (let ((x (ball-center a)) (rx (ball-radius a)))
+    (ecase operator
+      (sqrt (cond ((and (zerop x) (zerop rx)) (make-ball 0d0 0d0))
+                  ((>= (- x rx) 0)
+                   (rounded-ball (sqrt x) (- (sqrt x) (sqrt (max 0d0 (- x rx))))))))
+      (exp (rounded-ball (exp x) (* (exp x) (- (exp rx) 1))))
+      (log (when (positive-ball-p a)
+             (rounded-ball (log x) (- (log x) (log (- x rx))))))
+      (sin (rounded-ball (sin x) (min rx 2d0)))
+      (cos (rounded-ball (cos x) (min rx 2d0)))
+      (tan (let ((c (cos x)))
+             (when (> (abs c) (+ rx 1d-12))
+               (rounded-ball (tan x) (/ rx (expt (- (abs c) rx) 2))))))
+      ((asin acos) (when (< (+ (abs x) rx) 1)
+                     (rounded-ball (if (eq operator 'asin) (asin x) (acos x))
+                                   (/ rx (sqrt (- 1 (expt (+ (abs x) rx) 2)))))))
+      (atan (rounded-ball (atan x) (min rx pi))))))
+
+(defun ball-atan2 (y x)
+  "The angle of (X, Y) in (-pi, pi], or NIL when the balls reach the origin or the
+negative x axis, where it is not continuous."
+  (let ((cy (ball-center y)) (ry (ball-radius y)) (cx (ball-center x)) (rx (ball-radius x)))
+    (let ((distance (- (sqrt (+ (* cx cx) (* cy cy))) rx ry)))
+      (when (and (> distance 0) (or (> (- cx rx) 0) (> (abs cy) ry)))
+        (rounded-ball (atan cy cx) (/ (+ rx ry) distance))))))
+
+(defun expression-ball (expression point)
+  "The ball enclosing the value of the arithmetic EXPRESSION at POINT (an alist subject ->
+double float), or NIL where it is undefined or not real."
+  (labels ((fail () (return-from expression-ball nil))
+           (value (x)
+             (cond ((rationalp x) (let ((d (coerce x 'double-float)))
+                                    (rounded-ball d 0d0)))
+                   ((floatp x) (make-ball (coerce x 'double-float) 0d0))
+                   ((constant-symbol-p x) (rounded-ball pi 0d0))
+                   ((or (variable-symbol-p x) (quantity-term-p x))
+                    (let ((entry (assoc x point :test #'equal)))
+                      (if entry (make-ball (cdr entry) 0d0) (fail))))
+                   (t (let ((arguments (mapcar #'value (expression-arguments x))))
+                        (or (case (expression-operator x)
+                              (+ (reduce #'ball+ arguments))
+                              (- (if (rest arguments)
+                                     (reduce #'ball+ (mapcar #'ball-negation (rest arguments))
+                                             :initial-value (first arguments))
+                                     (ball-negation (first arguments))))
+                              (* (reduce #'ball* arguments))
+                              (/ (if (rest arguments)
+                                     (reduce (lambda (a b) (let ((r (ball-reciprocal b)))
+                                                             (if r (ball* a r) (fail))))
+                                             (rest arguments) :initial-value (first arguments))
+                                     (ball-reciprocal (first arguments))))
+                              (expt (let ((exponent (third x)))
+                                      (if (and (integerp exponent) (<= (abs exponent) 64))
+                                          (ball-integer-power (first arguments) exponent)
+                                          ;; a^b = exp(b log a), for a > 0 only
+                                          (let ((logarithm (ball-function 'log (first arguments))))
+                                            (and logarithm
+                                                 (ball-function 'exp (ball* (second arguments) logarithm)))))))
+                              (atan (if (rest arguments)
+                                        (ball-atan2 (first arguments) (second arguments))
+                                        (ball-function 'atan (first arguments))))
+                              (t (ball-function (expression-operator x) (first arguments))))
+                            (fail)))))))
+    (handler-case (value expression)
+      (arithmetic-error () nil))))
+
+(defun condition-truth (condition point)
+  "Whether the relation or logical CONDITION surely holds at POINT: :TRUE, :FALSE, or NIL
+when that is not sure (= is never sure)."
+  (case (expression-operator condition)
+    (not (case (condition-truth (second condition) point) (:true :false) (:false :true)))
+    (and (let ((truths (mapcar (lambda (c) (condition-truth c point)) (expression-arguments condition))))
+           (cond ((member :false truths) :false) ((every (lambda (x) (eq x :true)) truths) :true))))
+    (or (let ((truths (mapcar (lambda (c) (condition-truth c point)) (expression-arguments condition))))
+          (cond ((member :true truths) :true) ((every (lambda (x) (eq x :false)) truths) :false))))
+    (t (let* ((difference (expression-ball (list '- (relation-lhs condition) (relation-rhs condition)) point))
+              (sign (and difference (ball-sign difference))))
+         (when sign
+           (ecase (expression-operator condition)
+             ((> >=) (if (eq sign :positive) :true :false))
+             ((< <=) (if (eq sign :negative) :true :false))
+             (/= :true)
+             (= :false)))))))
+
+(defun random-value (interval random-state)
+  "A random double float within INTERVAL ((LOWER . UPPER) of BOUNDs, either NIL), away
+from its ends; log-uniform in size over four decades where a side is open-ended."
+  (let ((lower (and (car interval) (bound-value (car interval))))
+        (upper (and (cdr interval) (bound-value (cdr interval))))
+        (size (expt 10d0 (- (random 4d0 random-state) 2))))
+    (cond ((and lower upper) (+ lower (* (- upper lower) (+ 0.02d0 (random 0.96d0 random-state)))))
+          (lower (+ lower size))
+          (upper (- upper size))
+          ((zerop (random 2 random-state)) size)
+          (t (- size)))))
+
+(defun witnessed-both-ways-p (bridge relation)
+  "True when the inequality RELATION (< > <= >=) surely holds at one point that surely
+satisfies the facts in force, and surely fails at another: then it is not decided."
+  (let* ((facts (flatten-facts (current-assumptions bridge)))
+         (intervals (subject-intervals facts))
+         (subjects (remove-duplicates (append (expression-variables relation)
+                                              (mapcan #'expression-variables facts))
+                                      :test #'equal))
+         (random-state (sb-ext:seed-random-state 1994))
+         (holds nil) (fails nil) (admissible 0))
+    (loop repeat *witness-draws*
+          while (< admissible *witness-admissible-points*)
+          do (let ((point (mapcar (lambda (subject)
+                                    (cons subject (random-value (cdr (assoc subject intervals :test #'equal))
+                                                                random-state)))
+                                  subjects)))
+               (when (every (lambda (fact) (eq (condition-truth fact point) :true)) facts)
+                 (incf admissible)
+                 (case (condition-truth relation point)
+                   (:true (setf holds t))
+                   (:false (setf fails t)))
+                 (when (and holds fails) (return t)))))))
+
 ;;; Deciding relations
+
+(defvar *substituting-orders* nil
+  "True while DECIDE-BY-ORDER-SUBSTITUTION works, so that it does not recurse.")
 
 (defparameter *sign-sets*
   '(("$POS" :positive) ("$NEG" :negative) ("$ZERO" :zero) ("$PZ" :positive :zero)
@@ -313,6 +497,12 @@ is there or the form is not linear in it."
                      (/= (mform +notequal+ lhs rhs))
                      (t (mform (cdr (assoc operator *relation-heads*)) lhs rhs))))
          (verdict (maxima-truth (maxima-request bridge (mcall "$IS" question) :datum relation))))
+    ;; an inequality seen to hold at one admissible point and to fail at another is
+    ;; decided by no strategy: leave them out
+    (when (and (eq verdict :unknown) (member operator '(< > <= >=))
+               (not *substituting-orders*)
+               (witnessed-both-ways-p bridge relation))
+      (return-from decide-relation :unknown))
     (when (eq verdict :unknown)
       ;; the signs are asked for only until they decide the relation
       (setf verdict (relation-verdict operator
@@ -330,9 +520,6 @@ is there or the form is not linear in it."
     (when (eq verdict :unknown)
       (setf verdict (decide-by-order-substitution bridge relation)))
     verdict))
-
-(defvar *substituting-orders* nil
-  "True while DECIDE-BY-ORDER-SUBSTITUTION works, so that it does not recurse.")
 
 (defun order-facts (bridge relation)
   "The facts in force that order a variable V of RELATION against an expression E free of
