@@ -357,10 +357,22 @@ satisfies the facts in force, and surely fails at another: then it is not decide
                    (:false (setf fails t)))
                  (when (and holds fails) (return t)))))))
 
+(defun sign-varies-p (bridge expression)
+  "True when the arithmetic EXPRESSION is seen to be positive at one point that satisfies
+the facts in force and negative at another: then no relation of EXPRESSION with 0 is
+decided, and EXPRESSION is not identically 0. NIL proves nothing. Asks Maxima nothing.
+Signals UNTRANSLATABLE-EXPRESSION for an EXPRESSION outside the algebra."
+  (check-translatable expression :arithmetic)
+  (witnessed-both-ways-p bridge (list '> expression 0)))
+
 ;;; Deciding relations
 
 (defvar *substituting-orders* nil
   "True while DECIDE-BY-ORDER-SUBSTITUTION works, so that it does not recurse.")
+
+(defvar *sides-differ* nil
+  "True while DECIDE-RELATION works on an equation (or, in DECIDE-BY-ORDER-SUBSTITUTION,
+on its rewriting) whose sides were seen to differ both ways at admissible points.")
 
 (defparameter *sign-sets*
   '(("$POS" :positive) ("$NEG" :negative) ("$ZERO" :zero) ("$PZ" :positive :zero)
@@ -514,11 +526,18 @@ is there or the form is not linear in it."
     (when (eq verdict :unknown)
       (let ((signs (radical-signs bridge (mdifference lhs rhs) :datum relation)))
         (when signs (setf verdict (relation-verdict operator signs)))))
-    (when (and (eq verdict :unknown) (member operator '(= /=))
-               (equivalent-p bridge (relation-lhs relation) (relation-rhs relation)))
-      (setf verdict (if (eq operator '=) :true :false)))
-    (when (eq verdict :unknown)
-      (setf verdict (decide-by-order-substitution bridge relation)))
+    ;; the two sides seen to differ both ways are not equal: equivalence cannot be
+    ;; proven, here nor after the order substitution
+    (let ((*sides-differ* (or *sides-differ*
+                              (and (eq verdict :unknown) (member operator '(= /=))
+                                   (not *substituting-orders*)
+                                   (witnessed-both-ways-p bridge (list '> (relation-lhs relation)
+                                                                       (relation-rhs relation)))))))
+      (when (and (eq verdict :unknown) (member operator '(= /=)) (not *sides-differ*)
+                 (equivalent-p bridge (relation-lhs relation) (relation-rhs relation)))
+        (setf verdict (if (eq operator '=) :true :false)))
+      (when (eq verdict :unknown)
+        (setf verdict (decide-by-order-substitution bridge relation))))
     verdict))
 
 (defun order-facts (bridge relation)

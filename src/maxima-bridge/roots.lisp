@@ -56,6 +56,22 @@ conditions), the shift, and whether the root must lie strictly after it."
 (defun signs-of (search form)
   (form-signs (search-bridge search) form :datum (search-expression search)))
 
+(defun mixed-signs-p (search form)
+  "True when the Maxima FORM is seen positive at one admissible point and negative at
+another (see WITNESSED-BOTH-WAYS-P): its signs include :POSITIVE and :NEGATIVE."
+  (let ((expression (handler-case (from-mx (search-bridge search) form)
+                      (untranslatable-result () nil))))
+    (and expression
+         (witnessed-both-ways-p (search-bridge search) (list '> expression 0)))))
+
+(defun sign-pattern-of (search form)
+  "The signs of FORM, for the tests that only ask whether they lie within a set that
+lacks :POSITIVE or :NEGATIVE (ONLY, ROOT-VERDICT): all three, without asking Maxima,
+when FORM is seen to take both signs, else SIGNS-OF. Not for tests of :ZERO alone."
+  (if (mixed-signs-p search form)
+      (list :positive :negative :zero)
+      (signs-of search form)))
+
 (defun earliest-root (bridge expression variable &key (after 0) (strictly t))
   "The earliest real root of EXPRESSION = 0 in VARIABLE greater than AFTER (or equal to
 it, when STRICTLY is false), proven earliest under the current assumptions. Returns
@@ -110,7 +126,7 @@ depending on VARIABLE), MAXIMA-ERROR, MAXIMA-TIMEOUT."
     (let ((offset (mform +mtimes+ -1 (mquotient c0 c1))))
       (if (member :zero (signs-of search c1))
           (unknown search (list offset))
-          (ecase (root-verdict (signs-of search offset) (search-strictly search))
+          (ecase (root-verdict (sign-pattern-of search offset) (search-strictly search))
             (:yes (found search offset))
             (:no (values :none nil))
             (:maybe (unknown search (list offset))))))))
@@ -129,7 +145,7 @@ and the reduced discriminant S^2/4 - P: the roots are S/2 -+ sqrt(S^2/4 - P)."
            (root-of-discriminant (mform +mexpt+ discriminant (mform +rat+ 1 2)))
            (larger (mform +mplus+ half-sum root-of-discriminant))
            (smaller (mdifference half-sum root-of-discriminant))
-           (product-signs (signs-of search product))
+           (product-signs (sign-pattern-of search product))
            (strictly (search-strictly search)))
       (flet ((only (signs &rest allowed) (and signs (subsetp signs allowed))))
         (cond
@@ -139,16 +155,16 @@ and the reduced discriminant S^2/4 - P: the roots are S/2 -+ sqrt(S^2/4 - P)."
           ((equal product-signs '(:zero))
            (if (not strictly)
                (found search 0)
-               (ecase (root-verdict (signs-of search sum) t)
+               (ecase (root-verdict (sign-pattern-of search sum) t)
                  (:yes (found search sum))
                  (:no (values :none nil))
                  (:maybe (unknown search (list sum))))))
           ;; Roots of the same sign (or complex): both before the start when S <= 0.
           ((only product-signs :positive)
-           (let ((sum-signs (signs-of search sum)))
+           (let ((sum-signs (sign-pattern-of search sum)))
              (cond ((only sum-signs :negative :zero) (values :none nil))
                    ((only sum-signs :positive)
-                    (let ((discriminant-signs (signs-of search discriminant)))
+                    (let ((discriminant-signs (sign-pattern-of search discriminant)))
                       (cond ((only discriminant-signs :negative) (values :none nil))
                             ((only discriminant-signs :positive :zero) (found search smaller))
                             (t (unknown search (list smaller larger))))))
@@ -173,7 +189,7 @@ miss roots and nothing is proven)."
     (dolist (offset explicit)
       (if (contains-symbol-p +i+ offset)
           (push offset undecided)
-          (ecase (root-verdict (signs-of search offset) strictly)
+          (ecase (root-verdict (sign-pattern-of search offset) strictly)
             (:yes (push offset proven))
             (:no)
             (:maybe (push offset undecided)))))
@@ -185,7 +201,7 @@ miss roots and nothing is proven)."
            (let ((earliest (find-if (lambda (candidate)
                                       (every (lambda (other)
                                                (or (eq other candidate)
-                                                   (subsetp (signs-of search (mdifference other candidate))
+                                                   (subsetp (sign-pattern-of search (mdifference other candidate))
                                                             '(:positive :zero))))
                                              proven))
                                     proven)))
