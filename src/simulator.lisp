@@ -196,9 +196,29 @@ TOUCHING relations go to the geometry, everything else to Maxima."
         when (and instance (ames.engine:instance-active-p instance))
           collect name))
 
-(defun solve-instantaneous-model (run equations)
+(defun used-quantity-terms (run contacts)
+  "The quantity terms whose values a state uses: every body's acceleration, the normal
+force and tangential path acceleration of each of CONTACTS, and the terms of the model's
+termination conditions."
+  (remove-duplicates
+   (append (loop for body in (scenario-bodies (run-scenario run))
+                 for name = (scenario-body-name body)
+                 collect `(ames.kb:acc ,name :x) collect `(ames.kb:acc ,name :y))
+           (loop for contact in contacts
+                 collect `(ames.kb:normal-force ,contact)
+                 collect `(ames.kb:path-acc ,contact :tangential))
+           (loop for condition in (ames.engine:model-termination-conditions (run-model run))
+                 append (remove-if-not #'quantity-term-p
+                                       (expression-variables
+                                        (ames.engine:termination-condition-relation condition)))))
+   :test #'equal))
+
+(defun solve-instantaneous-model (run equations &optional (used :all))
   "Solve the model's EQUATIONS (without the derivative relations) for every unknown
-quantity term. Returns the solution alist. Signals UNSOLVABLE-MODEL."
+quantity term. Returns the solution alist, the values of the terms in USED (a list, see
+USED-QUANTITY-TERMS, or :ALL) in their simplest form, the others as Maxima's solve()
+gives them (their simplification is costly, and a state reads them not). Signals
+UNSOLVABLE-MODEL."
   (let ((unknowns (remove-if #'state-value-term-p
                              (remove-if-not #'quantity-term-p
                                             (remove-duplicates
@@ -216,7 +236,10 @@ quantity term. Returns the solution alist. Signals UNSOLVABLE-MODEL."
             ((rest solutions)
              (error 'unsolvable-model :datum equations
                                       :detail "The state's model has several solutions."))
-            (t (mapcar (lambda (entry) (cons (car entry) (tidy run (cdr entry) :full)))
+            (t (mapcar (lambda (entry)
+                         (if (or (eq used :all) (member (car entry) used :test #'equal))
+                             (cons (car entry) (tidy run (cdr entry) :full))
+                             entry))
                        (first solutions)))))))
 
 (defun solution-value (solution term)
@@ -644,7 +667,7 @@ AMBIGUOUS-TRANSITION (restart STOP-SIMULATION) when that cannot be decided."
 QUALITATIVE-STATE and the fired CANDIDATEs (NIL when the state lasts forever). When
 which event ends it is ambiguous, the AMBIGUOUS-TRANSITION carries the state as far as
 it is known (its model and motion, duration :UNDECIDED)."
-  (let* ((solution (solve-instantaneous-model run equations))
+  (let* ((solution (solve-instantaneous-model run equations (used-quantity-terms run contacts)))
          (motions (polynomial-motions run solution derivative-equations))
          (state (make-instance
                  'qualitative-state
@@ -1045,7 +1068,8 @@ the section header). Returns the QUALITATIVE-STATE and the fired CANDIDATEs."
          (symbols (list (cons s-term +arc-length+) (cons w-term +arc-speed+)))
          (solution (mapcar (lambda (entry)
                              (cons (car entry) (substitute-expressions symbols (cdr entry))))
-                           (solve-instantaneous-model run equations)))
+                           (solve-instantaneous-model run equations
+                                                      (used-quantity-terms run contacts))))
          (tangential (solution-value solution `(ames.kb:path-acc ,contact :tangential)))
          (normal (solution-value solution `(ames.kb:normal-force ,contact))))
     (destructuring-bind (observer obstacle) (contact-bodies run contact)
