@@ -189,10 +189,10 @@ has free parameters or is outside the algebra."
 ;;; by a ball holding zero, a pole of tan, an overflow) is left out. Finding no witnesses
 ;;; proves nothing, and the strategies run as before.
 
-(defparameter *witness-draws* 120
+(defparameter *witness-draws* 80
   "How many random points WITNESSED-BOTH-WAYS-P draws at most.")
 
-(defparameter *witness-admissible-points* 30
+(defparameter *witness-admissible-points* 16
   "How many admissible points WITNESSED-BOTH-WAYS-P evaluates the relation at, at most.")
 
 (defstruct (ball (:constructor make-ball (center radius)))
@@ -266,7 +266,8 @@ negative x axis, where it is not continuous."
 
 (defun expression-ball (expression point)
   "The ball enclosing the value of the arithmetic EXPRESSION at POINT (an alist subject ->
-double float), or NIL where it is undefined or not real."
+double float, or -> ball for a whole box of points), or NIL where it is undefined or not
+real somewhere."
   (labels ((fail () (return-from expression-ball nil))
            (value (x)
              (cond ((rationalp x) (let ((d (coerce x 'double-float)))
@@ -275,7 +276,9 @@ double float), or NIL where it is undefined or not real."
                    ((constant-symbol-p x) (rounded-ball pi 0d0))
                    ((or (variable-symbol-p x) (quantity-term-p x))
                     (let ((entry (assoc x point :test #'equal)))
-                      (if entry (make-ball (cdr entry) 0d0) (fail))))
+                      (cond ((null entry) (fail))
+                            ((ball-p (cdr entry)) (cdr entry))
+                            (t (make-ball (cdr entry) 0d0)))))
                    (t (let ((arguments (mapcar #'value (expression-arguments x))))
                         (or (case (expression-operator x)
                               (+ (reduce #'ball+ arguments))
@@ -334,9 +337,10 @@ from its ends; log-uniform in size over four decades where a side is open-ended.
           ((zerop (random 2 random-state)) size)
           (t (- size)))))
 
-(defun witnessed-both-ways-p (bridge relation)
-  "True when the inequality RELATION (< > <= >=) surely holds at one point that surely
-satisfies the facts in force, and surely fails at another: then it is not decided."
+(defun relation-witnesses (bridge relation)
+  "Two points that surely satisfy the facts in force, RELATION (an inequality) surely
+holding at the first and surely failing at the second, as (values HOLDS FAILS FACTS):
+alists subject -> double float, and the facts (flattened). NIL when none are found."
   (let* ((facts (flatten-facts (current-assumptions bridge)))
          (intervals (subject-intervals facts))
          (subjects (remove-duplicates (append (expression-variables relation)
@@ -353,9 +357,48 @@ satisfies the facts in force, and surely fails at another: then it is not decide
                (when (every (lambda (fact) (eq (condition-truth fact point) :true)) facts)
                  (incf admissible)
                  (case (condition-truth relation point)
-                   (:true (setf holds t))
-                   (:false (setf fails t)))
-                 (when (and holds fails) (return t)))))))
+                   (:true (unless holds (setf holds point)))
+                   (:false (unless fails (setf fails point))))
+                 (when (and holds fails)
+                   (return-from relation-witnesses (values holds fails facts))))))
+    nil))
+
+(defun witnessed-both-ways-p (bridge relation)
+  "True when the inequality RELATION (< > <= >=) surely holds at one point that surely
+satisfies the facts in force, and surely fails at another: then it is not decided."
+  (and (relation-witnesses bridge relation) t))
+
+(defparameter *segment-pieces* 256
+  "How many pieces of a segment CONTINUOUS-AND-ADMISSIBLE-BETWEEN-P may evaluate at most.")
+
+(defun segment-piece (from to start end)
+  "The point whose subjects are balls enclosing the points FROM + s (TO - FROM) for s in
+[START, END] (FROM and TO alists subject -> double float)."
+  (mapcar (lambda (entry)
+            (let* ((a (cdr entry))
+                   (b (cdr (assoc (car entry) to :test #'equal)))
+                   (middle (/ (+ start end) 2)))
+              (cons (car entry) (rounded-ball (+ a (* (- b a) middle))
+                                              (* (abs (- b a)) (/ (- end start) 2))))))
+          from))
+
+(defun continuous-and-admissible-between-p (expression facts from to)
+  "True when, on the whole segment between the points FROM and TO, every fact of FACTS
+surely holds and the arithmetic EXPRESSION is surely defined and real, hence
+continuous: checked on pieces of the segment, as balls, halving a piece that is not
+sure. With EXPRESSION positive at one end and negative at the other, it then vanishes
+at an admissible point in between."
+  (let ((pending (list (cons 0d0 1d0))) (budget *segment-pieces*))
+    (loop while pending
+          do (destructuring-bind (start . end) (pop pending)
+               (when (minusp (decf budget)) (return-from continuous-and-admissible-between-p nil))
+               (let ((piece (segment-piece from to start end)))
+                 (unless (and (expression-ball expression piece)
+                              (every (lambda (fact) (eq (condition-truth fact piece) :true)) facts))
+                   (let ((middle (/ (+ start end) 2)))
+                     (push (cons start middle) pending)
+                     (push (cons middle end) pending))))))
+    t))
 
 (defun sign-varies-p (bridge expression)
   "True when the arithmetic EXPRESSION is seen to be positive at one point that satisfies
@@ -500,8 +543,12 @@ is there or the form is not linear in it."
                (/= (cond ((none :zero) :true) ((only :zero) :false) (t :unknown))))))))
 
 (defun decide-relation (bridge relation)
-  "The truth of one RELATION (= /= < > <= >=) under the current assumptions."
+  "The truth of one RELATION (= /= < > <= >=) under the current assumptions: is(), then
+numeric witnesses that no strategy can decide it (see RELATION-WITNESSES), then the
+signs of the difference of its sides, after clearing a square root, equivalence (for =
+and /=), and the order substitution."
   (let* ((operator (expression-operator relation))
+         (equation (member operator '(= /=)))
          (lhs (to-mx bridge (relation-lhs relation)))
          (rhs (to-mx bridge (relation-rhs relation)))
          (question (case operator
@@ -509,36 +556,39 @@ is there or the form is not linear in it."
                      (/= (mform +notequal+ lhs rhs))
                      (t (mform (cdr (assoc operator *relation-heads*)) lhs rhs))))
          (verdict (maxima-truth (maxima-request bridge (mcall "$IS" question) :datum relation))))
-    ;; an inequality seen to hold at one admissible point and to fail at another is
-    ;; decided by no strategy: leave them out
-    (when (and (eq verdict :unknown) (member operator '(< > <= >=))
-               (not *substituting-orders*)
-               (witnessed-both-ways-p bridge relation))
-      (return-from decide-relation :unknown))
-    (when (eq verdict :unknown)
+    (unless (eq verdict :unknown)
+      (return-from decide-relation verdict))
+    ;; an inequality seen to hold at one admissible point and to fail at another, or an
+    ;; equation whose sides cross between two such points, is decided by no strategy
+    (multiple-value-bind (holds fails facts)
+        (and (not *substituting-orders*)
+             (relation-witnesses bridge (if equation
+                                            (list '> (relation-lhs relation) (relation-rhs relation))
+                                            relation)))
+      (when (and holds
+                 (or (not equation)
+                     (continuous-and-admissible-between-p
+                      (list '- (relation-lhs relation) (relation-rhs relation)) facts holds fails)))
+        (return-from decide-relation :unknown))
       ;; the signs are asked for only until they decide the relation
       (setf verdict (relation-verdict operator
                                       (form-signs bridge (mdifference lhs rhs)
                                                   :datum relation
                                                   :enough (lambda (signs)
                                                             (not (eq (relation-verdict operator signs)
-                                                                     :unknown)))))))
-    (when (eq verdict :unknown)
-      (let ((signs (radical-signs bridge (mdifference lhs rhs) :datum relation)))
-        (when signs (setf verdict (relation-verdict operator signs)))))
-    ;; the two sides seen to differ both ways are not equal: equivalence cannot be
-    ;; proven, here nor after the order substitution
-    (let ((*sides-differ* (or *sides-differ*
-                              (and (eq verdict :unknown) (member operator '(= /=))
-                                   (not *substituting-orders*)
-                                   (witnessed-both-ways-p bridge (list '> (relation-lhs relation)
-                                                                       (relation-rhs relation)))))))
-      (when (and (eq verdict :unknown) (member operator '(= /=)) (not *sides-differ*)
-                 (equivalent-p bridge (relation-lhs relation) (relation-rhs relation)))
-        (setf verdict (if (eq operator '=) :true :false)))
+                                                                     :unknown))))))
       (when (eq verdict :unknown)
-        (setf verdict (decide-by-order-substitution bridge relation))))
-    verdict))
+        (let ((signs (radical-signs bridge (mdifference lhs rhs) :datum relation)))
+          (when signs (setf verdict (relation-verdict operator signs)))))
+      ;; sides seen to differ both ways are not equal: equivalence cannot be proven,
+      ;; here nor after the order substitution
+      (let ((*sides-differ* (or *sides-differ* (and equation holds t))))
+        (when (and (eq verdict :unknown) equation (not *sides-differ*)
+                   (equivalent-p bridge (relation-lhs relation) (relation-rhs relation)))
+          (setf verdict (if (eq operator '=) :true :false)))
+        (when (eq verdict :unknown)
+          (setf verdict (decide-by-order-substitution bridge relation))))
+      verdict)))
 
 (defun order-facts (bridge relation)
   "The facts in force that order a variable V of RELATION against an expression E free of
