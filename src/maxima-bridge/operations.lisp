@@ -337,17 +337,18 @@ from its ends; log-uniform in size over four decades where a side is open-ended.
           ((zerop (random 2 random-state)) size)
           (t (- size)))))
 
-(defun relation-witnesses (bridge relation)
-  "Two points that surely satisfy the facts in force, RELATION (an inequality) surely
-holding at the first and surely failing at the second, as (values HOLDS FAILS FACTS):
-alists subject -> double float, and the facts (flattened). NIL when none are found."
-  (let* ((facts (flatten-facts (current-assumptions bridge)))
+(defun call-with-admissible-points (bridge relation function &optional assuming)
+  "Call FUNCTION on random points (alists subject -> double float, over the subjects of
+RELATION and of the facts in force) that surely satisfy the facts in force and the
+facts ASSUMING, until it returns true or the limits (*WITNESS-DRAWS*,
+*WITNESS-ADMISSIBLE-POINTS*) are reached. Returns the flattened facts."
+  (let* ((facts (flatten-facts (append (current-assumptions bridge) assuming)))
          (intervals (subject-intervals facts))
          (subjects (remove-duplicates (append (expression-variables relation)
                                               (mapcan #'expression-variables facts))
                                       :test #'equal))
          (random-state (sb-ext:seed-random-state 1994))
-         (holds nil) (fails nil) (admissible 0))
+         (admissible 0))
     (loop repeat *witness-draws*
           while (< admissible *witness-admissible-points*)
           do (let ((point (mapcar (lambda (subject)
@@ -356,12 +357,32 @@ alists subject -> double float, and the facts (flattened). NIL when none are fou
                                   subjects)))
                (when (every (lambda (fact) (eq (condition-truth fact point) :true)) facts)
                  (incf admissible)
-                 (case (condition-truth relation point)
-                   (:true (unless holds (setf holds point)))
-                   (:false (unless fails (setf fails point))))
-                 (when (and holds fails)
-                   (return-from relation-witnesses (values holds fails facts))))))
-    nil))
+                 (when (funcall function point) (return)))))
+    facts))
+
+(defun relation-witnesses (bridge relation)
+  "Two points that surely satisfy the facts in force, RELATION (an inequality) surely
+holding at the first and surely failing at the second, as (values HOLDS FAILS FACTS):
+alists subject -> double float, and the facts (flattened). NIL when none are found."
+  (let ((holds nil) (fails nil))
+    (let ((facts (call-with-admissible-points
+                  bridge relation
+                  (lambda (point)
+                    (case (condition-truth relation point)
+                      (:true (unless holds (setf holds point)))
+                      (:false (unless fails (setf fails point))))
+                    (and holds fails)))))
+      (and holds fails (values holds fails facts)))))
+
+(defun relation-refuted-p (bridge relation &optional assuming)
+  "True when the condition RELATION surely fails at a point that surely satisfies the
+facts in force and the facts ASSUMING: then no sound strategy proves it under them."
+  (let ((refuted nil))
+    (call-with-admissible-points bridge relation
+                                 (lambda (point)
+                                   (setf refuted (eq (condition-truth relation point) :false)))
+                                 assuming)
+    refuted))
 
 (defun witnessed-both-ways-p (bridge relation)
   "True when the inequality RELATION (< > <= >=) surely holds at one point that surely
@@ -399,6 +420,28 @@ at an admissible point in between."
                      (push (cons start middle) pending)
                      (push (cons middle end) pending))))))
     t))
+
+(defun holds-p (bridge relation)
+  "True when DECIDE answers :TRUE for RELATION (a relation or a logical form), found
+faster where it does not: a point that surely satisfies the facts in force and surely
+violates RELATION settles it without asking Maxima, since no sound strategy proves a
+relation that fails somewhere (see RELATION-REFUTED-P). For callers that act only on
+:TRUE. Signals what DECIDE signals."
+  (check-translatable relation :condition)
+  (multiple-value-bind (verdict found) (gethash (verdict-key bridge relation) (bridge-cache bridge))
+    (cond (found (eq verdict :true))
+          ((relation-refuted-p bridge relation) nil)
+          (t (eq (decide bridge relation) :true)))))
+
+(defun refuted-p (bridge relation &key assuming)
+  "True when RELATION (a relation or a logical form of the algebra) is seen to fail at a
+point that satisfies the facts in force and the facts ASSUMING (e.g. ((> tau 0))): then
+it does not follow from them, and no sound proof of it exists. NIL proves nothing. Asks
+Maxima nothing. Signals UNTRANSLATABLE-EXPRESSION for a RELATION or fact outside the
+algebra."
+  (check-translatable relation :condition)
+  (dolist (fact assuming) (check-translatable fact :condition))
+  (relation-refuted-p bridge relation assuming))
 
 (defun sign-varies-p (bridge expression)
   "True when the arithmetic EXPRESSION is seen to be positive at one point that satisfies
@@ -672,7 +715,7 @@ three-valued logic. Verdicts are cached under the facts in force, like requests.
 Signals UNTRANSLATABLE-EXPRESSION, MAXIMA-ERROR, MAXIMA-TIMEOUT."
   (check-translatable relation :condition)
   (let* ((cache (bridge-cache bridge))
-         (key (list* :decide *substituting-orders* relation (assumption-key bridge)))
+         (key (verdict-key bridge relation))
          (record (bridge-statistics-record bridge)))
     (multiple-value-bind (verdict found) (gethash key cache)
       (incf (statistics-calls record))
@@ -681,6 +724,10 @@ Signals UNTRANSLATABLE-EXPRESSION, MAXIMA-ERROR, MAXIMA-TIMEOUT."
           (let ((verdict (decide-uncached bridge relation)))
             (when (>= (hash-table-count cache) *cache-limit*) (clrhash cache))
             (setf (gethash (copy-tree key) cache) verdict))))))
+
+(defun verdict-key (bridge relation)
+  "The key of DECIDE's verdict on RELATION in BRIDGE's cache, under the facts in force."
+  (list* :decide *substituting-orders* relation (assumption-key bridge)))
 
 (defun decide-uncached (bridge relation)
   "DECIDE's work, without its cache of verdicts."
