@@ -369,9 +369,10 @@ up): (values ROOT :FOUND), (values :NONE) or (values :UNKNOWN)."
 (defun earliest-root-after (run g after)
   "The earliest root of G (a function of TAU) strictly after AFTER, through the bridge,
 then, from the start, by QUADRATIC-EARLIEST-ROOT when the bridge cannot decide.
-Returns what AMES.MAXIMA:EARLIEST-ROOT returns."
+Returns what AMES.MAXIMA:EARLIEST-ROOT returns, without the candidates of an undecided
+answer (UNDECIDED-SIGN-FACT asks for them when it needs them)."
   (multiple-value-bind (root status)
-      (ames.maxima:earliest-root (run-bridge run) g 'tau :after after :strictly t)
+      (ames.maxima:earliest-root (run-bridge run) g 'tau :after after :strictly t :candidates nil)
     (if (eq root :unknown)
         (multiple-value-bind (root2 status2)
             (quadratic-earliest-root
@@ -382,11 +383,11 @@ Returns what AMES.MAXIMA:EARLIEST-ROOT returns."
                 (t (values root status))))
         (values root status))))
 
-(defun undecided-sign-fact (run g candidates)
+(defun undecided-sign-fact (run g after)
   "The relation whose truth would settle where the polynomial G in TAU first vanishes:
 the sign of its first coefficient (from the highest degree down) or of its discriminant
 that the assumptions do not decide. When none is found, (:EARLIEST-ROOT-OF (= G 0)
-:CANDIDATES CANDIDATES)."
+:CANDIDATES CANDIDATES), CANDIDATES the roots after AFTER the bridge could not rule out."
   (let* ((d1 (tidy run (time-derivative g) :ratsimp))
          (d2 (tidy run (time-derivative d1) :ratsimp))
          (c0 (tidy run (at-time g 0)))
@@ -398,7 +399,9 @@ that the assumptions do not decide. When none is found, (:EARLIEST-ROOT-OF (= G 
                      (loop for c in (list c2 c1 c0 discriminant)
                            collect `(> ,c 0) collect `(< ,c 0))
                      :key (lambda (fact) (decide run fact)))))
-        `(:earliest-root-of (= ,g 0) :candidates ,candidates))))
+        `(:earliest-root-of (= ,g 0)
+          :candidates ,(nth-value 1 (ames.maxima:earliest-root (run-bridge run) g 'tau
+                                                               :after after :strictly t))))))
 
 (defun first-time-negative (run g)
   "The earliest time TAU >= 0 from which G(TAU) < 0 (G a polynomial in TAU or a
@@ -421,10 +424,10 @@ FACT is the relation the assumptions do not decide."
                      (:true (return-from first-time-negative (values :at 0)))
                      (:unknown (return-from first-time-negative (values :unknown `(< ,d0 0)))))
                    (unless (holds run `(= ,d0 0)) (return))))))
-    (multiple-value-bind (root status) (earliest-root-after run g 0)
+    (let ((root (earliest-root-after run g 0)))
       (cond ((eq root :none) (values :never))
             ((eq root :unknown)
-             (values :unknown (undecided-sign-fact run g status)))
+             (values :unknown (undecided-sign-fact run g 0)))
             (t
              (let ((slope (tidy run (at-time (time-derivative g) root))))
                (case (decide run `(< ,slope 0))
@@ -524,11 +527,10 @@ approach rate of the gap at that time (negative: a collision; zero: a grazing co
           do (setf gap (tidy run `(/ ,gap tau))))
     (block search
      (loop repeat 4
-          do (multiple-value-bind (root status)
-                 (earliest-root-after run gap after)
+          do (let ((root (earliest-root-after run gap after)))
                (cond ((eq root :none) (return-from search (values :never)))
                      ((eq root :unknown)
-                      (return-from search (values :unknown (undecided-sign-fact run gap status))))
+                      (return-from search (values :unknown (undecided-sign-fact run gap after))))
                      (t
                       (let* ((root (tidy run root :full))
                              (rate (tidy run (at-time (ames.geometry:meeting-rate meeting) root)))

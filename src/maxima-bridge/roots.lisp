@@ -31,8 +31,9 @@
 
 (defstruct (root-search (:conc-name search-))
   "What EARLIEST-ROOT knows while it works: the bridge, the original expression (for
-conditions), the shift, and whether the root must lie strictly after it."
-  bridge expression after-form strictly)
+conditions), the shift, whether the root must lie strictly after it, and whether the
+candidates of an undecided answer are wanted."
+  bridge expression after-form strictly (candidates t))
 
 (defun root-expression (search offset)
   "The root AFTER + OFFSET (OFFSET a Maxima form), simplified, in prefix algebra."
@@ -51,7 +52,7 @@ conditions), the shift, and whether the root must lie strictly after it."
   (values (root-expression search offset) :found))
 
 (defun unknown (search offsets)
-  (values :unknown (root-candidates search offsets)))
+  (values :unknown (and (search-candidates search) (root-candidates search offsets))))
 
 (defun signs-of (search form)
   (form-signs (search-bridge search) form :datum (search-expression search)))
@@ -72,13 +73,14 @@ when FORM is seen to take both signs, else SIGNS-OF. Not for tests of :ZERO alon
       (list :positive :negative :zero)
       (signs-of search form)))
 
-(defun earliest-root (bridge expression variable &key (after 0) (strictly t))
+(defun earliest-root (bridge expression variable &key (after 0) (strictly t) (candidates t))
   "The earliest real root of EXPRESSION = 0 in VARIABLE greater than AFTER (or equal to
 it, when STRICTLY is false), proven earliest under the current assumptions. Returns
   (values ROOT :FOUND)          the proven earliest root (prefix algebra);
   (values :NONE NIL)            proven: no real root after AFTER;
   (values :UNKNOWN CANDIDATES)  not decided; CANDIDATES are the roots Maxima found that
-                                could not be ruled out (possibly none).
+                                could not be ruled out (possibly none), simplified;
+                                NIL when CANDIDATES is false (they are costly).
 Polynomials of degree at most 2 are decided through the signs of the product and sum
 of their roots and of their discriminant; other polynomials through solve() and
 pairwise comparison (numeric ones through Sturm sequences, realroots(), giving a
@@ -100,7 +102,8 @@ depending on VARIABLE), MAXIMA-ERROR, MAXIMA-TIMEOUT."
          (offset-variable (to-mx bridge variable))
          (form (to-mx bridge shifted))
          (search (make-root-search :bridge bridge :expression expression
-                                   :after-form (to-mx bridge after) :strictly strictly))
+                                   :after-form (to-mx bridge after) :strictly strictly
+                                   :candidates candidates))
          (coefficients (maxima-request bridge (mcall "$AMES_POLYNOMIAL_COEFFICIENTS"
                                                      form offset-variable)
                                        :datum expression)))
