@@ -178,3 +178,51 @@
                                                                 (ames.maxima::to-mx b '(- (* g (cos (/ s r))))))
                                             x tm))
                      ames.maxima::+mequal+)))))))))
+
+(test holds-p-is-decide-s-true-and-refutes-without-maxima
+  (call-with-bridge
+   (lambda (b)
+     (ames.maxima:with-assumptions (b '((> x 0) (< x 1) (> k 0) (> a 0) (< a (/ pi 2))))
+       (dolist (relation '((> (* k x (- 1 x)) 0) (< (* k x (- 1 x)) 0) (> (- x 1/2) 0)
+                           (= (* k (- x 1/2)) 0) (= (+ (expt (sin a) 2) (expt (cos a) 2)) 1)
+                           (>= (* k (sin a)) 0) (<= (- (cos a) 1) 0) (< (tan a) 0)
+                           (and (> k 0) (< x 1)) (or (> x 1/2) (< x 1/3))))
+         (is (eq (eq :true (ames.maxima:decide b relation))
+                 (ames.maxima:holds-p b relation))
+             "holds-p and decide disagree on ~S" relation))
+       ;; a relation that fails somewhere is refused without a round trip
+       (let ((before (round-trips b)))
+         (is (not (ames.maxima:holds-p b '(> (* k (- x 1/3)) 0))))
+         (is (not (ames.maxima:holds-p b '(= (* k x) (* k (expt x 2))))))
+         (is (= before (round-trips b))))))))
+
+(test refuted-p-sees-a-counterexample-under-extra-facts
+  (call-with-bridge
+   (lambda (b)
+     (ames.maxima:with-assumptions (b '((> v 0) (> g 0)))
+       ;; v tau - g tau^2 / 2 rises first: positive at some tau > 0
+       (is (ames.maxima:refuted-p b '(< (- (* v tau) (* 1/2 g (expt tau 2))) 0)
+                                  :assuming '((> tau 0))))
+       ;; -v tau - g tau^2 stays negative for tau > 0: no counterexample, and none is made up
+       (is (not (ames.maxima:refuted-p b '(< (- (- (* v tau)) (* g (expt tau 2))) 0)
+                                       :assuming '((> tau 0)))))
+       (is (not (ames.maxima:refuted-p b '(> (* g v) 0))))
+       (is (ames.maxima:refuted-p b '(> (- v g) 0)))))))
+
+(test earliest-root-leaves-out-undecided-candidates-only-when-asked
+  (call-with-bridge
+   (lambda (b)
+     (ames.maxima:with-assumptions (b '((> v 0)))
+       ;; c tau^2 - v tau: the sign of c decides whether a root follows the start
+       (multiple-value-bind (root candidates)
+           (ames.maxima:earliest-root b '(- (* c (expt tau 2)) (* v tau)) 'tau)
+         (is (eq :unknown root))
+         (is (consp candidates)))
+       (multiple-value-bind (root candidates)
+           (ames.maxima:earliest-root b '(- (* c (expt tau 2)) (* v tau)) 'tau :candidates nil)
+         (is (eq :unknown root))
+         (is (null candidates)))
+       ;; a decided answer is the same either way
+       (is (equal (multiple-value-list (ames.maxima:earliest-root b '(- (expt tau 2) (* v tau)) 'tau))
+                  (multiple-value-list (ames.maxima:earliest-root b '(- (expt tau 2) (* v tau)) 'tau
+                                                                  :candidates nil))))))))
