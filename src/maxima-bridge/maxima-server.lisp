@@ -167,23 +167,25 @@ coefficients free of VAR and its denominator is free of VAR; false otherwise."
   "The number of atoms and operators in EXPR (to pick the simplest of several forms)."
   (if (atom expr) 1 (1+ (reduce #'+ (mapcar #'$ames_expression_size (cdr expr))))))
 
-(defun $ames_simplification_candidates (expr trigonometric)
+(defun $ames_simplification_candidates (expr trigonometric radicals)
   "The forms the bridge's simplest-form compares, each computed once (a request listing
 them as separate calls computes ratsimp(EXPR) and trigsimp(EXPR) twice):
 [ratsimp(EXPR), trigsimp(EXPR), ratsimp(trigsimp(EXPR)), factor(ratsimp(EXPR)), radcan(EXPR)].
 When TRIGONOMETRIC is false (EXPR has no sin, cos or tan, so that trigsimp(EXPR) is
-ratsimp(EXPR) again), the two trigsimp forms are left out:
-[ratsimp(EXPR), factor(ratsimp(EXPR)), radcan(EXPR)]."
+ratsimp(EXPR) again), the two trigsimp forms are left out; when RADICALS is false (EXPR
+has no radical, logarithm or power with a symbolic or fractional exponent, where
+radcan(EXPR) is ratsimp(EXPR) again), radcan(EXPR) is left out."
   (flet ((call (function argument)
            ;; as meval evaluates function(argument) in a request, the result simplified
            ;; again, the argument (already a value) quoted so it is not evaluated twice
            (meval (list (list function) (list '(mquote) argument)))))
-    (let ((ratsimped (call '$ratsimp expr)))
-      (if trigonometric
-          (let ((trigsimped (call '$trigsimp expr)))
-            (list '(mlist simp) ratsimped trigsimped (call '$ratsimp trigsimped)
-                  (call '$factor ratsimped) (call '$radcan expr)))
-          (list '(mlist simp) ratsimped (call '$factor ratsimped) (call '$radcan expr))))))
+    (let* ((ratsimped (call '$ratsimp expr))
+           (trigsimped (and trigonometric (call '$trigsimp expr))))
+      (cons '(mlist simp)
+            (append (list ratsimped)
+                    (and trigonometric (list trigsimped (call '$ratsimp trigsimped)))
+                    (list (call '$factor ratsimped))
+                    (and radicals (list (call '$radcan expr))))))))
 
 ;;; The loop.
 
