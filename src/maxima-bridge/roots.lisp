@@ -188,14 +188,21 @@ miss roots and nothing is proven)."
                          when (and (mform-p item +mequal+) (eq (second item) offset-variable))
                            collect (third item)))
          (complete (and coefficients (= (length explicit) (length items))))
+         (numeric (and coefficients (every #'numeric-form-p coefficients)))
          (proven '()) (undecided '()))
-    (dolist (offset explicit)
-      (if (contains-symbol-p +i+ offset)
-          (push offset undecided)
-          (ecase (root-verdict (sign-pattern-of search offset) strictly)
-            (:yes (push offset proven))
-            (:no)
-            (:maybe (push offset undecided)))))
+    (flet ((undecided-anyway ()
+             ;; the answer is :UNKNOWN whatever the other roots are: without candidates
+             ;; wanted, their signs need not be asked
+             (when (and (not numeric) (not (search-candidates search)))
+               (return-from solved-earliest-root (values :unknown nil)))))
+      (unless complete (undecided-anyway))
+      (dolist (offset explicit)
+        (if (contains-symbol-p +i+ offset)
+            (progn (push offset undecided) (undecided-anyway))
+            (ecase (root-verdict (sign-pattern-of search offset) strictly)
+              (:yes (push offset proven))
+              (:no)
+              (:maybe (push offset undecided) (undecided-anyway))))))
     (setf proven (nreverse proven) undecided (nreverse undecided))
     (cond
       ((and complete (null undecided))
@@ -209,7 +216,7 @@ miss roots and nothing is proven)."
                                              proven))
                                     proven)))
              (if earliest (found search earliest) (unknown search proven)))))
-      ((and coefficients (every #'numeric-form-p coefficients))
+      (numeric
        (numeric-earliest-root search form offset-variable))
       (t (unknown search (append proven undecided))))))
 
