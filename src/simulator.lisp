@@ -198,15 +198,16 @@ TOUCHING relations go to the geometry, everything else to Maxima."
 
 (defun used-quantity-terms (run contacts)
   "The quantity terms whose values a state uses: every body's acceleration, the normal
-force and tangential path acceleration of each of CONTACTS, and the terms of the model's
-termination conditions."
+force of each of CONTACTS (and its tangential path acceleration when it is curved), and
+the terms of the model's termination conditions."
   (remove-duplicates
    (append (loop for body in (scenario-bodies (run-scenario run))
                  for name = (scenario-body-name body)
                  collect `(ames.kb:acc ,name :x) collect `(ames.kb:acc ,name :y))
            (loop for contact in contacts
                  collect `(ames.kb:normal-force ,contact)
-                 collect `(ames.kb:path-acc ,contact :tangential))
+                 when (curved-contact-p run contact)
+                   collect `(ames.kb:path-acc ,contact :tangential))
            (loop for condition in (ames.engine:model-termination-conditions (run-model run))
                  append (remove-if-not #'quantity-term-p
                                        (expression-variables
