@@ -2,6 +2,12 @@
 ;;;;
 ;;;; Every operation takes and returns AMES's prefix algebra. The earliest root, the
 ;;;; autonomous ODE, numeric values and LaTeX are in roots.lisp and ode.lisp.
+;;;;
+;;;; Speed: a round trip costs little next to Maxima's own work, so the work is cut, never
+;;;; the answers: sign() requests are asked one at a time until the relation is decided,
+;;;; DECIDE caches its verdicts, steps that give the ratsimp form again (trigsimp without
+;;;; sin, cos or tan; radcan without radicals) are skipped, and numeric witnesses (see
+;;;; their section) answer at once the questions no strategy could decide.
 
 (in-package #:ames.maxima)
 
@@ -189,24 +195,28 @@ has free parameters or is outside the algebra."
                                                      (let ((part (ames-error-datum c)))
                                                        (and (symbolp part) (string-downcase (symbol-name part))))))))))))
 
-;;; Numeric witnesses: a quick proof that an inequality is not decided
+;;; Numeric witnesses: quick proofs that a relation is not decided, or not true
 ;;;
-;;; An inequality that holds at one admissible point (one that satisfies every fact in
-;;; force) and fails at another is decided neither way by any sound method, so DECIDE may
-;;; answer :UNKNOWN at once instead of trying every strategy (the costliest case: each
-;;; strategy fails). Points are drawn at random (from a fixed seed) within the numeric
-;;; bounds of each variable; values are computed in double floats as balls (center and
-;;; radius) that enclose the exact value, rounding included, and a sign, of the relation or
-;;; of a fact, counts only when the whole ball has it. A point where anything is undefined
-;;; or not real (a square root or logarithm of a ball reaching zero or below, a division
-;;; by a ball holding zero, a pole of tan, an overflow) is left out. Finding no witnesses
-;;; proves nothing, and the strategies run as before.
+;;; A relation that fails at an admissible point (one that satisfies every fact in force)
+;;; has no sound proof; one that also holds at another admissible point is decided neither
+;;; way, and so is an equation whose sides differ both ways at two admissible points
+;;; joined by a segment of admissible points on which both sides are continuous (they are
+;;; equal somewhere between, by the intermediate value theorem, and not everywhere). DECIDE
+;;; then answers :UNKNOWN at once instead of trying every strategy (the costliest case:
+;;; each strategy fails), and HOLDS-P answers NIL. Points are drawn at random (from a
+;;; fixed seed) within the numeric bounds of each variable; values are computed in double
+;;; floats as balls (center and radius) that enclose the exact value, rounding included,
+;;; and a sign, of the relation or of a fact, counts only when the whole ball has it. A
+;;; point where anything is undefined or not real (a square root or logarithm of a ball
+;;; reaching zero or below, a division by a ball holding zero, a pole of tan, an
+;;; overflow) is left out. Finding no witness proves nothing, and the strategies run as
+;;; before: no answer changes, only its cost (given that every strategy is sound).
 
 (defparameter *witness-draws* 80
-  "How many random points WITNESSED-BOTH-WAYS-P draws at most.")
+  "How many random points CALL-WITH-ADMISSIBLE-POINTS draws at most.")
 
 (defparameter *witness-admissible-points* 16
-  "How many admissible points WITNESSED-BOTH-WAYS-P evaluates the relation at, at most.")
+  "How many admissible points CALL-WITH-ADMISSIBLE-POINTS offers at most.")
 
 (defstruct (ball (:constructor make-ball (center radius)))
   "A real number known to lie within RADIUS of CENTER (double floats)."
@@ -239,8 +249,9 @@ has free parameters or is outside the algebra."
       (rounded-ball (/ 1 x) (/ rx (* (abs x) (- (abs x) rx)))))))
 
 (defun ball-integer-power (a n)
-  "A^N for an integer N (NIL when N < 0 and A may hold zero)."
-  (cond ((minusp n) (let ((power (ball-integer-power a (- n))))
+  "A^N for an integer N (NIL when N <= 0 and A may hold zero: 0^0 is undefined too)."
+  (cond ((and (zerop n) (<= (abs (ball-center a)) (ball-radius a))) nil)
+        ((minusp n) (let ((power (ball-integer-power a (- n))))
                       (and power (ball-reciprocal power))))
         (t (let ((result (make-ball 1d0 0d0)))
              (dotimes (i n result) (setf result (ball* result a)))))))
