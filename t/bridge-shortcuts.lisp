@@ -226,3 +226,20 @@
        (is (equal (multiple-value-list (ames.maxima:earliest-root b '(- (expt tau 2) (* v tau)) 'tau))
                   (multiple-value-list (ames.maxima:earliest-root b '(- (expt tau 2) (* v tau)) 'tau
                                                                   :candidates nil))))))))
+
+(test ames-trigsimp-is-trigsimp
+  (call-with-bridge
+   (lambda (b)
+     (ames.maxima:with-assumptions (b '((> a 0) (< a (/ pi 2))))
+       ;; the fast way (no tan, no square of sin or cos) and the slow way alike
+       (dolist (expression '((+ (* -1/2 bb (cos a)) (- (* bb (sin a))))
+                             (/ (* (cos a) (sin a) m g) (+ (* (expt (sin a) 2) m) w))
+                             (+ (* 1/2 bb (sin a)) (/ (* 1/2 bb (cos a)) (tan a)))
+                             (- (+ (expt (sin a) 2) (expt (cos a) 2)) 1)
+                             (/ (+ (sin u) (cos u)) (- (sin u) (cos u)))
+                             (* (sqrt (+ (expt (sin a) 2) 1)) (cos a))
+                             (sin (+ (* 2 (expt (cos u) 2)) (expt (sin u) 2)))))
+         (let ((form (ames.maxima::to-mx b expression)))
+           (is (equal (ames.maxima::maxima-request b (ames.maxima::mcall "$TRIGSIMP" form))
+                      (ames.maxima::maxima-request b (ames.maxima::mcall "$AMES_TRIGSIMP" form)))
+               "ames_trigsimp differs from trigsimp on ~S" expression)))))))

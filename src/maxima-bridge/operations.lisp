@@ -37,10 +37,12 @@
   "The strategies SIMPLIFY knows.")
 
 (defun simplification-form (strategy form)
-  "The Maxima request simplifying FORM by STRATEGY (one of :RATSIMP :TRIGSIMP :RADCAN)."
+  "The Maxima request simplifying FORM by STRATEGY (one of :RATSIMP :TRIGSIMP :RADCAN).
+trigsimp is the server's ames_trigsimp: the same answer, without trigsimp's own slow
+search where it is known to be ratsimp's."
   (ecase strategy
     (:ratsimp (mcall "$RATSIMP" form))
-    (:trigsimp (mcall "$TRIGSIMP" form))
+    (:trigsimp (mcall "$AMES_TRIGSIMP" form))
     (:trigexpand (mcall "$RATSIMP" (mcall "$TRIGEXPAND" form)))
     (:radcan (mcall "$RADCAN" form))))
 
@@ -115,8 +117,8 @@ Signals UNTRANSLATABLE-EXPRESSION, MAXIMA-ERROR, MAXIMA-TIMEOUT."
       ;; and so is radcan without radicals, logarithms or exponentials
       (and (or (zero-p (mcall "$RATSIMP" difference))
                (and trigonometric
-                    (or (zero-p (mcall "$RATSIMP" (mcall "$TRIGSIMP" difference)))
-                        (zero-p (mcall "$RATSIMP" (mcall "$TRIGSIMP" (mcall "$TRIGEXPAND" difference))))))
+                    (or (zero-p (mcall "$RATSIMP" (mcall "$AMES_TRIGSIMP" difference)))
+                        (zero-p (mcall "$RATSIMP" (mcall "$AMES_TRIGSIMP" (mcall "$TRIGEXPAND" difference))))))
                (and (radical-form-p difference)
                     (zero-p (mcall "$RATSIMP" (mcall "$RADCAN" difference)))))
            t))))
@@ -503,7 +505,7 @@ when FORM has no sin, cos or tan, for which trigsimp gives the same form, slower
         (mcall "$SIGN" (mcall "$FACTOR" (mcall "$RATSIMP" form)))
         (mcall "$SIGN" (mcall "$FACTORSUM" form))
         (mcall "$SIGN" (if (trigonometric-form-p form)
-                           (mcall "$TRIGSIMP" form)
+                           (mcall "$AMES_TRIGSIMP" form)
                            (mcall "$RATSIMP" form)))))
 
 (defun narrowed-signs (signs answer)
