@@ -74,7 +74,8 @@ program that is not a string."
     (format stream "~A ~:[idle~;running~]" (bridge-program bridge) (bridge-alive-p bridge))))
 
 (defun bridge-statistics (bridge)
-  "A plist of BRIDGE's counters: :CALLS (requests asked of the bridge), :CACHE-HITS,
+  "A plist of BRIDGE's counters: :CALLS (requests asked of the bridge, DECIDE's own
+verdict lookups included), :CACHE-HITS (requests and verdicts answered from the cache),
 :MAXIMA-CALLS (round trips to Maxima), :RESTARTS (processes started), :TIMEOUTS,
 :QUESTIONS, :ERRORS, :MAXIMA-SECONDS (evaluation time measured inside Maxima) and
 :ROUND-TRIP-SECONDS (wall time of the round trips)."
