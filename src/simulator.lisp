@@ -162,7 +162,7 @@ locus and the relative velocity has no normal part. :TRUE or :FALSE."
           :false
           (let* ((s (ames.geometry:contact-parameter geometry q))
                  (normal (ames.geometry:contact-outward-normal geometry s)))
-            (if (eq (ames.maxima:decide (run-bridge run) `(= ,(vec-dot v normal) 0)) :true)
+            (if (holds run `(= ,(vec-dot v normal) 0))
                 :true
                 :false))))))
 
@@ -196,9 +196,30 @@ TOUCHING relations go to the geometry, everything else to Maxima."
         when (and instance (ames.engine:instance-active-p instance))
           collect name))
 
-(defun solve-instantaneous-model (run equations)
+(defun used-quantity-terms (run contacts)
+  "The quantity terms whose values a state uses: every body's acceleration, the normal
+force of each of CONTACTS (and its tangential path acceleration when it is curved), and
+the terms of the model's termination conditions."
+  (remove-duplicates
+   (append (loop for body in (scenario-bodies (run-scenario run))
+                 for name = (scenario-body-name body)
+                 collect `(ames.kb:acc ,name :x) collect `(ames.kb:acc ,name :y))
+           (loop for contact in contacts
+                 collect `(ames.kb:normal-force ,contact)
+                 when (curved-contact-p run contact)
+                   collect `(ames.kb:path-acc ,contact :tangential))
+           (loop for condition in (ames.engine:model-termination-conditions (run-model run))
+                 append (remove-if-not #'quantity-term-p
+                                       (expression-variables
+                                        (ames.engine:termination-condition-relation condition)))))
+   :test #'equal))
+
+(defun solve-instantaneous-model (run equations &optional (used :all))
   "Solve the model's EQUATIONS (without the derivative relations) for every unknown
-quantity term. Returns the solution alist. Signals UNSOLVABLE-MODEL."
+quantity term. Returns the solution alist, the values of the terms in USED (a list, see
+USED-QUANTITY-TERMS, or :ALL) in their simplest form, the others as Maxima's solve()
+gives them (their simplification is costly, and a state reads them not). Signals
+UNSOLVABLE-MODEL."
   (let ((unknowns (remove-if #'state-value-term-p
                              (remove-if-not #'quantity-term-p
                                             (remove-duplicates
@@ -216,7 +237,10 @@ quantity term. Returns the solution alist. Signals UNSOLVABLE-MODEL."
             ((rest solutions)
              (error 'unsolvable-model :datum equations
                                       :detail "The state's model has several solutions."))
-            (t (mapcar (lambda (entry) (cons (car entry) (tidy run (cdr entry) :full)))
+            (t (mapcar (lambda (entry)
+                         (if (or (eq used :all) (member (car entry) used :test #'equal))
+                             (cons (car entry) (tidy run (cdr entry) :full))
+                             entry))
                        (first solutions)))))))
 
 (defun solution-value (solution term)
@@ -288,6 +312,11 @@ accelerations substituted."
   "RELATION decided under the scenario's assumptions: :TRUE, :FALSE or :UNKNOWN."
   (ames.maxima:decide (run-bridge run) relation))
 
+(defun holds (run relation)
+  "True when RELATION is decided :TRUE under the scenario's assumptions (for the
+questions where only :TRUE matters: a numeric counterexample answers them at once)."
+  (ames.maxima:holds-p (run-bridge run) relation))
+
 (defun time-derivative (expression)
   "d EXPRESSION / d TAU."
   (ames.geometry:differentiate expression 'tau))
@@ -312,7 +341,10 @@ up): (values ROOT :FOUND), (values :NONE) or (values :UNKNOWN)."
                (cond ((eq positive :true) 1)
                      ((eq negative :true) -1)
                      ((and (eq positive :false) (eq negative :false)) 0)
-                     ((eq (decide run `(= ,x 0)) :true) 0)
+                     ;; seen positive and negative: not identically 0 (saves a costly =)
+                     ((and (not (ames.maxima:sign-varies-p (run-bridge run) x))
+                           (holds run `(= ,x 0)))
+                      0)
                      (t (return-from quadratic-earliest-root (values :unknown)))))))
       (unless c0 (return-from quadratic-earliest-root (values :unknown)))
       (let ((s0 (sign-of c0)) (s1 (sign-of c1)) (s2 (sign-of c2)))
@@ -338,9 +370,10 @@ up): (values ROOT :FOUND), (values :NONE) or (values :UNKNOWN)."
 (defun earliest-root-after (run g after)
   "The earliest root of G (a function of TAU) strictly after AFTER, through the bridge,
 then, from the start, by QUADRATIC-EARLIEST-ROOT when the bridge cannot decide.
-Returns what AMES.MAXIMA:EARLIEST-ROOT returns."
+Returns what AMES.MAXIMA:EARLIEST-ROOT returns, without the candidates of an undecided
+answer (UNDECIDED-SIGN-FACT asks for them when it needs them)."
   (multiple-value-bind (root status)
-      (ames.maxima:earliest-root (run-bridge run) g 'tau :after after :strictly t)
+      (ames.maxima:earliest-root (run-bridge run) g 'tau :after after :strictly t :candidates nil)
     (if (eq root :unknown)
         (multiple-value-bind (root2 status2)
             (quadratic-earliest-root
@@ -351,11 +384,11 @@ Returns what AMES.MAXIMA:EARLIEST-ROOT returns."
                 (t (values root status))))
         (values root status))))
 
-(defun undecided-sign-fact (run g candidates)
+(defun undecided-sign-fact (run g after)
   "The relation whose truth would settle where the polynomial G in TAU first vanishes:
 the sign of its first coefficient (from the highest degree down) or of its discriminant
 that the assumptions do not decide. When none is found, (:EARLIEST-ROOT-OF (= G 0)
-:CANDIDATES CANDIDATES)."
+:CANDIDATES CANDIDATES), CANDIDATES the roots after AFTER the bridge could not rule out."
   (let* ((d1 (tidy run (time-derivative g) :ratsimp))
          (d2 (tidy run (time-derivative d1) :ratsimp))
          (c0 (tidy run (at-time g 0)))
@@ -367,7 +400,9 @@ that the assumptions do not decide. When none is found, (:EARLIEST-ROOT-OF (= G 
                      (loop for c in (list c2 c1 c0 discriminant)
                            collect `(> ,c 0) collect `(< ,c 0))
                      :key (lambda (fact) (decide run fact)))))
-        `(:earliest-root-of (= ,g 0) :candidates ,candidates))))
+        `(:earliest-root-of (= ,g 0)
+          :candidates ,(nth-value 1 (ames.maxima:earliest-root (run-bridge run) g 'tau
+                                                               :after after :strictly t))))))
 
 (defun first-time-negative (run g)
   "The earliest time TAU >= 0 from which G(TAU) < 0 (G a polynomial in TAU or a
@@ -381,7 +416,7 @@ FACT is the relation the assumptions do not decide."
     (when (free-of-p 'tau g)
       (return-from first-time-negative (values :never)))
     ;; G starts at zero: it goes negative at once when its first non-zero derivative is
-    (when (eq (decide run `(= ,g0 0)) :true)
+    (when (holds run `(= ,g0 0))
       (let ((derivative g))
         (loop repeat 3
               do (setf derivative (tidy run (time-derivative derivative)))
@@ -389,18 +424,16 @@ FACT is the relation the assumptions do not decide."
                    (case (decide run `(< ,d0 0))
                      (:true (return-from first-time-negative (values :at 0)))
                      (:unknown (return-from first-time-negative (values :unknown `(< ,d0 0)))))
-                   (unless (eq (decide run `(= ,d0 0)) :true) (return))))))
-    (multiple-value-bind (root status) (earliest-root-after run g 0)
+                   (unless (holds run `(= ,d0 0)) (return))))))
+    (let ((root (earliest-root-after run g 0)))
       (cond ((eq root :none) (values :never))
             ((eq root :unknown)
-             (values :unknown (undecided-sign-fact run g status)))
+             (values :unknown (undecided-sign-fact run g 0)))
             (t
              (let ((slope (tidy run (at-time (time-derivative g) root))))
                (case (decide run `(< ,slope 0))
                  (:true (values :at (tidy run root :full)))
-                 (:false (if (eq (decide run `(= ,slope 0)) :true)
-                             (values :never) ; touches zero and turns back
-                             (values :never)))
+                 (:false (values :never)) ; rises, or touches zero and turns back
                  (t (values :unknown `(< ,slope 0))))))))))
 
 (defun quantity-over-time (run motions solution term)
@@ -423,9 +456,9 @@ FACT is the relation the assumptions do not decide."
             (dolist (part (rest relation))
               (multiple-value-bind (status value) (relation-firing-time run motions solution part)
                 (case status
-                  (:at (if (or (null best) (eq (decide run `(< ,value ,best)) :true))
+                  (:at (if (or (null best) (holds run `(< ,value ,best)))
                            (setf best value)
-                           (unless (eq (decide run `(<= ,best ,value)) :true)
+                           (unless (holds run `(<= ,best ,value))
                              (setf unknown `(< ,value ,best)))))
                   (:unknown (setf unknown value)))))
             (cond (unknown (values :unknown unknown))
@@ -443,19 +476,22 @@ FACT is the relation the assumptions do not decide."
 (defun stays-negative-p (run h)
   "True when H, a polynomial of degree at most 2 in TAU, is proven negative for every
 TAU > 0: H(0) <= 0, H'(0) <= 0 and H'' <= 0, not all zero. A cheap, sound test that
-rules out a meeting without solving for it; NIL when it does not apply."
+rules out a meeting without solving for it; NIL when it does not apply, at once when H
+is seen to be positive at some TAU > 0 (then no proof exists)."
+  (when (ames.maxima:refuted-p (run-bridge run) `(< ,h 0) :assuming '((> tau 0)))
+    (return-from stays-negative-p nil))
   (let* ((h (tidy run h :ratsimp))
          (d1 (tidy run (time-derivative h) :ratsimp))
          (d2 (tidy run (time-derivative d1) :ratsimp))
          (d3 (tidy run (time-derivative d2) :ratsimp)))
     (and (eql d3 0)
          (let ((h0 (at-time h 0)) (d10 (at-time d1 0)))
-           (and (eq (decide run `(<= ,h0 0)) :true)
-                (eq (decide run `(<= ,d10 0)) :true)
-                (eq (decide run `(<= ,d2 0)) :true)
-                (or (eq (decide run `(< ,h0 0)) :true)
-                    (eq (decide run `(< ,d10 0)) :true)
-                    (eq (decide run `(< ,d2 0)) :true)))))))
+           (and (holds run `(<= ,h0 0))
+                (holds run `(<= ,d10 0))
+                (holds run `(<= ,d2 0))
+                (or (holds run `(< ,h0 0))
+                    (holds run `(< ,d10 0))
+                    (holds run `(< ,d2 0))))))))
 
 (defun contact-meeting-time (run motions contact)
   "When the relative trajectory first meets the potential CONTACT from its exterior:
@@ -479,24 +515,23 @@ approach rate of the gap at that time (negative: a collision; zero: a grazing co
             (values :unknown `(:moves-along-the-locus-of ,contact)))))
     ;; touching at the start and moving in: a collision at once
     (let ((rate0 (tidy run (at-time (ames.geometry:meeting-rate meeting) 0))))
-      (when (and (eq (decide run `(= ,(tidy run (at-time gap 0)) 0)) :true)
-                 (eq (decide run `(< ,rate0 0)) :true)
-                 (every (lambda (r) (eq (decide run (at-time r 0)) :true))
+      (when (and (holds run `(= ,(tidy run (at-time gap 0)) 0))
+                 (holds run `(< ,rate0 0))
+                 (every (lambda (r) (holds run (at-time r 0)))
                         (ames.geometry:meeting-extent meeting)))
         (return-from contact-meeting-time (values :at 0 rate0))))
     ;; a gap already closed at the start is not a meeting: look strictly after the start,
     ;; dividing out TAU so that the bridge sees the lowest degree
     (loop repeat 3
           while (and (not (free-of-p 'tau gap))
-                     (eq (decide run `(= ,(tidy run (at-time gap 0)) 0)) :true))
+                     (holds run `(= ,(tidy run (at-time gap 0)) 0)))
           do (setf gap (tidy run `(/ ,gap tau))))
     (block search
      (loop repeat 4
-          do (multiple-value-bind (root status)
-                 (earliest-root-after run gap after)
+          do (let ((root (earliest-root-after run gap after)))
                (cond ((eq root :none) (return-from search (values :never)))
                      ((eq root :unknown)
-                      (return-from search (values :unknown (undecided-sign-fact run gap status))))
+                      (return-from search (values :unknown (undecided-sign-fact run gap after))))
                      (t
                       (let* ((root (tidy run root :full))
                              (rate (tidy run (at-time (ames.geometry:meeting-rate meeting) root)))
@@ -553,7 +588,7 @@ facts that could not be decided for the others (a list of relations)."
             (:at
              (let ((event
                      (cond ((eq (ames.engine:termination-condition-kind condition) :activation)
-                            (list* (if (eq (decide run `(< ,rate 0)) :true) :collision :contact)
+                            (list* (if (holds run `(< ,rate 0)) :collision :contact)
                                    (contact-bodies run contact)))
                            ((mentions-p 'ames.kb:normal-force relation)
                             (list* :lift-off (contact-bodies run contact)))
@@ -581,8 +616,7 @@ AMBIGUOUS-TRANSITION (restart STOP-SIMULATION) when that cannot be decided."
       (let ((first (find-if (lambda (c)
                               (every (lambda (o)
                                        (or (eq o c)
-                                           (eq (decide run `(<= ,(candidate-time c) ,(candidate-time o)))
-                                               :true)))
+                                           (holds run `(<= ,(candidate-time c) ,(candidate-time o)))))
                                      candidates))
                             candidates)))
         (unless first
@@ -597,7 +631,7 @@ AMBIGUOUS-TRANSITION (restart STOP-SIMULATION) when that cannot be decided."
                            (candidate-time (first candidates))))))
         (remove-if-not (lambda (o)
                          (or (eq o first)
-                             (eq (decide run `(= ,(candidate-time o) ,(candidate-time first))) :true)
+                             (holds run `(= ,(candidate-time o) ,(candidate-time first)))
                              (ames.maxima:equivalent-p (run-bridge run) (candidate-time o)
                                                        (candidate-time first))))
                        candidates)))))
@@ -641,7 +675,7 @@ AMBIGUOUS-TRANSITION (restart STOP-SIMULATION) when that cannot be decided."
 QUALITATIVE-STATE and the fired CANDIDATEs (NIL when the state lasts forever). When
 which event ends it is ambiguous, the AMBIGUOUS-TRANSITION carries the state as far as
 it is known (its model and motion, duration :UNDECIDED)."
-  (let* ((solution (solve-instantaneous-model run equations))
+  (let* ((solution (solve-instantaneous-model run equations (used-quantity-terms run contacts)))
          (motions (polynomial-motions run solution derivative-equations))
          (state (make-instance
                  'qualitative-state
@@ -836,8 +870,8 @@ assumptions decide divided out: (> (* (- l1 l2) (- f k)) 0) with l1 > l2 becomes
           (let ((f (car factor)))
             (cond ((and (realp f) (plusp f)))
                   ((and (realp f) (minusp f)) (setf sign (- sign)))
-                  ((eq (decide run `(> ,f 0)) :true))
-                  ((eq (decide run `(< ,f 0)) :true) (setf sign (- sign)))
+                  ((holds run `(> ,f 0)))
+                  ((holds run `(< ,f 0)) (setf sign (- sign)))
                   (t (push f kept)))))
         (if (or (null kept) (rest kept))
             fact
@@ -1042,7 +1076,8 @@ the section header). Returns the QUALITATIVE-STATE and the fired CANDIDATEs."
          (symbols (list (cons s-term +arc-length+) (cons w-term +arc-speed+)))
          (solution (mapcar (lambda (entry)
                              (cons (car entry) (substitute-expressions symbols (cdr entry))))
-                           (solve-instantaneous-model run equations)))
+                           (solve-instantaneous-model run equations
+                                                      (used-quantity-terms run contacts))))
          (tangential (solution-value solution `(ames.kb:path-acc ,contact :tangential)))
          (normal (solution-value solution `(ames.kb:normal-force ,contact))))
     (destructuring-bind (observer obstacle) (contact-bodies run contact)
@@ -1054,18 +1089,17 @@ the section header). Returns the QUALITATIVE-STATE and the fired CANDIDATEs."
                                                       :initial-position s0 :initial-velocity w0))
                (energy (tidy run (ames.maxima:ode-solution-speed-squared ode)))
                (normal-along (speed-free run normal energy))
-               (direction (let ((sign (decide run `(> ,w0 0))))
-                            (cond ((eq sign :true) 1)
-                                  ((eq (decide run `(< ,w0 0)) :true) -1)
-                                  ((eq (decide run `(> ,(at-arc tangential s0) 0)) :true) 1)
-                                  ((eq (decide run `(< ,(at-arc tangential s0) 0)) :true) -1)
-                                  (t (error 'ambiguous-transition
-                                            :datum w0 :missing-fact `(> ,w0 0) :candidates '()
-                                            :detail "The direction of motion on the curve is not decided.")))))
+               (direction (cond ((holds run `(> ,w0 0)) 1)
+                                ((holds run `(< ,w0 0)) -1)
+                                ((holds run `(> ,(at-arc tangential s0) 0)) 1)
+                                ((holds run `(< ,(at-arc tangential s0) 0)) -1)
+                                (t (error 'ambiguous-transition
+                                          :datum w0 :missing-fact `(> ,w0 0) :candidates '()
+                                          :detail "The direction of motion on the curve is not decided."))))
                (candidates (curved-candidates run contact normal-along s0 direction)))
           (let* ((first (and candidates (first (sort-by-arc run candidates s0 direction))))
                  (s1 (and first (candidate-time first)))
-                 (zero-duration (and s1 (eq (decide run `(= ,s1 ,s0)) :true)))
+                 (zero-duration (and s1 (holds run `(= ,s1 ,s0))))
                  (end-point (and s1 (vec+ (body-position run obstacle)
                                           (ames.geometry:contact-point geometry s1))))
                  (end-speed (and s1 (tidy run `(* ,direction (sqrt ,(at-arc energy s1))))))
@@ -1140,7 +1174,7 @@ the arc length) reaches zero, and the arc's ends."
                    (radius (ames.geometry:contact-radius geometry)))
                (if (and (eq answer :unknown) radius)
                    (let ((turn (tidy run `(/ (- ,s ,s0) ,radius) :ratsimp)))
-                     (if (eq (decide run `(> ,(tidy run `(cos ,turn) :trigexpand) 0)) :true)
+                     (if (holds run `(> ,(tidy run `(cos ,turn) :trigexpand) 0))
                          (decide run `(> (* ,direction ,(tidy run `(sin ,turn) :trigexpand)) 0))
                          :unknown))
                    answer))))

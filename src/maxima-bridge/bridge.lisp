@@ -44,7 +44,11 @@ before the process is killed and replaced.")
    (names :initform (make-instance 'name-table) :reader bridge-names)
    (frames :initform '() :accessor bridge-frames
            :documentation "Active assumption frames, innermost first.")
-   (cache :initform (make-hash-table :test 'equal) :reader bridge-cache)
+   (cache :initform (make-hash-table :test 'equal) :reader bridge-cache
+          :documentation "Answers to requests, and DECIDE's verdicts, under the facts in force.")
+   (excess-names :initform (make-hash-table :test 'equal) :reader bridge-excess-names
+                 :documentation "Variable -> the uninterned symbol DECIDE-BY-ORDER-SUBSTITUTION
+writes its excess over a bound with (see ORDER-EXCESS-NAME).")
    (statistics :initform (make-statistics) :accessor bridge-statistics-record))
   (:documentation "A connection to one persistent Maxima process, started lazily, with
 its name table, assumption scopes, cache and counters. Use a bridge from one thread."))
@@ -70,7 +74,8 @@ program that is not a string."
     (format stream "~A ~:[idle~;running~]" (bridge-program bridge) (bridge-alive-p bridge))))
 
 (defun bridge-statistics (bridge)
-  "A plist of BRIDGE's counters: :CALLS (requests asked of the bridge), :CACHE-HITS,
+  "A plist of BRIDGE's counters: :CALLS (requests asked of the bridge, DECIDE's own
+verdict lookups included), :CACHE-HITS (requests and verdicts answered from the cache),
 :MAXIMA-CALLS (round trips to Maxima), :RESTARTS (processes started), :TIMEOUTS,
 :QUESTIONS, :ERRORS, :MAXIMA-SECONDS (evaluation time measured inside Maxima) and
 :ROUND-TRIP-SECONDS (wall time of the round trips)."
@@ -282,10 +287,10 @@ interrupt does not take). Signals SERVER-GONE when the process ends."
 (defun unmangle-text (bridge text)
   "TEXT (printed by Maxima) with each mangled name replaced by the AMES name it stands for."
   (cl-ppcre:regex-replace-all
-   "(?i)\\$?amesv([a-z]+)" text
+   "(?i)\\$?ames([vx][a-z]+)" text
    (lambda (match letters)
      (multiple-value-bind (name found)
-         (user-name (bridge-names bridge) (wire (concatenate 'string "$AMESV" (string-upcase letters))))
+         (user-name (bridge-names bridge) (wire (concatenate 'string "$AMES" (string-upcase letters))))
        (if found (let ((*print-case* :downcase)) (prin1-to-string name)) match)))
    :simple-calls t))
 

@@ -20,7 +20,7 @@
 ;;;; digits, blanks and ( ) $ % _ . : + -; no # | \ " ' ` , ;). FORM must then pass AMES-VALIDATE
 ;;;; before MEVAL sees it:
 ;;;; every operator and function is on a whitelist, every other symbol is a mangled AMES name
-;;;; ($AMESV<letters> or $AMESCTX<letters>) or one of a few constants, and the only atoms are
+;;;; ($AMESV<letters>, $AMESX<letters> or $AMESCTX<letters>) or one of a few constants, and the only atoms are
 ;;;; integers and floats (no strings, no ratios, no vectors). The bridge builds requests itself
 ;;;; from its own translation, so this check is a second wall, not the first.
 ;;;;
@@ -60,7 +60,8 @@
     $ode2 $ic2 $integrate $diff $substitute $ratsubst $hipow $ratcoef $freeof $num $denom
     $realroots $rhs $lhs
     ;; helpers defined in this file
-    $ames_pop_context $ames_polynomial_coefficients $ames_expression_size)
+    $ames_pop_context $ames_polynomial_coefficients $ames_expression_size
+    $ames_simplification_candidates $ames_trigsimp)
   "The only heads (operators and functions) a request may contain.")
 
 (defvar *ames-allowed-atoms* '(nil t $%pi $%e $all $initial)
@@ -70,7 +71,8 @@
   "Flags that may follow a head in a request, e.g. ((MPLUS SIMP) ...).")
 
 (defun ames-mangled-name-p (symbol)
-  "True for the names the bridge generates: $AMESV<letters> and $AMESCTX<letters>."
+  "True for the names the bridge generates: $AMESV<letters>, $AMESX<letters> and
+$AMESCTX<letters>."
   (let ((name (symbol-name symbol)))
     (flet ((letters-after (prefix)
              (let ((n (length prefix)))
@@ -78,7 +80,7 @@
                     (string= prefix name :end2 n)
                     (every #'(lambda (c) (char<= #\A c #\Z)) (subseq name n))))))
       (and (eq (symbol-package symbol) (find-package :maxima))
-           (or (letters-after "$AMESV") (letters-after "$AMESCTX"))))))
+           (or (letters-after "$AMESV") (letters-after "$AMESX") (letters-after "$AMESCTX"))))))
 
 (defvar *ames-request-pattern* "^[A-Za-z0-9 ()$%_.:+-]*$"
   "The request alphabet, as a regular expression GCL matches in C (SI::STRING-MATCH): far
@@ -164,6 +166,60 @@ coefficients free of VAR and its denominator is free of VAR; false otherwise."
 (defun $ames_expression_size (expr)
   "The number of atoms and operators in EXPR (to pick the simplest of several forms)."
   (if (atom expr) 1 (1+ (reduce #'+ (mapcar #'$ames_expression_size (cdr expr))))))
+
+(defun ames-call (function argument)
+  "FUNCTION(ARGUMENT) evaluated as meval evaluates it in a request, the result simplified
+again; ARGUMENT (already a value) is quoted, so that it is not evaluated twice."
+  (meval (list (list function) (list '(mquote) argument))))
+
+(defun ames-mentions-head-p (form heads)
+  "True when the Maxima FORM contains an operator form whose head is one of HEADS."
+  (and (consp form)
+       (or (and (consp (car form)) (member (caar form) heads))
+           (some #'(lambda (part) (ames-mentions-head-p part heads)) (cdr form)))))
+
+(defun ames-trigonometric-power-p (form)
+  "True when FORM contains a power of sin, cos, sinh or cosh whose exponent is an
+integer of size 2 or more."
+  (and (consp form)
+       (or (and (consp (car form)) (eq (caar form) 'mexpt)
+                (integerp (caddr form)) (>= (abs (caddr form)) 2)
+                (consp (cadr form)) (consp (car (cadr form)))
+                (member (caar (cadr form)) '(%sin %cos %sinh %cosh $sin $cos $sinh $cosh)))
+           (some #'ames-trigonometric-power-p (cdr form)))))
+
+(defun $ames_trigsimp (expr)
+  "trigsimp(EXPR), computed without trigsimp where its code (share/trigonometry/trgsmp.mac)
+is known to reduce to ratsimp(num(r)/denom(r)) with r = ratsimp(EXPR): when EXPR has no
+tan, sec, csc, cot (or their hyperbolic kin), which are all its rules rewrite, and r has
+no power (2 or more) of sin, cos, sinh or cosh, which are all its search works on."
+  (if (ames-mentions-head-p expr '(%tan %sec %csc %cot %tanh %sech %csch %coth
+                                   $tan $sec $csc $cot $tanh $sech $csch $coth))
+      (ames-call '$trigsimp expr)
+      (let ((ratsimped (ames-call '$ratsimp expr)))
+        (if (ames-trigonometric-power-p ratsimped)
+            (ames-call '$trigsimp expr)
+            (meval (list '($ratsimp)
+                         (list '(mquotient)
+                               (list '($num) (list '(mquote) ratsimped))
+                               (list '($denom) (list '(mquote) ratsimped)))))))))
+
+(defun $ames_simplification_candidates (expr trigonometric radicals)
+  "The forms the bridge's simplest-form compares, each computed once (a request listing
+them as separate calls computes ratsimp(EXPR) and trigsimp(EXPR) twice):
+[ratsimp(EXPR), trigsimp(EXPR), ratsimp(trigsimp(EXPR)), factor(ratsimp(EXPR)), radcan(EXPR)],
+trigsimp as $AMES_TRIGSIMP computes it. When TRIGONOMETRIC is false (EXPR has no sin,
+cos or tan, so that trigsimp(EXPR) is ratsimp(EXPR) again), the two trigsimp forms are
+left out; when RADICALS is false (EXPR has no radical, logarithm or power with a
+symbolic or fractional exponent, where radcan(EXPR) is ratsimp(EXPR) again),
+radcan(EXPR) is left out."
+  (let* ((ratsimped (ames-call '$ratsimp expr))
+         (trigsimped (and trigonometric ($ames_trigsimp expr))))
+    (cons '(mlist simp)
+          (append (list ratsimped)
+                  (and trigonometric (list trigsimped (ames-call '$ratsimp trigsimped)))
+                  (list (ames-call '$factor ratsimped))
+                  (and radicals (list (ames-call '$radcan expr)))))))
 
 ;;; The loop.
 

@@ -4,7 +4,9 @@
 ;;;; Maxima gives x(t) explicitly, that is the closed form; when it answers implicitly (an
 ;;;; unevaluated integral, as for the pendulum theta'' = (g/r) sin theta), the bridge falls
 ;;;; back on the energy integral v dv/dx = f(x), i.e. v^2 = v0^2 + 2 (F(x) - F(x0)) with F
-;;;; an antiderivative of f, clearly marked as having no closed form.
+;;;; an antiderivative of f, clearly marked as having no closed form. When f has x inside a
+;;;; trigonometric function (and no velocity), ode2 can only answer implicitly, and is not
+;;;; asked (see NONLINEAR-IN-P).
 
 (in-package #:ames.maxima)
 
@@ -67,7 +69,9 @@ s'' = -k s; assume it first), UNTRANSLATABLE-EXPRESSION, MAXIMA-ERROR, MAXIMA-TI
          (datum (list '= (list 'second-derivative position time) acceleration))
          (speed-squared (and (not uses-velocity)
                              (energy-integral bridge f x x0 v0 datum)))
-         (closed (closed-form bridge f x tm x0 v0 derivative datum)))
+         (closed (and (not (and (not uses-velocity)
+                                (nonlinear-in-p x (maxima-request bridge f :datum datum))))
+                      (closed-form bridge f x tm x0 v0 derivative datum))))
     (cond (closed
            (make-instance 'ode-solution :kind :closed-form
                                         :position (first closed) :velocity (second closed)
@@ -97,6 +101,21 @@ explicitly, else NIL."
                                      :datum datum)))
             (handler-case (mapcar (lambda (form) (from-mx bridge form)) forms)
               (untranslatable-result () nil))))))))
+
+(defun nonlinear-in-p (x form)
+  "True when the simplified Maxima FORM has X inside a trigonometric function (sin, cos,
+tan, asin, acos, atan, atan2). For such an acceleration f(x), with no velocity in it,
+ode2 never gives x(t) explicitly: f is not affine in x, so its linear methods do not
+apply, and its reduction of an equation free of time yields [integral = t + %k2, ...]
+only. Calling it (a third of a second for sin or cos) is then skipped."
+  (labels ((mentions-p (part) (or (eq part x) (and (consp part) (some #'mentions-p (cdr part)))))
+           (walk (part)
+             (and (mform-p part)
+                  (or (and (member (mform-head part)
+                                   (list +sin+ +cos+ +tan+ +asin+ +acos+ +atan+ +atan2+))
+                           (mentions-p part))
+                      (some #'walk (cdr part))))))
+    (walk form)))
 
 (defun contains-head-p (head form)
   "True when the Maxima FORM contains an operator form with HEAD."

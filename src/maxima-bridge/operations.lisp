@@ -2,6 +2,12 @@
 ;;;;
 ;;;; Every operation takes and returns AMES's prefix algebra. The earliest root, the
 ;;;; autonomous ODE, numeric values and LaTeX are in roots.lisp and ode.lisp.
+;;;;
+;;;; Speed: a round trip costs little next to Maxima's own work, so the work is cut, never
+;;;; the answers: sign() requests are asked one at a time until the relation is decided,
+;;;; DECIDE caches its verdicts, steps that give the ratsimp form again (trigsimp without
+;;;; sin, cos or tan; radcan without radicals) are skipped, and numeric witnesses (see
+;;;; their section) answer at once the questions no strategy could decide.
 
 (in-package #:ames.maxima)
 
@@ -31,10 +37,12 @@
   "The strategies SIMPLIFY knows.")
 
 (defun simplification-form (strategy form)
-  "The Maxima request simplifying FORM by STRATEGY (one of :RATSIMP :TRIGSIMP :RADCAN)."
+  "The Maxima request simplifying FORM by STRATEGY (one of :RATSIMP :TRIGSIMP :RADCAN).
+trigsimp is the server's ames_trigsimp: the same answer, without trigsimp's own slow
+search where it is known to be ratsimp's."
   (ecase strategy
     (:ratsimp (mcall "$RATSIMP" form))
-    (:trigsimp (mcall "$TRIGSIMP" form))
+    (:trigsimp (mcall "$AMES_TRIGSIMP" form))
     (:trigexpand (mcall "$RATSIMP" (mcall "$TRIGEXPAND" form)))
     (:radcan (mcall "$RADCAN" form))))
 
@@ -56,16 +64,34 @@ UNTRANSLATABLE-RESULT, MAXIMA-ERROR, MAXIMA-TIMEOUT."
         (from-mx bridge (maxima-request bridge (simplification-form strategy form)
                                         :datum expression)))))
 
+(defun trigonometric-form-p (form)
+  "True when the Maxima FORM contains sin, cos or tan. Without them trigsimp() is
+ratsimp() again (its rules rewrite only tan, sec, csc, cot and squares of sin and cos,
+then it ratsimps), and trigexpand() changes nothing, so those steps can be skipped."
+  (and (consp form)
+       (or (and (mform-p form) (member (mform-head form) (list +sin+ +cos+ +tan+)))
+           (some #'trigonometric-form-p (cdr form)))))
+
+(defun radical-form-p (form)
+  "True when the Maxima FORM has a square root, a logarithm, or a power whose exponent
+is not an integer (a radical, an exponential). Without them radcan() gives the form
+ratsimp() gives (seen on every simplification of the test suite and the scenarios)."
+  (and (consp form)
+       (or (and (mform-p form) (member (mform-head form) (list +sqrt+ +log+)))
+           (and (mform-p form +mexpt+) (not (integerp (third form))))
+           (some #'radical-form-p (cdr form)))))
+
 (defun simplest-form (bridge form expression)
-  "The smallest translatable result of several simplifications of FORM."
-  (let* ((ratsimped (mcall "$RATSIMP" form))
-         (candidates (request-list bridge
-                                   (list ratsimped
-                                         (mcall "$TRIGSIMP" form)
-                                         (mcall "$RATSIMP" (mcall "$TRIGSIMP" form))
-                                         (mcall "$FACTOR" ratsimped)
-                                         (mcall "$RADCAN" form))
-                                   :datum expression))
+  "The smallest translatable result of several simplifications of FORM: ratsimp,
+trigsimp, ratsimp after trigsimp, factor after ratsimp and radcan (the first of equal
+size wins), each computed once in one round trip; the trigsimp ones only when FORM has
+sin, cos or tan, radcan only when it has radicals, logarithms or exponentials (otherwise
+they equal the ratsimp one)."
+  (let* ((candidates (mlist-items
+                      (maxima-request bridge (mcall "$AMES_SIMPLIFICATION_CANDIDATES" form
+                                                    (if (trigonometric-form-p form) +true+ +false+)
+                                                    (if (radical-form-p form) +true+ +false+))
+                                      :datum expression)))
          (best nil))
     (dolist (candidate candidates)
       (let ((translated (handler-case (from-mx bridge candidate)
@@ -83,13 +109,18 @@ ratsimp, by trigsimp (then ratsimp; also after trigexpand, for multiple angles) 
 radcan, under the current assumptions. NIL
 means no proof was found, not that they differ.
 Signals UNTRANSLATABLE-EXPRESSION, MAXIMA-ERROR, MAXIMA-TIMEOUT."
-  (let ((difference (mdifference (to-mx bridge a) (to-mx bridge b)))
-        (datum (list '- a b)))
+  (let* ((difference (mdifference (to-mx bridge a) (to-mx bridge b)))
+         (trigonometric (trigonometric-form-p difference))
+         (datum (list '- a b)))
     (flet ((zero-p (form) (eql 0 (maxima-request bridge form :datum datum))))
+      ;; without sin, cos or tan the trigsimp and trigexpand steps are ratsimp again,
+      ;; and so is radcan without radicals, logarithms or exponentials
       (and (or (zero-p (mcall "$RATSIMP" difference))
-               (zero-p (mcall "$RATSIMP" (mcall "$TRIGSIMP" difference)))
-               (zero-p (mcall "$RATSIMP" (mcall "$TRIGSIMP" (mcall "$TRIGEXPAND" difference))))
-               (zero-p (mcall "$RATSIMP" (mcall "$RADCAN" difference))))
+               (and trigonometric
+                    (or (zero-p (mcall "$RATSIMP" (mcall "$AMES_TRIGSIMP" difference)))
+                        (zero-p (mcall "$RATSIMP" (mcall "$AMES_TRIGSIMP" (mcall "$TRIGEXPAND" difference))))))
+               (and (radical-form-p difference)
+                    (zero-p (mcall "$RATSIMP" (mcall "$RADCAN" difference)))))
            t))))
 
 ;;; Solving equations
@@ -166,7 +197,294 @@ has free parameters or is outside the algebra."
                                                      (let ((part (ames-error-datum c)))
                                                        (and (symbolp part) (string-downcase (symbol-name part))))))))))))
 
+;;; Numeric witnesses: quick proofs that a relation is not decided, or not true
+;;;
+;;; A relation that fails at an admissible point (one that satisfies every fact in force)
+;;; has no sound proof; one that also holds at another admissible point is decided neither
+;;; way, and so is an equation whose sides differ both ways at two admissible points
+;;; joined by a segment of admissible points on which both sides are continuous (they are
+;;; equal somewhere between, by the intermediate value theorem, and not everywhere). DECIDE
+;;; then answers :UNKNOWN at once instead of trying every strategy (the costliest case:
+;;; each strategy fails), and HOLDS-P answers NIL. Points are drawn at random (from a
+;;; fixed seed) within the numeric bounds of each variable; values are computed in double
+;;; floats as balls (center and radius) that enclose the exact value, rounding included,
+;;; and a sign, of the relation or of a fact, counts only when the whole ball has it. A
+;;; point where anything is undefined or not real (a square root or logarithm of a ball
+;;; reaching zero or below, a division by a ball holding zero, a pole of tan, an
+;;; overflow) is left out. Finding no witness proves nothing, and the strategies run as
+;;; before: no answer changes, only its cost (given that every strategy is sound).
+
+(defparameter *witness-draws* 80
+  "How many random points CALL-WITH-ADMISSIBLE-POINTS draws at most.")
+
+(defparameter *witness-admissible-points* 16
+  "How many admissible points CALL-WITH-ADMISSIBLE-POINTS offers at most.")
+
+(defstruct (ball (:constructor make-ball (center radius)))
+  "A real number known to lie within RADIUS of CENTER (double floats)."
+  center radius)
+
+(defun rounded-ball (center radius)
+  "The ball CENTER +/- RADIUS widened by the rounding of computing CENTER."
+  (make-ball center (+ radius (* 8 double-float-epsilon (abs center)) least-positive-normalized-double-float)))
+
+(defun ball-sign (ball)
+  ":POSITIVE or :NEGATIVE when every number of BALL has that sign, else NIL."
+  (cond ((> (- (ball-center ball) (ball-radius ball)) 0) :positive)
+        ((< (+ (ball-center ball) (ball-radius ball)) 0) :negative)
+        (t nil)))
+
+(defun ball+ (a b)
+  (rounded-ball (+ (ball-center a) (ball-center b)) (+ (ball-radius a) (ball-radius b))))
+
+(defun ball-negation (a)
+  (make-ball (- (ball-center a)) (ball-radius a)))
+
+(defun ball* (a b)
+  (let ((x (ball-center a)) (rx (ball-radius a)) (y (ball-center b)) (ry (ball-radius b)))
+    (rounded-ball (* x y) (+ (* (abs x) ry) (* (abs y) rx) (* rx ry)))))
+
+(defun ball-reciprocal (a)
+  "1/A, or NIL when A may hold zero."
+  (let ((x (ball-center a)) (rx (ball-radius a)))
+    (when (> (abs x) rx)
+      (rounded-ball (/ 1 x) (/ rx (* (abs x) (- (abs x) rx)))))))
+
+(defun ball-integer-power (a n)
+  "A^N for an integer N (NIL when N <= 0 and A may hold zero: 0^0 is undefined too)."
+  (cond ((and (zerop n) (<= (abs (ball-center a)) (ball-radius a))) nil)
+        ((minusp n) (let ((power (ball-integer-power a (- n))))
+                      (and power (ball-reciprocal power))))
+        (t (let ((result (make-ball 1d0 0d0)))
+             (dotimes (i n result) (setf result (ball* result a)))))))
+
+(defun positive-ball-p (a)
+  (> (- (ball-center a) (ball-radius a)) 0))
+
+(defun ball-function (operator a)
+  "OPERATOR (sqrt exp log sin cos tan asin acos atan) of the ball A, or NIL where it is
+undefined or not real somewhere in A."
+  (let ((x (ball-center a)) (rx (ball-radius a)))
+    (ecase operator
+      (sqrt (cond ((and (zerop x) (zerop rx)) (make-ball 0d0 0d0))
+                  ((>= (- x rx) 0)
+                   (rounded-ball (sqrt x) (- (sqrt x) (sqrt (max 0d0 (- x rx))))))))
+      (exp (rounded-ball (exp x) (* (exp x) (- (exp rx) 1))))
+      (log (when (positive-ball-p a)
+             (rounded-ball (log x) (- (log x) (log (- x rx))))))
+      (sin (rounded-ball (sin x) (min rx 2d0)))
+      (cos (rounded-ball (cos x) (min rx 2d0)))
+      (tan (let ((c (cos x)))
+             (when (> (abs c) (+ rx 1d-12))
+               (rounded-ball (tan x) (/ rx (expt (- (abs c) rx) 2))))))
+      ((asin acos) (when (< (+ (abs x) rx) 1)
+                     (rounded-ball (if (eq operator 'asin) (asin x) (acos x))
+                                   (/ rx (sqrt (- 1 (expt (+ (abs x) rx) 2)))))))
+      (atan (rounded-ball (atan x) (min rx pi))))))
+
+(defun ball-atan2 (y x)
+  "The angle of (X, Y) in (-pi, pi], or NIL when the balls reach the origin or the
+negative x axis, where it is not continuous."
+  (let ((cy (ball-center y)) (ry (ball-radius y)) (cx (ball-center x)) (rx (ball-radius x)))
+    (let ((distance (- (sqrt (+ (* cx cx) (* cy cy))) rx ry)))
+      (when (and (> distance 0) (or (> (- cx rx) 0) (> (abs cy) ry)))
+        (rounded-ball (atan cy cx) (/ (+ rx ry) distance))))))
+
+(defun expression-ball (expression point)
+  "The ball enclosing the value of the arithmetic EXPRESSION at POINT (an alist subject ->
+double float, or -> ball for a whole box of points), or NIL where it is undefined or not
+real somewhere."
+  (labels ((fail () (return-from expression-ball nil))
+           (value (x)
+             (cond ((rationalp x) (let ((d (coerce x 'double-float)))
+                                    (rounded-ball d 0d0)))
+                   ((floatp x) (make-ball (coerce x 'double-float) 0d0))
+                   ((constant-symbol-p x) (rounded-ball pi 0d0))
+                   ((or (variable-symbol-p x) (quantity-term-p x))
+                    (let ((entry (assoc x point :test #'equal)))
+                      (cond ((null entry) (fail))
+                            ((ball-p (cdr entry)) (cdr entry))
+                            (t (make-ball (cdr entry) 0d0)))))
+                   (t (let ((arguments (mapcar #'value (expression-arguments x))))
+                        (or (case (expression-operator x)
+                              (+ (reduce #'ball+ arguments))
+                              (- (if (rest arguments)
+                                     (reduce #'ball+ (mapcar #'ball-negation (rest arguments))
+                                             :initial-value (first arguments))
+                                     (ball-negation (first arguments))))
+                              (* (reduce #'ball* arguments))
+                              (/ (if (rest arguments)
+                                     (reduce (lambda (a b) (let ((r (ball-reciprocal b)))
+                                                             (if r (ball* a r) (fail))))
+                                             (rest arguments) :initial-value (first arguments))
+                                     (ball-reciprocal (first arguments))))
+                              (expt (let ((exponent (third x)))
+                                      (if (and (integerp exponent) (<= (abs exponent) 64))
+                                          (ball-integer-power (first arguments) exponent)
+                                          ;; a^b = exp(b log a), for a > 0 only
+                                          (let ((logarithm (ball-function 'log (first arguments))))
+                                            (and logarithm
+                                                 (ball-function 'exp (ball* (second arguments) logarithm)))))))
+                              (atan (if (rest arguments)
+                                        (ball-atan2 (first arguments) (second arguments))
+                                        (ball-function 'atan (first arguments))))
+                              (t (ball-function (expression-operator x) (first arguments))))
+                            (fail)))))))
+    (handler-case (value expression)
+      (arithmetic-error () nil))))
+
+(defun condition-truth (condition point)
+  "Whether the relation or logical CONDITION surely holds at POINT: :TRUE, :FALSE, or NIL
+when that is not sure (= is never sure)."
+  (case (expression-operator condition)
+    (not (case (condition-truth (second condition) point) (:true :false) (:false :true)))
+    (and (let ((truths (mapcar (lambda (c) (condition-truth c point)) (expression-arguments condition))))
+           (cond ((member :false truths) :false) ((every (lambda (x) (eq x :true)) truths) :true))))
+    (or (let ((truths (mapcar (lambda (c) (condition-truth c point)) (expression-arguments condition))))
+          (cond ((member :true truths) :true) ((every (lambda (x) (eq x :false)) truths) :false))))
+    (t (let* ((difference (expression-ball (list '- (relation-lhs condition) (relation-rhs condition)) point))
+              (sign (and difference (ball-sign difference))))
+         (when sign
+           (ecase (expression-operator condition)
+             ((> >=) (if (eq sign :positive) :true :false))
+             ((< <=) (if (eq sign :negative) :true :false))
+             (/= :true)
+             (= :false)))))))
+
+(defun random-value (interval random-state)
+  "A random double float within INTERVAL ((LOWER . UPPER) of BOUNDs, either NIL), away
+from its ends; log-uniform in size over four decades where a side is open-ended."
+  (let ((lower (and (car interval) (bound-value (car interval))))
+        (upper (and (cdr interval) (bound-value (cdr interval))))
+        (size (expt 10d0 (- (random 4d0 random-state) 2))))
+    (cond ((and lower upper) (+ lower (* (- upper lower) (+ 0.02d0 (random 0.96d0 random-state)))))
+          (lower (+ lower size))
+          (upper (- upper size))
+          ((zerop (random 2 random-state)) size)
+          (t (- size)))))
+
+(defun call-with-admissible-points (bridge relation function &optional assuming)
+  "Call FUNCTION on random points (alists subject -> double float, over the subjects of
+RELATION and of the facts in force) that surely satisfy the facts in force and the
+facts ASSUMING, until it returns true or the limits (*WITNESS-DRAWS*,
+*WITNESS-ADMISSIBLE-POINTS*) are reached. Returns the flattened facts."
+  (let* ((facts (flatten-facts (append (current-assumptions bridge) assuming)))
+         (intervals (subject-intervals facts))
+         (subjects (remove-duplicates (append (expression-variables relation)
+                                              (mapcan #'expression-variables facts))
+                                      :test #'equal))
+         (random-state (sb-ext:seed-random-state 1994))
+         (admissible 0))
+    (loop repeat *witness-draws*
+          while (< admissible *witness-admissible-points*)
+          do (let ((point (mapcar (lambda (subject)
+                                    (cons subject (random-value (cdr (assoc subject intervals :test #'equal))
+                                                                random-state)))
+                                  subjects)))
+               (when (every (lambda (fact) (eq (condition-truth fact point) :true)) facts)
+                 (incf admissible)
+                 (when (funcall function point) (return)))))
+    facts))
+
+(defun relation-witnesses (bridge relation)
+  "Two points that surely satisfy the facts in force, RELATION (an inequality) surely
+holding at the first and surely failing at the second, as (values HOLDS FAILS FACTS):
+alists subject -> double float, and the facts (flattened). NIL when none are found."
+  (let ((holds nil) (fails nil))
+    (let ((facts (call-with-admissible-points
+                  bridge relation
+                  (lambda (point)
+                    (case (condition-truth relation point)
+                      (:true (unless holds (setf holds point)))
+                      (:false (unless fails (setf fails point))))
+                    (and holds fails)))))
+      (and holds fails (values holds fails facts)))))
+
+(defun relation-refuted-p (bridge relation &optional assuming)
+  "True when the condition RELATION surely fails at a point that surely satisfies the
+facts in force and the facts ASSUMING: then no sound strategy proves it under them."
+  (let ((refuted nil))
+    (call-with-admissible-points bridge relation
+                                 (lambda (point)
+                                   (setf refuted (eq (condition-truth relation point) :false)))
+                                 assuming)
+    refuted))
+
+(defun witnessed-both-ways-p (bridge relation)
+  "True when the inequality RELATION (< > <= >=) surely holds at one point that surely
+satisfies the facts in force, and surely fails at another: then it is not decided."
+  (and (relation-witnesses bridge relation) t))
+
+(defparameter *segment-pieces* 256
+  "How many pieces of a segment CONTINUOUS-AND-ADMISSIBLE-BETWEEN-P may evaluate at most.")
+
+(defun segment-piece (from to start end)
+  "The point whose subjects are balls enclosing the points FROM + s (TO - FROM) for s in
+[START, END] (FROM and TO alists subject -> double float)."
+  (mapcar (lambda (entry)
+            (let* ((a (cdr entry))
+                   (b (cdr (assoc (car entry) to :test #'equal)))
+                   (middle (/ (+ start end) 2)))
+              (cons (car entry) (rounded-ball (+ a (* (- b a) middle))
+                                              (* (abs (- b a)) (/ (- end start) 2))))))
+          from))
+
+(defun continuous-and-admissible-between-p (expression facts from to)
+  "True when, on the whole segment between the points FROM and TO, every fact of FACTS
+surely holds and the arithmetic EXPRESSION is surely defined and real, hence
+continuous: checked on pieces of the segment, as balls, halving a piece that is not
+sure. With EXPRESSION positive at one end and negative at the other, it then vanishes
+at an admissible point in between."
+  (let ((pending (list (cons 0d0 1d0))) (budget *segment-pieces*))
+    (loop while pending
+          do (destructuring-bind (start . end) (pop pending)
+               (when (minusp (decf budget)) (return-from continuous-and-admissible-between-p nil))
+               (let ((piece (segment-piece from to start end)))
+                 (unless (and (expression-ball expression piece)
+                              (every (lambda (fact) (eq (condition-truth fact piece) :true)) facts))
+                   (let ((middle (/ (+ start end) 2)))
+                     (push (cons start middle) pending)
+                     (push (cons middle end) pending))))))
+    t))
+
+(defun holds-p (bridge relation)
+  "True when DECIDE answers :TRUE for RELATION (a relation or a logical form), found
+faster where it does not: a point that surely satisfies the facts in force and surely
+violates RELATION settles it without asking Maxima, since no sound strategy proves a
+relation that fails somewhere (see RELATION-REFUTED-P). For callers that act only on
+:TRUE. Signals what DECIDE signals."
+  (check-translatable relation :condition)
+  (multiple-value-bind (verdict found) (gethash (verdict-key bridge relation) (bridge-cache bridge))
+    (cond (found (eq verdict :true))
+          ((relation-refuted-p bridge relation) nil)
+          (t (eq (decide bridge relation) :true)))))
+
+(defun refuted-p (bridge relation &key assuming)
+  "True when RELATION (a relation or a logical form of the algebra) is seen to fail at a
+point that satisfies the facts in force and the facts ASSUMING (e.g. ((> tau 0))): then
+it does not follow from them, and no sound proof of it exists. NIL proves nothing. Asks
+Maxima nothing. Signals UNTRANSLATABLE-EXPRESSION for a RELATION or fact outside the
+algebra."
+  (check-translatable relation :condition)
+  (dolist (fact assuming) (check-translatable fact :condition))
+  (relation-refuted-p bridge relation assuming))
+
+(defun sign-varies-p (bridge expression)
+  "True when the arithmetic EXPRESSION is seen to be positive at one point that satisfies
+the facts in force and negative at another: then no relation of EXPRESSION with 0 is
+decided, and EXPRESSION is not identically 0. NIL proves nothing. Asks Maxima nothing.
+Signals UNTRANSLATABLE-EXPRESSION for an EXPRESSION outside the algebra."
+  (check-translatable expression :arithmetic)
+  (witnessed-both-ways-p bridge (list '> expression 0)))
+
 ;;; Deciding relations
+
+(defvar *substituting-orders* nil
+  "True while DECIDE-BY-ORDER-SUBSTITUTION works, so that it does not recurse.")
+
+(defvar *sides-differ* nil
+  "True while DECIDE-RELATION works on an equation (or, in DECIDE-BY-ORDER-SUBSTITUTION,
+on its rewriting) whose sides were seen to differ both ways at admissible points.")
 
 (defparameter *sign-sets*
   '(("$POS" :positive) ("$NEG" :negative) ("$ZERO" :zero) ("$PZ" :positive :zero)
@@ -179,13 +497,20 @@ has free parameters or is outside the algebra."
       (list :positive :negative :zero)))
 
 (defun sign-requests (form)
-  "The sign() requests whose answers together bound the sign of the Maxima FORM: FORM
-itself, factor(ratsimp(FORM)), factorsum(FORM) (which groups terms, e.g.
-2 acc l - 2 acc x0 into 2 acc (l - x0)) and trigsimp(FORM)."
+  "The sign() requests whose answers together bound the sign of the Maxima FORM,
+cheapest first: FORM itself, factor(ratsimp(FORM)), factorsum(FORM) (which groups
+terms, e.g. 2 acc l - 2 acc x0 into 2 acc (l - x0)) and trigsimp(FORM) (ratsimp(FORM)
+when FORM has no sin, cos or tan, for which trigsimp gives the same form, slower)."
   (list (mcall "$SIGN" form)
         (mcall "$SIGN" (mcall "$FACTOR" (mcall "$RATSIMP" form)))
         (mcall "$SIGN" (mcall "$FACTORSUM" form))
-        (mcall "$SIGN" (mcall "$TRIGSIMP" form))))
+        (mcall "$SIGN" (if (trigonometric-form-p form)
+                           (mcall "$AMES_TRIGSIMP" form)
+                           (mcall "$RATSIMP" form)))))
+
+(defun narrowed-signs (signs answer)
+  "SIGNS (a list of :POSITIVE :NEGATIVE :ZERO) narrowed by Maxima's sign ANSWER."
+  (if (symbolp answer) (intersection signs (sign-set answer)) signs))
 
 (defun forms-signs (bridge forms &key datum)
   "For each of the real Maxima FORMS, the signs (:POSITIVE :NEGATIVE :ZERO) it may have
@@ -194,14 +519,20 @@ SIGN-REQUESTS). One round trip."
   (let* ((count (length (sign-requests 0)))
          (answers (request-list bridge (mapcan #'sign-requests forms) :datum datum)))
     (loop for rest on answers by (lambda (list) (nthcdr count list))
-          collect (let ((signs (list :positive :negative :zero)))
-                    (dolist (answer (subseq rest 0 count) signs)
-                      (when (symbolp answer)
-                        (setf signs (intersection signs (sign-set answer)))))))))
+          collect (reduce #'narrowed-signs (subseq rest 0 count)
+                          :initial-value (list :positive :negative :zero)))))
 
-(defun form-signs (bridge form &key datum)
-  "The signs the real Maxima FORM may have under the current assumptions (see FORMS-SIGNS)."
-  (first (forms-signs bridge (list form) :datum datum)))
+(defun form-signs (bridge form &key datum (enough (constantly nil)))
+  "The signs the real Maxima FORM may have under the current assumptions: what the
+answers to SIGN-REQUESTS allow together. They are asked one at a time, cheapest first
+(each answer cached on its own), and the asking stops once at most one sign is left or
+ENOUGH, a predicate on the signs found so far, is true; further answers could only
+narrow the signs (an empty intersection would mean contradictory answers)."
+  (let ((signs (list :positive :negative :zero)))
+    (dolist (request (sign-requests form) signs)
+      (setf signs (narrowed-signs signs (maxima-request bridge request :datum datum)))
+      (when (or (null (rest signs)) (funcall enough signs))
+        (return signs)))))
 
 (defun square-root-kernel (form)
   "Some subform sqrt(A) = ((MEXPT) A 1/2) of the Maxima FORM, or NIL."
@@ -281,8 +612,12 @@ is there or the form is not linear in it."
                (/= (cond ((none :zero) :true) ((only :zero) :false) (t :unknown))))))))
 
 (defun decide-relation (bridge relation)
-  "The truth of one RELATION (= /= < > <= >=) under the current assumptions."
+  "The truth of one RELATION (= /= < > <= >=) under the current assumptions: is(), then
+numeric witnesses that no strategy can decide it (see RELATION-WITNESSES), then the
+signs of the difference of its sides, after clearing a square root, equivalence (for =
+and /=), and the order substitution."
   (let* ((operator (expression-operator relation))
+         (equation (member operator '(= /=)))
          (lhs (to-mx bridge (relation-lhs relation)))
          (rhs (to-mx bridge (relation-rhs relation)))
          (question (case operator
@@ -290,21 +625,39 @@ is there or the form is not linear in it."
                      (/= (mform +notequal+ lhs rhs))
                      (t (mform (cdr (assoc operator *relation-heads*)) lhs rhs))))
          (verdict (maxima-truth (maxima-request bridge (mcall "$IS" question) :datum relation))))
-    (when (eq verdict :unknown)
-      (setf verdict (relation-verdict operator (form-signs bridge (mdifference lhs rhs)
-                                                           :datum relation))))
-    (when (eq verdict :unknown)
-      (let ((signs (radical-signs bridge (mdifference lhs rhs) :datum relation)))
-        (when signs (setf verdict (relation-verdict operator signs)))))
-    (when (and (eq verdict :unknown) (member operator '(= /=))
-               (equivalent-p bridge (relation-lhs relation) (relation-rhs relation)))
-      (setf verdict (if (eq operator '=) :true :false)))
-    (when (eq verdict :unknown)
-      (setf verdict (decide-by-order-substitution bridge relation)))
-    verdict))
-
-(defvar *substituting-orders* nil
-  "True while DECIDE-BY-ORDER-SUBSTITUTION works, so that it does not recurse.")
+    (unless (eq verdict :unknown)
+      (return-from decide-relation verdict))
+    ;; an inequality seen to hold at one admissible point and to fail at another, or an
+    ;; equation whose sides cross between two such points, is decided by no strategy
+    (multiple-value-bind (holds fails facts)
+        (and (not *substituting-orders*)
+             (relation-witnesses bridge (if equation
+                                            (list '> (relation-lhs relation) (relation-rhs relation))
+                                            relation)))
+      (when (and holds
+                 (or (not equation)
+                     (continuous-and-admissible-between-p
+                      (list '- (relation-lhs relation) (relation-rhs relation)) facts holds fails)))
+        (return-from decide-relation :unknown))
+      ;; the signs are asked for only until they decide the relation
+      (setf verdict (relation-verdict operator
+                                      (form-signs bridge (mdifference lhs rhs)
+                                                  :datum relation
+                                                  :enough (lambda (signs)
+                                                            (not (eq (relation-verdict operator signs)
+                                                                     :unknown))))))
+      (when (eq verdict :unknown)
+        (let ((signs (radical-signs bridge (mdifference lhs rhs) :datum relation)))
+          (when signs (setf verdict (relation-verdict operator signs)))))
+      ;; sides seen to differ both ways are not equal: equivalence cannot be proven,
+      ;; here nor after the order substitution
+      (let ((*sides-differ* (or *sides-differ* (and equation holds t))))
+        (when (and (eq verdict :unknown) equation (not *sides-differ*)
+                   (equivalent-p bridge (relation-lhs relation) (relation-rhs relation)))
+          (setf verdict (if (eq operator '=) :true :false)))
+        (when (eq verdict :unknown)
+          (setf verdict (decide-by-order-substitution bridge relation))))
+      verdict)))
 
 (defun order-facts (bridge relation)
   "The facts in force that order a variable V of RELATION against an expression E free of
@@ -343,11 +696,24 @@ V is some E +/- D. :UNKNOWN when there is no such fact."
                          finally (return :unknown))
                    verdict))))))
 
+(defun order-excess-name (bridge variable)
+  "The fresh variable D standing for the excess of VARIABLE over its bound (V = E + D or
+E - D) in DECIDE-BY-ORDER-SUBSTITUTION: an uninterned symbol, so no user name can be
+it, and the same one each time for a VARIABLE of BRIDGE, so that the rewritten requests
+are answered from the cache when they come again."
+  (let ((table (bridge-excess-names bridge)))
+    (or (gethash variable table)
+        (let ((excess (make-symbol (format nil "~A-EXCESS" variable))))
+          ;; named apart from the algebra's variables ($AMESX...), so that it takes none
+          ;; of their letters
+          (maxima-name (bridge-names bridge) excess "$AMESX")
+          (setf (gethash (copy-tree variable) table) excess)))))
+
 (defun decide-with-orders (bridge relation orders)
   "DECIDE-BY-ORDER-SUBSTITUTION's work for the given ORDERS (see ORDER-FACTS)."
   (let* ((*substituting-orders* t)
          (deltas (loop for order in orders
-                       collect (make-symbol (format nil "~A-EXCESS" (first order)))))
+                       collect (order-excess-name bridge (first order))))
          (bindings (loop for (variable base sign) in orders
                          for delta in deltas
                          collect (cons variable (list '+ base (list '* sign delta)))))
@@ -371,9 +737,26 @@ V is some E +/- D. :UNKNOWN when there is no such fact."
 current assumptions: :TRUE, :FALSE or :UNKNOWN. Uses Maxima's is(), then the sign of the
 difference of the two sides in several simplified forms, then the same after clearing a
 square root (so that roots of quadratics can be compared); connectives are combined in
-three-valued logic.
+three-valued logic. Verdicts are cached under the facts in force, like requests.
 Signals UNTRANSLATABLE-EXPRESSION, MAXIMA-ERROR, MAXIMA-TIMEOUT."
   (check-translatable relation :condition)
+  (let* ((cache (bridge-cache bridge))
+         (key (verdict-key bridge relation))
+         (record (bridge-statistics-record bridge)))
+    (multiple-value-bind (verdict found) (gethash key cache)
+      (incf (statistics-calls record))
+      (if found
+          (progn (incf (statistics-cache-hits record)) verdict)
+          (let ((verdict (decide-uncached bridge relation)))
+            (when (>= (hash-table-count cache) *cache-limit*) (clrhash cache))
+            (setf (gethash (copy-tree key) cache) verdict))))))
+
+(defun verdict-key (bridge relation)
+  "The key of DECIDE's verdict on RELATION in BRIDGE's cache, under the facts in force."
+  (list* :decide *substituting-orders* relation (assumption-key bridge)))
+
+(defun decide-uncached (bridge relation)
+  "DECIDE's work, without its cache of verdicts."
   (labels ((verdict (condition)
              (case (expression-operator condition)
                (not (ecase (verdict (second condition))

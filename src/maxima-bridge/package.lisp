@@ -11,7 +11,7 @@ only by this package's own translation (see translation.lisp and maxima-server.l
    #:bridge #:make-bridge #:close-bridge #:bridge-timeout #:bridge-alive-p #:bridge-process-id
    #:bridge-statistics #:reset-bridge-statistics #:clear-bridge-cache
    ;; operations
-   #:simplify #:solve-equations #:decide #:equivalent-p
+   #:simplify #:solve-equations #:decide #:holds-p #:equivalent-p #:sign-varies-p #:refuted-p
    #:call-with-assumptions #:with-assumptions #:current-assumptions
    #:earliest-root
    #:solve-autonomous-ode #:ode-solution #:ode-solution-kind #:ode-solution-position

@@ -31,8 +31,9 @@
 
 (defstruct (root-search (:conc-name search-))
   "What EARLIEST-ROOT knows while it works: the bridge, the original expression (for
-conditions), the shift, and whether the root must lie strictly after it."
-  bridge expression after-form strictly)
+conditions), the shift, whether the root must lie strictly after it, and whether the
+candidates of an undecided answer are wanted."
+  bridge expression after-form strictly (candidates t))
 
 (defun root-expression (search offset)
   "The root AFTER + OFFSET (OFFSET a Maxima form), simplified, in prefix algebra."
@@ -51,18 +52,35 @@ conditions), the shift, and whether the root must lie strictly after it."
   (values (root-expression search offset) :found))
 
 (defun unknown (search offsets)
-  (values :unknown (root-candidates search offsets)))
+  (values :unknown (and (search-candidates search) (root-candidates search offsets))))
 
 (defun signs-of (search form)
   (form-signs (search-bridge search) form :datum (search-expression search)))
 
-(defun earliest-root (bridge expression variable &key (after 0) (strictly t))
+(defun mixed-signs-p (search form)
+  "True when the Maxima FORM is seen positive at one admissible point and negative at
+another (see WITNESSED-BOTH-WAYS-P): its signs include :POSITIVE and :NEGATIVE."
+  (let ((expression (handler-case (from-mx (search-bridge search) form)
+                      (untranslatable-result () nil))))
+    (and expression
+         (witnessed-both-ways-p (search-bridge search) (list '> expression 0)))))
+
+(defun sign-pattern-of (search form)
+  "The signs of FORM, for the tests that only ask whether they lie within a set that
+lacks :POSITIVE or :NEGATIVE (ONLY, ROOT-VERDICT): all three, without asking Maxima,
+when FORM is seen to take both signs, else SIGNS-OF. Not for tests of :ZERO alone."
+  (if (mixed-signs-p search form)
+      (list :positive :negative :zero)
+      (signs-of search form)))
+
+(defun earliest-root (bridge expression variable &key (after 0) (strictly t) (candidates t))
   "The earliest real root of EXPRESSION = 0 in VARIABLE greater than AFTER (or equal to
 it, when STRICTLY is false), proven earliest under the current assumptions. Returns
   (values ROOT :FOUND)          the proven earliest root (prefix algebra);
   (values :NONE NIL)            proven: no real root after AFTER;
   (values :UNKNOWN CANDIDATES)  not decided; CANDIDATES are the roots Maxima found that
-                                could not be ruled out (possibly none).
+                                could not be ruled out (possibly none), simplified;
+                                NIL when CANDIDATES is false (they are costly).
 Polynomials of degree at most 2 are decided through the signs of the product and sum
 of their roots and of their discriminant; other polynomials through solve() and
 pairwise comparison (numeric ones through Sturm sequences, realroots(), giving a
@@ -84,7 +102,8 @@ depending on VARIABLE), MAXIMA-ERROR, MAXIMA-TIMEOUT."
          (offset-variable (to-mx bridge variable))
          (form (to-mx bridge shifted))
          (search (make-root-search :bridge bridge :expression expression
-                                   :after-form (to-mx bridge after) :strictly strictly))
+                                   :after-form (to-mx bridge after) :strictly strictly
+                                   :candidates candidates))
          (coefficients (maxima-request bridge (mcall "$AMES_POLYNOMIAL_COEFFICIENTS"
                                                      form offset-variable)
                                        :datum expression)))
@@ -110,7 +129,7 @@ depending on VARIABLE), MAXIMA-ERROR, MAXIMA-TIMEOUT."
     (let ((offset (mform +mtimes+ -1 (mquotient c0 c1))))
       (if (member :zero (signs-of search c1))
           (unknown search (list offset))
-          (ecase (root-verdict (signs-of search offset) (search-strictly search))
+          (ecase (root-verdict (sign-pattern-of search offset) (search-strictly search))
             (:yes (found search offset))
             (:no (values :none nil))
             (:maybe (unknown search (list offset))))))))
@@ -129,7 +148,7 @@ and the reduced discriminant S^2/4 - P: the roots are S/2 -+ sqrt(S^2/4 - P)."
            (root-of-discriminant (mform +mexpt+ discriminant (mform +rat+ 1 2)))
            (larger (mform +mplus+ half-sum root-of-discriminant))
            (smaller (mdifference half-sum root-of-discriminant))
-           (product-signs (signs-of search product))
+           (product-signs (sign-pattern-of search product))
            (strictly (search-strictly search)))
       (flet ((only (signs &rest allowed) (and signs (subsetp signs allowed))))
         (cond
@@ -139,16 +158,16 @@ and the reduced discriminant S^2/4 - P: the roots are S/2 -+ sqrt(S^2/4 - P)."
           ((equal product-signs '(:zero))
            (if (not strictly)
                (found search 0)
-               (ecase (root-verdict (signs-of search sum) t)
+               (ecase (root-verdict (sign-pattern-of search sum) t)
                  (:yes (found search sum))
                  (:no (values :none nil))
                  (:maybe (unknown search (list sum))))))
           ;; Roots of the same sign (or complex): both before the start when S <= 0.
           ((only product-signs :positive)
-           (let ((sum-signs (signs-of search sum)))
+           (let ((sum-signs (sign-pattern-of search sum)))
              (cond ((only sum-signs :negative :zero) (values :none nil))
                    ((only sum-signs :positive)
-                    (let ((discriminant-signs (signs-of search discriminant)))
+                    (let ((discriminant-signs (sign-pattern-of search discriminant)))
                       (cond ((only discriminant-signs :negative) (values :none nil))
                             ((only discriminant-signs :positive :zero) (found search smaller))
                             (t (unknown search (list smaller larger))))))
@@ -169,14 +188,21 @@ miss roots and nothing is proven)."
                          when (and (mform-p item +mequal+) (eq (second item) offset-variable))
                            collect (third item)))
          (complete (and coefficients (= (length explicit) (length items))))
+         (numeric (and coefficients (every #'numeric-form-p coefficients)))
          (proven '()) (undecided '()))
-    (dolist (offset explicit)
-      (if (contains-symbol-p +i+ offset)
-          (push offset undecided)
-          (ecase (root-verdict (signs-of search offset) strictly)
-            (:yes (push offset proven))
-            (:no)
-            (:maybe (push offset undecided)))))
+    (flet ((undecided-anyway ()
+             ;; the answer is :UNKNOWN whatever the other roots are: without candidates
+             ;; wanted, their signs need not be asked
+             (when (and (not numeric) (not (search-candidates search)))
+               (return-from solved-earliest-root (values :unknown nil)))))
+      (unless complete (undecided-anyway))
+      (dolist (offset explicit)
+        (if (contains-symbol-p +i+ offset)
+            (progn (push offset undecided) (undecided-anyway))
+            (ecase (root-verdict (sign-pattern-of search offset) strictly)
+              (:yes (push offset proven))
+              (:no)
+              (:maybe (push offset undecided) (undecided-anyway))))))
     (setf proven (nreverse proven) undecided (nreverse undecided))
     (cond
       ((and complete (null undecided))
@@ -185,12 +211,12 @@ miss roots and nothing is proven)."
            (let ((earliest (find-if (lambda (candidate)
                                       (every (lambda (other)
                                                (or (eq other candidate)
-                                                   (subsetp (signs-of search (mdifference other candidate))
+                                                   (subsetp (sign-pattern-of search (mdifference other candidate))
                                                             '(:positive :zero))))
                                              proven))
                                     proven)))
              (if earliest (found search earliest) (unknown search proven)))))
-      ((and coefficients (every #'numeric-form-p coefficients))
+      (numeric
        (numeric-earliest-root search form offset-variable))
       (t (unknown search (append proven undecided))))))
 

@@ -83,7 +83,10 @@
             :documentation "User name (variable or quantity term) -> wire symbol.")
    (backward :initform (make-hash-table :test 'eq) :reader name-table-backward
              :documentation "Wire symbol -> user name.")
-   (count :initform 0 :accessor name-table-count))
+   (counts :initform (make-hash-table :test 'equal) :reader name-table-counts
+           :documentation "Prefix -> how many names with that prefix have been made. Each
+kind of name is counted apart, so that a variable's name, and with it Maxima's order of
+terms, does not depend on how many assumption scopes or auxiliary names came before."))
   (:documentation "The one-to-one map between AMES's names and the fresh Maxima names
 that stand for them. Kept by one bridge for its lifetime."))
 
@@ -96,15 +99,17 @@ that stand for them. Kept by one bridge for its lifetime."))
     (coerce letters 'string)))
 
 (defun fresh-wire-name (prefix table)
-  "A wire symbol PREFIX followed by fresh letters, counted in TABLE."
-  (let ((index (name-table-count table)))
-    (incf (name-table-count table))
+  "A wire symbol PREFIX followed by fresh letters, counted in TABLE for each PREFIX."
+  (let ((index (gethash prefix (name-table-counts table) 0)))
+    (setf (gethash prefix (name-table-counts table)) (1+ index))
     (wire (concatenate 'string prefix (letters-for-index index)))))
 
-(defun maxima-name (table name)
-  "The Maxima symbol standing for the variable or quantity term NAME (made on first use)."
+(defun maxima-name (table name &optional (prefix "$AMESV"))
+  "The Maxima symbol standing for the variable or quantity term NAME (made on first use,
+from PREFIX: $AMESV for the names of the algebra, $AMESX for the bridge's own auxiliary
+variables)."
   (or (gethash name (name-table-forward table))
-      (let ((symbol (fresh-wire-name "$AMESV" table))
+      (let ((symbol (fresh-wire-name prefix table))
             (key (copy-tree name)))
         (setf (gethash key (name-table-forward table)) symbol
               (gethash symbol (name-table-backward table)) key)
