@@ -210,7 +210,11 @@ not both fixed, overlap at the start. Call under the scenario's assumptions."
                              (let* ((pair (ames.geometry:make-contact-pair
                                            (scenario-body-name body) shape
                                            (scenario-body-name other) other-shape
-                                           :bridge bridge))
+                                           :bridge bridge
+                                           ;; as the simulator does, so that the two agree on
+                                           ;; the observer and the bridge's cache serves both
+                                           :fixed (mapcar #'scenario-body-name
+                                                          (scenario-fixed-bodies scenario))))
                                     (observer (if (eq (ames.geometry:pair-observer pair)
                                                       (scenario-body-name body))
                                                   body other))
