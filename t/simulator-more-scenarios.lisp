@@ -1,4 +1,4 @@
-;;;; t/simulator-pending.lisp -- simulator tests for what first failed: the sphere, the incline,
+;;;; t/simulator-more-scenarios.lisp -- simulator tests for what first failed: the sphere, the incline,
 ;;;; the corner with the push's side assumed, and the cases the fuzz found (a collision at
 ;;;; once, leaving a face along its own line, parameter values keyed by strings).
 ;;;; Expected results are the scenario files' headers; helpers are in
