@@ -1,7 +1,9 @@
 ;;;; ames.asd -- system definitions for AMES, the Algebraic MEchanics Simulator.
 ;;;;
-;;;; One module and one package per layer; dependencies point down only:
-;;;;   base  <-  maxima-bridge, tms  <-  geometry  <-  engine  <-  kb  <-  simulator
+;;;; One module, one folder and one package per layer; dependencies point down only:
+;;;;   base  <-  maxima-bridge, tms  <-  geometry  <-  engine  <-  kb
+;;;;   geometry, maxima-bridge  <-  scenario;   kb, scenario  <-  simulator  <-  report
+;;;;   <-  interface (package AMES: the REPL API and bin/ames)
 ;;;; Only Debian's CL packages are used (cl-alexandria, cl-fiveam, cl-ppcre).
 
 (defsystem "ames"
@@ -49,29 +51,46 @@ frictionless translating rigid bodies evolve (after Leon Wong's 1994 MIT thesis)
                  (:file "contacts")
                  (:file "obstacle")
                  (:file "events")))
-   (:module "engine" :pathname "src/" :serial t
+   (:module "engine" :pathname "src/engine/" :serial t
     :depends-on ("base" "tms" "maxima-bridge")
-    :components ((:file "engine-package")
-                 (:file "engine-conditions")
-                 (:file "engine-patterns")
-                 (:file "engine-situation")
-                 (:file "engine-components")
-                 (:file "engine")))
+    :components ((:file "package")
+                 (:file "conditions")
+                 (:file "patterns")
+                 (:file "situation")
+                 (:file "components")
+                 (:file "grammar")
+                 (:file "knowledge-base")
+                 (:file "instances")
+                 (:file "decisions")
+                 (:file "refresh")
+                 (:file "transitions")))
    (:module "kb" :pathname "src/kb/" :serial t
     :depends-on ("engine" "geometry")
     :components ((:file "package")
                  (:file "mechanics")))
-   (:module "simulator" :pathname "src/" :serial t
-    :depends-on ("kb")
+   (:module "scenario" :pathname "src/scenario/" :serial t
+    :depends-on ("base" "maxima-bridge" "geometry")
     :components ((:file "package")
-                 (:file "scenario-conditions")
-                 (:file "scenario-numbers")
-                 (:file "scenario")
-                 (:file "scenario-reader")
-                 (:file "scenario-semantics")
+                 (:file "conditions")
+                 (:file "numbers")
+                 (:file "objects")
+                 (:file "validation")
+                 (:file "shapes")
+                 (:file "clauses")
+                 (:file "reader")
+                 (:file "semantics")))
+   (:module "simulator" :pathname "src/simulator/" :serial t
+    :depends-on ("kb" "scenario")
+    :components ((:file "package")
                  (:file "history")
-                 (:file "simulator")
-                 (:file "report")
+                 (:file "simulator")))
+   (:module "report" :pathname "src/report/" :serial t
+    :depends-on ("simulator")
+    :components ((:file "package")
+                 (:file "report")))
+   (:module "interface" :pathname "src/interface/" :serial t
+    :depends-on ("report")
+    :components ((:file "package")
                  (:file "cli"))))
   :in-order-to ((test-op (test-op "ames/tests"))))
 

@@ -3,7 +3,7 @@
 
 (in-package #:ames.tests)
 
-(def-suite engine :in all-tests :description "The component engine (src/engine*.lisp).")
+(def-suite engine :in all-tests :description "The component engine (src/engine/).")
 
 (in-suite engine)
 

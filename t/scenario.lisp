@@ -3,8 +3,8 @@
 (in-package #:ames.tests)
 
 (def-suite scenario :in all-tests
-  :description "The scenario language: validator (src/scenario.lisp), restricted reader
-(src/scenario-reader.lisp), the files in scenarios/, fuzzing.")
+  :description "The scenario language: validator (src/scenario/), restricted reader
+(src/scenario/reader.lisp), the files in scenarios/, fuzzing.")
 
 (in-suite scenario)
 

@@ -12,7 +12,7 @@
 (in-package #:ames.tests)
 
 (def-suite simulator :in all-tests
-  :description "The qualitative-state simulator (src/simulator.lisp) on the scenarios of
+  :description "The qualitative-state simulator (src/simulator/) on the scenarios of
 scenarios/: textbook results checked by Maxima, and fuzzing with odd scenarios.")
 
 (in-suite simulator)
@@ -149,31 +149,31 @@ instantaneous equations (without the derivative relations), under SCENARIO's
 assumptions in BRIDGE. Signals what SIMULATE signals for the same steps."
   (ames:check-scenario scenario bridge)
   (ames.maxima:with-assumptions (bridge (ames:scenario-assumption-relations scenario))
-    (multiple-value-bind (positions velocities) (ames::initial-motion-state scenario)
-      (let* ((shapes (ames::body-shapes scenario bridge))
-             (run (make-instance 'ames::run
+    (multiple-value-bind (positions velocities) (ames.simulator::initial-motion-state scenario)
+      (let* ((shapes (ames.simulator::body-shapes scenario bridge))
+             (run (make-instance 'ames.simulator::run
                                  :scenario scenario :bridge bridge :shapes shapes
-                                 :contacts (ames::all-simple-contacts scenario shapes bridge)
+                                 :contacts (ames.simulator::all-simple-contacts scenario shapes bridge)
                                  :positions positions :velocities velocities))
-             (situation (ames.engine:make-situation (ames::situation-entities run) :data run)))
-        (setf (ames::run-model run)
+             (situation (ames.engine:make-situation (ames.simulator::situation-entities run) :data run)))
+        (setf (ames.simulator::run-model run)
               (ames.engine:build-model
                (ames.engine:make-engine (ames.kb:mechanics-knowledge-base))
-               situation :decider (ames::state-decider run)))
-        (let* ((model (ames::run-model run))
+               situation :decider (ames.simulator::state-decider run)))
+        (let* ((model (ames.simulator::run-model run))
                (equations (remove-if (lambda (equation)
-                                       (ames::derivative-equation-p model equation))
+                                       (ames.simulator::derivative-equation-p model equation))
                                      (ames.engine:model-equations model))))
-          (funcall function run (ames::solve-instantaneous-model run equations)))))))
+          (funcall function run (ames.simulator::solve-instantaneous-model run equations)))))))
 
 (defun contact-between (run body-1 body-2)
   "The active contact entity of RUN between the bodies named BODY-1 and BODY-2 (either
 way round), or NIL."
   (find-if (lambda (contact)
-             (let ((bodies (ames::contact-bodies run contact)))
+             (let ((bodies (ames.simulator::contact-bodies run contact)))
                (or (and (same-name-p* (first bodies) body-1) (same-name-p* (second bodies) body-2))
                    (and (same-name-p* (first bodies) body-2) (same-name-p* (second bodies) body-1)))))
-           (ames::active-contacts run)))
+           (ames.simulator::active-contacts run)))
 
 (defun solved (solution term)
   "The value of the quantity TERM in the SOLUTION alist, or NIL."
@@ -446,9 +446,9 @@ between the blocks, N_wall = N sin a, N_floor = ma g + N cos a."
                   (floor (contact-between run "BLOCK-A" "FLOOR"))
                   (a-ax (solved solution `(ames.kb:acc ,a :x)))
                   (n (and between (solved solution `(ames.kb:normal-force ,between)))))
-             (is (= 3 (length (ames::active-contacts run))))
+             (is (= 3 (length (ames.simulator::active-contacts run))))
              (is (and between wall floor) "contacts: ~S"
-                 (mapcar (lambda (c) (ames::contact-bodies run c)) (ames::active-contacts run)))
+                 (mapcar (lambda (c) (ames.simulator::contact-bodies run c)) (ames.simulator::active-contacts run)))
              (is-same bridge "a_Ax" a-ax
                       (x '(/ (* l3 (- (* f l3) (* mb g (- l1 l2))))
                            (+ (* ma (expt l3 2)) (* mb (expt (- l1 l2) 2))))))
@@ -508,7 +508,7 @@ justification that names a component contributing it."
        scenario bridge
        (lambda (run solution)
          (declare (ignore solution))
-         (let* ((model (ames::run-model run))
+         (let* ((model (ames.simulator::run-model run))
                 (instances (ames.engine:model-active-instances model))
                 (equations (ames.engine:model-equations model)))
            (is (< 10 (length equations)))

@@ -1,4 +1,4 @@
-;;;; src/simulator.lisp -- the qualitative-state simulator (thesis sections 2.5.8 and 3.2.3).
+;;;; src/simulator/simulator.lisp -- the qualitative-state simulator (thesis sections 2.5.8 and 3.2.3).
 ;;;;
 ;;;; For each qualitative state:
 ;;;;   1. the contacts: from the geometry for the first state, from the transition afterwards;
@@ -13,7 +13,7 @@
 ;;;;      comes from the condition that fired, applied to the model incrementally (checked
 ;;;;      against a rebuild from scratch on every transition).
 
-(in-package #:ames)
+(in-package #:ames.simulator)
 
 ;;; Conditions
 

@@ -1,4 +1,4 @@
-;;;; src/engine-patterns.lisp -- pattern variables, matching beliefs, and the canonical order.
+;;;; src/engine/patterns.lisp -- pattern variables, matching beliefs, and the canonical order.
 ;;;;
 ;;;; A belief is a list (HEAD POSITIONAL... [KEY VALUE]...): the elements before the
 ;;;; first keyword are positional, the rest a property list whose order does not

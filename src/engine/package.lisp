@@ -1,4 +1,4 @@
-;;;; src/engine-package.lisp -- the package of the model-component engine and DEFCOMPONENT.
+;;;; src/engine/package.lisp -- the package of the model-component engine and DEFCOMPONENT.
 
 (defpackage #:ames.engine
   (:use #:cl #:ames.base)

@@ -1,4 +1,5 @@
-;;;; src/package.lisp -- AMES's user-facing package, and the package scenario files are read into.
+;;;; src/scenario/package.lisp -- the scenario language's packages: the one scenario files are read
+;;;; into, and the one of the reader and validator.
 
 (defpackage #:ames-scenario
   (:use)
@@ -20,14 +21,14 @@ a restricted readtable). It uses no package: it holds the user's names, and impo
 from COMMON-LISP only the prefix algebra's operators, PI, T and NIL. Nothing in it
 is ever evaluated."))
 
-(defpackage #:ames
+(defpackage #:ames.scenario
   (:use #:cl #:ames.base)
-  (:documentation "The qualitative-state simulator and the user-facing API:
-SIMULATE, RUN-FILE and the accessors on a simulation history; the scenario language's
-reader and validator.")
+  (:documentation "The scenario language: the restricted reader of scenario files (data,
+never code), the validator that turns a scenario form into a SCENARIO object or signals a
+SCENARIO-ERROR naming the clause or body at fault, and the checks that need the geometry
+and Maxima (assumptions, overlaps).")
   (:export
-   #:ames-error
-   ;; scenario conditions (src/scenario-conditions.lisp)
+   ;; conditions (conditions.lisp)
    #:scenario-error #:scenario-error-scenario #:scenario-error-location
    #:scenario-error-clause #:scenario-error-source
    #:scenario-read-error #:scenario-read-error-file #:scenario-read-error-line
@@ -39,7 +40,7 @@ reader and validator.")
    #:contradictory-assumptions-error #:overlapping-bodies-error
    #:scenario-error-cause
    #:skip-scenario
-   ;; scenario objects and the validator (src/scenario.lisp)
+   ;; scenario objects and the validator
    #:scenario #:parse-scenario #:scenario-p
    #:scenario-name #:scenario-description #:scenario-parameters #:scenario-gravity
    #:scenario-bodies #:scenario-forces #:scenario-states #:scenario-until
@@ -54,21 +55,8 @@ reader and validator.")
    #:scenario-moving-bodies #:scenario-fixed-bodies
    #:shape-kind
    #:constant-value
-   ;; reading scenario files (src/scenario-reader.lisp)
+   ;; reading scenario files
    #:read-scenario-forms #:read-scenarios-from-string #:read-scenario-file
-   ;; the simulator and its history (src/simulator.lisp, src/history.lisp, src/report.lisp)
-   #:simulate #:run-file #:run-files #:main #:*bridge* #:current-bridge
-   #:stop-simulation
-   #:simulation-error #:ambiguous-transition #:ambiguous-transition-candidates
-   #:ambiguous-transition-missing-fact #:unsolvable-model #:unsupported-situation
-   #:usage-error
-   #:simulation-history #:history-scenario #:history-states #:history-outcome
-   #:history-notes #:history-rederived #:history-parameter-values
-   #:qualitative-state #:state-index #:state-start #:state-duration #:state-contacts
-   #:state-accelerations #:state-forces-of #:state-positions #:state-velocities
-   #:state-end-event #:state-final-positions #:state-final-velocities #:state-notes
-   #:body-entry
-   #:history-sexp #:print-history-sexp #:print-history-text
-   ;; the checks through Maxima (src/scenario-semantics.lisp)
+   ;; the checks through Maxima and the geometry
    #:check-scenario #:check-scenario-assumptions #:check-scenario-geometry
    #:missing-assumption-error #:missing-assumption-fact))

@@ -1,6 +1,6 @@
-;;;; src/report.lisp -- a simulation history as a report for people and as a readable s-expression.
+;;;; src/report/report.lisp -- a simulation history as a report for people and as a readable s-expression.
 
-(in-package #:ames)
+(in-package #:ames.report)
 
 (defun history-sexp (history)
   "HISTORY as the s-expression of the scenario language's output section:
@@ -39,7 +39,7 @@
 
 (defun state-forces-of (state)
   "The forces slot of STATE (named apart from the report function STATE-FORCES)."
-  (slot-value state 'forces))
+  (state-forces state))
 
 (defun print-history-sexp (history stream)
   "Print HISTORY-SEXP of HISTORY readably on STREAM, symbols in lower case."

@@ -1,4 +1,4 @@
-;;;; src/cli.lisp -- the command line: bin/ames run FILE... [--format text|sexp] [--set p=v ...]
+;;;; src/interface/cli.lisp -- the command line: bin/ames run FILE... [--format text|sexp] [--set p=v ...]
 
 (in-package #:ames)
 

@@ -1,4 +1,4 @@
-;;;; src/scenario-numbers.lisp -- comparing the numeric values of constant expressions, for the validator's cheap checks.
+;;;; src/scenario/numbers.lisp -- comparing the numeric values of constant expressions, for the validator's cheap checks.
 ;;;;
 ;;;; The validator decides some facts itself, without Maxima, when the numbers settle
 ;;;; them: (> x 2) with (< x 1), a radius of -1, a clockwise polygon with numeric
@@ -7,7 +7,7 @@
 ;;;; file orders them, leaving undecided (for Maxima) the approximations too close to
 ;;;; call.
 
-(in-package #:ames)
+(in-package #:ames.scenario)
 
 (defconstant +relative-tolerance+ 1d-9
   "Approximate values closer than this (relative) are not ordered by COMPARE-VALUES.")

@@ -1,4 +1,4 @@
-;;;; src/scenario-conditions.lisp -- the conditions a defective scenario signals, and the SKIP-SCENARIO restart.
+;;;; src/scenario/conditions.lisp -- the conditions a defective scenario signals, and the SKIP-SCENARIO restart.
 ;;;;
 ;;;; SCENARIO-ERROR (an AMES-ERROR)
 ;;;;   SCENARIO-READ-ERROR          the text is not a readable form of the language
@@ -18,7 +18,7 @@
 ;;;; WEDGE" or "clause GRAVITY"), the clause, and in DATUM the offending sub-form. Reports
 ;;;; bind *PRINT-LEVEL* and *PRINT-LENGTH*, so any form, however deep or long, prints.
 
-(in-package #:ames)
+(in-package #:ames.scenario)
 
 (defun form-package (form)
   "The package FORM's symbols were most likely written in: the home package of its

@@ -1,4 +1,4 @@
-;;;; src/scenario-semantics.lisp -- the checks of a scenario that need Maxima: assumptions, signs, orientation.
+;;;; src/scenario/semantics.lisp -- the checks of a scenario that need Maxima: assumptions, signs, orientation.
 ;;;;
 ;;;; PARSE-SCENARIO decides what numbers decide. What depends on symbolic parameters
 ;;;; is decided here, through the Maxima bridge, under the scenario's own assumptions:
@@ -20,7 +20,7 @@
 ;;;; conditions are wrapped into SCENARIO-ERRORs naming the body or the pair.
 ;;;; CHECK-SCENARIO runs both under one scope of the scenario's assumptions.
 
-(in-package #:ames)
+(in-package #:ames.scenario)
 
 (define-condition missing-assumption-error (scenario-error)
   ((fact :initarg :fact :initform nil :reader missing-assumption-fact

@@ -1,4 +1,4 @@
-;;;; src/engine-situation.lisp -- situations: the scenario's entities, given to the engine as data.
+;;;; src/engine/situation.lisp -- situations: the scenario's entities, given to the engine as data.
 
 (in-package #:ames.engine)
 

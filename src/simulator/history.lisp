@@ -1,10 +1,10 @@
-;;;; src/history.lisp -- what a simulation returns: qualitative states and their history.
+;;;; src/simulator/history.lisp -- what a simulation returns: qualitative states and their history.
 ;;;;
 ;;;; A SIMULATION-HISTORY is the value of AMES:SIMULATE. It holds the validated scenario and one
 ;;;; QUALITATIVE-STATE per period that one mathematical model describes. Every expression in it is
 ;;;; in the prefix algebra over the scenario's parameters and the state-local time TAU.
 
-(in-package #:ames)
+(in-package #:ames.simulator)
 
 (defclass qualitative-state ()
   ((index :initarg :index :reader state-index

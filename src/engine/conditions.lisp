@@ -1,4 +1,4 @@
-;;;; src/engine-conditions.lisp -- the conditions of the component engine, and its restarts.
+;;;; src/engine/conditions.lisp -- the conditions of the component engine, and its restarts.
 
 (in-package #:ames.engine)
 

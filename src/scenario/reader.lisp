@@ -1,4 +1,4 @@
-;;;; src/scenario-reader.lisp -- reading scenario files as data: a restricted reader, one scenario at a time.
+;;;; src/scenario/reader.lisp -- reading scenario files as data: a restricted reader, one scenario at a time.
 ;;;;
 ;;;; A scenario file is data. It is never LOADed or EVALed: its text is read with
 ;;;; *READ-EVAL* nil, into the package AMES-SCENARIO (which uses no package), with a
@@ -21,7 +21,7 @@
 ;;;; the restart SKIP-SCENARIO active; with :ON-ERROR :COLLECT the readers skip on
 ;;;; their own and return the conditions as a second value.
 
-(in-package #:ames)
+(in-package #:ames.scenario)
 
 (defconstant +deepest-list+ 100
   "The deepest nesting of lists the reader accepts.")

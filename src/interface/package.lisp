@@ -1,0 +1,54 @@
+;;;; src/interface/package.lisp -- AMES's user-facing package: the REPL API and the command line.
+
+(defpackage #:ames
+  (:use #:cl #:ames.base #:ames.scenario #:ames.simulator #:ames.report)
+  (:documentation "AMES's user-facing package: the REPL API (SIMULATE, RUN-FILE and the
+accessors on a simulation history, the scenario language's reader and validator, all
+re-exported from the layers below) and the command line of bin/ames.")
+  (:export
+   #:ames-error
+   ;; scenario conditions (src/scenario/)
+   #:scenario-error #:scenario-error-scenario #:scenario-error-location
+   #:scenario-error-clause #:scenario-error-source
+   #:scenario-read-error #:scenario-read-error-file #:scenario-read-error-line
+   #:scenario-read-error-column #:scenario-read-error-position
+   #:scenario-file-error
+   #:scenario-syntax-error #:unknown-clause-error #:duplicate-clause-error
+   #:missing-property-error #:undeclared-symbol-error #:duplicate-name-error
+   #:scenario-expression-error #:scenario-shape-error
+   #:contradictory-assumptions-error #:overlapping-bodies-error
+   #:scenario-error-cause
+   #:skip-scenario
+   ;; scenario objects and the validator (src/scenario/)
+   #:scenario #:parse-scenario #:scenario-p
+   #:scenario-name #:scenario-description #:scenario-parameters #:scenario-gravity
+   #:scenario-bodies #:scenario-forces #:scenario-states #:scenario-until
+   #:scenario-queries #:scenario-source #:scenario-form
+   #:scenario-parameter #:scenario-parameter-name #:scenario-parameter-assumptions
+   #:scenario-parameter-value
+   #:scenario-body #:scenario-body-name #:scenario-body-shape #:scenario-body-mass
+   #:scenario-body-position #:scenario-body-velocity #:scenario-body-fixed-p
+   #:scenario-force #:scenario-force-name #:scenario-force-body #:scenario-force-value
+   #:find-scenario-parameter #:find-scenario-body #:find-scenario-force
+   #:scenario-assumption-relations #:scenario-parameter-values
+   #:scenario-moving-bodies #:scenario-fixed-bodies
+   #:shape-kind
+   #:constant-value
+   ;; reading scenario files (src/scenario/reader.lisp)
+   #:read-scenario-forms #:read-scenarios-from-string #:read-scenario-file
+   ;; the simulator and its history (src/simulator/, src/report/)
+   #:simulate #:run-file #:run-files #:main #:*bridge* #:current-bridge
+   #:stop-simulation
+   #:simulation-error #:ambiguous-transition #:ambiguous-transition-candidates
+   #:ambiguous-transition-missing-fact #:unsolvable-model #:unsupported-situation
+   #:usage-error
+   #:simulation-history #:history-scenario #:history-states #:history-outcome
+   #:history-notes #:history-rederived #:history-parameter-values
+   #:qualitative-state #:state-index #:state-start #:state-duration #:state-contacts
+   #:state-accelerations #:state-forces-of #:state-positions #:state-velocities
+   #:state-end-event #:state-final-positions #:state-final-velocities #:state-notes
+   #:body-entry
+   #:history-sexp #:print-history-sexp #:print-history-text
+   ;; the checks through Maxima (src/scenario/semantics.lisp)
+   #:check-scenario #:check-scenario-assumptions #:check-scenario-geometry
+   #:missing-assumption-error #:missing-assumption-fact))

@@ -1,0 +1,221 @@
+;;;; src/scenario/clauses.lisp -- validating bodies, forces, gravity and simulate, and the
+;;;; whole scenario.
+
+(in-package #:ames.scenario)
+
+;;; ------------------------------------------------------------------------------------
+;;; Bodies, forces, gravity, simulate
+
+(defun zero-vector-p (vector)
+  "True when the checked VECTOR is numerically (0 0)."
+  (every (lambda (coordinate)
+           (let ((value (expression-value coordinate))) (and value (zerop value))))
+         vector))
+
+(defun checked-body (validation clause)
+  "The SCENARIO-BODY that the clause (body NAME :shape ... ) declares."
+  (let* ((name (cdr (declared validation (second clause))))
+         (what (format nil "body ~A" (symbol-name name))))
+    (enter validation what clause)
+    (let* ((arguments (checked-keywords validation (cddr clause)
+                                        '(:shape :mass :position :velocity :fixed) what))
+           (fixed (multiple-value-bind (value present) (keyword-value :fixed arguments)
+                    (cond ((not present) nil)
+                          ((named-p value "T") t)
+                          ((named-p value "NIL") nil)
+                          (t (reject validation 'scenario-syntax-error value
+                                     ":fixed takes T or NIL, not ~A" (show value))))))
+           (missing (remove-if (lambda (key) (assoc key arguments))
+                               (if fixed '(:shape) '(:shape :mass :position :velocity)))))
+      (when missing
+        (reject validation 'missing-property-error clause
+                "the body has no ~{~S~^, ~}~:[~; (a body that is not :fixed needs ~
+                 :mass, :position and :velocity)~]" missing (not fixed)))
+      (let ((shape (checked-shape validation (keyword-value :shape arguments)))
+            (mass (multiple-value-bind (mass present) (keyword-value :mass arguments)
+                    (and present (checked-expression validation mass))))
+            (position (checked-vector validation (keyword-value :position arguments '(0 0))
+                                      "the :position"))
+            (velocity (checked-vector validation (keyword-value :velocity arguments '(0 0))
+                                      "the :velocity")))
+        (when mass
+          (check-positive-constant validation mass "a mass" 'scenario-expression-error))
+        (when (and fixed (not (zero-vector-p velocity)))
+          (reject validation 'scenario-syntax-error (keyword-value :velocity arguments)
+                  "a fixed body does not move: its :velocity can only be (0 0)"))
+        (make-instance 'scenario-body :name name :shape shape :mass mass
+                                      :position position :velocity velocity
+                                      :fixed-p fixed)))))
+
+(defun checked-force (validation clause)
+  "The SCENARIO-FORCE that the clause (force NAME :on BODY :value (FX FY)) declares."
+  (let* ((name (cdr (declared validation (second clause))))
+         (what (format nil "force ~A" (symbol-name name))))
+    (enter validation what clause)
+    (let* ((arguments (checked-keywords validation (cddr clause) '(:on :value) what))
+           (missing (remove-if (lambda (key) (assoc key arguments)) '(:on :value))))
+      (when missing
+        (reject validation 'missing-property-error clause "the force has no ~{~S~^, ~}" missing))
+      (let* ((target (keyword-value :on arguments))
+             (declaration (declared validation target)))
+        (cond ((not (and (symbolp target) target (not (keywordp target))))
+               (reject validation 'scenario-syntax-error target
+                       ":on takes the name of a body, not ~A" (show target)))
+              ((null declaration)
+               (reject validation 'undeclared-symbol-error target
+                       "~A is not a declared body" (show target)))
+              ((not (eq (car declaration) :body))
+               (reject validation 'undeclared-symbol-error target
+                       "~A names a ~(~A~), not a body" (show target) (car declaration))))
+        (make-instance 'scenario-force
+                       :name name :body (cdr declaration)
+                       :value (checked-vector validation (keyword-value :value arguments)
+                                              "the force's :value"))))))
+
+(defun single-clause (validation word clauses)
+  "The only clause of CLAUSES, the scenario's (WORD ...) clauses, entered for checking;
+NIL when there is none. Signals DUPLICATE-CLAUSE-ERROR naming the second when there
+are more."
+  (when clauses
+    (let ((location (format nil "clause ~A" (symbol-name word))))
+      (when (rest clauses)
+        (enter validation location (second clauses))
+        (reject validation 'duplicate-clause-error (second clauses)
+                "there is more than one (~(~A~) ...) clause" (symbol-name word)))
+      (enter validation location (first clauses))
+      (first clauses))))
+
+(defun checked-gravity (validation clauses)
+  "The field strength of the (gravity STRENGTH) clause among CLAUSES, or NIL."
+  (let ((clause (single-clause validation 'ames-scenario:gravity clauses)))
+    (when clause
+      (unless (= (length clause) 2)
+        (reject validation 'scenario-syntax-error clause
+                "gravity takes one strength: (gravity STRENGTH)"))
+      (checked-expression validation (second clause)))))
+
+(defun checked-simulate (validation clauses)
+  "The :states and :until of the (simulate ...) clause among CLAUSES, as two values."
+  (let ((clause (single-clause validation 'ames-scenario:simulate clauses)))
+    (when clause
+      (let* ((arguments (checked-keywords validation (rest clause) '(:states :until)
+                                          "simulate"))
+             (states (keyword-value :states arguments))
+             (until (multiple-value-bind (until present) (keyword-value :until arguments)
+                      (and present (checked-expression validation until)))))
+        (when (and (assoc :states arguments) (not (and (integerp states) (plusp states))))
+          (reject validation 'scenario-syntax-error states
+                  ":states takes a positive integer, not ~A" (show states)))
+        (when until
+          (check-positive-constant validation until "the :until time"
+                                   'scenario-expression-error))
+        (values states until)))))
+
+;;; ------------------------------------------------------------------------------------
+;;; The scenario
+
+(defun clause-word (clause)
+  "The clause word of CLAUSE (a proper list), or NIL."
+  (language-word (car clause) +clause-words+))
+
+(defun sorted-clauses (validation clauses)
+  "CLAUSES checked to be clauses of the language, as an alist (WORD . CLAUSES) in
+order."
+  (let ((sorted (mapcar #'list +clause-words+)))
+    (dolist (clause clauses)
+      (enter validation "clause" clause)
+      (cond ((stringp clause)
+             (reject validation 'scenario-syntax-error clause
+                     "a description string may only come right after the name"))
+            ((atom clause)
+             (reject validation 'scenario-syntax-error clause
+                     "~A is not a clause; a clause is a list such as (body NAME ...)"
+                     (show clause)))
+            ((not (proper-list-p clause))
+             (reject validation 'scenario-syntax-error clause "the clause is not a proper list"))
+            ((not (clause-word clause))
+             (reject validation 'unknown-clause-error clause
+                     "~A is not a clause of the scenario language; the clauses are ~
+                      parameters, gravity, body, force, simulate and query"
+                     (show (car clause))))
+            (t (push clause (cdr (assoc (clause-word clause) sorted))))))
+    (dolist (entry sorted sorted)
+      (setf (cdr entry) (nreverse (cdr entry))))))
+
+(defun declare-names (validation sorted)
+  "Declare the names of the parameters, bodies and forces of the SORTED clauses."
+  (dolist (clause (cdr (assoc 'ames-scenario:parameters sorted)))
+    (enter validation "clause PARAMETERS" clause)
+    (dolist (spec (rest clause))
+      (let ((name (parameter-spec-name spec)))
+        (enter validation "clause PARAMETERS" clause)
+        (when (and (consp spec) (not (proper-list-p spec)))
+          (reject validation 'scenario-syntax-error spec "~A is not a proper list" (show spec)))
+        (check-name validation name "parameter")
+        (declare-name validation name :parameter))))
+  (loop for (word kind) in '((ames-scenario:body :body) (ames-scenario:force :force))
+        do (dolist (clause (cdr (assoc word sorted)))
+             (enter validation (format nil "clause ~A" word) clause)
+             (when (null (rest clause))
+               (reject validation 'missing-property-error clause
+                       "the ~(~A~) has no name" kind))
+             (check-name validation (second clause) (string-downcase kind))
+             (enter validation (format nil "~(~A~) ~A" kind (symbol-name (second clause))) clause)
+             (declare-name validation (second clause) kind))))
+
+(defun parse-scenario (form &key source)
+  "Validate FORM, the s-expression (scenario NAME [\"description\"] CLAUSE ...), and
+return the SCENARIO it describes. FORM may come from a scenario file or from the REPL
+in any package: the language's words are recognised by name. SOURCE (a string such as
+\"scenarios/x.lisp, line 3\") is recorded for messages.
+Signals a SCENARIO-ERROR naming the clause or body at fault: SCENARIO-SYNTAX-ERROR
+(and its UNKNOWN-CLAUSE-ERROR, DUPLICATE-CLAUSE-ERROR, MISSING-PROPERTY-ERROR),
+UNDECLARED-SYMBOL-ERROR, DUPLICATE-NAME-ERROR, SCENARIO-EXPRESSION-ERROR,
+SCENARIO-SHAPE-ERROR or CONTRADICTORY-ASSUMPTIONS-ERROR. Never evaluates anything of
+FORM. The checks that need Maxima or geometry are CHECK-SCENARIO-ASSUMPTIONS and
+CHECK-SCENARIO-GEOMETRY, which the caller runs when it has those layers."
+  (let ((validation (make-validation form source)))
+    (enter validation "form" nil)
+    (check-form-size validation form)
+    (unless (and (consp form) (proper-list-p form) (named-p (first form) "SCENARIO"))
+      (reject validation 'scenario-syntax-error form
+              "a scenario is a list (scenario NAME \"description\" CLAUSE ...), not ~A"
+              (show form)))
+    (enter validation "form" form)
+    (when (null (rest form))
+      (reject validation 'missing-property-error form "the scenario has no name"))
+    (let ((name (second form)))
+      (when (or (not (symbolp name)) (null name) (keywordp name) (named-p name "T"))
+        (reject validation 'scenario-syntax-error name
+                "a scenario's name must be a symbol, not ~A" (show name)))
+      (setf (validation-name validation) name)
+      (let* ((description (and (stringp (third form)) (third form)))
+             (sorted (sorted-clauses validation (if description (cdddr form) (cddr form)))))
+        (flet ((clauses (word) (cdr (assoc word sorted))))
+          (declare-names validation sorted)
+          (let ((parameters (loop for clause in (clauses 'ames-scenario:parameters)
+                                  append (mapcar (lambda (spec) (checked-parameter validation spec))
+                                                 (rest clause)))))
+            (dolist (parameter parameters)
+              (enter validation (format nil "parameter ~A"
+                                        (symbol-name (scenario-parameter-name parameter)))
+                     nil)
+              (check-parameter-bounds validation parameter))
+            (check-default-values validation parameters)
+            (let ((gravity (checked-gravity validation (clauses 'ames-scenario:gravity)))
+                  (bodies (mapcar (lambda (clause) (checked-body validation clause))
+                                  (clauses 'ames-scenario:body)))
+                  (forces (mapcar (lambda (clause) (checked-force validation clause))
+                                  (clauses 'ames-scenario:force))))
+              (when (null bodies)
+                (enter validation "form" form)
+                (reject validation 'missing-property-error form "the scenario has no body"))
+              (multiple-value-bind (states until)
+                  (checked-simulate validation (clauses 'ames-scenario:simulate))
+                (make-instance 'scenario
+                               :name name :description description
+                               :parameters parameters :gravity gravity
+                               :bodies bodies :forces forces
+                               :states states :until until
+                               :queries (mapcar #'rest (clauses 'ames-scenario:query))
+                               :source source :form form)))))))))

@@ -1,0 +1,20 @@
+;;;; src/simulator/package.lisp -- the qualitative-state simulator's package.
+
+(defpackage #:ames.simulator
+  (:use #:cl #:ames.base #:ames.scenario)
+  (:documentation "The qualitative-state simulator (thesis sections 2.5.8 and 3.2.3): for
+each state it chooses the contacts and modes the components offer, builds the model with
+the engine, classifies and integrates it, proves which termination condition comes first
+and applies the transition. It knows no force, event or mode by name: those are the
+knowledge base's (package AMES.KB).")
+  (:export
+   #:simulate #:*bridge* #:current-bridge #:stop-simulation
+   #:simulation-error #:ambiguous-transition #:ambiguous-transition-candidates
+   #:ambiguous-transition-missing-fact #:ambiguous-transition-state
+   #:unsolvable-model #:unsupported-situation
+   #:simulation-history #:history-scenario #:history-states #:history-outcome
+   #:history-notes #:history-rederived #:history-parameter-values
+   #:qualitative-state #:state-index #:state-start #:state-duration #:state-contacts
+   #:state-accelerations #:state-forces #:state-positions #:state-velocities
+   #:state-end-event #:state-final-positions #:state-final-velocities #:state-notes
+   #:body-entry #:numeric-or-nil))
