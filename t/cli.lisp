@@ -97,4 +97,5 @@
                                                         (asdf:system-source-directory "ames")))
                     "--set" "g=9.81" "m=1")
     (is (eql 0 code))
-    (is (search "lifts off" output))))
+    (is (search "contacts: none" output))
+    (is (search "(0, -g)" output))))

@@ -207,19 +207,22 @@ no power (2 or more) of sin, cos, sinh or cosh, which are all its search works o
 (defun $ames_simplification_candidates (expr trigonometric radicals)
   "The forms the bridge's simplest-form compares, each computed once (a request listing
 them as separate calls computes ratsimp(EXPR) and trigsimp(EXPR) twice):
-[ratsimp(EXPR), trigsimp(EXPR), ratsimp(trigsimp(EXPR)), factor(ratsimp(EXPR)), radcan(EXPR)],
+[ratsimp(EXPR), trigsimp(EXPR), ratsimp(trigsimp(EXPR)), factor(ratsimp(EXPR)), radcan(EXPR),
+radcan(trigsimp(EXPR))],
 trigsimp as $AMES_TRIGSIMP computes it. When TRIGONOMETRIC is false (EXPR has no sin,
 cos or tan, so that trigsimp(EXPR) is ratsimp(EXPR) again), the two trigsimp forms are
 left out; when RADICALS is false (EXPR has no radical, logarithm or power with a
 symbolic or fractional exponent, where radcan(EXPR) is ratsimp(EXPR) again),
-radcan(EXPR) is left out."
+radcan(EXPR) is left out; radcan(trigsimp(EXPR)) needs both (a square root whose
+argument is a square once sin^2 + cos^2 = 1 is used)."
   (let* ((ratsimped (ames-call '$ratsimp expr))
          (trigsimped (and trigonometric ($ames_trigsimp expr))))
     (cons '(mlist simp)
           (append (list ratsimped)
                   (and trigonometric (list trigsimped (ames-call '$ratsimp trigsimped)))
                   (list (ames-call '$factor ratsimped))
-                  (and radicals (list (ames-call '$radcan expr)))))))
+                  (and radicals (list (ames-call '$radcan expr)))
+                  (and radicals trigonometric (list (ames-call '$radcan trigsimped)))))))
 
 ;;; The loop.
 

@@ -68,10 +68,25 @@ another (see WITNESSED-BOTH-WAYS-P): its signs include :POSITIVE and :NEGATIVE."
 (defun sign-pattern-of (search form)
   "The signs of FORM, for the tests that only ask whether they lie within a set that
 lacks :POSITIVE or :NEGATIVE (ONLY, ROOT-VERDICT): all three, without asking Maxima,
-when FORM is seen to take both signs, else SIGNS-OF. Not for tests of :ZERO alone."
+when FORM is seen to take both signs, else SIGNS-OF, narrowed by DECIDE (which knows
+more than Maxima's sign(): trigonometric bounds, orderings) when Maxima leaves several."
   (if (mixed-signs-p search form)
       (list :positive :negative :zero)
-      (signs-of search form)))
+      (let ((signs (signs-of search form)))
+        (if (rest signs) (decided-signs search form signs) signs))))
+
+(defun decided-signs (search form signs)
+  "SIGNS (several) narrowed by DECIDE on FORM's translation: the sign it proves, or the
+pair it proves with >= or <=; SIGNS when it proves nothing."
+  (let* ((bridge (search-bridge search))
+         (expression (handler-case (from-mx bridge form)
+                       (untranslatable-result () (return-from decided-signs signs)))))
+    (flet ((proved (operator) (eq (decide bridge (list operator expression 0)) :true)))
+      (cond ((proved '>) (list :positive))
+            ((proved '<) (list :negative))
+            ((and (member :zero signs) (proved '>=)) (list :positive :zero))
+            ((and (member :zero signs) (proved '<=)) (list :negative :zero))
+            (t signs)))))
 
 (defun earliest-root (bridge expression variable &key (after 0) (strictly t) (candidates t))
   "The earliest real root of EXPRESSION = 0 in VARIABLE greater than AFTER (or equal to

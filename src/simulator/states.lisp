@@ -1,0 +1,182 @@
+;;;; src/simulator/states.lisp -- one qualitative state analysed: its contacts and modes chosen,
+;;;; its model solved and integrated, its end found, and the record a history keeps.
+;;;;
+;;;; Everything reported comes from the model: the forces are the knowledge base's
+;;;; REPORTED beliefs with their quantities' values, the events those its components
+;;;; name for the conditions that fired.
+
+(in-package #:ames.simulator)
+
+(defun body-motion (run groups body what)
+  "BODY's position (WHAT :POS) or velocity (:VEL) over its group's variable: a list
+(X Y) of expressions; a fixed body's position, or (0 0) for its velocity."
+  (if (body-fixed-p run body)
+      (if (eq what :pos) (body-position run body) (list 0 0))
+      (let ((head (if (eq what :pos) 'ames.kb:pos 'ames.kb:vel)))
+        (mapcar (lambda (axis)
+                  (let ((term (list head body axis)))
+                    (cdr (assoc term (group-motion (group-of-term groups term)) :test #'equal))))
+                '(:x :y)))))
+
+(defun over-motion (run solved groups expression)
+  "EXPRESSION (over quantity terms) over the state's motion, simplified: a function of
+TAU, or of the arc length for a body on a curve."
+  (tidy run (motion-value groups (over-state-terms run solved expression)) :full))
+
+(defun reported-entries (run solved groups section)
+  "The entries the knowledge base reports in SECTION (:FORCES), their quantity terms
+replaced by their values over the state's motion."
+  (loop for (name entry) in (model-reported (run-model run))
+        when (eq name section)
+          collect (report-entry run solved groups entry)))
+
+(defun report-entry (run solved groups form)
+  "FORM, a report entry, with every quantity term in it replaced by its value."
+  (cond ((quantity-term-p form) (over-motion run solved groups form))
+        ((consp form) (mapcar (lambda (x) (report-entry run solved groups x)) form))
+        (t form)))
+
+(defun contact-descriptions (run contacts)
+  "Each contact as (BODY1 BODY2 :FEATURE F :OBSERVER-FEATURE G)."
+  (mapcar (lambda (contact)
+            (let ((geometry (contact-geometry run contact)))
+              (append (contact-bodies run contact)
+                      (list :feature (ames.geometry:contact-obstacle-feature geometry)
+                            :observer-feature (ames.geometry:contact-observer-feature geometry)))))
+          contacts))
+
+(defun end-event-of (events)
+  "The one event a state reports as its end: an impact first, else the first."
+  (or (find :collision events :key (lambda (e) (and (consp e) (first e)))) (first events)))
+
+(defun group-at-end (run groups group fired)
+  "GROUP's end value: the arc length where FIRED ends it when it moves along a curve
+(one of the fired candidates is on it), else the end time. Signals
+UNSUPPORTED-SITUATION for a curved motion ended by another group's event (its place
+then has no closed form)."
+  (if (eq (group-kind group) :path)
+      (let ((own (find group fired :key #'candidate-group)))
+        (unless own
+          (error 'unsupported-situation
+                 :datum (group-bodies group)
+                 :detail "Another body's event ends the state while this body moves along a curve: where it is then has no closed form."))
+        (candidate-at-arc own))
+      (progn run groups (candidate-time (first fired)))))
+
+(defun final-values (run groups fired what)
+  "Every body's position (WHAT :POS) or velocity (:VEL) when the state ends at FIRED."
+  (mapcar (lambda (body)
+            (list body
+                  (if (body-fixed-p run body)
+                      (body-motion run groups body what)
+                      (let* ((group (find body groups :key #'group-bodies :test #'member))
+                             (at (group-at-end run groups group fired)))
+                        (mapcar (lambda (x)
+                                  (tidy run (substitute-expressions
+                                             (list (cons (group-variable group) at)) x)
+                                        :full))
+                                (body-motion run groups body what))))))
+          (body-names run)))
+
+(defun path-notes (run solved groups)
+  "The notes of the state's curved motions: for each, its arc length's start, the
+tangential acceleration, the energy integral and the normal forces over the arc."
+  (loop for group in groups
+        when (eq (group-kind group) :path)
+          collect (let ((contact (group-contact group)))
+                    (list :contact (contact-bodies run contact)
+                          :arc-length-from (group-s0 group)
+                          :direction (group-direction group)
+                          :tangential-acceleration
+                          (over-motion run solved groups
+                                       `(ames.kb:path-acc ,contact :tangential))
+                          :energy-integral `(= (expt arc-speed 2) ,(group-speed-squared group))
+                          :ode (group-ode-kind group)))))
+
+(defun reported-motion (run groups what)
+  "Every body's position or velocity over the state, as the history reports it: for a
+body on a curve, (:ON-PATH (X Y) :ARC-LENGTH S) over the arc length."
+  (mapcar (lambda (body)
+            (let ((group (find body groups :key #'group-bodies :test #'member))
+                  (motion (body-motion run groups body what)))
+              (list body (if (and group (eq (group-kind group) :path))
+                             (list :on-path (mapcar (lambda (x) (tidy run x)) motion)
+                                   :arc-length +arc-length+)
+                             motion))))
+          (body-names run)))
+
+(defun time-limit-candidate (run)
+  "The (simulate :until T) end as a CANDIDATE, when the scenario sets one and the
+state's start time is an expression."
+  (let ((until (scenario-until (run-scenario run))))
+    (when (and until (closed-form-time-p (run-time run)))
+      (make-candidate nil (list :time-limit until) (tidy run `(- ,until ,(run-time run)))))))
+
+(defun impacts-at-once (run)
+  "The activation conditions of the contacts reached with a velocity at the start of the
+state (see APPROACHING-NOW-P), as CANDIDATEs at time 0 with their impact events."
+  (loop for condition in (ames.engine:model-termination-conditions (run-model run))
+        for contact = (and (eq (ames.engine:termination-condition-kind condition) :activation)
+                           (gap-relation-contact (ames.engine:termination-condition-relation condition)))
+        when (and contact (approaching-now-p run contact))
+          collect (let ((rate (normal-approach run contact)))
+                    (make-candidate condition (condition-event condition rate) 0 :rate rate))))
+
+(defun analyse-state (run index)
+  "Choose, build, solve, integrate and end the current state, numbered INDEX. Returns
+the QUALITATIVE-STATE and the fired CANDIDATEs (NIL when it lasts forever). When which
+event ends it is ambiguous, the AMBIGUOUS-TRANSITION carries the state as far as it is
+known."
+  (let* ((trial (settle-choices run))
+         (solved (trial-solved trial))
+         (groups (integrate-groups run solved))
+         (contacts (active-contacts run))
+         (state (make-instance
+                 'qualitative-state
+                 :index index :start (run-time run) :duration :undecided
+                 :contacts (contact-descriptions run contacts)
+                 :accelerations
+                 (mapcar (lambda (body)
+                           (list body (if (body-fixed-p run body)
+                                          '(0 0)
+                                          (mapcar (lambda (axis)
+                                                    (over-motion run solved groups
+                                                                 `(ames.kb:acc ,body ,axis)))
+                                                  '(:x :y)))))
+                         (body-names run))
+                 :forces (reported-entries run solved groups :forces)
+                 :positions (reported-motion run groups :pos)
+                 :velocities (reported-motion run groups :vel)
+                 :end-event :undecided
+                 :analysis (list :equations (ames.engine:model-equations (run-model run))
+                                 :compact-equations (solved-model-equations solved)
+                                 :choices (trial-notes trial)
+                                 :integrators (mapcar (lambda (g) (list (group-bodies g) (group-kind g)))
+                                                      groups))
+                 :notes (let ((paths (path-notes run solved groups)))
+                          (when paths (list :path-coordinates (first paths)))))))
+    (multiple-value-bind (candidates unknown)
+        (let ((impacts (impacts-at-once run)))
+          (if impacts (values impacts '()) (candidates-of run solved groups)))
+      (let* ((limit (time-limit-candidate run))
+             (fired (handler-bind ((ambiguous-transition
+                                     (lambda (condition)
+                                       (setf (ambiguous-transition-state condition) state))))
+                      (earliest-candidates run (if limit (cons limit candidates) candidates)
+                                           unknown))))
+        (setf (getf (state-analysis state) :candidates)
+              (mapcar (lambda (c) (list (candidate-event c) (candidate-time c))) candidates))
+        (when fired
+          (let ((time (candidate-time (first fired))))
+            (setf (state-duration state) time
+                  (state-end-event state) (end-event-of (mapcar #'candidate-event fired))
+                  (state-final-positions state) (final-values run groups fired :pos)
+                  (state-final-velocities state) (final-values run groups fired :vel))
+            (when (rest fired)
+              (setf (getf (state-notes state) :events) (mapcar #'candidate-event fired)))
+            (let ((arc (find-if #'candidate-at-arc fired)))
+              (when arc
+                (setf (getf (state-notes state) :end-arc-length) (candidate-at-arc arc))))))
+        (unless fired
+          (setf (state-duration state) :forever (state-end-event state) :none))
+        (values state fired)))))
