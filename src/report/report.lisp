@@ -111,7 +111,12 @@ their features, the forces, accelerations and trajectories, the end event and it
               (mapcar (lambda (e) (list (car e) (cdr e))) (history-parameter-values history))))
     (dolist (state (history-states history))
       (let ((numeric (getf (state-notes state) :numeric)))
-        (format stream "~%State ~D, from t = ~A" (state-index state) (infix (state-start state)))
+        (format stream "~%State ~D, from t = ~A" (state-index state)
+                (let ((start (state-start state)))
+                  (if (and (consp start) (eq (first start) :no-closed-form))
+                      (format nil "the end of state ~D (no closed form in time)"
+                              (getf (rest start) :after-state))
+                      (infix start))))
         (when (and numeric (getf numeric :start)) (format stream " (~,4F)" (getf numeric :start)))
         (format stream "~%  contacts:~:[ none~;~]~%" (state-contacts state))
         (dolist (contact (state-contacts state))
@@ -143,7 +148,9 @@ their features, the forces, accelerations and trajectories, the end event and it
                               (infix (second (second entry)))))))
         (loop for (key value) on (state-notes state) by #'cddr
               do (case key
-                   ((:numeric :numeric-duration :lift-off-arc-length))
+                   ((:numeric :numeric-duration))
+                   (:end-arc-length
+                    (format stream "  ends at arc length s = ~A along the curve~%" (infix value)))
                    (:events (format stream "  simultaneous events:~{~%    ~A~}~%"
                                     (mapcar #'event-phrase value)))
                    (:path-coordinates
@@ -155,8 +162,7 @@ their features, the forces, accelerations and trajectories, the end event and it
                             (infix (relation-rhs (getf value :energy-integral)))
                             (if (eq (getf value :ode) :closed-form)
                                 "the ODE also has a closed form"
-                                "the ODE has no closed form in time"))
-                    (format stream "    normal force N(s) = ~A~%" (infix (getf value :normal-force))))
+                                "the ODE has no closed form in time")))
                    (t (let ((*package* (find-package '#:ames-scenario)))
                         (format stream "  ~(~A~): ~S~%" key value)))))
         (let ((duration (state-duration state)))

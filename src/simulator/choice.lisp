@@ -172,7 +172,14 @@ TRIAL."
                                   (make-trial (current-assignment run points) nil :inconsistent
                                               '() 0 (cons (list :unsolvable (ames-error-detail condition))
                                                           notes))))))
-                    (violations (immediate-violations run solved points))
+                    (violations (handler-case (immediate-violations run solved points)
+                                  (ames.maxima:maxima-error (condition)
+                                    ;; the solution is singular at this state: redundant
+                                    ;; constraints (two contacts pushing along one normal)
+                                    (return-from pivot
+                                      (make-trial (current-assignment run points) nil :singular
+                                                  '() 0 (cons (list :singular (ames-error-detail condition))
+                                                              notes))))))
                     (sure (remove :unknown violations :key #'second))
                     (sure-keys (remove-duplicates (mapcar #'first sure) :test #'equal))
                     (flippable (loop for point in lone
@@ -241,6 +248,22 @@ or UNSOLVABLE-MODEL."
                     :datum (mapcar #'trial-assignment trials)
                     :detail "No set of contacts and modes is consistent at the start of the state.")))))
 
+(defparameter *subset-limit* 6
+  "The most lone contacts whose every subset the choice search tries when pivoting
+meets a singular assignment.")
+
+(defun lone-subsets (lone)
+  "Every assignment of the LONE activation points (all active first). Signals
+UNSUPPORTED-SITUATION beyond *SUBSET-LIMIT* points."
+  (when (> (length lone) *subset-limit*)
+    (error 'unsupported-situation
+           :datum (mapcar #'ames.engine:choice-point-instance lone)
+           :detail "Redundant contacts (a singular model) among more lone contacts than the choice search enumerates."))
+  (combinations (mapcar (lambda (point)
+                          (list (list (cons (ames.engine:choice-point-instance point) :true))
+                                (list (cons (ames.engine:choice-point-instance point) :false))))
+                        lone)))
+
 (defun settle-choices (run)
   "Choose by consistency the contacts and modes that hold at the start of the current
 state, leave the model in that assignment and return its TRIAL, with the others tried
@@ -258,10 +281,13 @@ as its notes. Signals AMBIGUOUS-TRANSITION or UNSOLVABLE-MODEL (see CHOOSE-TRIAL
                                  (length combos) *combination-limit*)))
         (dolist (combo combos)
           (apply-assignment run points (append combo base))
-          (push (pivot run points lone) trials)
-          ;; one consistent, non-degenerate assignment with nothing else to combine: done
-          (when (and (null (rest combos)) (eq (trial-verdict (first trials)) :consistent))
-            (return)))
+          (let ((trial (pivot run points lone)))
+            (if (eq (trial-verdict trial) :singular)
+                ;; pivoting cannot go through a singular assignment: try every subset
+                (dolist (subset (lone-subsets lone))
+                  (apply-assignment run points (append combo subset))
+                  (push (pivot run points '()) trials))
+                (push trial trials))))
         (setf trials (nreverse trials))
         (let ((chosen (choose-trial run trials)))
           (apply-assignment run points (trial-assignment chosen))

@@ -22,6 +22,8 @@ SERIES, a memo of local series; EQUATIONS, the compact system Maxima solved."
   (rates '() :type list)
   (initial '() :type list)
   (series (make-hash-table :test #'equal))
+  (simplified (make-hash-table :test #'equal))
+  (run nil)
   (equations '() :type list))
 
 (defun model-derivatives (model)
@@ -151,7 +153,8 @@ in. Signals UNSOLVABLE-MODEL."
           (unless (assoc unknown values :test #'equal)
             (error 'unsolvable-model :datum unknown
                                      :detail "The model does not determine this quantity.")))
-        (let ((solved (%make-solved-model :values values :state state :equations compact)))
+        (let ((solved (%make-solved-model :values values :state state :equations compact
+                                          :run run)))
           (setf (solved-model-rates solved)
                 (mapcar (lambda (entry)
                           (cons (car entry) (quantity-value solved (cdr entry))))
@@ -161,14 +164,20 @@ in. Signals UNSOLVABLE-MODEL."
           solved)))))
 
 (defun quantity-value (solved term)
-  "The value of the quantity TERM in SOLVED: a state term stands for itself."
+  "The value of the quantity TERM in SOLVED, in its simplest form (Maxima's solve()
+divides by factors that vanish at particular states, such as sin(s/r) where a curve's
+normal is horizontal; simplification cancels them). A state term stands for itself."
   (if (member term (solved-model-state solved) :test #'equal)
       term
       (let ((entry (assoc term (solved-model-values solved) :test #'equal)))
-        (if entry
-            (cdr entry)
-            (error 'unsolvable-model :datum term
-                                     :detail "The model gives no value for this quantity.")))))
+        (unless entry
+          (error 'unsolvable-model :datum term
+                                   :detail "The model gives no value for this quantity."))
+        (multiple-value-bind (value found) (gethash term (solved-model-simplified solved))
+          (if found
+              value
+              (setf (gethash term (solved-model-simplified solved))
+                    (tidy (solved-model-run solved) (cdr entry) :full)))))))
 
 (defun expression-value-in (solved expression)
   "EXPRESSION with every quantity term the model solves replaced by its value (state
