@@ -1,6 +1,9 @@
 ;;;; scenarios/particle-across-table.lisp -- a particle starts at the top-left corner of a table
 ;;;; moving right: it slides along the top (the left face is only grazed at the corner, never
 ;;;; hit), leaves the far edge, flies and lands on the floor.
+;;;;
+;;;; Expected results: state 0 on the top, N = m g, ends after w / v0 past the far edge;
+;;;; state 1 free fall, lands after sqrt(2 h / g) at x = w + v0 sqrt(2 h / g).
 
 (scenario particle-across-table
   "A particle slides across a table from its top-left corner, off the far edge, to the floor."

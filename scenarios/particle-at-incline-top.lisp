@@ -1,6 +1,9 @@
 ;;;; scenarios/particle-at-incline-top.lisp -- a particle released at the top corner of a fixed
 ;;;; incline whose back face is vertical: it slides down the slope (the corner's two faces are
 ;;;; alternatives), reaches the foot of the incline and lands on the floor.
+;;;;
+;;;; Expected results: N = m g cos a, acceleration g sin a down the slope, the foot reached
+;;;; after sqrt(2 h / g) / sin a, where the particle meets the floor.
 
 (scenario particle-at-incline-top
   "A particle released at the top corner of a fixed incline slides down its slope to the floor."

@@ -3,6 +3,11 @@
 ;;;; in a convex corner: their contacts are alternatives, and the particle slides down the
 ;;;; slope (pressing on the back face as well would wedge it in place, which no convex corner
 ;;;; can do; falling along the back face, or free, only grazes it).
+;;;;
+;;;; Expected results: state 0 has the particle on the slope (edge 1) and the wedge on the
+;;;; ground; N = mp mw g cos a / (mw + mp sin^2 a) as half-way down; the particle reaches the
+;;;; ground at the slope's foot after sqrt(2 h (mw + mp sin^2 a) / (g sin^2 a (mp + mw))),
+;;;; at x = mw h / (tan a (mp + mw)) (the horizontal momentum stays zero).
 
 (scenario particle-at-wedge-apex
   "A particle released at the apex of a movable wedge on frictionless ground slides down its slope."

@@ -2,6 +2,10 @@
 ;;;; track (concave, like the inside of a bowl) from rest at its top and out onto the floor: at
 ;;;; the bottom its speed is sqrt(2 g R) and the track pushes with N = 3 m g; then it slides on
 ;;;; along the floor.
+;;;;
+;;;; Expected results: on the track N(s) = 3 m g cos(s / r) (s from the bottom), the
+;;;; bottom reached with velocity (sqrt(2 g r), 0) and N = 3 m g, the floor met there
+;;;; tangentially; then sliding on the floor with N = m g, forever.
 
 (scenario particle-down-quarter-circle
   "A particle runs from rest down a quarter-circle track onto the floor."

@@ -2,6 +2,10 @@
 ;;;; run to the end: the particle starts at rest at angle theta0 from the top of a fixed sphere
 ;;;; that stands on the floor, slides, lifts off where cos theta = (2/3) cos theta0, flies
 ;;;; clear of the sphere and lands on the floor.
+;;;;
+;;;; Expected results: lift-off at cos theta = (2/3) cos theta0 with v^2 = (2/3) g r
+;;;; cos theta0 (as particle-on-sphere); free flight that never meets the sphere again;
+;;;; landing on the floor.
 
 (scenario particle-on-sphere-on-floor
   "A particle slides off a fixed sphere standing on the floor, flies, and lands on the floor."

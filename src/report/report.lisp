@@ -140,15 +140,19 @@ their features, the forces, accelerations and trajectories, the end event and it
         (format stream "  positions over the state (tau from its start):~%")
         (dolist (entry (state-positions state))
           (format stream "    ~(~A~): ~A~%" (first entry)
-                  (if (and (consp (second entry)) (keywordp (first (second entry))))
+                  (cond
+                    ((equal (second entry) '(:no-closed-form))
+                     "no closed form in time (integrated numerically under the given values)")
+                    ((and (consp (second entry)) (keywordp (first (second entry))))
                       (let ((path (getf (second entry) :on-path)))
                         (format nil "on the contact at arc length s: (~A, ~A)"
-                                (infix (first path)) (infix (second path))))
-                      (format nil "(~A, ~A)" (infix (first (second entry)))
-                              (infix (second (second entry)))))))
+                                (infix (first path)) (infix (second path)))))
+                    (t (format nil "(~A, ~A)" (infix (first (second entry)))
+                               (infix (second (second entry))))))))
         (loop for (key value) on (state-notes state) by #'cddr
               do (case key
-                   ((:numeric :numeric-duration))
+                   ((:numeric :numeric-duration :numeric-trajectory))
+                   (:undecided (format stream "  ~A~%" value))
                    (:end-arc-length
                     (format stream "  ends at arc length s = ~A along the curve~%" (infix value)))
                    (:events (format stream "  simultaneous events:~{~%    ~A~}~%"
@@ -170,6 +174,9 @@ their features, the forces, accelerations and trajectories, the end event and it
           (format stream "  duration: ~A~@[ (~,4F)~]~%"
                   (cond ((eq duration :forever) "forever")
                         ((eq duration :undecided) "undecided")
+                        ((and (consp duration) (eq (first duration) :no-closed-form)
+                              (getf (rest duration) :needs))
+                         "not found: no closed form in time, and no numbers to integrate with")
                         ((and (consp duration) (eq (first duration) :no-closed-form))
                          (format nil "no closed form in time; it ends after travelling from arc length ~A to ~A along the contact (see the energy integral)"
                                  (infix (getf (rest duration) :from-arc-length))

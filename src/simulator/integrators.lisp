@@ -22,7 +22,7 @@ state term -> its value over the group's VARIABLE (TAU, or the arc length for :P
 for :PATH, the CONTACT, the initial arc length S0, the DIRECTION (+1 or -1) of motion,
 and SPEED-SQUARED, the energy integral E(s)."
   bodies (kind :constant) (variable 'tau) motion contact s0 direction speed-squared
-  ode-kind)
+  ode-kind end-state samples terms)
 
 (defconstant +arc-length+ 'arc-length
   "The variable standing for the arc length s along a curved contact.")
@@ -49,13 +49,14 @@ and SPEED-SQUARED, the energy integral E(s)."
                                 :key (lambda (b) (position b (free-body-names run))))))
             (sort groups #'< :key (lambda (g) (reduce #'min (mapcar (lambda (b) (position b (free-body-names run))) g)))))))
 
-(defun group-state-terms (solved group)
+(defun group-state-terms (run solved group)
   "The state terms of SOLVED that belong to GROUP: its bodies' positions and velocities
 and the path coordinates of contacts whose observer is in it."
   (remove-if-not (lambda (term)
-                   (case (first term)
-                     ((ames.kb:pos ames.kb:vel) (member (second term) (group-bodies group)))
-                     (t t)))
+                   (member (case (first term)
+                             ((ames.kb:pos ames.kb:vel) (second term))
+                             (t (first (contact-bodies run (second term)))))
+                           (group-bodies group)))
                  (solved-model-state solved)))
 
 (defun path-terms (solved)
@@ -69,7 +70,8 @@ and the path coordinates of contacts whose observer is in it."
   (some (lambda (term) (not (free-of-p term expression))) (solved-model-state solved)))
 
 (defun classify-group (run solved group)
-  "GROUP's KIND, set on it and returned."
+  "GROUP's KIND, set on it and returned (and its state TERMS)."
+  (setf (group-terms group) (group-state-terms run solved group))
   (let* ((curved (remove-if-not (lambda (contact)
                                   (member (ames.geometry:contact-observer (contact-geometry run contact))
                                           (group-bodies group)))
@@ -97,7 +99,7 @@ and the path coordinates of contacts whose observer is in it."
 
 (defun linear-rates-p (run solved group rates)
   "True when RATES are linear in GROUP's state terms with constant coefficients."
-  (let ((terms (group-state-terms solved group)))
+  (let ((terms (group-state-terms run solved group)))
     (every (lambda (rate)
              (every (lambda (term)
                       (let* ((symbol (state-symbol term))
@@ -183,22 +185,45 @@ of motion. Signals AMBIGUOUS-TRANSITION when the direction is not decided."
 ;;; All groups
 
 (defun integrate-groups (run solved)
-  "The state's GROUPs, classified and integrated. A :LINEAR or :NUMERIC group is
-outside what this state analysis integrates in closed form: UNSUPPORTED-SITUATION."
+  "The state's GROUPs, classified and integrated in closed form where they can be.
+A :LINEAR group goes to the bridge's linear ODE solver when it has one, else it is
+integrated numerically like a :NUMERIC group (when the termination conditions are
+searched, under parameter values: see numeric.lisp)."
   (let ((groups (body-groups run)))
     (dolist (group groups groups)
       (ecase (classify-group run solved group)
         (:constant (integrate-constant run solved group))
         (:path (integrate-path run solved group))
-        ((:linear :numeric)
-         (error 'unsupported-situation
-                :datum (group-bodies group)
-                :detail (format nil "These bodies' motion is ~:[not linear~;linear~] with accelerations that depend on where they are; AMES has no integrator for it yet."
-                                (eq (group-kind group) :linear))))))))
+        (:linear (unless (integrate-linear run solved group)
+                   (setf (group-kind group) :numeric)))
+        (:numeric)))))
+
+(defun integrate-linear (run solved group)
+  "Fill GROUP's motion through the bridge's closed-form solver of linear ODEs with
+constant coefficients, when the bridge has one; NIL when it has none or it fails."
+  (let ((solver (find-symbol "SOLVE-LINEAR-ODES" '#:ames.maxima)))
+    (when (and solver (fboundp solver))
+      (let* ((bodies (group-bodies group))
+             (positions (loop for b in bodies append (list `(ames.kb:pos ,b :x) `(ames.kb:pos ,b :y))))
+             (velocities (loop for b in bodies append (list `(ames.kb:vel ,b :x) `(ames.kb:vel ,b :y))))
+             (accelerations (mapcar (lambda (v) (cdr (assoc v (solved-model-rates solved) :test #'equal)))
+                                    velocities))
+             (initial (lambda (terms) (mapcar (lambda (term) (cdr (assoc term (solved-model-initial solved)
+                                                                           :test #'equal)))
+                                                terms))))
+        (handler-case
+            (multiple-value-bind (position-values velocity-values)
+                (funcall solver (run-bridge run) accelerations positions velocities
+                         (funcall initial positions) (funcall initial velocities))
+              (setf (group-motion group)
+                    (append (mapcar #'cons positions position-values)
+                            (mapcar #'cons velocities velocity-values)))
+              group)
+          (ames-error () nil))))))
 
 (defun group-of-term (groups term)
-  "The GROUP among GROUPS whose motion gives the state term TERM, or NIL."
-  (find-if (lambda (group) (assoc term (group-motion group) :test #'equal)) groups))
+  "The GROUP among GROUPS whose state term TERM is, or NIL."
+  (find-if (lambda (group) (member term (group-terms group) :test #'equal)) groups))
 
 (defun motion-value (groups expression)
   "EXPRESSION (over state terms) with every state term replaced by its motion in the
@@ -206,6 +231,6 @@ group that has it."
   (substitute-expressions
    (loop for term in (expression-variables expression)
          for group = (and (quantity-term-p term) (group-of-term groups term))
-         when group
-           collect (cons term (cdr (assoc term (group-motion group) :test #'equal))))
+         for entry = (and group (assoc term (group-motion group) :test #'equal))
+         when entry collect entry)
    expression))

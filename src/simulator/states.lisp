@@ -7,16 +7,22 @@
 
 (in-package #:ames.simulator)
 
+(defun body-group (groups body)
+  "The GROUP among GROUPS that BODY belongs to, or NIL (a fixed body)."
+  (find body groups :key #'group-bodies :test #'member))
+
 (defun body-motion (run groups body what)
   "BODY's position (WHAT :POS) or velocity (:VEL) over its group's variable: a list
-(X Y) of expressions; a fixed body's position, or (0 0) for its velocity."
-  (if (body-fixed-p run body)
-      (if (eq what :pos) (body-position run body) (list 0 0))
-      (let ((head (if (eq what :pos) 'ames.kb:pos 'ames.kb:vel)))
-        (mapcar (lambda (axis)
-                  (let ((term (list head body axis)))
-                    (cdr (assoc term (group-motion (group-of-term groups term)) :test #'equal))))
-                '(:x :y)))))
+(X Y) of expressions; a fixed body's position, or (0 0) for its velocity; for a body
+integrated numerically, the list (:NO-CLOSED-FORM)."
+  (let ((group (body-group groups body)))
+    (cond ((body-fixed-p run body)
+           (if (eq what :pos) (body-position run body) (list 0 0)))
+          ((eq (group-kind group) :numeric) (list :no-closed-form))
+          (t (let ((head (if (eq what :pos) 'ames.kb:pos 'ames.kb:vel)))
+               (mapcar (lambda (axis)
+                         (cdr (assoc (list head body axis) (group-motion group) :test #'equal)))
+                       '(:x :y)))))))
 
 (defun over-motion (run solved groups expression)
   "EXPRESSION (over quantity terms) over the state's motion, simplified: a function of
@@ -67,16 +73,50 @@ then has no closed form)."
   "Every body's position (WHAT :POS) or velocity (:VEL) when the state ends at FIRED."
   (mapcar (lambda (body)
             (list body
-                  (if (body-fixed-p run body)
-                      (body-motion run groups body what)
-                      (let* ((group (find body groups :key #'group-bodies :test #'member))
+                  (cond
+                    ((body-fixed-p run body) (body-motion run groups body what))
+                    ((eq (group-kind (body-group groups body)) :numeric)
+                     (numeric-final-value run (body-group groups body) body what))
+                    (t
+                      (let* ((group (body-group groups body))
                              (at (group-at-end run groups group fired)))
                         (mapcar (lambda (x)
                                   (tidy run (substitute-expressions
                                              (list (cons (group-variable group) at)) x)
                                         :full))
-                                (body-motion run groups body what))))))
+                                (body-motion run groups body what)))))))
           (body-names run)))
+
+(defun numeric-final-value (run group body what)
+  "BODY's position (WHAT :POS) or velocity (:VEL) at the end of a numeric GROUP's state.
+A body moving along a curved contact is put on it exactly: its obstacle's end value plus
+the contact's point (or velocity) at the end arc length and speed, so that the next
+state finds it on the contact's locus."
+  (let* ((end (group-end-state group))
+         (contact (find-if (lambda (k) (eq body (first (contact-bodies run k))))
+                           (loop for term in (group-terms group)
+                                 when (eq (first term) 'ames.kb:path-position) collect (second term))))
+         (head (if (eq what :pos) 'ames.kb:pos 'ames.kb:vel)))
+    (flet ((own (b axis) (rational-of (cdr (assoc (list head b axis) end :test #'equal))))
+           (path (term) (rational-of (cdr (assoc (list term contact) end :test #'equal)))))
+      (if (null contact)
+          (list (own body :x) (own body :y))
+          (let* ((obstacle (second (contact-bodies run contact)))
+                 (base (if (body-fixed-p run obstacle)
+                           (if (eq what :pos) (body-position run obstacle) '(0 0))
+                           (list (own obstacle :x) (own obstacle :y))))
+                 (geometry (contact-geometry run contact))
+                 (s (path 'ames.kb:path-position)))
+            (mapcar (lambda (x) (tidy run x))
+                    (vec+ base (if (eq what :pos)
+                                   (ames.geometry:contact-point geometry s)
+                                   (vec-scale (path 'ames.kb:path-speed)
+                                              (ames.geometry:contact-unit-tangent geometry s))))))))))
+
+(defun rational-of (x)
+  "The double X as the exact rational it is (a numeric state's end value carried into
+the next state's exact arithmetic), rounded to 15 significant digits."
+  (rationalize (coerce (float x 1d0) 'double-float)))
 
 (defun path-notes (run solved groups)
   "The notes of the state's curved motions: for each, its arc length's start, the
@@ -157,7 +197,15 @@ known."
                           (when paths (list :path-coordinates (first paths)))))))
     (multiple-value-bind (candidates unknown)
         (let ((impacts (impacts-at-once run)))
-          (if impacts (values impacts '()) (candidates-of run solved groups)))
+          (if impacts
+              (values impacts '())
+              (handler-case (candidates-of run solved groups)
+                (no-closed-form (condition)
+                  ;; no closed form and no numbers: the state's end cannot be found
+                  (setf (state-duration state) (list :no-closed-form :needs :parameter-values)
+                        (state-end-event state) :undecided
+                        (getf (state-notes state) :undecided) (ames-error-detail condition))
+                  (return-from analyse-state (values state :undecided))))))
       (let* ((limit (time-limit-candidate run))
              (fired (handler-bind ((ambiguous-transition
                                      (lambda (condition)
@@ -174,6 +222,9 @@ known."
                   (state-final-velocities state) (final-values run groups fired :vel))
             (when (rest fired)
               (setf (getf (state-notes state) :events) (mapcar #'candidate-event fired)))
+            (let ((numeric (remove nil (mapcar #'group-samples groups))))
+              (when numeric
+                (setf (getf (state-notes state) :numeric-trajectory) numeric)))
             (let ((arc (find-if #'candidate-at-arc fired)))
               (when arc
                 (setf (getf (state-notes state) :end-arc-length) (candidate-at-arc arc))))))

@@ -193,13 +193,18 @@ is reached at a non-zero RATE), or its model change when the component names non
 
 (defun candidates-of (run solved groups)
   "Every termination condition of the model that fires: (values CANDIDATES UNKNOWN),
-UNKNOWN a list of (FACT EVENT) for the conditions whose firing is not decided."
-  (let ((candidates '()) (unknown '()))
+UNKNOWN a list of (FACT EVENT) for the conditions whose firing is not decided.
+Conditions over a :NUMERIC group are watched by a numeric integration (under parameter
+values) up to the earliest of the others."
+  (let ((candidates '()) (unknown '()) (numeric '()))
     (dolist (condition (ames.engine:model-termination-conditions (run-model run)))
       (let* ((relation (ames.engine:termination-condition-relation condition))
              (involved (condition-groups run solved groups relation)))
         (multiple-value-bind (result fact)
             (cond ((null involved) :never)
+                  ((some (lambda (g) (eq (group-kind g) :numeric)) involved)
+                   (push condition numeric)
+                   :never)
                   ((every (lambda (g) (eq (group-kind g) :constant)) involved)
                    (tau-candidate run solved groups condition))
                   ((and (null (rest involved)) (eq (group-kind (first involved)) :path))
@@ -208,4 +213,11 @@ UNKNOWN a list of (FACT EVENT) for the conditions whose firing is not decided."
           (cond ((candidate-p result) (push result candidates))
                 ((eq result :unknown)
                  (push (list fact (condition-event condition nil)) unknown))))))
+    (when (some (lambda (g) (eq (group-kind g) :numeric)) groups)
+      (let ((horizon (loop for c in candidates
+                           for time = (numeric-time run (candidate-time c))
+                           when time minimize time)))
+        (setf candidates (append (numeric-candidates run solved groups (reverse numeric)
+                                                     (and candidates horizon))
+                                 candidates))))
     (values (nreverse candidates) (nreverse unknown))))
