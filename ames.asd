@@ -17,6 +17,7 @@ frictionless translating rigid bodies evolve (after Leon Wong's 1994 MIT thesis)
     :components ((:file "package")
                  (:file "conditions")
                  (:file "algebra")
+                 (:file "special-functions")
                  (:file "evaluation")))
    (:module "maxima-bridge" :pathname "src/maxima-bridge/" :serial t
     :depends-on ("base")
