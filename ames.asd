@@ -32,6 +32,8 @@ frictionless translating rigid bodies evolve (after Leon Wong's 1994 MIT thesis)
                  (:file "integrator-support")
                  (:file "quadrature")
                  (:file "integrals")
+                 (:file "linear-ode")
+                 (:file "trig-roots")
                  (:static-file "maxima-server.lisp")))
    (:module "tms" :pathname "src/tms/" :serial t
     :depends-on ("base")

@@ -131,9 +131,21 @@ minus A + B cos(k v) + C sin(k v) simplifies to 0."
                  (a (simplified bridge `(/ (+ ,at-zero ,at-pi) 2)))
                  (b (simplified bridge `(/ (- ,at-zero ,at-pi) 2)))
                  (c (simplified bridge `(- ,at-half ,a))))
-            (when (equivalent-p bridge expression
-                                `(+ ,a (* ,b (cos (* ,k ,variable))) (* ,c (sin (* ,k ,variable)))))
+            (when (trigonometric-identity-p
+                   bridge expression
+                   `(+ ,a (* ,b (cos (* ,k ,variable))) (* ,c (sin (* ,k ,variable)))))
               (list a b c k))))))))
+
+(defun trigonometric-identity-p (bridge x y)
+  "True when the expressions X and Y are equal: EQUIVALENT-P, or X - Y with the
+arguments of its sines and cosines expanded into sums (sin((pi + 2 w t)/2) into
+sin(pi/2 + w t), which Maxima's trigexpand then takes apart) simplifies to 0."
+  (or (equivalent-p bridge x y)
+      (let ((difference (mdifference (to-mx bridge x) (to-mx bridge y))))
+        (flet ((zero-p (form) (eql 0 (maxima-request bridge form :datum (list '- x y)))))
+          (or (zero-p (mcall "$RATSIMP" (mcall "$TRIGEXPAND" (mcall "$EXPAND" difference))))
+              (zero-p (mcall "$RATSIMP" (mcall "$AMES_TRIGSIMP"
+                                               (mcall "$TRIGEXPAND" (mcall "$EXPAND" difference))))))))))
 
 ;;; Numeric verification
 
