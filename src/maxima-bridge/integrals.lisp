@@ -141,6 +141,7 @@ of ds / sqrt(E) (points where the quadrature fails are skipped)."
   (let* ((s (travel-position travel))
          (energy (travel-energy travel))
          (from (travel-from travel)) (to (travel-to travel))
+         (profile (make-energy-profile (travel-bridge travel) energy s from to))
          (subjects (remove s (remove-duplicates (mapcan #'expression-variables
                                                         (list energy from to time))
                                                 :test #'equal)
@@ -151,7 +152,7 @@ of ds / sqrt(E) (points where the quadrature fails are skipped)."
        (let ((start (expression-value from point))
              (end (expression-value to point)))
          (and start end
-              (travel-time-integral energy s (float start 1d0) (float end 1d0) point))))
+              (travel-time-integral profile (float start 1d0) (float end 1d0) point))))
      subjects)))
 
 ;;; The patterns. Each returns an antiderivative G of 1/sqrt(E) valid on the whole path,

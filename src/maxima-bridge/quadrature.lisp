@@ -3,11 +3,13 @@
 ;;;; The time to travel from s0 to s1 when the squared speed is E(s) is the integral of
 ;;;; ds / sqrt(E(s)). E vanishes where the motion starts from rest or ends at a turning
 ;;;; point; there the integrand has an inverse square-root singularity. Writing
-;;;; s = s0 + (s1 - s0) (1 - cos(pi u)) / 2 makes ds vanish like u (and like 1 - u) at both
+;;;; s = s0 + (s1 - s0) sin^2(pi u / 2) makes ds vanish like u (and like 1 - u) at both
 ;;;; ends, as sqrt(E) does at a simple zero, so the integrand in u is smooth on [0, 1] and
-;;;; Gauss-Legendre converges fast. Everything is computed in Lisp double-floats through
-;;;; AMES.BASE:EXPRESSION-VALUE; Maxima is asked only for an end that Lisp cannot
-;;;; evaluate. Also the reference for verifying closed forms (see integrals.lisp).
+;;;; Gauss-Legendre converges fast. Close to a zero of E, E(s) itself is mostly rounding
+;;;; (cos(theta0) - cos(s/r)), so there E comes from its Taylor polynomial at the end,
+;;;; whose coefficients Maxima computes once. The rest is Lisp double-float arithmetic
+;;;; through AMES.BASE:EXPRESSION-VALUE. Also the reference for verifying closed forms
+;;;; (see integrals.lisp).
 
 (in-package #:ames.maxima)
 
@@ -36,9 +38,10 @@ when FUNCTION gives NIL at a node."
 
 (defun adaptive-integral (function a b &key (tolerance 1d-11) (depth 30))
   "The integral of FUNCTION (of a double-float, giving a double-float or NIL) over
-[A, B], halving each piece whose two halves do not agree with it within TOLERANCE
-(relative to the whole estimate). NIL when FUNCTION gives NIL somewhere, or when a piece
-still disagrees after DEPTH halvings."
+[A, B], halving each piece whose two halves do not agree with it within its share of
+TOLERANCE (relative to the whole estimate; at least a thousandth of it). NIL when
+FUNCTION gives NIL somewhere, or when a piece still disagrees after DEPTH halvings (a
+divergent integral)."
   (let ((whole (gauss-legendre function a b)))
     (when whole
       (let ((scale (max (abs whole) least-positive-normalized-double-float))
@@ -52,7 +55,11 @@ still disagrees after DEPTH halvings."
                      (unless (and first-half second-half)
                        (return-from adaptive-integral nil))
                      (let ((refined (+ first-half second-half)))
-                       (cond ((<= (abs (- refined estimate)) (* tolerance scale (/ (- right left) (- b a))))
+                       ;; a piece may err by its share of the tolerance, and a tiny piece
+                       ;; (where rounding makes the integrand noisy: E near a zero at an
+                       ;; end) by a thousandth of it
+                       (cond ((<= (abs (- refined estimate))
+                                  (* tolerance scale (max (/ (- right left) (- b a)) 1d-3)))
                               (incf total refined))
                              ((>= level depth) (return-from adaptive-integral nil))
                              (t (push (list left middle first-half (1+ level)) pending)
@@ -69,19 +76,73 @@ Maxima's float() when Lisp gives none; NIL when it has no real value."
                (maxima-error () nil)
                (untranslatable-result () nil))))))
 
-(defun travel-time-integral (speed-squared position start end values)
-  "The integral of ds / sqrt(SPEED-SQUARED) from the double-float START to END (in
-either order; the result is positive), SPEED-SQUARED an expression in POSITION and the
-subjects bound by the alist VALUES (double-floats), or NIL when SPEED-SQUARED is not
-positive at a node or the quadrature does not converge."
+(defstruct (energy-profile (:constructor %make-energy-profile))
+  "The squared speed EXPRESSION in the name POSITION, with its Taylor coefficients
+(c0 c1 ... c4) in powers of (s - end) at FROM and at TO (expressions of the parameters;
+NIL where Maxima could not differentiate). c0 is exactly 0 where the expression
+simplifies to 0 at that end (a start from rest, a turning point)."
+  expression position from-series to-series)
+
+(defparameter *series-reach* 1d-3
+  "Within this fraction of the path from an end, the squared speed is evaluated from its
+Taylor polynomial at that end (rounding makes E(s) = cos(theta0) - cos(s/r) worthless
+close to a zero; the polynomial of degree 4 errs by about the fourth power of the reach).")
+
+(defun end-series (bridge expression position end)
+  "The Taylor coefficients (c0 c1 c2 c3 c4) of EXPRESSION in POSITION at END, or NIL."
+  (call-or-nil
+   (lambda ()
+     (let ((derivatives (list expression)))
+       (loop repeat 4 do (push (maxima-derivative bridge (first derivatives) position) derivatives))
+       (loop for derivative in (reverse derivatives)
+             for factorial in '(1 1 2 6 24)
+             for k from 0
+             collect (let ((value (substituted bridge derivative position end :ratsimp)))
+                       (if (and (zerop k) (zero-expression-p bridge value))
+                           0
+                           (simplified bridge `(/ ,value ,factorial) :ratsimp))))))))
+
+(defun make-energy-profile (bridge expression position from to)
+  "The ENERGY-PROFILE of the squared speed EXPRESSION between FROM and TO (asks Maxima
+for the derivatives)."
+  (%make-energy-profile :expression expression :position position
+                        :from-series (end-series bridge expression position from)
+                        :to-series (end-series bridge expression position to)))
+
+(defun series-values (series values)
+  "The coefficients of SERIES as double-floats under VALUES, or NIL."
+  (loop for coefficient in series
+        for value = (expression-value coefficient values)
+        unless value return nil
+        collect (float value 1d0)))
+
+(defun polynomial-value (coefficients x)
+  "c0 + c1 X + c2 X^2 + ... (Horner)."
+  (reduce (lambda (c sum) (+ c (* x sum))) coefficients :from-end t :initial-value 0d0))
+
+(defun travel-time-integral (profile start end values)
+  "The integral of ds / sqrt(E) from the double-float START to END (in either order; the
+result is positive), E the squared speed of the ENERGY-PROFILE PROFILE, under the alist
+VALUES (double-floats); NIL when E is not positive at a node or the quadrature does not
+converge. With s = START + (END - START) sin^2(pi u/2), s - START and END - s are
+computed without cancellation, and near either end E comes from its Taylor polynomial."
   (let* ((span (- end start))
          (factor (* (abs span) (/ pi 2)))
-         (bindings (acons position 0d0 values)))
+         (reach (* *series-reach* (abs span)))
+         (from-series (series-values (energy-profile-from-series profile) values))
+         (to-series (series-values (energy-profile-to-series profile) values))
+         (expression (energy-profile-expression profile))
+         (bindings (acons (energy-profile-position profile) 0d0 values)))
     (flet ((integrand (u)
-             (let ((s (+ start (* span (/ (- 1 (cos (* pi u))) 2)))))
-               (setf (cdr (first bindings)) s)
-               (let ((e (expression-value speed-squared bindings)))
-                 (and e (plusp e) (/ (* factor (sin (* pi u))) (sqrt (float e 1d0))))))))
+             (let* ((after-start (* span (expt (sin (* pi u 1/2)) 2)))
+                    (before-end (* span (expt (cos (* pi u 1/2)) 2)))
+                    (e (cond ((and from-series (<= (abs after-start) reach))
+                              (polynomial-value from-series after-start))
+                             ((and to-series (<= (abs before-end) reach))
+                              (polynomial-value to-series (- before-end)))
+                             (t (setf (cdr (first bindings)) (+ start after-start))
+                                (expression-value expression bindings)))))
+               (and e (plusp e) (/ (* factor (sin (* pi u))) (sqrt (float e 1d0)))))))
       (if (zerop span) 0d0 (adaptive-integral #'integrand 0d0 1d0)))))
 
 (defun numeric-travel-time (bridge speed-squared position from to values)
@@ -90,8 +151,10 @@ POSITION = TO when the squared speed is SPEED-SQUARED, an expression in POSITION
 integral of ds / sqrt(SPEED-SQUARED) between FROM and TO, to about 1e-10 relative.
 VALUES is an alist (name . real) giving every other name its value. SPEED-SQUARED may
 vanish at FROM or TO (a start from rest, a turning point at the end): the substitution
-s = FROM + (TO - FROM) (1 - cos(pi u)) / 2 takes away those square-root singularities.
-0 when FROM = TO.
+s = FROM + (TO - FROM) sin^2(pi u/2) takes away those square-root singularities, and
+near each end the squared speed is taken from its Taylor polynomial there (Maxima
+differentiates it once; a zero at an end is recognised exactly), so that rounding near
+a zero does no harm. 0 when FROM = TO.
 Signals INVALID-BRIDGE-ARGUMENT for a POSITION that is no name or malformed VALUES,
 UNTRANSLATABLE-EXPRESSION for an expression outside the algebra, and
 NUMERIC-EVALUATION-FAILED when FROM or TO has no real value, or when SPEED-SQUARED is
@@ -112,7 +175,8 @@ converge (a double zero of SPEED-SQUARED at an end: the time is infinite)."
     (unless (and start end)
       (error 'numeric-evaluation-failed :datum (list from to)
                                         :detail "an end of the travel has no real value"))
-    (or (travel-time-integral speed-squared position start end values)
+    (or (travel-time-integral (make-energy-profile bridge speed-squared position from to)
+                              start end values)
         (error 'numeric-evaluation-failed
                :datum speed-squared
                :detail (format nil "the squared speed is not positive between ~,6G and ~,6G, ~
