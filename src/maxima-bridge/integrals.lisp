@@ -14,15 +14,7 @@
 ;;;; answer is then checked: symbolically (G' = 1/sqrt(E) on the path, by Maxima) when the
 ;;;; pattern's conditions were all decided, and always numerically against the quadrature
 ;;;; of quadrature.lisp at random admissible points (required when no symbolic proof).
-;;;;
-;;;; The elliptic case. With D cos(k s - phi) = B cos(k s) + C sin(k s) and y = k s - phi,
-;;;; E = (A + D) (1 - m sin^2(y/2)) with m = 2D / (A + D), so the time is
-;;;; 2 / (k sqrt(A + D)) [F(y/2 | m)] between the ends. For m < 1 (A > D: the particle goes
-;;;; round) that is the antiderivative everywhere. For m >= 1 (A <= D: it swings in a well
-;;;; around y = 0 mod 2 pi, |sin(y/2)| <= 1/sqrt(m)) F(y/2 | m) is complex beyond the
-;;;; first well; the reciprocal-parameter form F(y/2 | m) = F(beta | 1/m) / sqrt(m), with
-;;;; sin(beta) = sqrt(m) sin(y/2), is real, and is the antiderivative while cos(y/2) > 0,
-;;;; that is while y stays in (-pi, pi): phi is shifted by 2 pi n to make it so.
+;;;; The elliptic pattern is in elliptic.lisp.
 
 (in-package #:ames.maxima)
 
@@ -53,6 +45,8 @@ DIRECTION other than 1, -1 or NIL), UNTRANSLATABLE-EXPRESSION."
   (check-travel-arguments position (list speed-squared from to) (list from to))
   (unless (member direction '(nil 1 -1))
     (error 'invalid-bridge-argument :datum direction :detail "the direction must be 1, -1 or NIL"))
+  (when (zero-expression-p bridge (list '- to from))
+    (return-from travel-time (values 0 :closed-form :symbolic)))
   (multiple-value-bind (direction decided) (choose-direction bridge from to direction)
     (when direction
       (let ((travel (make-travel bridge speed-squared position from to direction)))
@@ -178,23 +172,37 @@ on the path); for c2 > 0 asinh((2 c2 s + c1) / sqrt(-D)) / sqrt(c2) when D < 0, 
                  (discriminant (simplified bridge `(- (expt ,c1 2) (* 4 ,a ,c0)))))
              (case (decided-sign bridge a)
                (:negative
-                (values `(- (/ (asin (/ ,slope (sqrt ,discriminant))) (sqrt (- ,a)))) t))
+                (values `(- (/ (asin (/ ,slope (sqrt ,discriminant))) (sqrt (- ,a)))) t
+                        ;; at a turning point the sine is +-1 exactly
+                        (lambda (end)
+                          (when (at-rest-p travel end)
+                            (case (decided-sign bridge (substitute-expressions (list (cons s end)) slope))
+                              (:positive `(- (/ pi (* 2 (sqrt (- ,a))))))
+                              (:negative `(/ pi (* 2 (sqrt (- ,a))))))))))
                (:positive
                 (if (eq (decided-sign bridge discriminant) :negative)
                     (values `(/ (asinh (/ ,slope (sqrt (- ,discriminant)))) (sqrt ,a)) t)
                     (let ((side (path-sign travel slope))
                           (positive (eq (decided-sign bridge discriminant) :positive)))
-                      (case side
+                      (flet ((end-value (end)
+                               ;; acosh(1) = 0 at a turning point
+                               (and positive (at-rest-p travel end) 0)))
+                       (case side
                         (:positive
                          (values (if positive
                                      `(/ (acosh (/ ,slope (sqrt ,discriminant))) (sqrt ,a))
                                      `(/ (log (+ (* 2 (sqrt ,a) (sqrt ,energy)) ,slope)) (sqrt ,a)))
-                                 t))
+                                 t #'end-value))
                         (:negative
                          (values (if positive
                                      `(- (/ (acosh (- (/ ,slope (sqrt ,discriminant)))) (sqrt ,a)))
                                      `(- (/ (log (- (* 2 (sqrt ,a) (sqrt ,energy)) ,slope)) (sqrt ,a))))
-                                 t)))))))))))))
+                                 t #'end-value))))))))))))))
+
+(defun at-rest-p (travel end)
+  "True when the squared speed simplifies to 0 at END (a start from rest, a turning point)."
+  (let ((bridge (travel-bridge travel)))
+    (zero-expression-p bridge (substituted bridge (travel-energy travel) (travel-position travel) end))))
 
 (defun path-sign (travel expression)
   "The sign (:POSITIVE or :NEGATIVE) that EXPRESSION, linear in the position, has at both
@@ -222,7 +230,11 @@ A < 0 < B (a bound fall) (B/a^(3/2)) asin(sqrt(a s/B)) - sqrt(s (B - a s))/a wit
           (cond ((and (eq a-sign :negative) (eq b-sign :positive))
                  (values `(- (* (/ ,b (expt (- ,a) 3/2)) (asin (sqrt (/ (* (- ,a) ,s) ,b))))
                              (/ (sqrt (* ,s (+ ,b (* ,a ,s)))) (- ,a)))
-                         t))
+                         t
+                         ;; at rest (the top of the fall) the sine is 1 exactly
+                         (lambda (end)
+                           (and (at-rest-p travel end)
+                                `(* (/ ,b (expt (- ,a) 3/2)) (/ pi 2))))))
                 ((and (eq a-sign :positive) (eq b-sign :positive))
                  (values `(- (/ (sqrt (* ,s (+ (* ,a ,s) ,b))) ,a)
                              (* (/ ,b (expt ,a 3/2)) (asinh (sqrt (/ (* ,a ,s) ,b)))))
@@ -230,7 +242,8 @@ A < 0 < B (a bound fall) (B/a^(3/2)) asin(sqrt(a s/B)) - sqrt(s (B - a s))/a wit
                 ((and (eq a-sign :positive) (eq b-sign :negative))
                  (values `(+ (* (/ (- ,b) (expt ,a 3/2)) (acosh (sqrt (/ (* ,a ,s) (- ,b)))))
                              (/ (sqrt (* ,s (+ (* ,a ,s) ,b))) ,a))
-                         t))
+                         t
+                         (lambda (end) (and (at-rest-p travel end) 0))))
                 ((and (eq a-sign :zero) (eq b-sign :positive))
                  (values `(/ (* 2 ,s (sqrt ,s)) (* 3 (sqrt ,b))) t))))))))
 
@@ -253,111 +266,3 @@ antiderivative may jump between the ends)."
            (unless (contains-head-p +integrate-noun+ answer)
              (values (from-mx bridge answer) nil)))
       (setf (bridge-timeout bridge) saved))))
-
-(defun sinusoidal-antiderivative (travel)
-  "E = A + B cos(k s) + C sin(k s) = A + D cos(k s - phi): with m = 2D/(A + D),
-2 F((k s - phi)/2 | m) / (k sqrt(A + D)) when A > D (the motion goes round), else
-2 F(asin(sqrt(m) sin((k s - phi)/2)) | 1/m) / (k sqrt(2D)) with phi shifted by a
-multiple of 2 pi so that k s - phi stays in (-pi, pi) on the path (see the file header).
-Never proven: the numeric check decides."
-  (let* ((bridge (travel-bridge travel))
-         (s (travel-position travel))
-         (parts (sinusoid-coefficients bridge (travel-energy travel) s)))
-    (when parts
-      (destructuring-bind (a b c k) parts
-        (let ((k-sign (decided-sign bridge k)))
-          (when (eq k-sign :negative)
-            ;; cos(k s) = cos(-k s), sin(k s) = -sin(-k s)
-            (setf c (simplified bridge `(- ,c)) k (simplified bridge `(- ,k))))
-          (when (member k-sign '(:positive :negative))
-            (multiple-value-bind (d phase) (amplitude-and-phase bridge b c)
-              (when d
-                (let ((angle `(- (* ,k ,s) ,phase)))
-                  (case (or (decided-sign bridge (simplified bridge `(- ,a ,d)))
-                            (witnessed-sign bridge (simplified bridge `(- ,a ,d))))
-                    (:positive
-                     (values `(/ (* 2 (elliptic-f (/ ,angle 2) (/ (* 2 ,d) (+ ,a ,d))))
-                                 (* ,k (sqrt (+ ,a ,d))))
-                             nil))
-                    ((:negative :zero)
-                     (let* ((phase (well-phase travel k phase))
-                            (angle `(- (* ,k ,s) ,phase))
-                            (parameter `(/ (+ ,a ,d) (* 2 ,d)))
-                            (scale `(/ 2 (* ,k (sqrt (* 2 ,d))))))
-                       (values `(* ,scale (elliptic-f (asin (* (sqrt (/ (* 2 ,d) (+ ,a ,d)))
-                                                              (sin (/ ,angle 2))))
-                                                        ,parameter))
-                               nil
-                               (lambda (end)
-                                 ;; at a turning point the amplitude is +-pi/2 exactly
-                                 (turning-value travel end `(- (* ,k ,end) ,phase)
-                                                `(* ,scale (elliptic-k ,parameter)))))))))))))))))
-
-(defun turning-value (travel end angle quarter)
-  "QUARTER or -QUARTER (the antiderivative's value at a turning point of the libration
-form, where the amplitude is pi/2 or -pi/2) when E vanishes at END, by the sign of ANGLE
-there; NIL when E does not vanish there, or the sign is not decided."
-  (let ((bridge (travel-bridge travel)))
-    (when (zero-expression-p bridge (substituted bridge (travel-energy travel)
-                                                 (travel-position travel) end))
-      (case (decided-sign bridge angle)
-        (:positive quarter)
-        (:negative `(- ,quarter))))))
-
-(defun amplitude-and-phase (bridge b c)
-  "D >= 0 and phi with B cos x + C sin x = D cos(x - phi), as two values: plain ones
-when B or C is 0 and the other's sign is decided, else sqrt(B^2 + C^2) and atan2(C, B)."
-  (flet ((negated (x) (simplified bridge `(- ,x))))
-    (cond ((zero-expression-p bridge c)
-           (case (decided-sign bridge b)
-             (:positive (values b 0))
-             (:negative (values (negated b) 'pi))
-             (t nil)))
-          ((zero-expression-p bridge b)
-           (case (decided-sign bridge c)
-             (:positive (values c '(/ pi 2)))
-             (:negative (values (negated c) '(- (/ pi 2))))
-             (t nil)))
-          (t (values (simplified bridge `(sqrt (+ (expt ,b 2) (expt ,c 2))))
-                     (simplified bridge `(atan ,c ,b)))))))
-
-(defun well-phase (travel k phase)
-  "PHASE + 2 pi n with k s - (PHASE + 2 pi n) in (-pi, pi) at both ends of the path:
-for n = 0, 1, -1 the first the assumptions decide; else the n that the first admissible
-point gives (to be checked numerically); else PHASE."
-  (let* ((bridge (travel-bridge travel))
-         (ends (list (travel-from travel) (travel-to travel))))
-    (flet ((shifted (n) (if (zerop n) phase (simplified bridge `(+ ,phase (* 2 pi ,n))))))
-      (or (loop for n in '(0 1 -1)
-                for candidate = (shifted n)
-                when (eq (decide bridge `(and ,@(loop for end in ends
-                                                      collect `(> (- (* ,k ,end) ,candidate) (- pi))
-                                                      collect `(< (- (* ,k ,end) ,candidate) pi))))
-                         :true)
-                  return candidate)
-          (let ((n nil)
-                (offset `(- (* ,k ,(travel-from travel)) ,phase)))
-            (call-with-admissible-points
-             bridge (list '> offset 0)
-             (lambda (point)
-               (let ((value (expression-value offset point)))
-                 (when value (setf n (round value (* 2 pi)))))
-               n))
-            (shifted (or n 0)))))))
-
-(defun witnessed-sign (bridge expression)
-  "The sign EXPRESSION has at every admissible point where it has a value (:POSITIVE or
-:NEGATIVE; at least *VERIFICATION-POINTS* such points), else NIL. Chooses between
-formulas that are then checked; proves nothing."
-  (let ((signs '()) (count 0))
-    (call-with-admissible-points
-     bridge (list '> expression 0)
-     (lambda (point)
-       (let ((value (expression-value expression point)))
-         (when value
-           (incf count)
-           (pushnew (cond ((plusp value) :positive) ((minusp value) :negative) (t :zero)) signs)))
-       (rest signs)))
-    (and (>= count *verification-points*) (null (rest signs))
-         (member (first signs) '(:positive :negative))
-         (first signs))))

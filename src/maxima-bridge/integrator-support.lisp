@@ -49,6 +49,7 @@ be tried (never for an answer that is returned unchecked)."
     (maxima-error () nil)
     (maxima-timeout () nil)
     (untranslatable-result () nil)
+    (inconsistent-assumptions () nil)
     (solve-failed () nil)))
 
 (defun simplified (bridge expression &optional (strategy :full))
