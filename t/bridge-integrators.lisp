@@ -348,3 +348,59 @@ elliptic and Jacobi functions in Lisp)."
      (is (eq :unknown (trigonometric-root b '(+ (cos (* w tau)) (cos (* 2 w tau))))))
      ;; a polynomial goes to EARLIEST-ROOT
      (is-root b '(/ l v0) '(- (* v0 tau) l)))))
+
+;;; Positions over time on a circle
+
+(test position-over-time-of-a-pendulum-and-the-sphere
+  (call-with-bridge
+   (lambda (b)
+     ;; a pendulum released at theta0 is back at theta0 after a full period 4 K sqrt(l/g),
+     ;; passes the bottom after a quarter, and is at -theta0 after half
+     (ames.maxima:with-assumptions (b '((> g 0) (> l 0) (> theta0 0) (< theta0 (/ pi 2))))
+       (multiple-value-bind (theta w status)
+           (ames.maxima:position-over-time b '(* 2 (/ g l) (- (cos s) (cos theta0))) 's 'theta0)
+         (declare (ignore w))
+         (is (eq :numeric status))
+         (let ((quarter '(* (sqrt (/ l g)) (elliptic-k (expt (sin (/ theta0 2)) 2))))
+               (values '((g . 981/100) (l . 2) (theta0 . 7/10))))
+           (flet ((at (time) (ames.maxima:numeric-value
+                              b (substitute-expressions (list (cons 'tau time)) theta) values)))
+             (is (close-to-p 0.7d0 (at 0) 1d-12))
+             (is (close-to-p 0d0 (at quarter) 1d-9))
+             (is (close-to-p -0.7d0 (at `(* 2 ,quarter)) 1d-9))
+             (is (close-to-p 0.7d0 (at `(* 4 ,quarter)) 1d-9))))))
+     ;; the sphere: at the travel time it is where it leaves the sphere
+     (ames.maxima:with-assumptions (b '((> g 0) (> r 0) (> theta0 0) (< theta0 (/ pi 2))))
+       (let ((energy '(* 2 g r (- (cos theta0) (cos (/ s r)))))
+             (values '((g . 981/100) (r . 1) (theta0 . 1/10))))
+         (multiple-value-bind (s w) (ames.maxima:position-over-time b energy 's '(* r theta0))
+           (let ((time (ames.maxima:travel-time b energy 's '(* r theta0) '(* r (acos (* 2/3 (cos theta0)))))))
+             (is (close-to-p (ames.maxima:numeric-value b '(acos (* 2/3 (cos theta0))) values)
+                             (ames.maxima:numeric-value b (substitute-expressions (list (cons 'tau time)) s) values)
+                             1d-9))
+             ;; and its speed there is the energy integral's
+             (is (close-to-p (ames.maxima:numeric-value b (substitute-expressions (list (cons 'tau time)) w) values)
+                             (sqrt (* 2 9.81d0 (- (cos 0.1d0) (* 2/3 (cos 0.1d0)))))
+                             1d-9)))))))))
+
+(test position-over-time-going-round
+  (call-with-bridge
+   (lambda (b)
+     (ames.maxima:with-assumptions (b '((> g 0) (> l 0) (> w0 0) (> (* l (expt w0 2)) (* 4 g))))
+       (let ((energy '(+ (expt w0 2) (* 2 (/ g l) (- (cos s) 1)))))
+         (multiple-value-bind (theta w status) (ames.maxima:position-over-time b energy 's 0 :direction -1)
+           (is (eq :numeric status))
+           ;; going backwards, it is at -pi after the half-revolution time
+           (let ((half (ames.maxima:travel-time b energy 's 0 '(- pi)))
+                 (values '((g . 981/100) (l . 2) (w0 . 5))))
+             (is (close-to-p (- pi) (ames.maxima:numeric-value
+                                     b (substitute-expressions (list (cons 'tau half)) theta) values)
+                             1d-9))
+             (is (close-to-p -5d0 (ames.maxima:numeric-value
+                                   b (substitute-expressions '((tau . 0)) w) values) 1d-12))))
+         ;; not at rest: the direction is needed
+         (signals ames.maxima:invalid-bridge-argument
+           (ames.maxima:position-over-time b energy 's 0))
+         ;; another shape
+         (is (equal '(nil :no-closed-form)
+                    (multiple-value-list (ames.maxima:position-over-time b '(+ 1 (expt s 4)) 's 0 :direction 1)))))))))

@@ -18,7 +18,8 @@ only by this package's own translation (see translation.lisp and maxima-server.l
    #:ode-solution-velocity #:ode-solution-speed-squared
    #:numeric-value #:latex
    ;; integrators (integrals.lisp, quadrature.lisp, linear-ode.lisp, trig-roots.lisp)
-   #:travel-time #:numeric-travel-time #:solve-linear-odes #:earliest-trigonometric-root
+   #:travel-time #:numeric-travel-time #:position-over-time #:solve-linear-odes
+   #:earliest-trigonometric-root
    #:solve-script
    ;; conditions
    #:maxima-condition #:maxima-error #:maxima-error-message
