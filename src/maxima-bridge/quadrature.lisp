@@ -88,26 +88,39 @@ simplifies to 0 at that end (a start from rest, a turning point)."
 Taylor polynomial at that end (rounding makes E(s) = cos(theta0) - cos(s/r) worthless
 close to a zero; the polynomial of degree 4 errs by about the fourth power of the reach).")
 
-(defun end-series (bridge expression position end)
-  "The Taylor coefficients (c0 c1 c2 c3 c4) of EXPRESSION in POSITION at END, or NIL."
+(defun end-series (bridge expression position end &optional values)
+  "The Taylor coefficients (c0 c1 c2 c3 c4) of EXPRESSION in POSITION at END (one round
+trip), c0 exactly 0 when it simplifies to 0 (not tried when c0 is clearly not 0 under
+the alist VALUES, when given); NIL when Maxima cannot give them."
   (call-or-nil
    (lambda ()
-     (let ((derivatives (list expression)))
-       (loop repeat 4 do (push (maxima-derivative bridge (first derivatives) position) derivatives))
-       (loop for derivative in (reverse derivatives)
-             for factorial in '(1 1 2 6 24)
-             for k from 0
-             collect (let ((value (substituted bridge derivative position end :ratsimp)))
-                       (if (and (zerop k) (zero-expression-p bridge value))
-                           0
-                           (simplified bridge `(/ ,value ,factorial) :ratsimp))))))))
+     (let* ((form (to-mx bridge expression))
+            (s (to-mx bridge position))
+            (at (to-mx bridge end))
+            (coefficients
+              (mapcar (lambda (c) (from-mx bridge c))
+                      (request-list bridge
+                                    (loop for k from 0 to 4
+                                          for factorial in '(1 1 2 6 24)
+                                          collect (mcall "$RATSIMP"
+                                                         (mquotient (mcall "$SUBSTITUTE" at s
+                                                                           (if (zerop k) form (mcall "$DIFF" form s k)))
+                                                                    factorial)))
+                                    :datum expression))))
+       (let ((c0 (and values (expression-value (first coefficients) values)))
+             (c1 (and values (expression-value (second coefficients) values))))
+         (if (and (not (and c0 c1 (> (abs c0) (* 1d-9 (+ (abs c0) (abs c1))))))
+                  (zero-expression-p bridge (first coefficients)))
+             (cons 0 (rest coefficients))
+             coefficients))))))
 
-(defun make-energy-profile (bridge expression position from to)
+(defun make-energy-profile (bridge expression position from to &optional values)
   "The ENERGY-PROFILE of the squared speed EXPRESSION between FROM and TO (asks Maxima
-for the derivatives)."
+for the derivatives; VALUES, when given, spare the zero test of an end where E is
+clearly not 0 under them)."
   (%make-energy-profile :expression expression :position position
-                        :from-series (end-series bridge expression position from)
-                        :to-series (end-series bridge expression position to)))
+                        :from-series (end-series bridge expression position from values)
+                        :to-series (end-series bridge expression position to values)))
 
 (defun series-values (series values)
   "The coefficients of SERIES as double-floats under VALUES, or NIL."
@@ -175,7 +188,7 @@ converge (a double zero of SPEED-SQUARED at an end: the time is infinite)."
     (unless (and start end)
       (error 'numeric-evaluation-failed :datum (list from to)
                                         :detail "an end of the travel has no real value"))
-    (or (travel-time-integral (make-energy-profile bridge speed-squared position from to)
+    (or (travel-time-integral (make-energy-profile bridge speed-squared position from to values)
                               start end values)
         (error 'numeric-evaluation-failed
                :datum speed-squared
