@@ -102,8 +102,6 @@ G's value there in a better form (exact where the formula meets a turning point)
 
 ;;; Verification
 
-;;; Verification
-
 (defun verify-travel-time (travel antiderivative time proven)
   "How TIME was verified (:SYMBOLIC or :NUMERIC), or NIL when it was not: symbolically
 when PROVEN (the pattern's conditions were decided) and Maxima shows ANTIDERIVATIVE' =

@@ -17,7 +17,7 @@ only by this package's own translation (see translation.lisp and maxima-server.l
    #:solve-autonomous-ode #:ode-solution #:ode-solution-kind #:ode-solution-position
    #:ode-solution-velocity #:ode-solution-speed-squared
    #:numeric-value #:latex
-   ;; integrators (integrals.lisp, quadrature.lisp, linear-ode.lisp, trig-roots.lisp)
+   ;; integrators (integrals.lisp, elliptic.lisp, quadrature.lisp, linear-ode.lisp, trig-roots.lisp)
    #:travel-time #:numeric-travel-time #:position-over-time #:solve-linear-odes
    #:earliest-trigonometric-root
    #:solve-script
