@@ -137,6 +137,8 @@ bottom with speed sqrt(2 g R), pressed by N = 3 m g there, meets the floor tange
                    (is-same bridge "N at the bottom"
                             (arc-length-at (normal-force-between curve "PARTICLE" "TRACK") end)
                             (x '(* 3 m g)))))
+               (is-same bridge "time down the quarter circle: sqrt(r/g) K(1/2)"
+                        (ames::state-duration curve) (x '(* (sqrt (/ r g)) (elliptic-k 1/2))))
                (is-same-vector bridge "velocity at the bottom"
                                (per-body (ames::state-final-velocities curve) "PARTICLE")
                                (x '((sqrt (* 2 g r)) 0)))

@@ -13,8 +13,9 @@
 (test sphere-lift-off-then-free-fall
   "The particle slides on the sphere until cos theta = (2/3) cos theta0, where it
 lifts off at (r sin theta1, r cos theta1) with v^2 = (2/3) g r cos theta0 along the
-tangent; the time has no closed form (a numeric one with the default values); then it
-falls freely, (0, -g), forever."
+tangent; the time is an incomplete elliptic integral of the first kind, 0.90711 s with
+the defaults (g = 9.81, r = 1, theta0 = 0.1: an independent integration of the ODE gives
+0.9071); then it falls freely, (0, -g), forever."
   (with-fixture simulator-bridge ()
     (let* ((scenario (scenario-named "particle-on-sphere"))
            (values (ames:scenario-parameter-values scenario))
@@ -29,10 +30,10 @@ falls freely, (0, -g), forever."
             (is (equal '(("PARTICLE" "SPHERE")) (contact-pairs slide)))
             (is (equal '(:lift-off "PARTICLE" "SPHERE") (event-names (ames::state-end-event slide))))
             (let ((duration (ames::state-duration slide)))
-              (is (and (consp duration) (eq :no-closed-form (first duration)))
-                  "duration ~S" duration))
+              (is (not (and (consp duration) (keywordp (first duration)))) "a closed form: ~S" duration)
+              (is (mentions-name-p "ELLIPTIC-F" duration) "an elliptic integral: ~S" duration))
             (let ((numeric (getf (getf (ames::state-notes slide) :numeric) :duration)))
-              (is (and (realp numeric) (plusp numeric)) "numeric duration ~S" numeric))
+              (is (and (realp numeric) (< (abs (- numeric 0.90711d0)) 1d-4)) "numeric duration ~S" numeric))
             (is (null (ames::state-contacts flight)))
             (is (eq :forever (ames::state-duration flight)))
             (is (eq :none (ames::state-end-event flight)))

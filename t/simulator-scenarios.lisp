@@ -52,6 +52,7 @@ TAU stay as they are."
              (cond ((consp x) (cons (walk (car x)) (walk (cdr x))))
                    ((and x (symbolp x) (not (keywordp x))
                          (not (eq (symbol-package x) (find-package '#:common-lisp)))
+                         (not (operator-p x))
                          (not (eq x 'tau)))
                     (let ((parameter (ames:find-scenario-parameter x scenario)))
                       (assert parameter () "~S is not a parameter of ~A" x

@@ -24,7 +24,9 @@
     ;; elliptic integrals (amplitude, parameter m) and Jacobi's functions (u, m), see
     ;; special-functions.lisp
     (elliptic-f 2 2) (elliptic-k 1 1) (elliptic-e 2 2)
-    (jacobi-sn 2 2) (jacobi-cn 2 2) (jacobi-dn 2 2) (jacobi-am 2 2))
+    (jacobi-sn 2 2) (jacobi-cn 2 2) (jacobi-dn 2 2) (jacobi-am 2 2)
+    ;; Euler's gamma function: Maxima writes K(1/2) and kin exactly with it
+    (gamma-function 1 1))
   "Each arithmetic operator with its least and greatest number of arguments (NIL:
 no limit).")
 

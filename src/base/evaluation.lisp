@@ -116,7 +116,7 @@ overflow."
                   (and (not (and (zerop y) (zerop x))) (approximate #'atan y x)))
                 (approximate #'atan (argument))))
       ((sinh cosh tanh asinh acosh atanh elliptic-f elliptic-k elliptic-e
-        jacobi-sn jacobi-cn jacobi-dn jacobi-am)
+        jacobi-sn jacobi-cn jacobi-dn jacobi-am gamma-function)
        (special-function-value operator arguments)))))
 
 (defun arity-allows-p (operator count)

@@ -25,4 +25,5 @@ bridge translates the algebra to anything else.")
    #:expression-value #:rational-root
    ;; special functions: operators of the algebra, and their numeric values
    #:elliptic-f #:elliptic-k #:elliptic-e #:jacobi-sn #:jacobi-cn #:jacobi-dn #:jacobi-am
+   #:gamma-function
    #:special-function-value))

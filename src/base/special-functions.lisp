@@ -121,6 +121,25 @@ cn(u sqrt m | 1/m)); NIL for M < 0."
         (and am (let ((sn (sin am)))
                   (values sn (cos am) (sqrt (max 0d0 (- 1 (* m sn sn))))))))))
 
+(defparameter +lanczos-coefficients+
+  '(0.99999999999980993d0 676.5203681218851d0 -1259.1392167224028d0 771.32342877765313d0
+    -176.61502916214059d0 12.507343278686905d0 -0.13857109526572012d0
+    9.9843695780195716d-6 1.5056327351493116d-7)
+  "Lanczos's coefficients for g = 7, n = 9 (about 15 significant digits).")
+
+(defun gamma-value (x)
+  "Euler's gamma function at the double X, or NIL at a pole (0, -1, -2, ...); by the
+reflection formula below 1/2, else Lanczos's approximation."
+  (cond ((and (<= x 0) (= x (fround x))) nil)
+        ((< x 1/2) (let ((other (gamma-value (- 1 x))))
+                     (and other (/ pi (* (sin (* pi x)) other)))))
+        (t (let* ((x (- x 1))
+                  (sum (first +lanczos-coefficients+))
+                  (t7 (+ x 7.5d0)))
+             (loop for c in (rest +lanczos-coefficients+) for i from 1
+                   do (incf sum (/ c (+ x i))))
+             (* (sqrt (* 2 pi)) (expt t7 (+ x 0.5d0)) (exp (- t7)) sum)))))
+
 (defun special-function-value (operator arguments)
   "The value of the hyperbolic, elliptic or Jacobi OPERATOR of the algebra at the real
 ARGUMENTS, as a double-float, or NIL where it is not real or not computed here (see the
@@ -138,6 +157,7 @@ file header). May signal ARITHMETIC-ERROR on overflow."
                    (t (acosh x))))
       (atanh (and (< (abs x) 1) (atanh x)))
       (elliptic-k (complete-elliptic-k x))
+      (gamma-function (gamma-value x))
       (elliptic-f (incomplete-elliptic x y :f))
       (elliptic-e (incomplete-elliptic x y :e))
       (jacobi-am (if (> y 1)

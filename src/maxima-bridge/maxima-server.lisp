@@ -54,7 +54,7 @@
     mplus mtimes mexpt mquotient mminus rat mlist
     %sin %cos %tan %asin %acos %atan %sqrt %log $atan2 %derivative
     %sinh %cosh %tanh %asinh %acosh %atanh
-    %elliptic_f %elliptic_kc %elliptic_e %jacobi_sn %jacobi_cn %jacobi_dn %jacobi_am
+    %elliptic_f %elliptic_kc %elliptic_e %jacobi_sn %jacobi_cn %jacobi_dn %jacobi_am %gamma
     mequal mnotequal mlessp mgreaterp mleqp mgeqp mand mor mnot $equal $notequal
     ;; operations the bridge uses
     $ratsimp $trigsimp $trigreduce $trigexpand $radcan $expand $factor $factorsum $fullratsimp

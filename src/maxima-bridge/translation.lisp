@@ -44,7 +44,8 @@
     (elliptic-f . ,(wire "%ELLIPTIC_F")) (elliptic-k . ,(wire "%ELLIPTIC_KC"))
     (elliptic-e . ,(wire "%ELLIPTIC_E"))
     (jacobi-sn . ,(wire "%JACOBI_SN")) (jacobi-cn . ,(wire "%JACOBI_CN"))
-    (jacobi-dn . ,(wire "%JACOBI_DN")) (jacobi-am . ,(wire "%JACOBI_AM")))
+    (jacobi-dn . ,(wire "%JACOBI_DN")) (jacobi-am . ,(wire "%JACOBI_AM"))
+    (gamma-function . ,(wire "%GAMMA")))
   "The hyperbolic, elliptic and Jacobi functions of the algebra and their Maxima heads
 (elliptic_f(phi, m), elliptic_kc(m), elliptic_e(phi, m), jacobi_sn(u, m) ...: the same
 argument order, parameter m as in AMES.BASE's special-functions.lisp).")
