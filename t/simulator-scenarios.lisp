@@ -415,9 +415,15 @@ t1 = d/v0 = 1/4 and t2 = sqrt(2h/g)."
 
 (test corner-stops-on-the-undecided-sign-of-the-push
   "Whether B rises or falls depends on f against mb g (l1 - l2)/l3, which the
-assumptions do not decide: the run stops :AMBIGUOUS, naming the missing fact."
+assumptions do not decide: with (simulate :branch nil) the run stops :AMBIGUOUS, naming
+the missing fact."
   (with-fixture simulator-bridge ()
-    (let* ((scenario (scenario-named "two-blocks-in-corner"))
+    (let* ((scenario (ames:parse-scenario
+                      (mapcar (lambda (clause)
+                                (if (and (consp clause) (same-name-p* (first clause) "SIMULATE"))
+                                    (append clause (list :branch nil))
+                                    clause))
+                              (ames:scenario-form (scenario-named "two-blocks-in-corner")))))
            (history (simulate-stopping-when-ambiguous scenario bridge))
            (condition (getf (ames::history-notes history) :stopped-by)))
       (is (eq :ambiguous (ames::history-outcome history)))

@@ -34,6 +34,15 @@
            :end-event (state-end-event state)
            :final-positions (state-final-positions state)
            :final-velocities (state-final-velocities state))
+     (when (state-branches state)
+       (list :branches
+             (mapcar (lambda (branch)
+                       (list* :assume (getf branch :assume)
+                              :states (mapcar #'state-sexp (getf branch :states))
+                              (loop for (key value) on branch by #'cddr
+                                    unless (member key '(:assume :states))
+                                      append (list key value))))
+                     (state-branches state))))
      (loop for (key value) on notes by #'cddr
            unless (eq key :numeric-duration)
              append (list key value)))))

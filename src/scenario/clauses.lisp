@@ -95,21 +95,29 @@ are more."
       (checked-expression validation (second clause)))))
 
 (defun checked-simulate (validation clauses)
-  "The :states and :until of the (simulate ...) clause among CLAUSES, as two values."
+  "The :states, :until and :branch of the (simulate ...) clause among CLAUSES, as three
+values (:branch defaults to T)."
   (let ((clause (single-clause validation 'ames-scenario:simulate clauses)))
-    (when clause
-      (let* ((arguments (checked-keywords validation (rest clause) '(:states :until)
-                                          "simulate"))
-             (states (keyword-value :states arguments))
-             (until (multiple-value-bind (until present) (keyword-value :until arguments)
-                      (and present (checked-expression validation until)))))
-        (when (and (assoc :states arguments) (not (and (integerp states) (plusp states))))
-          (reject validation 'scenario-syntax-error states
-                  ":states takes a positive integer, not ~A" (show states)))
-        (when until
-          (check-positive-constant validation until "the :until time"
-                                   'scenario-expression-error))
-        (values states until)))))
+    (if (null clause)
+        (values nil nil t)
+        (let* ((arguments (checked-keywords validation (rest clause) '(:states :until :branch)
+                                            "simulate"))
+               (states (keyword-value :states arguments))
+               (until (multiple-value-bind (until present) (keyword-value :until arguments)
+                        (and present (checked-expression validation until))))
+               (branch (multiple-value-bind (value present) (keyword-value :branch arguments)
+                         (cond ((not present) t)
+                               ((named-p value "T") t)
+                               ((named-p value "NIL") nil)
+                               (t (reject validation 'scenario-syntax-error value
+                                          ":branch takes T or NIL, not ~A" (show value)))))))
+          (when (and (assoc :states arguments) (not (and (integerp states) (plusp states))))
+            (reject validation 'scenario-syntax-error states
+                    ":states takes a positive integer, not ~A" (show states)))
+          (when until
+            (check-positive-constant validation until "the :until time"
+                                     'scenario-expression-error))
+          (values states until branch)))))
 
 ;;; ------------------------------------------------------------------------------------
 ;;; Collisions
@@ -253,13 +261,13 @@ CHECK-SCENARIO-GEOMETRY, which the caller runs when it has those layers."
               (when (null bodies)
                 (enter validation "form" form)
                 (reject validation 'missing-property-error form "the scenario has no body"))
-              (multiple-value-bind (states until)
+              (multiple-value-bind (states until branch)
                   (checked-simulate validation (clauses 'ames-scenario:simulate))
                 (make-instance 'scenario
                                :name name :description description
                                :parameters parameters :gravity gravity
                                :bodies bodies :forces forces
-                               :states states :until until
+                               :states states :until until :branch branch
                                :queries (mapcar #'rest (clauses 'ames-scenario:query))
                                :restitutions (checked-restitutions
                                               validation (clauses 'ames-scenario:restitution))

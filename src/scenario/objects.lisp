@@ -78,6 +78,9 @@ expression, or NIL when the scenario has no gravity.")
            :documentation "Stop after this many states (a positive integer), or NIL.")
    (until :initarg :until :initform nil :reader scenario-until
           :documentation "Stop at this global time (an expression), or NIL.")
+   (branch :initarg :branch :initform t :reader scenario-branch
+           :documentation "True when an ambiguity splits the run into branches; NIL when it
+stops the run, naming the missing fact.")
    (queries :initarg :queries :initform '() :reader scenario-queries
             :documentation "The arguments of each (query ...) clause, as data.")
    (restitutions :initarg :restitutions :initform '() :reader scenario-restitutions

@@ -45,6 +45,7 @@ and Maxima (assumptions, overlaps).")
    #:scenario #:parse-scenario #:scenario-p
    #:scenario-name #:scenario-description #:scenario-parameters #:scenario-gravity
    #:scenario-bodies #:scenario-forces #:scenario-states #:scenario-until
+   #:scenario-branch
    #:scenario-queries #:scenario-source #:scenario-form
    #:scenario-restitutions #:scenario-restitution
    #:scenario-parameter #:scenario-parameter-name #:scenario-parameter-assumptions

@@ -39,6 +39,25 @@ assumptions decide divided out: (> (* (- l1 l2) (- f k)) 0) with l1 > l2 becomes
                       (ecase (first fact) (> '<) (< '>) (>= '<=) (<= '>=)))
                   (first kept) 0)))))
 
+(defun simplest-missing-fact (run facts)
+  "Of FACTS (the relations undecided for several candidates), the one whose core form
+(see CORE-FACT) is smallest: a sign condition on the parameters alone (the push above
+or below a threshold) before a comparison of two times that it would settle."
+  (let ((best nil) (best-size nil))
+    (dolist (fact facts best)
+      (let* ((core (core-fact run fact))
+             (size (if (and (consp core) (member (first core) '(< > <= >=))
+                            (free-of-p 'tau core)
+                            (notany #'keywordp (alexandria:flatten core)))
+                       (count-atoms core)
+                       most-positive-fixnum)))
+        (when (or (null best) (< size best-size))
+          (setf best fact best-size size))))))
+
+(defun count-atoms (x)
+  "The number of atoms in the tree X."
+  (if (atom x) 1 (+ (count-atoms (car x)) (count-atoms (cdr x)))))
+
 (defun closed-form-time-p (time)
   "True when TIME is an expression (not a (:NO-CLOSED-FORM ...) description)."
   (not (and (consp time) (keywordp (first time)))))
@@ -117,7 +136,8 @@ arc length)."
 none: the state lasts forever). Signals AMBIGUOUS-TRANSITION (restart STOP-SIMULATION)
 when UNKNOWN (conditions whose firing is undecided) is not empty or the order is not
 decided."
-  (when unknown (ambiguity run (first (first unknown)) candidates unknown))
+  (when unknown
+    (ambiguity run (simplest-missing-fact run (mapcar #'first unknown)) candidates unknown))
   (when candidates
     ;; within one curved motion, by arc length; then across groups, by time
     (let* ((path-groups (remove-duplicates (remove nil (mapcar #'candidate-group candidates))))

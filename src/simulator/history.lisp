@@ -41,6 +41,9 @@ whatever event the knowledge base's component names for the condition that fired
    (notes :initarg :notes :initform '() :accessor state-notes
           :documentation "Extra facts a person should know: energy integrals, numeric values
 under --set, contact-breaking positions ...; a plist.")
+   (branches :initarg :branches :initform '() :accessor state-branches
+             :documentation "For a fork (end event (:BRANCH)): the branches, each a plist
+(:ASSUME FACT :STATES STATES :OUTCOME OUTCOME [:SELECTED T] [:SUBSTITUTION (P V)]).")
    (analysis :initarg :analysis :initform '() :accessor state-analysis
              :documentation "How AMES reached the state, for explanations: a plist with
 :EQUATIONS (the model's equations), :CHOICES (the consistency argument: each
@@ -56,7 +59,7 @@ termination condition with its time, or why it never fires)."))
            :documentation "The QUALITATIVE-STATEs in order.")
    (outcome :initarg :outcome :initform :complete :accessor history-outcome
             :documentation ":COMPLETE (nothing more changes), :STATE-LIMIT, :TIME-LIMIT,
-:COLLISION (no collision model: the run ends there), :AMBIGUOUS, or :UNDECIDED
+:AMBIGUOUS, :BRANCHED (the last state is a fork: see STATE-BRANCHES), or :UNDECIDED
 (a state's end could not be found: no closed form and no numbers to integrate with).")
    (parameter-values :initarg :parameter-values :initform '()
                      :reader history-parameter-values

@@ -130,6 +130,9 @@ noted in the history) for the rest of the run."
            (multiple-value-bind (state fired)
                (handler-case (analyse-state run index)
                  (ambiguous-transition (condition)
+                   (when (and (scenario-branch (run-scenario run))
+                              (fork run history index condition check-incremental))
+                     (return-from run-states))
                    (let ((fact (fact-from-values run (core-fact run (ambiguous-transition-missing-fact condition))
                                                  (history-parameter-values history))))
                      (when (or (null fact)
@@ -204,10 +207,11 @@ the scenario's assumptions in BRIDGE). PARAMETER-VALUES as SIMULATE takes them."
                                        situation :decider (state-decider run))))
       run)))
 
-(defun simulate-checked (scenario bridge parameter-values check-incremental)
-  "SIMULATE's work on the validated SCENARIO."
+(defun simulate-checked (scenario bridge parameter-values check-incremental &key extra-facts)
+  "SIMULATE's work on the validated SCENARIO, with EXTRA-FACTS (relations) assumed
+besides the scenario's own assumptions (a branch's)."
   (check-scenario scenario bridge)
-  (ames.maxima:with-assumptions (bridge (scenario-assumption-relations scenario))
+  (ames.maxima:with-assumptions (bridge (append (scenario-assumption-relations scenario) extra-facts))
     (let ((history (make-instance 'simulation-history
                                   :scenario scenario
                                   :parameter-values (resolve-parameter-values scenario parameter-values)))
