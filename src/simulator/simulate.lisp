@@ -59,7 +59,8 @@ scratch when CHECK-INCREMENTAL)."
 
 (defun fact-from-values (run fact values)
   "FACT, or its negation, as the parameter VALUES decide it numerically; NIL when they
-do not (no values, a value missing, or the two sides equal)."
+do not (no values, a value missing, or the two sides equal). The two sides differ under
+the values, so the negation is the strict one: (< X Y) false means (> X Y)."
   (when (and values (consp fact) (member (first fact) '(< > <= >=))
              (notany #'keywordp (alexandria:flatten fact)))
     (let ((difference (numeric-or-nil (run-bridge run)
@@ -67,7 +68,7 @@ do not (no values, a value missing, or the two sides equal)."
       (when (and difference (/= difference 0))
         (if (ecase (first fact) ((> >=) (plusp difference)) ((< <=) (minusp difference)))
             fact
-            (list (ecase (first fact) (> '<=) (>= '<) (< '>=) (<= '>))
+            (list (ecase (first fact) ((> >=) '<) ((< <=) '>))
                   (relation-lhs fact) (relation-rhs fact)))))))
 
 (defun run-states (run history index limit check-incremental)
