@@ -86,3 +86,22 @@ point's options."
       (:mode
        (unless (eq option (instance-mode instance))
          (list :mode (instance-key instance) :from (instance-mode instance) :to option))))))
+
+(defun stale-activation-changes (model &key (decider (model-decider model)))
+  "The changes that bring every qualified instance's activation in line with DECIDER's
+fresh verdict where that verdict is decided (:TRUE or :FALSE) and disagrees: after a
+transition that changed what the activation conditions read without firing them (an
+impact changes velocities at once). A :CHOICE or :UNKNOWN verdict changes nothing (the
+choice is the caller's to settle)."
+  (let ((changes '()))
+    (dolist (instance (model-instances model) (nreverse changes))
+      (let ((templates (component-activation-relations (instance-component instance))))
+        (when (and templates (instance-activation-node instance) (instance-qualified-p instance))
+          (let* ((relations (mapcar (lambda (template) (expanded-relation model instance template))
+                                    templates))
+                 (verdict (conjunction-answer model relations (make-hash-table :test #'equal)
+                                              decider)))
+            (cond ((and (eq verdict :false) (instance-active-p instance))
+                   (push (list :deactivate (instance-key instance)) changes))
+                  ((and (eq verdict :true) (not (instance-active-p instance)))
+                   (push (list :activate (instance-key instance)) changes)))))))))

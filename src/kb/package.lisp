@@ -15,6 +15,10 @@ forces). See mechanics.lisp's header for the vocabulary the simulator and the
 components share.")
   (:export
    #:*mechanics* #:mechanics-knowledge-base #:contact-geometry
+   #:*impacts* #:impact-knowledge-base
+   ;; the impact model's quantities and entities (impacts.lisp)
+   #:vel-after #:jx #:jy #:normal-impulse #:separation-after #:energy-lost #:touching-contact
+   #:impulse
    ;; the quantity terms the components speak of (heads of terms such as (acc particle :x))
    #:acc #:vel #:pos #:rel-acc #:fx #:fy #:normal-force
    #:path-acc #:path-position #:path-speed #:contact-gap #:friction-force

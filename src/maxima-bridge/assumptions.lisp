@@ -55,7 +55,7 @@ equal() and notequal())."
                    (t nil)))
            (apply-operator (operator arguments)
              (handler-case
-                 (ecase operator
+                 (case operator
                    (+ (apply #'+ arguments)) (- (apply #'- arguments))
                    (* (apply #'* arguments)) (/ (apply #'/ arguments))
                    (expt (expt (first arguments) (second arguments)))

@@ -263,9 +263,9 @@ has free parameters or is outside the algebra."
 
 (defun ball-function (operator a)
   "OPERATOR (sqrt exp log sin cos tan asin acos atan) of the ball A, or NIL where it is
-undefined or not real somewhere in A."
+undefined or not real somewhere in A, and for the operators it does not know."
   (let ((x (ball-center a)) (rx (ball-radius a)))
-    (ecase operator
+    (case operator
       (sqrt (cond ((and (zerop x) (zerop rx)) (make-ball 0d0 0d0))
                   ((>= (- x rx) 0)
                    (rounded-ball (sqrt x) (- (sqrt x) (sqrt (max 0d0 (- x rx))))))))

@@ -30,6 +30,7 @@
            :forces (state-forces-of state)
            :positions (state-positions state)
            :velocities (state-velocities state)
+           :initial-velocities (state-initial-velocities state)
            :end-event (state-end-event state)
            :final-positions (state-final-positions state)
            :final-velocities (state-final-velocities state))
@@ -93,7 +94,7 @@ Lower case; parentheses only where precedence needs them."
                                    2 context))
                           (expt (wrap (format nil "~A^~A" (render (first args) 4) (render (second args) 4))
                                       3 context))
-                          (t (if (member (first x) '(sin cos tan asin acos atan sqrt exp log))
+                          (t (if (arithmetic-operator-p (first x))
                                  (format nil "~(~A~)(~{~A~^, ~})" (first x)
                                          (mapcar (lambda (a) (render a 0)) args))
                                  (format nil "~S" x)))))))))
@@ -154,6 +155,22 @@ their features, the forces, accelerations and trajectories, the end event and it
               do (case key
                    ((:numeric :numeric-duration :numeric-trajectory))
                    (:undecided (format stream "  ~A~%" value))
+                   (:impact
+                    (format stream "  the impact:~%")
+                    (loop for (body v) in (getf value :velocities-after)
+                          for u = (second (assoc body (getf value :velocities-before)))
+                          unless (and (equal u '(0 0)) (equal v '(0 0)))
+                            do (format stream "    ~(~A~): velocity (~A, ~A) just before, (~A, ~A) just after~%"
+                                       body (infix (first u)) (infix (second u))
+                                       (infix (first v)) (infix (second v))))
+                    (dolist (entry (getf value :impulses))
+                      (format stream "    impulse of ~(~A~) on ~(~A~): ~A~%"
+                              (third entry) (second entry) (infix (fourth entry))))
+                    (format stream "    kinetic energy lost: ~A~%" (infix (getf value :energy-lost))))
+                   (:accumulation
+                    (format stream "  the impacts repeat, each cycle ~A times the one before (the first ~A): they accumulate at t = ~A, and the run goes on from there at rest~%"
+                            (infix (getf value :factor)) (infix (getf value :cycle))
+                            (infix (getf value :time))))
                    (:end-arc-length
                     (format stream "  ends at arc length s = ~A along the curve~%" (infix value)))
                    (:events (format stream "  simultaneous events:~{~%    ~A~}~%"
@@ -258,8 +275,10 @@ values, and its properties, e.g. \"friction of incline on block (mode static): V
           (:lift-off (format nil "~(~A~) lifts off ~(~A~) (the normal force would turn attractive)"
                              (first more) (second more)))
           (:contact (format nil "~(~A~) comes into contact with ~(~A~)" (first more) (second more)))
-          (:collision (format nil "~(~A~) collides with ~(~A~) (no collision model: the simulation ends)"
-                              (first more) (second more)))
+          (:collision (format nil "~(~A~) collides with ~(~A~)~@[, impulse ~A~]~@[, kinetic energy lost ~A~]"
+                              (first more) (second more)
+                              (let ((j (getf (cddr more) :impulse))) (and j (infix j)))
+                              (let ((e (getf (cddr more) :energy-lost))) (and e (infix e)))))
           (:time-limit (format nil "the simulation reaches its time limit, t = ~A" (infix (first more))))
           (:contact-ends (format nil "the contact of ~(~A~) with ~(~A~) ends" (first more) (second more)))
           (t (let ((*package* (find-package '#:ames-scenario)))

@@ -112,6 +112,49 @@ are more."
         (values states until)))))
 
 ;;; ------------------------------------------------------------------------------------
+;;; Collisions
+
+(defun checked-restitution (validation clause)
+  "The entry (BODY1 BODY2 E), or (NIL NIL E) for the default, that the clause
+(restitution E) or (restitution BODY1 BODY2 E) declares. E must lie in [0, 1] when it
+is a number."
+  (enter validation "clause RESTITUTION" clause)
+  (flet ((coefficient (x)
+           (let* ((e (checked-expression validation x))
+                  (value (expression-value e)))
+             (when (and value (not (<= 0 value 1)))
+               (reject validation 'scenario-expression-error x
+                       "a coefficient of restitution lies between 0 and 1, not ~A" (show x)))
+             e))
+         (body (x)
+           (let ((declaration (declared validation x)))
+             (unless (and declaration (eq (car declaration) :body))
+               (reject validation 'undeclared-symbol-error x "~A is not a declared body" (show x)))
+             (cdr declaration))))
+    (case (length clause)
+      (2 (list nil nil (coefficient (second clause))))
+      (4 (let ((b1 (body (second clause))) (b2 (body (third clause))))
+           (when (eq b1 b2)
+             (reject validation 'scenario-syntax-error clause
+                     "an impact takes two different bodies"))
+           (list b1 b2 (coefficient (fourth clause)))))
+      (t (reject validation 'scenario-syntax-error clause
+                 "restitution is (restitution E) or (restitution BODY1 BODY2 E)")))))
+
+(defun checked-restitutions (validation clauses)
+  "The restitution entries of CLAUSES; at most one default and one per pair."
+  (let ((entries '()))
+    (dolist (clause clauses (nreverse entries))
+      (let ((entry (checked-restitution validation clause)))
+        (when (find-if (lambda (old) (or (and (eq (first old) (first entry)) (eq (second old) (second entry)))
+                                         (and (eq (first old) (second entry)) (eq (second old) (first entry)))))
+                       entries)
+          (reject validation 'duplicate-clause-error clause
+                  "~:[the default coefficient of restitution~;this pair's coefficient of restitution~] is given twice"
+                  (first entry)))
+        (push entry entries)))))
+
+;;; ------------------------------------------------------------------------------------
 ;;; The scenario
 
 (defun clause-word (clause)
@@ -136,7 +179,7 @@ order."
             ((not (clause-word clause))
              (reject validation 'unknown-clause-error clause
                      "~A is not a clause of the scenario language; the clauses are ~
-                      parameters, gravity, body, force, simulate, query and friction"
+                      parameters, gravity, body, force, simulate, query, restitution and friction"
                      (show (car clause))))
             (t (push clause (cdr (assoc (clause-word clause) sorted))))))
     (dolist (entry sorted sorted)
@@ -219,4 +262,6 @@ CHECK-SCENARIO-GEOMETRY, which the caller runs when it has those layers."
                                :bodies bodies :forces forces :frictions frictions
                                :states states :until until
                                :queries (mapcar #'rest (clauses 'ames-scenario:query))
+                               :restitutions (checked-restitutions
+                                              validation (clauses 'ames-scenario:restitution))
                                :source source :form form)))))))))

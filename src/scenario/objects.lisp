@@ -87,6 +87,9 @@ bodies), in order of declaration.")
           :documentation "Stop at this global time (an expression), or NIL.")
    (queries :initarg :queries :initform '() :reader scenario-queries
             :documentation "The arguments of each (query ...) clause, as data.")
+   (restitutions :initarg :restitutions :initform '() :reader scenario-restitutions
+                 :documentation "Newton's coefficients of restitution: a list of (BODY1 BODY2
+E) for a pair's impacts and (NIL NIL E) for every other impact (without one, E is 0).")
    (source :initarg :source :initform nil :reader scenario-source
            :documentation "Where the form came from (\"FILE, line N\"), or NIL.")
    (form :initarg :form :initform nil :reader scenario-form
@@ -140,6 +143,17 @@ words (POINT, (POLYGON (X Y) ...), ...) and checked expressions.")
 when the clause gives none)."))
   (:documentation "Coulomb friction on every contact between two bodies: the clause
 (friction BODY1 BODY2 :static MU-S [:kinetic MU-K])."))
+
+(defun scenario-restitution (scenario body1 body2)
+  "The coefficient of restitution of impacts between BODY1 and BODY2 (either order):
+the pair's own, else the scenario's default, else 0 (a plastic impact)."
+  (let ((entries (scenario-restitutions scenario)))
+    (third (or (find-if (lambda (entry)
+                          (or (and (eq (first entry) body1) (eq (second entry) body2))
+                              (and (eq (first entry) body2) (eq (second entry) body1))))
+                        entries)
+               (find nil entries :key #'first)
+               '(nil nil 0)))))
 
 (defun scenario-p (object)
   "True when OBJECT is a validated SCENARIO."

@@ -15,6 +15,7 @@
    ;; the words of the scenario language; validated scenarios hold their shapes with
    ;; these symbols whatever package the user's form was written in
    #:scenario #:parameters #:gravity #:body #:force #:simulate #:query
+   #:restitution
    #:friction
    #:point #:circle #:polygon #:outline #:line #:arc #:segment #:half-plane)
   (:documentation "The package scenario files are read into (with *READ-EVAL* nil and
@@ -46,6 +47,7 @@ and Maxima (assumptions, overlaps).")
    #:scenario-name #:scenario-description #:scenario-parameters #:scenario-gravity
    #:scenario-bodies #:scenario-forces #:scenario-states #:scenario-until
    #:scenario-queries #:scenario-source #:scenario-form
+   #:scenario-restitutions #:scenario-restitution
    #:scenario-parameter #:scenario-parameter-name #:scenario-parameter-assumptions
    #:scenario-parameter-value
    #:scenario-body #:scenario-body-name #:scenario-body-shape #:scenario-body-mass

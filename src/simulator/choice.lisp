@@ -92,7 +92,7 @@ that is not active has no mode to choose; its option is then NIL)."
                                                                       (cdr entry)))
                          when change collect change)))
       (when changes
-        (ames.engine:apply-transition (run-model run) changes :decider (state-decider run))))))
+        (ames.engine:apply-transition (run-model run) changes :decider (run-decider run))))))
 
 (defun active-contacts (run)
   "The contact entities whose CONTACT instance is active in the current model: those
@@ -176,9 +176,12 @@ TRIAL."
   (let ((notes '()))
     (loop repeat (+ 4 (* 2 (length lone)))
           do (let* ((solved (handler-case (solve-model run (run-model run))
-                              (unsolvable-model (condition)
+                              ((or unsolvable-model ames.maxima:maxima-error) (condition)
+                                ;; no unique solution: redundant or contradictory
+                                ;; constraints, settled by trying every subset
                                 (return-from pivot
-                                  (make-trial (current-assignment run points) nil :inconsistent
+                                  (make-trial (current-assignment run points) nil
+                                              (if lone :singular :inconsistent)
                                               '() 0 (cons (list :unsolvable (ames-error-detail condition))
                                                           notes))))))
                     (violations (handler-case (immediate-violations run solved points)
@@ -218,16 +221,16 @@ TRIAL."
                 (reverse (cons '(:no-convergence) notes)))))
 
 (defun same-motion-p (run a b)
-  "True when the trials A and B give every free body the same acceleration at the start."
-  (every (lambda (body)
-           (every (lambda (axis)
-                    (let ((term `(ames.kb:acc ,body ,axis)))
-                      (flet ((value (trial)
-                               (substitute-expressions (solved-model-initial (trial-solved trial))
-                                                       (quantity-value (trial-solved trial) term))))
-                        (ames.maxima:equivalent-p (run-bridge run) (value a) (value b)))))
-                  '(:x :y)))
-         (free-body-names run)))
+  "True when the trials A and B give the same motion: every body's acceleration at the
+start of a state (or velocity after an impact) is the same."
+  (let ((terms (remove-if-not (lambda (term) (member (first term) '(ames.kb:acc ames.kb:vel-after)))
+                              (mapcar #'car (solved-model-values (trial-solved a))))))
+    (every (lambda (term)
+             (flet ((value (trial)
+                      (substitute-expressions (solved-model-initial (trial-solved trial))
+                                              (quantity-value (trial-solved trial) term))))
+               (ames.maxima:equivalent-p (run-bridge run) (value a) (value b))))
+           terms)))
 
 (defun mode-ranks (points trial)
   "TRIAL's option at each mode choice point of POINTS as its place among the point's
@@ -314,7 +317,7 @@ UNSUPPORTED-SITUATION beyond *SUBSET-LIMIT* points."
   "Choose by consistency the contacts and modes that hold at the start of the current
 state, leave the model in that assignment and return its TRIAL, with the others tried
 as its notes. Signals AMBIGUOUS-TRANSITION or UNSOLVABLE-MODEL (see CHOOSE-TRIAL)."
-  (let ((points (ames.engine:model-choice-points (run-model run) :decider (state-decider run))))
+  (let ((points (ames.engine:model-choice-points (run-model run) :decider (run-decider run))))
     (multiple-value-bind (lone groups modes) (point-groups run points)
       (let* ((option-lists (append (mapcar #'group-options groups) (mapcar #'mode-options modes)))
              (combos (combinations option-lists))

@@ -24,6 +24,9 @@ assumptions do not decide which event ends it (see the history's notes).")
 MAGNITUDE), (:GRAVITY B (FX FY)), (:EXTERNAL NAME B (FX FY)).")
    (positions :initarg :positions :initform '() :accessor state-positions
               :documentation "List of (BODY (X-of-TAU Y-of-TAU)).")
+   (initial-velocities :initarg :initial-velocities :initform '() :accessor state-initial-velocities
+                       :documentation "List of (BODY (VX VY)) when the state starts: after an
+impact, the velocities just after it.")
    (velocities :initarg :velocities :initform '() :accessor state-velocities
                :documentation "List of (BODY (VX-of-TAU VY-of-TAU)).")
    (end-event :initarg :end-event :initform :none :accessor state-end-event

@@ -200,26 +200,27 @@ searched, under parameter values: see numeric.lisp)."
 
 (defun integrate-linear (run solved group)
   "Fill GROUP's motion through the bridge's closed-form solver of linear ODEs with
-constant coefficients, when the bridge has one; NIL when it has none or it fails."
-  (let ((solver (find-symbol "SOLVE-LINEAR-ODES" '#:ames.maxima)))
-    (when (and solver (fboundp solver))
-      (let* ((bodies (group-bodies group))
-             (positions (loop for b in bodies append (list `(ames.kb:pos ,b :x) `(ames.kb:pos ,b :y))))
-             (velocities (loop for b in bodies append (list `(ames.kb:vel ,b :x) `(ames.kb:vel ,b :y))))
-             (accelerations (mapcar (lambda (v) (cdr (assoc v (solved-model-rates solved) :test #'equal)))
-                                    velocities))
-             (initial (lambda (terms) (mapcar (lambda (term) (cdr (assoc term (solved-model-initial solved)
-                                                                           :test #'equal)))
-                                                terms))))
-        (handler-case
-            (multiple-value-bind (position-values velocity-values)
-                (funcall solver (run-bridge run) accelerations positions velocities
-                         (funcall initial positions) (funcall initial velocities))
-              (setf (group-motion group)
-                    (append (mapcar #'cons positions position-values)
-                            (mapcar #'cons velocities velocity-values)))
-              group)
-          (ames-error () nil))))))
+constant coefficients (springs along fixed directions: sines and cosines in TAU).
+Returns GROUP, or NIL when the bridge finds no closed form (the group is then
+integrated numerically): a failed or unverifiable solution, or a sign question the
+assumptions leave open."
+  (let* ((bodies (group-bodies group))
+         (positions (loop for b in bodies append (list `(ames.kb:pos ,b :x) `(ames.kb:pos ,b :y))))
+         (velocities (loop for b in bodies append (list `(ames.kb:vel ,b :x) `(ames.kb:vel ,b :y))))
+         (accelerations (mapcar (lambda (v) (cdr (assoc v (solved-model-rates solved) :test #'equal)))
+                                velocities))
+         (initial (lambda (terms)
+                    (mapcar (lambda (term) (cdr (assoc term (solved-model-initial solved) :test #'equal)))
+                            terms))))
+    (handler-case
+        (multiple-value-bind (position-values velocity-values)
+            (ames.maxima:solve-linear-odes (run-bridge run) accelerations positions velocities
+                                           (funcall initial positions) (funcall initial velocities))
+          (setf (group-motion group)
+                (mapcar (lambda (entry) (cons (car entry) (tidy run (cdr entry) :full)))
+                        (append position-values velocity-values)))
+          group)
+      ((or ames.maxima:solve-failed ames.maxima:maxima-question) () nil))))
 
 (defun group-of-term (groups term)
   "The GROUP among GROUPS whose state term TERM is, or NIL."

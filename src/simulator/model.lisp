@@ -81,8 +81,27 @@ expression may mention terms eliminated later, never earlier)."
                                       (substitute-expressions binding other))))))))
     (values (remove-if (lambda (equation)
                          (equal (relation-lhs equation) (relation-rhs equation)))
-                       remaining)
+                       (mapcar #'fold-zeros remaining))
             (nreverse definitions))))
+
+(defun fold-zeros (expression)
+  "EXPRESSION with products holding a literal 0 replaced by 0 and zero terms of sums and
+differences dropped (a template's zero component times an unknown): no other change."
+  (if (atom expression)
+      expression
+      (let ((arguments (mapcar #'fold-zeros (rest expression))))
+        (case (first expression)
+          (* (if (member 0 arguments) 0 (cons '* arguments)))
+          (+ (let ((kept (remove 0 arguments)))
+               (cond ((null kept) 0) ((null (rest kept)) (first kept)) (t (cons '+ kept)))))
+          (- (cond ((null (rest arguments))
+                    (let ((x (first arguments)))
+                      (cond ((eql x 0) 0)
+                            ((and (consp x) (eq (first x) '-) (null (cddr x))) (second x))
+                            (t (list '- x)))))
+                   ((every (lambda (a) (eql a 0)) (rest arguments)) (first arguments))
+                   (t (cons '- arguments))))
+          (t (if (quantity-term-p expression) expression (cons (first expression) arguments)))))))
 
 (defun equation-unknowns (equations state)
   "The quantity terms of EQUATIONS that are not STATE terms nor a contact's path
@@ -94,6 +113,11 @@ multiplied by its zero curvature): the model's unknowns."
                             (remove-duplicates (mapcan #'expression-variables
                                                        (copy-list equations))
                                                :test #'equal))))
+
+(defun identity-p (run equation)
+  "True when EQUATION holds whatever its unknowns (its sides' difference is 0 in rational
+canonical form): a redundancy of the model, which Maxima's solve() must not see."
+  (eql 0 (tidy run `(- ,(relation-lhs equation) ,(relation-rhs equation)))))
 
 (defun without-idle-path-terms (equations state)
   "EQUATIONS with the path coordinates of straight contacts (those that are not STATE
@@ -141,7 +165,8 @@ in. Signals UNSOLVABLE-MODEL."
          (equations (without-idle-path-terms (ames.engine:model-equations model) state))
          (unknowns (equation-unknowns equations state)))
     (multiple-value-bind (compact definitions) (eliminate-definitions equations unknowns)
-      (let* ((remaining (equation-unknowns compact state))
+      (let* ((compact (remove-if (lambda (equation) (identity-p run equation)) compact))
+             (remaining (equation-unknowns compact state))
              (solution (if compact (solve-compact run compact remaining) '()))
              (values (back-substitute solution definitions))
              (statistics (run-statistics run)))

@@ -17,4 +17,4 @@ knowledge base's (package AMES.KB).")
    #:qualitative-state #:state-index #:state-start #:state-duration #:state-contacts
    #:state-accelerations #:state-forces #:state-positions #:state-velocities
    #:state-end-event #:state-final-positions #:state-final-velocities #:state-notes
-   #:state-analysis #:body-entry #:numeric-or-nil))
+   #:state-analysis #:state-initial-velocities #:body-entry #:numeric-or-nil))

@@ -124,49 +124,28 @@ the travel time, its AT-ARC the arc length), :NEVER, or (values :UNKNOWN FACT)."
 
 (defun arc-travel-time (run group s1)
   "The time GROUP's body takes from its start to the arc length S1: the bridge's closed
-form of the travel-time integral when it has one, else (:NO-CLOSED-FORM :FROM-ARC-LENGTH
-S0 :TO-ARC-LENGTH S1 :SPEED-SQUARED E)."
+form of the travel-time integral when it has one (AMES.MAXIMA:TRAVEL-TIME; an elliptic
+integral on a circle under a constant force), else (:NO-CLOSED-FORM :FROM-ARC-LENGTH S0
+:TO-ARC-LENGTH S1 :SPEED-SQUARED E), whose number NUMERIC-TRAVEL-TIME gives."
   (let ((s0 (group-s0 group)) (energy (group-speed-squared group)))
-    (cond ((holds run `(= ,s1 ,s0)) 0)
-          (t (multiple-value-bind (time kind)
-                 (travel-time-through-bridge run energy s0 s1)
-               (if (eq kind :closed-form)
-                   time
-                   (list :no-closed-form :from-arc-length s0 :to-arc-length s1
-                                         :speed-squared energy)))))))
-
-(defun travel-time-through-bridge (run energy s0 s1)
-  "The bridge's travel time from S0 to S1 with speed squared ENERGY (in +ARC-LENGTH+):
-(values TIME :CLOSED-FORM) or (values NIL :NO-CLOSED-FORM)."
-  (let ((function (find-symbol "TRAVEL-TIME" '#:ames.maxima)))
-    (if (and function (fboundp function))
-        (funcall function (run-bridge run) energy +arc-length+ s0 s1)
-        (values nil :no-closed-form))))
-
-(defun gauss-legendre-nodes ()
-  "Sixteen-point Gauss-Legendre nodes and weights on [0, 1]."
-  (let ((x '(0.0950125098376374d0 0.2816035507792589d0 0.4580167776572274d0 0.6178762444026438d0
-             0.7554044083550030d0 0.8656312023878318d0 0.9445750230732326d0 0.9894009349916499d0))
-        (w '(0.1894506104550685d0 0.1826034150449236d0 0.1691565193950025d0 0.1495959888165767d0
-             0.1246289712555339d0 0.0951585116824928d0 0.0622535239386479d0 0.0271524594117541d0)))
-    (loop for xi in x for wi in w
-          append (list (cons (/ (- 1 xi) 2) (/ wi 2)) (cons (/ (+ 1 xi) 2) (/ wi 2))))))
+    (if (holds run `(= ,s1 ,s0))
+        0
+        (multiple-value-bind (time kind)
+            (ames.maxima:travel-time (run-bridge run) energy +arc-length+ s0 s1
+                                     :direction (group-direction group))
+          (if (eq kind :closed-form)
+              time
+              (list :no-closed-form :from-arc-length s0 :to-arc-length s1
+                                    :speed-squared energy))))))
 
 (defun numeric-travel-time (bridge energy s0 s1 values)
   "The time to travel from arc length S0 to S1 when the speed squared is ENERGY (in
-+ARC-LENGTH+), with parameter VALUES: the integral of ds / sqrt(ENERGY), computed with
-s = s0 + (s1 - s0) u^2 so that a start at rest is no singularity. NIL when a value is
-not a real number."
-  (let* ((start (numeric-or-nil bridge s0 values))
-         (end (numeric-or-nil bridge s1 values)))
-    (when (and start end)
-      (let ((span (- end start)) (total 0d0))
-        (loop for (u . weight) in (gauss-legendre-nodes)
-              for s = (+ start (* span u u))
-              for e = (numeric-or-nil bridge energy (acons +arc-length+ s values))
-              do (unless (and e (plusp e)) (return-from numeric-travel-time nil))
-                 (incf total (* weight (/ (* 2 (abs span) u) (sqrt e)))))
-        total))))
++ARC-LENGTH+), under the parameter VALUES; NIL when it has no value there."
+  (handler-case (ames.maxima:numeric-travel-time bridge energy +arc-length+ s0 s1
+                                                 (mapcar (lambda (entry)
+                                                           (cons (car entry) (cdr entry)))
+                                                         values))
+    (ames.maxima:numeric-evaluation-failed () nil)))
 
 (defun numeric-or-nil (bridge expression values)
   "The number EXPRESSION takes under VALUES, or NIL when it has none (a symbol left over,

@@ -20,6 +20,9 @@
 or smooth corner of the configuration-space obstacle: where the observer sits on both,
 they are alternatives (it must stay outside one of them), never both active.")
    (model :initform nil :accessor run-model)
+   (decider :initform nil :accessor run-decider-override
+            :documentation "While an impact is resolved, the decider of its model (see
+RUN-DECIDER); NIL otherwise.")
    (positions :initarg :positions :accessor run-positions
               :documentation "Alist body -> (X Y) at the start of the current state.")
    (velocities :initarg :velocities :accessor run-velocities
@@ -31,6 +34,9 @@ they are alternatives (it must stay outside one of them), never both active.")
    (assumed :initform '() :accessor run-assumed
             :documentation "Facts assumed because the parameter values decide them: a list
 of (:state N :fact RELATION).")
+   (impacts :initform '() :accessor run-impacts
+            :documentation "The impacts so far, newest first: plists (:TIME :POSITIONS
+:AFTER :CONTACTS), to recognise a repeating sequence (see ZENO-ACCUMULATION).")
    (rederived :initform '() :accessor run-rederived
               :documentation "Instances re-derived at each transition (for benchmarks).")
    (statistics :initform (list :equations-before 0 :equations-after 0 :solves 0)
@@ -277,6 +283,11 @@ quantity is decided as it is."
                    (eq :true (decide run `(= ,(relation-lhs relation) ,(relation-rhs relation)))))
               :choice
               (decide run relation))))))
+
+(defun run-decider (run)
+  "The decider of the model the run works on: the impact's while one is resolved, else
+the state's (STATE-DECIDER)."
+  (or (run-decider-override run) (state-decider run)))
 
 (defun state-decider (run)
   "The decider of the current state's activation and mode entry conditions: touching

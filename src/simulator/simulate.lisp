@@ -43,33 +43,82 @@
                 (ames.engine:termination-condition-impact (candidate-condition candidate))))))
 
 (defun enter-next-state (run state fired &key (check-incremental t))
-  "Carry STATE's final positions and velocities over, and apply the changes the FIRED
-candidates stand for to the model, incrementally (checked against a rebuild from
-scratch when CHECK-INCREMENTAL)."
+  "Carry STATE's final positions and velocities over, resolve the impact when FIRED
+holds an impulsive candidate (the velocities then jump: see impacts.lisp; the state's
+end event gets the impulse and the energy lost), and apply to the model, incrementally,
+the changes the other FIRED candidates stand for, and after an impact the activations
+the new velocities decide. Checked against a rebuild from scratch when
+CHECK-INCREMENTAL."
   (setf (run-positions run) (state-final-positions state)
         (run-velocities run) (state-final-velocities state)
         (run-time run) (time-after run (run-time run) state))
-  (let ((changes (remove nil (remove-duplicates (mapcar #'candidate-change fired) :test #'equal))))
+  (let* ((impulsive (remove-if-not #'impulsive-p fired))
+         (changes (remove nil (remove-duplicates
+                               (mapcar #'candidate-change (set-difference fired impulsive))
+                               :test #'equal))))
+    (when impulsive
+      (multiple-value-bind (after impact) (resolve-impact run)
+        (setf (run-velocities run) after
+              (getf (state-notes state) :impact) impact
+              (state-end-event state) (impact-event (state-end-event state) impact))
+        (let ((events (getf (state-notes state) :events)))
+          (when events
+            (setf (getf (state-notes state) :events)
+                  (mapcar (lambda (event)
+                            (if (find event impulsive :key #'candidate-event :test #'equal)
+                                (impact-event event impact)
+                                event))
+                          events))))))
     (multiple-value-bind (model report)
         (ames.engine:apply-transition (run-model run) changes :decider (state-decider run))
       (declare (ignore model))
       (push (ames.engine:transition-report-rederived-count report) (run-rederived run)))
+    (when impulsive
+      (let ((stale (ames.engine:stale-activation-changes (run-model run) :decider (state-decider run))))
+        (when stale
+          (ames.engine:apply-transition (run-model run) stale :decider (state-decider run))))
+      (sum-zeno-sequence run state))
     (when check-incremental
       (ames.engine:check-incremental (run-model run)))))
 
+(defun sum-zeno-sequence (run state)
+  "Record the impact that ended STATE; when it repeats the previous one scaled (see
+ZENO-ACCUMULATION), jump to the accumulation point: the run goes on from there with the
+velocities' limit, zero, and STATE's notes say so (:ACCUMULATION)."
+  (let* ((impact (getf (state-notes state) :impact))
+         (record (list :time (run-time run) :positions (run-positions run)
+                       :after (run-velocities run)
+                       :contacts (mapcar (lambda (c) (subseq c 0 2)) (getf impact :contacts))))
+         (accumulation (zeno-accumulation run (first (run-impacts run)) record)))
+    (push record (run-impacts run))
+    (when accumulation
+      (setf (getf (state-notes state) :accumulation) accumulation
+            (run-time run) (getf accumulation :time)
+            (run-velocities run) (mapcar (lambda (entry) (list (first entry) (list 0 0)))
+                                         (run-velocities run))
+            (run-impacts run) '()))))
+
 (defun fact-from-values (run fact values)
-  "FACT, or its negation, as the parameter VALUES decide it numerically; NIL when they
-do not (no values, a value missing, or the two sides equal). The two sides differ under
-the values, so the negation is the strict one: (< X Y) false means (> X Y)."
+  "FACT, or its negation, as the parameter VALUES decide it numerically; when the values
+make its two sides equal (exactly, in rational arithmetic), the equation (= LHS RHS) of
+that boundary case. NIL when they do not decide it (no values, a value missing). When
+the two sides differ under the values the negation is the strict one: (< X Y) false
+means (> X Y)."
   (when (and values (consp fact) (member (first fact) '(< > <= >=))
              (notany #'keywordp (alexandria:flatten fact)))
-    (let ((difference (numeric-or-nil (run-bridge run)
-                                      `(- ,(relation-lhs fact) ,(relation-rhs fact)) values)))
-      (when (and difference (/= difference 0))
-        (if (ecase (first fact) ((> >=) (plusp difference)) ((< <=) (minusp difference)))
-            fact
-            (list (ecase (first fact) ((> >=) '<) ((< <=) '>))
-                  (relation-lhs fact) (relation-rhs fact)))))))
+    (let* ((difference-form `(- ,(relation-lhs fact) ,(relation-rhs fact)))
+           (exact (expression-value (substitute-expressions values difference-form)))
+           (difference (if (rationalp exact)
+                           exact
+                           (numeric-or-nil (run-bridge run) difference-form values))))
+      (cond ((null difference) nil)
+            ((and (rationalp difference) (zerop difference))
+             (list '= (relation-lhs fact) (relation-rhs fact)))
+            ((zerop difference) nil)
+            ((ecase (first fact) ((> >=) (plusp difference)) ((< <=) (minusp difference)))
+             fact)
+            (t (list (ecase (first fact) ((> >=) '<) ((< <=) '>))
+                     (relation-lhs fact) (relation-rhs fact)))))))
 
 (defun run-states (run history index limit check-incremental)
   "Analyse the states of RUN from INDEX on, appending them to HISTORY, until nothing
@@ -100,9 +149,6 @@ noted in the history) for the rest of the run."
                     (return))
                    ((eq fired :undecided)
                     (setf (history-outcome history) :undecided)
-                    (return))
-                   ((some #'impulsive-p fired)
-                    (setf (history-outcome history) :collision)
                     (return))
                    ((find :time-limit fired :key (lambda (c) (first (candidate-event c))))
                     (setf (history-outcome history) :time-limit)

@@ -174,6 +174,7 @@ known."
          (state (make-instance
                  'qualitative-state
                  :index index :start (run-time run) :duration :undecided
+                 :initial-velocities (run-velocities run)
                  :contacts (contact-descriptions run contacts)
                  :accelerations
                  (mapcar (lambda (body)

@@ -29,10 +29,21 @@ condition is reached (an impact when not zero)."
   "d EXPRESSION / d TAU."
   (ames.geometry:differentiate expression 'tau))
 
+(defun trigonometric-in-time-p (g)
+  "True when G has a sine or cosine of an expression in TAU (a spring's motion)."
+  (and (consp g)
+       (or (and (member (first g) '(sin cos)) (not (free-of-p 'tau (second g))))
+           (some #'trigonometric-in-time-p (rest g)))))
+
 (defun earliest-root-after (run g after)
   "The earliest root of G (a function of TAU) strictly after AFTER, through the bridge:
-what AMES.MAXIMA:EARLIEST-ROOT returns, without the candidates of an undecided answer."
-  (ames.maxima:earliest-root (run-bridge run) g 'tau :after after :strictly t :candidates nil))
+what AMES.MAXIMA:EARLIEST-ROOT returns, without the candidates of an undecided answer;
+for a trigonometric function of TAU, AMES.MAXIMA:EARLIEST-TRIGONOMETRIC-ROOT's."
+  (if (trigonometric-in-time-p g)
+      (multiple-value-bind (root status)
+          (ames.maxima:earliest-trigonometric-root (run-bridge run) g 'tau :after after :strictly t)
+        (if (eq root :unknown) (values :unknown nil) (values root status)))
+      (ames.maxima:earliest-root (run-bridge run) g 'tau :after after :strictly t :candidates nil)))
 
 (defun undecided-sign-fact (run g after)
   "The relation whose truth would settle where the polynomial G in TAU first vanishes:
