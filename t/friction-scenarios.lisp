@@ -301,3 +301,35 @@ f = mu g (m + mc); the default values (f = 20 > 3.924) decide it: the block slid
         (when (first states)
           (is (eq :sliding (getf (cddddr (friction-entry (first states) "CART" "BLOCK")) :mode))))))))
 
+
+;;; A block bouncing off a wall on a rough floor (an impact reverses the sliding)
+
+(test rough-floor-block-bounces-and-slides-back
+  "The impact with the wall reverses the block's velocity along the floor: the floor's
+friction changes its sliding direction at once (a stale mode is changed by the choice
+search), and the block slides back to a stop at x = -5."
+  (with-fixture simulator-bridge ()
+    (let ((scenario (scenario-named "block-bouncing-on-rough-floor")))
+      (multiple-value-bind (history states) (run-of scenario bridge)
+        (flet ((x (form) (in-scenario-terms scenario form)))
+          (is (eq :complete (ames::history-outcome history)))
+          (is (= 3 (length states)))
+          (destructuring-bind (&optional toward back rest) states
+            (when (and toward back rest)
+              (is (eq :collision (first (ames::state-end-event toward))))
+              (is (equal '(:stops-sliding "BLOCK" "FLOOR") (event-names (ames::state-end-event back))))
+              (is (eq :forever (ames::state-duration rest)))
+              (call-with-scenario-facts
+               bridge scenario
+               (lambda ()
+                 (is-same bridge "time to the wall" (ames::state-duration toward) '(- 5 (* 2 (sqrt 6))))
+                 (is-same-vector bridge "before the impact" (per-body (ames::state-final-velocities toward) "BLOCK")
+                                 '((* 4 (sqrt 6)) 0))
+                 (check-friction bridge toward "BLOCK" "FLOOR" :sliding (x '(* 2 m)))
+                 (check-friction bridge back "BLOCK" "FLOOR" :sliding (x '(- (* 2 m))))
+                 (is-same-vector bridge "sliding back" (per-body (ames::state-accelerations back) "BLOCK")
+                                 '(2 0))
+                 (is-same bridge "time to stop" (ames::state-duration back) '(sqrt 6))
+                 (is-same-vector bridge "where it stops" (per-body (ames::state-final-positions back) "BLOCK")
+                                 '(-5 0))
+                 (check-friction bridge rest "BLOCK" "FLOOR" :static 0))))))))))

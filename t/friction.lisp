@@ -173,6 +173,33 @@ tangential velocity reaches zero, (:stops-sliding A B), into static."
             (is (member (ames.engine:instance-mode friction)
                         '(:sliding-forward :sliding-backward)))))))))
 
+;;; The engine: a stale mode is a choice point
+
+(test a-stale-mode-is-a-choice-point
+  "When a jump of the state variables (an impact's) leaves an instance's mode with false
+entry conditions while another mode's hold, the mode is listed as a choice point whose
+options are the possible modes (the lamps of t/engine-choices.lisp: the dimmer is
+bright, but the knob now allows only dim)."
+  (let* ((kb (make-lamp-kb))
+         (decider (lambda (relation)
+                    (cond ((eq (first relation) '=) :true)
+                          ((eq (first relation) '>) :false)
+                          (t :true))))
+         (model (ames.engine:build-model (ames.engine:make-engine kb)
+                                         (ames.engine:make-situation '((switch s1) (lamp l1 :switch s1)))
+                                         :decider decider
+                                         :decisions '((:mode (dimmer l1) bright))))
+         (points (ames.engine:model-choice-points model)))
+    (is (eq 'bright (ames.engine:instance-mode (ames.engine:find-instance model '(dimmer l1)))))
+    (is (= 1 (length points)))
+    (let ((point (first points)))
+      (when point
+        (is (eq :mode (ames.engine:choice-point-kind point)))
+        (is (equal '(dim) (ames.engine:choice-point-options point)))
+        (is (eq 'bright (ames.engine:choice-point-current point)))
+        (ames.engine:apply-transition model (list (ames.engine:choice-change model point 'dim)))
+        (is (null (ames.engine:model-choice-points model)) "dim is not stale")))))
+
 ;;; The report
 
 (test friction-is-reported-without-special-cases
