@@ -181,32 +181,37 @@ and the reduced discriminant S^2/4 - P: the roots are S/2 -+ sqrt(S^2/4 - P)."
            (half-sum (mform +mtimes+ (mform +rat+ 1 2) sum))
            (discriminant (mdifference (mform +mexpt+ half-sum 2) product))
            (product-signs (sign-pattern-of search product))
-           (strictly (search-strictly search)))
-      (symbol-macrolet ((larger (mform +mplus+ half-sum (real-square-root search discriminant)))
-                        (smaller (mdifference half-sum (real-square-root search discriminant))))
-      (flet ((only (signs &rest allowed) (and signs (subsetp signs allowed))))
-        (cond
-          ;; Roots of opposite signs: the larger is the only one after the start.
-          ((only product-signs :negative) (found search larger))
-          ;; A root at the start itself; the other is S.
-          ((equal product-signs '(:zero))
-           (if (not strictly)
-               (found search 0)
-               (ecase (root-verdict (sign-pattern-of search sum) t)
-                 (:yes (found search sum))
-                 (:no (values :none nil))
-                 (:maybe (unknown search (list sum))))))
-          ;; Roots of the same sign (or complex): both before the start when S <= 0.
-          ((only product-signs :positive)
-           (let ((sum-signs (sign-pattern-of search sum)))
-             (cond ((only sum-signs :negative :zero) (values :none nil))
-                   ((only sum-signs :positive)
-                    (let ((discriminant-signs (sign-pattern-of search discriminant)))
-                      (cond ((only discriminant-signs :negative) (values :none nil))
-                            ((only discriminant-signs :positive :zero) (found search smaller))
-                            (t (unknown search (list smaller larger))))))
-                   (t (unknown search (list smaller larger))))))
-          (t (unknown search (list smaller larger)))))))))
+           (strictly (search-strictly search))
+           (root-of-discriminant nil))
+      (flet ((only (signs &rest allowed) (and signs (subsetp signs allowed)))
+             (root-of-discriminant ()
+               ;; made once, when a root is wanted (it costs round trips)
+               (or root-of-discriminant
+                   (setf root-of-discriminant (real-square-root search discriminant)))))
+        (symbol-macrolet ((larger (mform +mplus+ half-sum (root-of-discriminant)))
+                          (smaller (mdifference half-sum (root-of-discriminant))))
+          (cond
+            ;; Roots of opposite signs: the larger is the only one after the start.
+            ((only product-signs :negative) (found search larger))
+            ;; A root at the start itself; the other is S.
+            ((equal product-signs '(:zero))
+             (if (not strictly)
+                 (found search 0)
+                 (ecase (root-verdict (sign-pattern-of search sum) t)
+                   (:yes (found search sum))
+                   (:no (values :none nil))
+                   (:maybe (unknown search (list sum))))))
+            ;; Roots of the same sign (or complex): both before the start when S <= 0.
+            ((only product-signs :positive)
+             (let ((sum-signs (sign-pattern-of search sum)))
+               (cond ((only sum-signs :negative :zero) (values :none nil))
+                     ((only sum-signs :positive)
+                      (let ((discriminant-signs (sign-pattern-of search discriminant)))
+                        (cond ((only discriminant-signs :negative) (values :none nil))
+                              ((only discriminant-signs :positive :zero) (found search smaller))
+                              (t (unknown search (list smaller larger))))))
+                     (t (unknown search (list smaller larger))))))
+            (t (unknown search (list smaller larger)))))))))
 
 (defun solved-earliest-root (search form offset-variable coefficients)
   "The general case: the roots solve() finds, compared pairwise. COEFFICIENTS is the
