@@ -53,15 +53,20 @@ RELATIONS the conditions the decider answered :CHOICE."
                 (setf choices (append choices (remove-if-not
                                                (lambda (r) (eq (gethash r answers) :choice))
                                                relations)))))))
-        (when (and choices (rest candidates))
+        (when (or (and choices (rest candidates))
+                  ;; a stale mode: a jump of the state variables (an impact's) has left
+                  ;; the current mode's entry conditions false while others' hold
+                  (and candidates (not (member (instance-mode instance) candidates))))
           (make-choice-point (instance-key instance) :mode (reverse candidates)
                              (instance-mode instance) choices))))))
 
 (defun model-choice-points (model &key (decider (model-decider model)))
   "The CHOICE-POINTs of MODEL under DECIDER (by default the model's): every qualified
 instance whose activation conditions DECIDER answers :CHOICE, and every active
-instance with modes of which several are possible and one at least by a :CHOICE. In
-the order the instances were made. Signals what the decider signals."
+instance with modes of which several are possible and one at least by a :CHOICE, or
+whose current mode is not possible while others are (a stale mode: the caller changes
+it to one of them). In the order the instances were made. Signals what the decider
+signals."
   (let ((points '()))
     (dolist (instance (model-instances model) (nreverse points))
       (let ((point (or (activation-choice model instance decider)

@@ -396,7 +396,8 @@ declared modes, and entry conditions wherever there is a choice."
     (:deactivation RELATION-OR-EVENT-CONDITION... | :never)
     (:assert PATTERN...)             ; qualitative assertions, in every mode
     (:equations EQUATION...)         ; quantitative assertions, in every mode
-    (:mode MODE-NAME                 ; zero or more modes, mutually exclusive
+    (:mode MODE-NAME                 ; zero or more modes, mutually exclusive, listed
+                                     ; in order of preference (see below)
       (:entry CONDITION...)          ; needed when there are several modes
       (:assert PATTERN...)
       (:equations EQUATION...)
@@ -453,6 +454,11 @@ relation or equation: (:activation (on-contact ?c)).
 Deactivation and transition relations are termination conditions: the engine never
 decides them; they are tested on the solved model, so they may mention quantities
 that are not state variables (a normal force).
+
+When the decider leaves several modes open (:CHOICE), the engine takes the first of
+them listed and MODEL-CHOICE-POINTS offers them in the order listed: a caller that
+finds several consistent prefers the earlier ones (a friction contact that can stick
+does not start sliding).
 
 Example (the thesis's figure 2-8, Newton's second law):
 

@@ -29,6 +29,8 @@ re-exported from the layers below) and the command line of bin/ames.")
    #:scenario-body #:scenario-body-name #:scenario-body-shape #:scenario-body-mass
    #:scenario-body-position #:scenario-body-velocity #:scenario-body-fixed-p
    #:scenario-force #:scenario-force-name #:scenario-force-body #:scenario-force-value
+   #:scenario-frictions #:scenario-friction #:scenario-friction-bodies
+   #:scenario-friction-static #:scenario-friction-kinetic #:find-scenario-friction
    #:find-scenario-parameter #:find-scenario-body #:find-scenario-force
    #:scenario-assumption-relations #:scenario-parameter-values
    #:scenario-moving-bodies #:scenario-fixed-bodies

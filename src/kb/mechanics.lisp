@@ -16,6 +16,7 @@
 ;;;;   (gravity-field NAME :strength EXPR)                      pointing -y
 ;;;;   (external-force NAME :on BODY :fx EXPR :fy EXPR)
 ;;;;   (simple-contact K :observer A :obstacle B :geometry C)   C an ames.geometry contact
+;;;;   (friction-coefficients F :between (A B) :static MU-S :kinetic MU-K)   see friction.lisp
 ;;;; and reads back equations over these quantity terms (fixed frame, cartesian unless said):
 ;;;;   (acc B :x)  (vel B :x)  (pos B :x)        acceleration, velocity, position of body B
 ;;;;   (rel-acc A B :x)                          A's acceleration measured in B's frame
@@ -24,6 +25,10 @@
 ;;;;   (path-acc K :tangential) (path-acc K :normal)   A's relative acceleration in contact K's
 ;;;;                                             path coordinates (normal: toward the obstacle)
 ;;;;   (path-position K) (path-speed K)          arc length s and its rate along contact K
+;;;;                                             (the rate: the observer's velocity relative
+;;;;                                             to the obstacle along the unit tangent)
+;;;;   (friction-force K)                        the friction on the observer of contact K,
+;;;;                                             its signed component along the unit tangent
 ;;;;   (contact-gap K)                           how far A is from contact K's locus (the
 ;;;;                                             geometry's gap: the simulator computes it)
 ;;;; The state variables are the positions and velocities of the free bodies and, on a

@@ -142,7 +142,8 @@ their features, the forces, accelerations and trajectories, the end event and it
                               (infix (first (third force))) (infix (second (third force)))))
             (:external (format stream "    external force ~(~A~) on ~(~A~): (~A, ~A)~%"
                                (second force) (third force)
-                               (infix (first (fourth force))) (infix (second (fourth force)))))))
+                               (infix (first (fourth force))) (infix (second (fourth force)))))
+            (t (format stream "    ~A~%" (force-phrase force)))))
         (format stream "  accelerations (fixed frame):~%")
         (dolist (entry (state-accelerations state))
           (format stream "    ~(~A~): (~A, ~A)~%" (first entry)
@@ -239,6 +240,27 @@ their features, the forces, accelerations and trajectories, the end event and it
                      (format stream "    ~A, at t = ~A~%" (event-phrase event) (infix time))))))
             (stopped (format stream "  ~A~%" stopped))))))
 
+(defun force-phrase (force)
+  "A phrase for any force entry (KIND NAME... VALUE... [:KEY WORD]...) of the knowledge
+base's report: its kind, the bodies it names (the first acted on by the second), its
+values, and its properties, e.g. \"friction of incline on block (mode static): VALUE\"."
+  (let* ((plist (member-if #'keywordp (rest force)))
+         (positional (ldiff (rest force) plist))
+         (names (loop for x in positional while (and x (symbolp x)) collect x))
+         (values (nthcdr (length names) positional)))
+    (flet ((value-text (value)
+             (if (and (consp value) (not (operator-p (first value))))
+                 (format nil "(~{~A~^, ~})" (mapcar #'infix value))
+                 (infix value))))
+      (format nil "~(~A~)~@[ ~A~]~:[~; (~{~(~A~) ~(~A~)~^, ~})~]: ~{~A~^, ~}"
+              (first force)
+              (case (length names)
+                (0 nil)
+                (1 (format nil "on ~(~A~)" (first names)))
+                (t (format nil "of ~(~A~) on ~(~A~)" (second names) (first names))))
+              plist plist
+              (mapcar #'value-text values)))))
+
 (defun infix-relation (relation)
   "A relation such as (> X 0) rendered for people."
   (if (and (consp relation) (symbolp (first relation)) (relation-operator-p (first relation)))
@@ -268,4 +290,5 @@ their features, the forces, accelerations and trajectories, the end event and it
                               (let ((e (getf (cddr more) :energy-lost))) (and e (infix e)))))
           (:time-limit (format nil "the simulation reaches its time limit, t = ~A" (infix (first more))))
           (:contact-ends (format nil "the contact of ~(~A~) with ~(~A~) ends" (first more) (second more)))
-          (t (format nil "~(~S~)" event)))))))
+          (t (let ((*package* (find-package '#:ames-scenario)))
+               (format nil "~(~S~)" event))))))))

@@ -187,7 +187,7 @@ order."
             ((not (clause-word clause))
              (reject validation 'unknown-clause-error clause
                      "~A is not a clause of the scenario language; the clauses are ~
-                      parameters, gravity, body, force, simulate, query and restitution"
+                      parameters, gravity, body, force, simulate, query, restitution and friction"
                      (show (car clause))))
             (t (push clause (cdr (assoc (clause-word clause) sorted))))))
     (dolist (entry sorted sorted)
@@ -257,7 +257,8 @@ CHECK-SCENARIO-GEOMETRY, which the caller runs when it has those layers."
                   (bodies (mapcar (lambda (clause) (checked-body validation clause))
                                   (clauses 'ames-scenario:body)))
                   (forces (mapcar (lambda (clause) (checked-force validation clause))
-                                  (clauses 'ames-scenario:force))))
+                                  (clauses 'ames-scenario:force)))
+                  (frictions (checked-frictions validation (clauses 'ames-scenario:friction))))
               (when (null bodies)
                 (enter validation "form" form)
                 (reject validation 'missing-property-error form "the scenario has no body"))
@@ -266,7 +267,7 @@ CHECK-SCENARIO-GEOMETRY, which the caller runs when it has those layers."
                 (make-instance 'scenario
                                :name name :description description
                                :parameters parameters :gravity gravity
-                               :bodies bodies :forces forces
+                               :bodies bodies :forces forces :frictions frictions
                                :states states :until until :branch branch
                                :queries (mapcar #'rest (clauses 'ames-scenario:query))
                                :restitutions (checked-restitutions

@@ -16,6 +16,7 @@
    ;; these symbols whatever package the user's form was written in
    #:scenario #:parameters #:gravity #:body #:force #:simulate #:query
    #:restitution
+   #:friction
    #:point #:circle #:polygon #:outline #:line #:arc #:segment #:half-plane)
   (:documentation "The package scenario files are read into (with *READ-EVAL* nil and
 a restricted readtable). It uses no package: it holds the user's names, and imports
@@ -53,6 +54,8 @@ and Maxima (assumptions, overlaps).")
    #:scenario-body #:scenario-body-name #:scenario-body-shape #:scenario-body-mass
    #:scenario-body-position #:scenario-body-velocity #:scenario-body-fixed-p
    #:scenario-force #:scenario-force-name #:scenario-force-body #:scenario-force-value
+   #:scenario-frictions #:scenario-friction #:scenario-friction-bodies
+   #:scenario-friction-static #:scenario-friction-kinetic #:find-scenario-friction
    #:find-scenario-parameter #:find-scenario-body #:find-scenario-force
    #:scenario-assumption-relations #:scenario-parameter-values
    #:scenario-moving-bodies #:scenario-fixed-bodies

@@ -16,6 +16,9 @@
 ;;;; problem). Among the consistent assignments one is taken when it is the only one that
 ;;;; is not DEGENERATE (an active contact whose normal force vanishes identically, or an
 ;;;; inactive one grazed all along); several that differ physically are an ambiguity.
+;;;; Modes are a component's: it lists them in its order of preference, and of consistent
+;;;; assignments that differ in their modes, one whose modes another's are preferred to
+;;;; is dropped (a rough contact that can stick does not start sliding).
 
 (in-package #:ames.simulator)
 
@@ -75,15 +78,21 @@ one corner (alternatives), and the mode points: three values."
                            (combinations (rest option-lists))))))
 
 (defun apply-assignment (run points assignment)
-  "Bring the model's choices to ASSIGNMENT (alist key -> option over POINTS' instances)."
-  (let ((changes (loop for point in points
-                       for entry = (assoc (ames.engine:choice-point-instance point) assignment
-                                          :test #'equal)
-                       for change = (and entry (ames.engine:choice-change (run-model run) point
-                                                                          (cdr entry)))
-                       when change collect change)))
-    (when changes
-      (ames.engine:apply-transition (run-model run) changes :decider (run-decider run)))))
+  "Bring the model's choices to ASSIGNMENT (alist key -> option over POINTS' instances):
+the activations first, then the modes of the instances active after them (an instance
+that is not active has no mode to choose; its option is then NIL)."
+  (dolist (kind '(:activation :mode))
+    (let ((changes (loop for point in points
+                         for key = (ames.engine:choice-point-instance point)
+                         for entry = (assoc key assignment :test #'equal)
+                         for change = (and entry (cdr entry)
+                                           (eq kind (ames.engine:choice-point-kind point))
+                                           (or (eq kind :activation) (instance-active-p run key))
+                                           (ames.engine:choice-change (run-model run) point
+                                                                      (cdr entry)))
+                         when change collect change)))
+      (when changes
+        (ames.engine:apply-transition (run-model run) changes :decider (run-decider run))))))
 
 (defun active-contacts (run)
   "The contact entities whose CONTACT instance is active in the current model: those
@@ -223,13 +232,50 @@ start of a state (or velocity after an impact) is the same."
                (ames.maxima:equivalent-p (run-bridge run) (value a) (value b))))
            terms)))
 
-(defun choose-trial (run trials)
-  "The trial to take among TRIALS (see the file header). Signals AMBIGUOUS-TRANSITION
-or UNSOLVABLE-MODEL."
+(defun mode-ranks (points trial)
+  "TRIAL's option at each mode choice point of POINTS as its place among the point's
+options, which are in the order its component lists its modes; NIL where the
+instance has no mode in TRIAL (it is not active there)."
+  (loop for point in points
+        when (eq (ames.engine:choice-point-kind point) :mode)
+          collect (position (cdr (assoc (ames.engine:choice-point-instance point)
+                                        (trial-assignment trial) :test #'equal))
+                            (ames.engine:choice-point-options point))))
+
+(defun preferred-over-p (points a b)
+  "True when the modes of trial A are preferred to those of trial B: a component lists
+its modes in its order of preference, and at every mode choice point of POINTS where
+both have a mode, A's comes no later than B's, and at one at least earlier."
+  (let ((earlier nil))
+    (loop for rank-a in (mode-ranks points a)
+          for rank-b in (mode-ranks points b)
+          when (and rank-a rank-b)
+            do (cond ((> rank-a rank-b) (return-from preferred-over-p nil))
+                     ((< rank-a rank-b) (setf earlier t))))
+    earlier))
+
+(defun choose-trial (run trials &optional points)
+  "The trial to take among TRIALS, the assignments of the choice POINTS tried (see
+the file header). Among consistent assignments whose modes differ, those whose modes
+another one's are preferred to are dropped (a component lists its modes in its order
+of preference: where a friction contact can stick, it does not start sliding); an
+undecided assignment preferred to the rest leaves the choice undecided. Signals
+AMBIGUOUS-TRANSITION or UNSOLVABLE-MODEL."
   (let* ((consistent (remove :consistent trials :key #'trial-verdict :test-not #'eq))
          (best (and consistent (reduce #'min consistent :key #'trial-degenerate)))
          (preferred (remove best consistent :key #'trial-degenerate :test-not #'eql))
-         (undecided (remove :undecided trials :key #'trial-verdict :test-not #'eq)))
+         (undecided (remove :undecided trials :key #'trial-verdict :test-not #'eq))
+         (preferred (remove-if (lambda (trial)
+                                 (some (lambda (other) (preferred-over-p points other trial))
+                                       preferred))
+                               preferred))
+         (blocking (and preferred
+                        (remove-if-not (lambda (trial)
+                                         (some (lambda (other) (preferred-over-p points trial other))
+                                               preferred))
+                                       undecided)))
+         (preferred (if blocking '() preferred))
+         (undecided (or blocking undecided)))
     (cond ((and preferred
                 (every (lambda (trial) (same-motion-p run (first preferred) trial)) (rest preferred)))
            ;; equal motions: the one with the fewest active contacts, the least arbitrary force
@@ -292,7 +338,7 @@ as its notes. Signals AMBIGUOUS-TRANSITION or UNSOLVABLE-MODEL (see CHOOSE-TRIAL
                   (push (pivot run points '()) trials))
                 (push trial trials))))
         (setf trials (nreverse trials))
-        (let ((chosen (choose-trial run trials)))
+        (let ((chosen (choose-trial run trials points)))
           (apply-assignment run points (trial-assignment chosen))
           (setf (trial-notes chosen)
                 (list :points (mapcar #'ames.engine:choice-point-instance points)

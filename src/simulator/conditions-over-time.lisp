@@ -44,11 +44,24 @@ SOLVED's state terms."
     `(+ ,s0 ,(vec-dot (vec- (relative-position-terms run solved contact) q0)
                       (ames.geometry:contact-unit-tangent geometry s0)))))
 
+(defun straight-arc-speed-terms (run solved contact)
+  "The rate of the arc length along the straight CONTACT -- the observer's velocity
+relative to the obstacle along the contact's constant unit tangent -- over SOLVED's
+state terms."
+  (let* ((geometry (contact-geometry run contact))
+         (s0 (ames.geometry:contact-parameter geometry (relative-initial-state run contact))))
+    (destructuring-bind (observer obstacle) (contact-bodies run contact)
+      (vec-dot (vec- (body-velocity-terms run solved observer)
+                     (body-velocity-terms run solved obstacle))
+               (ames.geometry:contact-unit-tangent geometry s0)))))
+
 (defun quantity-terms (run solved term)
   "The quantity TERM of a condition as an expression over SOLVED's state terms."
   (cond ((member term (solved-model-state solved) :test #'equal) term)
         ((eq (first term) 'ames.kb:path-position)
          (straight-arc-length-terms run solved (second term)))
+        ((eq (first term) 'ames.kb:path-speed)
+         (straight-arc-speed-terms run solved (second term)))
         ((eq (first term) 'ames.kb:contact-gap)
          (ames.geometry:meeting-gap (contact-meeting-terms run solved (second term))))
         (t (quantity-value solved term))))

@@ -298,5 +298,10 @@ vanishes identically, as far as the series goes), or (values :UNKNOWN COEFFICIEN
 for the first coefficient whose sign is not decided."
   (dolist (c coefficients (values 0 0))
     (let ((sign (sign-of run c)))
+      (when (eq sign :unknown)
+        ;; the series is only ratsimped: its trigonometric form may hide a fact the
+        ;; assumptions decide (cos^2 + sin^2), so the simplest form gets a second look
+        (setf c (tidy run c :full)
+              sign (sign-of run c)))
       (unless (eql sign 0)
         (return (values sign c))))))

@@ -197,7 +197,14 @@ are alternatives. At a concave corner both faces can push at once."
                        :observer (ames.geometry:contact-observer contact)
                        :obstacle (ames.geometry:contact-obstacle contact)
                        :geometry contact)))
-             (run-contacts run)))))
+             (run-contacts run))
+     (loop for friction in (scenario-frictions scenario)
+           for index from 0
+           collect (list 'ames.kb:friction-coefficients
+                         (intern (format nil "FRICTION-~D" index) '#:ames.simulator)
+                         :between (scenario-friction-bodies friction)
+                         :static (scenario-friction-static friction)
+                         :kinetic (scenario-friction-kinetic friction))))))
 
 ;;; Which contacts touch at the start of a state
 
@@ -249,6 +256,34 @@ decided."
        (consp (second relation)) (eq (first (second relation)) 'ames.kb:contact-gap)
        (second (second relation))))
 
+(defun state-quantity-p (term)
+  "True when TERM is a kinematic quantity whose value at the start of the state the run
+knows: a body's position or velocity, the arc length along a contact or its rate."
+  (and (quantity-term-p term)
+       (member (first term) '(ames.kb:pos ames.kb:vel ames.kb:path-position ames.kb:path-speed))))
+
+(defun kinematic-verdict (run relation)
+  "RELATION decided on the state's initial values: its kinematic quantities (see
+STATE-QUANTITY-P) replaced by their values at the start, then Maxima's verdict. A
+relation whose two sides are equal at the start while one mentions a velocity (a
+body's, or the rate of an arc length) is :CHOICE: which side the state moves to
+depends on the accelerations, which only the solved model gives, so the consistency
+search settles it (a contact's sliding at rest, say). A relation over no kinematic
+quantity is decided as it is."
+  (let ((values (loop for term in (expression-variables relation)
+                      when (state-quantity-p term)
+                        collect (cons term (initial-state-value run term)))))
+    (if (null values)
+        (decide run relation)
+        (let ((relation (substitute-expressions values relation)))
+          (if (and (relation-operator-p (first relation))
+                   (some (lambda (entry) (member (first (car entry))
+                                                 '(ames.kb:vel ames.kb:path-speed)))
+                         values)
+                   (eq :true (decide run `(= ,(relation-lhs relation) ,(relation-rhs relation)))))
+              :choice
+              (decide run relation))))))
+
 (defun run-decider (run)
   "The decider of the model the run works on: the impact's while one is resolved, else
 the state's (STATE-DECIDER)."
@@ -256,9 +291,11 @@ the state's (STATE-DECIDER)."
 
 (defun state-decider (run)
   "The decider of the current state's activation and mode entry conditions: touching
-relations go to the geometry (see TOUCHING-VERDICT), everything else to Maxima."
+relations go to the geometry (see TOUCHING-VERDICT), relations over kinematic
+quantities are decided on their values at the start (see KINEMATIC-VERDICT),
+everything else goes to Maxima."
   (lambda (relation)
     (let ((contact (gap-relation-contact relation)))
       (if contact
           (touching-verdict run contact)
-          (decide run relation)))))
+          (kinematic-verdict run relation)))))

@@ -101,7 +101,9 @@ velocities' limit, zero, and STATE's notes say so (:ACCUMULATION)."
 (defun fact-from-values (run fact values)
   "FACT, or its negation, as the parameter VALUES decide it numerically; when the values
 make its two sides equal (exactly, in rational arithmetic), the equation (= LHS RHS) of
-that boundary case. NIL when they do not decide it (no values, a value missing)."
+that boundary case. NIL when they do not decide it (no values, a value missing). When
+the two sides differ under the values the negation is the strict one: (< X Y) false
+means (> X Y)."
   (when (and values (consp fact) (member (first fact) '(< > <= >=))
              (notany #'keywordp (alexandria:flatten fact)))
     (let* ((difference-form `(- ,(relation-lhs fact) ,(relation-rhs fact)))
@@ -115,7 +117,7 @@ that boundary case. NIL when they do not decide it (no values, a value missing).
             ((zerop difference) nil)
             ((ecase (first fact) ((> >=) (plusp difference)) ((< <=) (minusp difference)))
              fact)
-            (t (list (ecase (first fact) (> '<=) (>= '<) (< '>=) (<= '>))
+            (t (list (ecase (first fact) ((> >=) '<) ((< <=) '>))
                      (relation-lhs fact) (relation-rhs fact)))))))
 
 (defun run-states (run history index limit check-incremental)
