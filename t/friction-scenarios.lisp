@@ -70,7 +70,7 @@ let the block slide."
                              form :test (lambda (old new) (same-by-name-p new old))))))
       (is (= 3 (length (ames:scenario-parameter-assumptions
                         (ames:find-scenario-parameter 'muk scenario)))))
-      (multiple-value-bind (history states) (run-of scenario bridge)
+      (multiple-value-bind (history states) (run-of (unbranched scenario) bridge)
         (is (eq :ambiguous (ames::history-outcome history)))
         (is (null states))
         (let ((fact (ames:ambiguous-transition-missing-fact
@@ -170,7 +170,7 @@ naming the fact; parameter values decide it: mu = 1/5 < tan 1/2 slides back, mu 
 sticks."
   (with-fixture simulator-bridge ()
     (let ((scenario (scenario-named "block-launched-up-rough-incline")))
-      (multiple-value-bind (history states) (run-of scenario bridge)
+      (multiple-value-bind (history states) (run-of (unbranched scenario) bridge)
         (is (eq :ambiguous (ames::history-outcome history)))
         (is (= 1 (length states)))
         (let ((fact (ames:ambiguous-transition-missing-fact
@@ -180,7 +180,7 @@ sticks."
       (dolist (case '((1/5 :sliding) (1 :static)))
         (destructuring-bind (mu mode) case
           (multiple-value-bind (history states)
-              (run-of scenario bridge
+              (run-of (unbranched scenario) bridge
                       :parameter-values `(("M" . 1) ("G" . 981/100) ("A" . 1/2) ("B" . 1)
                                           ("V0" . 2) ("MU" . ,mu)))
             (is (eq :complete (ames::history-outcome history)) "mu = ~A: ~S" mu
@@ -279,7 +279,7 @@ cart's top at t1 = sqrt((l + b) mc / (f - mu g (m + mc)))."
 f = mu g (m + mc); the default values (f = 20 > 3.924) decide it: the block slides."
   (with-fixture simulator-bridge ()
     (let ((scenario (scenario-named "block-on-cart-pulled")))
-      (multiple-value-bind (history states) (run-of scenario bridge)
+      (multiple-value-bind (history states) (run-of (unbranched scenario) bridge)
         (is (eq :ambiguous (ames::history-outcome history)))
         (is (null states))
         (let ((fact (ames:ambiguous-transition-missing-fact
@@ -296,7 +296,7 @@ f = mu g (m + mc); the default values (f = 20 > 3.924) decide it: the block slid
                          `(- ,(relation-lhs fact) ,(relation-rhs fact)))
                         0))))))
       (multiple-value-bind (history states)
-          (run-of scenario bridge :parameter-values (ames:scenario-parameter-values scenario))
+          (run-of (unbranched scenario) bridge :parameter-values (ames:scenario-parameter-values scenario))
         (is (member (ames::history-outcome history) '(:collision :state-limit :complete)))
         (when (first states)
           (is (eq :sliding (getf (cddddr (friction-entry (first states) "CART" "BLOCK")) :mode))))))))

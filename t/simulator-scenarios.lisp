@@ -37,6 +37,18 @@ history then says :AMBIGUOUS and holds the condition under :STOPPED-BY)."
   (handler-bind ((ames::ambiguous-transition #'ames::stop-simulation))
     (ames::simulate scenario :bridge bridge :parameter-values parameter-values)))
 
+(defun unbranched (scenario)
+  "SCENARIO (an object or a form) with (simulate ... :branch nil): an ambiguity stops it."
+  (let ((form (if (ames:scenario-p scenario) (ames:scenario-form scenario) scenario)))
+    (ames:parse-scenario
+     (if (find-if (lambda (clause) (and (consp clause) (same-name-p* (first clause) "SIMULATE"))) form)
+         (mapcar (lambda (clause)
+                   (if (and (consp clause) (same-name-p* (first clause) "SIMULATE"))
+                       (append clause (list :branch nil))
+                       clause))
+                 form)
+         (append form (list (list (find-symbol "SIMULATE" '#:ames-scenario) :branch nil)))))))
+
 (defun call-with-scenario-facts (bridge scenario function)
   "Call FUNCTION with SCENARIO's parameter assumptions in force in BRIDGE."
   (ames.maxima:with-assumptions (bridge (ames:scenario-assumption-relations scenario))
