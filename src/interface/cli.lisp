@@ -10,11 +10,14 @@
 
 (defparameter *usage*
   "Usage: ames run FILE... [--format text|sexp] [--set PARAM=VALUE ...]
+       ames explain FILE... [--state N] [--set PARAM=VALUE ...]
   Simulate every scenario in each FILE and print a report.
   --format text   a report for people, state by state (the default)
   --format sexp   one readable s-expression per scenario (see the scenario language page)
   --set p=v ...   give parameter p the number v (an integer, ratio or decimal); numeric
                   values are then printed beside the closed forms
+  explain         why each state's contacts and modes hold, where its equations
+                  come from, and why it ends when it does (or only state N)
 Exit codes: 0 success, 1 a scenario error, 2 usage."
   "The text printed for `ames help` and after a usage error.")
 
@@ -56,12 +59,12 @@ USAGE-ERROR naming TEXT when it is malformed."
 (defun parse-command-line (arguments)
   "Parse ARGUMENTS (strings, without the program name) into a plist (:COMMAND :FILES
 :FORMAT :SETTINGS). Signals USAGE-ERROR on anything malformed."
-  (let ((command (first arguments)) (files '()) (format :text) (settings '()))
+  (let ((command (first arguments)) (files '()) (format :text) (settings '()) (state nil))
     (cond ((null command) (error 'usage-error :detail "no command given"))
           ((member command '("help" "--help" "-h") :test #'string=)
            (return-from parse-command-line (list :command :help)))
-          ((string/= command "run") (error 'usage-error :datum command
-                                                        :detail "unknown command")))
+          ((not (member command '("run" "explain") :test #'string=))
+           (error 'usage-error :datum command :detail "unknown command")))
     (loop with rest = (rest arguments)
           while rest
           do (let ((argument (pop rest)))
@@ -78,12 +81,18 @@ USAGE-ERROR naming TEXT when it is malformed."
                       (loop while (and rest (find #\= (first rest))
                                        (not (eql 0 (search "--" (first rest)))))
                             do (push (parse-setting (pop rest)) settings)))
+                     ((and (string= command "explain") (string= argument "--state"))
+                      (let ((value (and rest (parse-decimal (pop rest)))))
+                        (unless (and (integerp value) (>= value 0))
+                          (error 'usage-error :datum argument :detail "--state takes a state's index"))
+                        (setf state value)))
                      ((eql 0 (search "--" argument))
                       (error 'usage-error :datum argument :detail "unknown option"))
                      (t (push argument files)))))
     (when (null files) (error 'usage-error :detail "run needs at least one scenario file"))
-    (list :command :run :files (nreverse files) :format format
-          :settings (nreverse settings))))
+    (list :command (if (string= command "explain") :explain :run)
+          :files (nreverse files) :format format
+          :settings (nreverse settings) :state state)))
 
 (defun main (arguments)
   "The entry point of bin/ames: run the command in ARGUMENTS (a list of strings) and quit
@@ -93,6 +102,8 @@ with 0 on success, 1 when any scenario had an error, 2 on a usage error."
               (let ((options (parse-command-line arguments)))
                 (case (getf options :command)
                   (:help (write-string *usage*) (terpri) 0)
+                  (:explain (explain-files (getf options :files) :state (getf options :state)
+                                           :settings (getf options :settings)))
                   (:run (run-files (getf options :files)
                                    :format (getf options :format)
                                    :settings (getf options :settings)
@@ -103,6 +114,18 @@ with 0 on success, 1 when any scenario had an error, 2 on a usage error."
     (finish-output *standard-output*)
     (finish-output *error-output*)
     (uiop:quit status)))
+
+(defun explain-files (files &key state settings (stream *standard-output*))
+  "Explain every scenario of each of FILES (see EXPLAIN), or only the state STATE.
+Returns the exit status: 0, or 1 when a scenario could not be explained."
+  (let ((status 0))
+    (dolist (file files status)
+      (handler-case
+          (dolist (history (run-file file :settings settings))
+            (explain history :state state :stream stream))
+        (ames-error (condition)
+          (setf status 1)
+          (format *error-output* "~&ames: ~A~%" condition))))))
 
 (defun run-files (files &key (format :text) settings (stream *standard-output*)
                           (bridge (current-bridge)))

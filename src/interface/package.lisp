@@ -49,7 +49,8 @@ re-exported from the layers below) and the command line of bin/ames.")
    #:qualitative-state #:state-index #:state-start #:state-duration #:state-contacts
    #:state-accelerations #:state-forces-of #:state-positions #:state-velocities
    #:state-end-event #:state-final-positions #:state-final-velocities #:state-notes
-   #:state-initial-velocities #:state-analysis #:scenario-restitutions #:scenario-restitution
+   #:state-initial-velocities #:state-analysis #:state-branches #:history-answers
+   #:explain #:explain-files #:scenario-branch #:scenario-restitutions #:scenario-restitution
    #:body-entry
    #:history-sexp #:print-history-sexp #:print-history-text
    ;; the checks through Maxima (src/scenario/semantics.lisp)

@@ -10,6 +10,7 @@
   (list* :scenario (scenario-name (history-scenario history))
          :states (mapcar #'state-sexp (history-states history))
          :outcome (history-outcome history)
+         :answers (history-answers history)
          (let ((stopped (getf (history-notes history) :stopped-by)))
            (append
             (let ((assumed (getf (history-notes history) :assumed)))

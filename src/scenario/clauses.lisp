@@ -269,7 +269,8 @@ CHECK-SCENARIO-GEOMETRY, which the caller runs when it has those layers."
                                :parameters parameters :gravity gravity
                                :bodies bodies :forces forces :frictions frictions
                                :states states :until until :branch branch
-                               :queries (mapcar #'rest (clauses 'ames-scenario:query))
+                               :queries (mapcar (lambda (clause) (checked-query validation clause))
+                                                (clauses 'ames-scenario:query))
                                :restitutions (checked-restitutions
                                               validation (clauses 'ames-scenario:restitution))
                                :source source :form form)))))))))

@@ -89,7 +89,8 @@ bodies), in order of declaration.")
            :documentation "True when an ambiguity splits the run into branches; NIL when it
 stops the run, naming the missing fact.")
    (queries :initarg :queries :initform '() :reader scenario-queries
-            :documentation "The arguments of each (query ...) clause, as data.")
+            :documentation "The validated queries, each (NAME QUESTION) in the canonical form
+of src/scenario/queries.lisp.")
    (restitutions :initarg :restitutions :initform '() :reader scenario-restitutions
                  :documentation "Newton's coefficients of restitution: a list of (BODY1 BODY2
 E) for a pair's impacts and (NIL NIL E) for every other impact (without one, E is 0).")

@@ -64,6 +64,8 @@ termination condition with its time, or why it never fires)."))
    (parameter-values :initarg :parameter-values :initform '()
                      :reader history-parameter-values
                      :documentation "Alist (PARAMETER . NUMBER) used for numeric values.")
+   (answers :initform '() :accessor history-answers
+            :documentation "The answers to the scenario's queries (see ANSWER-QUERIES).")
    (notes :initform '() :accessor history-notes
           :documentation "A plist: :STOPPED-BY holds the condition that stopped the run early.")
    (rederived :initform '() :accessor history-rederived

@@ -240,6 +240,8 @@ besides the scenario's own assumptions (a branch's)."
         (setf (getf (history-notes history) :model-sizes) (run-statistics run))
         (setf (history-rederived history) (reverse (run-rederived run))))
       (add-numeric-values history bridge)
+      (when (and (scenario-queries scenario) (null *branching*))
+        (setf (history-answers history) (answer-queries history bridge)))
       history)))
 
 ;;; Numbers beside the formulas

@@ -162,6 +162,33 @@ state (see APPROACHING-NOW-P), as CANDIDATEs at time 0 with their impact events.
           collect (let ((rate (normal-approach run contact)))
                     (make-candidate condition (condition-event condition rate) 0 :rate rate))))
 
+(defun contact-names (run)
+  "An alist contact entity -> a phrase naming it by its bodies and features, for
+explanations."
+  (mapcar (lambda (entry)
+            (let ((geometry (cdr entry)))
+              (cons (car entry)
+                    (format nil "~(~A~) on ~(~A~)"
+                            (ames.geometry:contact-observer geometry)
+                            (ames.geometry:contact-obstacle geometry)))))
+          (run-contacts run)))
+
+(defun equation-sources (model)
+  "Each equation of MODEL with where it comes from: (EQUATION COMPONENT INSTANCE-KEY),
+COMPONENT the informant of its justification in the JTMS (the component that asserted
+it) and INSTANCE-KEY the instance."
+  (loop for equation in (ames.engine:model-equations model)
+        collect (let* ((node (ames.engine:find-node model equation))
+                       (support (and node (ames.tms:node-support node))))
+                  (if (ames.tms:justification-p support)
+                      (list equation (ames.tms:justification-informant support)
+                            (let ((instance (find-if (lambda (antecedent)
+                                                       (let ((datum (ames.tms:node-datum antecedent)))
+                                                         (and (consp datum) (eq (first datum) :instance))))
+                                                     (ames.tms:justification-antecedents support))))
+                              (and instance (second (ames.tms:node-datum instance)))))
+                      (list equation nil nil)))))
+
 (defun analyse-state (run index)
   "Choose, build, solve, integrate and end the current state, numbered INDEX. Returns
 the QUALITATIVE-STATE and the fired CANDIDATEs (NIL when it lasts forever). When which
@@ -189,14 +216,15 @@ known."
                  :positions (reported-motion run groups :pos)
                  :velocities (reported-motion run groups :vel)
                  :end-event :undecided
-                 :analysis (list :equations (ames.engine:model-equations (run-model run))
+                 :analysis (list :equations (equation-sources (run-model run))
+                                 :contact-names (contact-names run)
                                  :compact-equations (solved-model-equations solved)
                                  :choices (trial-notes trial)
                                  :integrators (mapcar (lambda (g) (list (group-bodies g) (group-kind g)))
                                                       groups))
                  :notes (let ((paths (path-notes run solved groups)))
                           (when paths (list :path-coordinates (first paths)))))))
-    (multiple-value-bind (candidates unknown)
+    (multiple-value-bind (candidates unknown never)
         (let ((impacts (impacts-at-once run)))
           (if impacts
               (values impacts '())
@@ -214,7 +242,10 @@ known."
                       (earliest-candidates run (if limit (cons limit candidates) candidates)
                                            unknown))))
         (setf (getf (state-analysis state) :candidates)
-              (mapcar (lambda (c) (list (candidate-event c) (candidate-time c))) candidates))
+              (append (mapcar (lambda (c) (list (candidate-event c) :at (candidate-time c)
+                                                :fired (and (member c fired) t)))
+                              candidates)
+                      (mapcar (lambda (event) (list event :never)) never)))
         (when fired
           (let ((time (candidate-time (first fired))))
             (setf (state-duration state) time

@@ -203,11 +203,12 @@ is reached at a non-zero RATE), or its model change when the component names non
         (t (values :unknown time))))))
 
 (defun candidates-of (run solved groups)
-  "Every termination condition of the model that fires: (values CANDIDATES UNKNOWN),
-UNKNOWN a list of (FACT EVENT) for the conditions whose firing is not decided.
-Conditions over a :NUMERIC group are watched by a numeric integration (under parameter
-values) up to the earliest of the others."
-  (let ((candidates '()) (unknown '()) (numeric '()))
+  "Every termination condition of the model that fires: (values CANDIDATES UNKNOWN
+NEVER), UNKNOWN a list of (FACT EVENT) for the conditions whose firing is not decided,
+NEVER the events of the conditions proven never to fire in this state. Conditions over
+a :NUMERIC group are watched by a numeric integration (under parameter values) up to
+the earliest of the others."
+  (let ((candidates '()) (unknown '()) (numeric '()) (never '()))
     (dolist (condition (ames.engine:model-termination-conditions (run-model run)))
       (let* ((relation (ames.engine:termination-condition-relation condition))
              (involved (condition-groups run solved groups relation)))
@@ -223,7 +224,9 @@ values) up to the earliest of the others."
                   (t (values :unknown `(:no-closed-form ,(condition-event condition nil)))))
           (cond ((candidate-p result) (push result candidates))
                 ((eq result :unknown)
-                 (push (list fact (condition-event condition nil)) unknown))))))
+                 (push (list fact (condition-event condition nil)) unknown))
+                ((not (member condition numeric))
+                 (push (condition-event condition nil) never))))))
     (when (some (lambda (g) (eq (group-kind g) :numeric)) groups)
       (let ((horizon (loop for c in candidates
                            for time = (numeric-time run (candidate-time c))
@@ -231,4 +234,4 @@ values) up to the earliest of the others."
         (setf candidates (append (numeric-candidates run solved groups (reverse numeric)
                                                      (and candidates horizon))
                                  candidates))))
-    (values (nreverse candidates) (nreverse unknown))))
+    (values (nreverse candidates) (nreverse unknown) (nreverse never))))
