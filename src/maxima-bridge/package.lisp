@@ -18,6 +18,8 @@ only by this package's own translation (see translation.lisp and maxima-server.l
    #:ode-solution-velocity #:ode-solution-speed-squared
    #:numeric-value #:latex
    #:solve-script
+   ;; presentation (presentation.lisp)
+   #:presentation-candidates #:polynomial-coefficients #:presentation-latex
    ;; conditions
    #:maxima-condition #:maxima-error #:maxima-error-message
    #:maxima-question #:maxima-question-text #:maxima-question-expressions
