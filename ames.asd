@@ -4,14 +4,14 @@
 ;;;;   base  <-  maxima-bridge, tms  <-  geometry  <-  engine  <-  kb
 ;;;;   geometry, maxima-bridge  <-  scenario;   kb, scenario  <-  simulator  <-  report
 ;;;;   <-  interface (package AMES: the REPL API and bin/ames)
-;;;; Only Debian's CL packages are used (cl-alexandria, cl-fiveam, cl-ppcre).
+;;;; Only Debian's CL packages are used (cl-alexandria, cl-fiveam, cl-ppcre, cl-yason).
 
 (defsystem "ames"
   :description "AMES: a knowledge-based simulator that predicts in closed form how
 frictionless translating rigid bodies evolve (after Leon Wong's 1994 MIT thesis)."
   :version "0.1.0"
   :license "MIT"
-  :depends-on ("alexandria" "cl-ppcre")
+  :depends-on ("alexandria" "cl-ppcre" "yason")
   :components
   ((:module "base" :pathname "src/base/" :serial t
     :components ((:file "package")
@@ -105,7 +105,9 @@ frictionless translating rigid bodies evolve (after Leon Wong's 1994 MIT thesis)
                  (:file "phrases")
                  (:file "view")
                  (:file "text")
-                 (:file "sexp")))
+                 (:file "sexp")
+                 (:file "json")
+                 (:file "latex")))
    (:module "interface" :pathname "src/interface/" :serial t
     :depends-on ("report")
     :components ((:file "package")

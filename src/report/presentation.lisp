@@ -29,6 +29,9 @@ simulator's arc length to s.")
 (defparameter +arc-length+ (find-symbol "ARC-LENGTH" '#:ames.simulator)
   "The simulator's arc-length variable, named s in reports.")
 
+(defparameter +arc-speed+ (find-symbol "ARC-SPEED" '#:ames.simulator)
+  "The simulator's variable for the speed along a curve, named s' in reports.")
+
 (defun display-symbol (base scenario)
   "A fresh symbol printed BASE (\"s\"), or BASE1, BASE2 ... when a parameter of SCENARIO
 already has that name."
@@ -45,7 +48,8 @@ already has that name."
     (make-instance 'presenter
                    :scenario scenario :bridge bridge
                    :values (history-parameter-values history)
-                   :renamings (list (cons +arc-length+ (display-symbol "S" scenario))))))
+                   :renamings (list (cons +arc-length+ (display-symbol "S" scenario))
+                                    (cons +arc-speed+ (display-symbol "S'" scenario))))))
 
 (defun call-with-presenter (history bridge function)
   "Call FUNCTION with a PRESENTER for HISTORY, within the scenario's assumptions in BRIDGE."
@@ -241,7 +245,8 @@ returned as it is. Maxima's failures leave the renamed solved form."
   (let ((values (presenter-values presenter)))
     (and values (valid-expression-p expression :kind :arithmetic)
          (let ((value (expression-value expression values)))
-           (and (realp value) value)))))
+           (cond ((integerp value) value)
+                 ((realp value) (float value 1d0)))))))
 
 (defun numeric-polynomial (presenter expression &optional (variable 'tau))
   "EXPRESSION under the presenter's values as an arranged polynomial in VARIABLE with

@@ -134,31 +134,34 @@ coefficient is ACCELERATION / 2, else the presented polynomial."
         ((and (consp time) (eq (first time) :no-closed-form) (getf (rest time) :needs))
          (list "not found: no closed form in time, and no numbers to integrate with"))
         ((and (consp time) (eq (first time) :no-closed-form))
-         (phrase "no closed form in time: the time to travel from s = "
-                 (present presenter (getf (rest time) :from-arc-length)) " to s = "
-                 (present presenter (getf (rest time) :to-arc-length))
-                 " along the contact, with (s')^2 = "
-                 (present presenter (getf (rest time) :speed-squared))))
+         (let ((s (arc-length-symbol presenter))
+               (speed (cdr (assoc +arc-speed+ (presenter-renamings presenter)))))
+           (phrase "no closed form in time: the time to travel from "
+                   (list '= s (present presenter (getf (rest time) :from-arc-length))) " to "
+                   (list '= s (present presenter (getf (rest time) :to-arc-length)))
+                   " along the contact, with "
+                   (list '= (list 'expt speed 2) (present presenter (getf (rest time) :speed-squared))))))
         ((valid-expression-p time :kind :arithmetic) (phrase (present presenter time)))
         (t (list (datum-text time)))))
 
 (defun path-note (presenter value)
   "The phrases of a :PATH-COORDINATES note."
-  (let ((speed (find-symbol "ARC-SPEED" '#:ames.simulator))
+  (let ((s (arc-length-symbol presenter))
+        (speed (cdr (assoc +arc-speed+ (presenter-renamings presenter))))
         (energy (getf value :energy-integral)))
     (remove nil
-            (list (phrase "s is the arc length along the contact of "
-                          (format nil "~{~A~^ with ~}" (mapcar #'name-text (getf value :contact)))
-                          "; it starts at s = " (present presenter (getf value :arc-length-from)))
+            (list (phrase (format nil "~A is the arc length along the contact of ~{~A~^ with ~}; it starts at "
+                                  (name-text s) (mapcar #'name-text (getf value :contact)))
+                          (list '= s (present presenter (getf value :arc-length-from))))
                   (and (getf value :tangential-acceleration)
-                       (phrase "tangential acceleration s'' = "
-                               (present presenter (getf value :tangential-acceleration))))
+                       (phrase "tangential acceleration "
+                               (list '= (make-symbol (format nil "~A''" (symbol-name s)))
+                                     (present presenter (getf value :tangential-acceleration)))))
                   (and energy
-                       (phrase "energy integral: (s')^2 = "
-                               (present presenter (if (and (consp energy) (eq (first energy) '=)
-                                                          (or (equal (second energy) (list 'expt speed 2))))
-                                                      (third energy)
-                                                      energy))
+                       (phrase "energy integral "
+                               (if (and (consp energy) (eq (first energy) '=))
+                                   (list '= (list 'expt speed 2) (present presenter (third energy)))
+                                   (present presenter energy))
                                (if (eq (getf value :ode) :closed-form)
                                    " (the motion also has a closed form in time)"
                                    " (no closed form in time)")))))))
@@ -173,7 +176,9 @@ coefficient is ACCELERATION / 2, else the presented polynomial."
                               (list (list (format nil "~D sample~:P of the motion" 
                                                   (reduce #'+ (mapcar (lambda (g) (length (getf g :samples))) value))))))))
                  (:undecided (list (cons "undecided" (list (list (datum-text value))))))
-                 (:end-arc-length (list (cons "ends on the curve" (list (phrase "at s = " (present presenter value))))))
+                 (:end-arc-length (list (cons "ends on the curve"
+                                              (list (phrase "at " (list '= (arc-length-symbol presenter)
+                                                                        (present presenter value)))))))
                  (:path-coordinates (list (cons "on the curve" (path-note presenter value))))
                  (:initial-velocities
                   (list (cons "velocities just after the impact"
@@ -224,7 +229,9 @@ coefficient is ACCELERATION / 2, else the presented polynomial."
     (list :name (scenario-name scenario)
           :description (scenario-description scenario)
           :parameters (parameter-phrases presenter)
-          :values (history-parameter-values history)
+          :values (mapcar (lambda (entry)
+                            (cons (car entry) (if (integerp (cdr entry)) (cdr entry) (float (cdr entry) 1d0))))
+                          (history-parameter-values history))
           :fixed (loop for body in (scenario-fixed-bodies scenario)
                        for position = (scenario-body-position body)
                        collect (if (and position (not (every (lambda (c) (eql c 0)) position)))
