@@ -19,4 +19,6 @@ HTML page.")
    #:infix #:text-form #:number-text
    #:print-history-text #:print-history-latex #:print-history-html
    #:history-svg #:print-history-svg
+   ;; the command line's output (output.lisp)
+   #:make-report-output #:report-history #:finish-report #:*report-formats*
    #:report-error))
