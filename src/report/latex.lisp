@@ -106,7 +106,7 @@ Numbers, and numeric forms such as 0.7483 + 1.692 tau, are written by NUMBER-TEX
                  (formula-latex presenter (getf numbers :from))
                  (and (getf numbers :to) (formula-latex presenter (getf numbers :to)))))
         ((and (consp numbers) (not (valid-expression-p numbers)))
-         (if (every #'realp numbers)
+         (if (and (every #'realp numbers) (= 2 (length numbers)))
              (format nil "\\quad(=(~{~A~^, ~}))" (mapcar (lambda (n) (formula-latex presenter n)) numbers))
              ""))
         (t (format nil "\\quad(=~A)" (formula-latex presenter numbers)))))

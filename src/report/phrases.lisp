@@ -176,7 +176,12 @@ generically: the names first, the value last."
                         (butlast positional)
                         positional)))
          (value (let ((rest (nthcdr (length names) positional)))
-                  (and rest (funcall value-p (first rest)) (first rest)))))
+                  (and rest
+                       (if known
+                           (or (vector-value-p (first rest))
+                               (valid-expression-p (first rest) :kind :arithmetic))
+                           (funcall value-p (first rest)))
+                       (first rest)))))
     (values (if (and known (= (length names) (third known)))
                 (apply #'format nil (second known) (mapcar #'name-text names))
                 (format nil "~A~{ ~A~}" (keyword-words kind) (mapcar #'name-text names)))

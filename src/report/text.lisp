@@ -26,9 +26,9 @@
 
 (defun vector-numbers-text (numbers)
   "The text beside a vector for NUMBERS, a list of two (see NUMBERS-TEXT)."
-  (cond ((notany #'identity numbers) "")
-        ((every (lambda (n) (or (realp n) (null n))) numbers)
-         (format nil " = (~{~A~^, ~})" (mapcar (lambda (n) (if n (number-text n) "?")) numbers)))
+  (cond ((or (null numbers) (notevery #'identity numbers)) "")
+        ((every #'realp numbers)
+         (format nil " = (~{~A~^, ~})" (mapcar #'number-text numbers)))
         (t (format nil " (~{~A~^; ~})"
                    (loop for n in numbers for axis in '("x" "y")
                          collect (format nil "~A~A" axis (numbers-text n)))))))

@@ -65,7 +65,7 @@ state starts and ends along the curve, when known; else NIL."
 
 (defun quantity-numbers (presenter expression state)
   "The numbers shown beside EXPRESSION in STATE (see NUMBERS-OF and ARC-RANGE-NUMBERS)."
-  (cond ((not (valid-expression-p expression :kind :arithmetic)) nil)
+  (cond ((or (realp expression) (not (valid-expression-p expression :kind :arithmetic))) nil)
         ((not (free-of-p +arc-length+ expression)) (arc-range-numbers presenter expression state))
         (t (numbers-of presenter expression))))
 
@@ -77,8 +77,9 @@ state starts and ends along the curve, when known; else NIL."
                      (and value (present presenter value)))
           :vector-p (vector-value-p value)
           :numbers (if (vector-value-p value)
-                       (let ((numbers (mapcar (lambda (c) (quantity-numbers presenter c state)) value)))
-                         (and (some #'identity numbers) numbers))
+                       (let ((numbers (mapcar (lambda (c) (if (realp c) c (quantity-numbers presenter c state)))
+                                              value)))
+                         (and (every #'identity numbers) (notevery #'realp value) numbers))
                        (and value (quantity-numbers presenter value state)))
           :options (loop for (key datum) on options by #'cddr
                          collect (format nil "~A ~A" (keyword-words key) (datum-text datum))))))
@@ -201,7 +202,8 @@ coefficient is ACCELERATION / 2, else the presented polynomial."
          (events (getf (state-notes state) :events)))
     (list :index (state-index state)
           :start (time-phrase presenter (state-start state))
-          :start-number (let ((n (getf numeric :start))) (and (realp n) n))
+          :start-number (let ((n (getf numeric :start)))
+                          (and (realp n) (not (realp (state-start state))) n))
           :duration (time-phrase presenter (state-duration state))
           :duration-number (let ((n (or (getf (state-notes state) :numeric-duration) (getf numeric :duration))))
                              (and (realp n) n))
@@ -216,9 +218,11 @@ coefficient is ACCELERATION / 2, else the presented polynomial."
                        when (moving-p presenter body)
                          collect (list :name body
                                        :position (mapcar (lambda (c) (present presenter c)) position)
-                                       :position-numbers (second (assoc body (getf numeric :final-positions)))
+                                       :position-numbers (and (notevery #'realp position)
+                                                              (second (assoc body (getf numeric :final-positions))))
                                        :velocity (mapcar (lambda (c) (present presenter c)) velocity)
-                                       :velocity-numbers (second (assoc body (getf numeric :final-velocities)))))
+                                       :velocity-numbers (and (notevery #'realp velocity)
+                                                              (second (assoc body (getf numeric :final-velocities))))))
           :notes (note-views presenter state))))
 
 (defun history-view (presenter history)
