@@ -62,7 +62,8 @@ first point to its second."
 
 (defun edge-facing (presenter shape index)
   "Where the outward normal of edge INDEX of SHAPE points (the solid on the edge's left):
-:UP, :DOWN, :LEFT, :RIGHT, :UP-SLANT, :DOWN-SLANT, or NIL when not decided."
+:UP, :DOWN, :LEFT, :RIGHT, :UP-RIGHT, :UP-LEFT, :DOWN-RIGHT, :DOWN-LEFT, or NIL when
+not decided."
   (let ((points (edge-points shape index)))
     (when points
       (destructuring-bind ((x1 y1) (x2 y2)) points
@@ -73,33 +74,43 @@ first point to its second."
                 ((and (eq nx :zero) (eq ny :negative)) :down)
                 ((and (eq ny :zero) (eq nx :positive)) :right)
                 ((and (eq ny :zero) (eq nx :negative)) :left)
-                ((and nx (eq ny :positive)) :up-slant)
-                ((and nx (eq ny :negative)) :down-slant)))))))
+                ((and (eq nx :positive) (eq ny :positive)) :up-right)
+                ((and (eq nx :negative) (eq ny :positive)) :up-left)
+                ((and (eq nx :positive) (eq ny :negative)) :down-right)
+                ((and (eq nx :negative) (eq ny :negative)) :down-left)))))))
 
-(defun edge-word (shape facing)
-  "The word for an edge of SHAPE facing FACING."
-  (if (member (shape-kind shape) '(:half-plane))
-      (case facing (:up "surface") (:down "underside") ((:left :right) "face")
-            (:up-slant "slope") (:down-slant "overhang"))
-      (case facing (:up "top") (:down "base") (:left "left side") (:right "right side")
-            (:up-slant "slope") (:down-slant "underside"))))
+(defun edge-word (shape facing &optional qualified)
+  "The word for an edge of SHAPE facing FACING; QUALIFIED tells a slant's side too."
+  (let ((side (and qualified (case facing ((:up-right :down-right) "right ") ((:up-left :down-left) "left ")))))
+    (if (member (shape-kind shape) '(:half-plane))
+        (case facing (:up "surface") (:down "underside") ((:left :right) "face")
+              ((:up-right :up-left) "slope") ((:down-right :down-left) "overhang"))
+        (case facing (:up "top") (:down "base") (:left "left side") (:right "right side")
+              ((:up-right :up-left) (format nil "~@[~A~]slope" side))
+              ((:down-right :down-left) (format nil "~@[lower ~A~]~:[underside~;face~]" side side))))))
 
 (defun edge-name (presenter body index)
   "\"the slope\" for edge INDEX of BODY when its facing is decided and no other edge of
-the body has the same word, else \"edge INDEX\"."
-  (let* ((key (list :edge-names body))
-         (words (or (gethash key (presenter-cache presenter))
-                    (setf (gethash key (presenter-cache presenter))
-                          (let ((shape (body-shape-form presenter body)))
-                            (loop for i from 0 below (case (shape-kind shape)
-                                                       (:polygon (length (rest shape)))
-                                                       ((:half-plane :segment) 1)
-                                                       (t 0))
-                                  collect (edge-word shape (edge-facing presenter shape i))))))))
-    (let ((word (nth index words)))
-      (if (and word (= 1 (count word words :test #'equal)))
-          (format nil "the ~A" word)
-          (format nil "edge ~D" index)))))
+the body has the same word (\"the right slope\" when that tells them apart), else
+\"edge INDEX\"."
+  (let* ((key (list :edge-facings body))
+         (shape (body-shape-form presenter body))
+         (facings (multiple-value-bind (known found) (gethash key (presenter-cache presenter))
+                    (if found
+                        known
+                        (setf (gethash key (presenter-cache presenter))
+                              (loop for i from 0 below (case (shape-kind shape)
+                                                         (:polygon (length (rest shape)))
+                                                         ((:half-plane :segment) 1)
+                                                         (t 0))
+                                    collect (edge-facing presenter shape i))))))
+         (plain (mapcar (lambda (f) (edge-word shape f)) facings))
+         (qualified (mapcar (lambda (f) (edge-word shape f t)) facings)))
+    (flet ((unique (words)
+             (let ((word (nth index words)))
+               (and word (= 1 (count word words :test #'equal)) word))))
+      (let ((word (or (unique plain) (unique qualified))))
+        (if word (format nil "the ~A" word) (format nil "edge ~D" index))))))
 
 (defun feature-phrase (presenter feature)
   "A phrase naming FEATURE, such as (:edge 1 :of wedge): (\"the slope of wedge\")."
@@ -130,7 +141,7 @@ the body has the same word, else \"edge INDEX\"."
   (and (consp feature) (eq (first feature) :edge)
        (let ((body (getf (cddr feature) :of)))
          (member (edge-facing presenter (body-shape-form presenter body) (second feature))
-                 '(:up :up-slant)))))
+                 '(:up :up-right :up-left)))))
 
 (defun contact-phrase (presenter contact)
   "A phrase for CONTACT (B1 B2 :FEATURE F :OBSERVER-FEATURE G): \"particle on the slope

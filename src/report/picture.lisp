@@ -83,7 +83,8 @@ per state (a zero-length one where its trajectory cannot be drawn)."
                                            :initial-value 0d0)))
                      (and (plusp largest)
                           (loop for (from vector label) in arrows
-                                collect (list from (v* (/ (* 0.22d0 size) largest) vector) label)))))
+                                when (> (vlength vector) (* 1d-9 largest))
+                                  collect (list from (v* (/ (* 0.22d0 size) largest) vector) label)))))
            (frame (frame-for (append scene (loop for (from vector) in arrows collect (v+ from vector)))))
            (height (round (+ (frame-height frame) 44))))
       (with-output-to-string (out)

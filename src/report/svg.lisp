@@ -58,9 +58,9 @@
   (ecase (first outline)
     (:polygon (format stream "<polygon class=\"~A\" points=\"~A\" style=\"fill:~A\"~A/>~%" class
                       (points-attribute frame (second outline)) colour extra))
-    (:polyline (format stream "<polyline class=\"~A\" points=\"~A\" style=\"stroke:~A;fill:none\"~A/>~%"
+    (:polyline (format stream "<polyline class=\"~A\" points=\"~A\" style=\"stroke:~A;stroke-width:3;fill:none\"~A/>~%"
                        class (points-attribute frame (second outline))
-                       (if (string= colour "none") "#555" colour) extra))
+                       (if (member class '("fixed" "ghost") :test #'string=) "#555" colour) extra))
     (:circle (destructuring-bind (x y) (to-picture frame (second outline))
                (format stream "<circle class=\"~A\" cx=\"~,2F\" cy=\"~,2F\" r=\"~,2F\" style=\"fill:~A\"~A/>~%"
                        class x y (* (frame-scale frame) (third outline)) colour extra)))
