@@ -67,11 +67,11 @@ writes. Returns as a second value what was wrong."
 
 (defun trajectory-paths (svg)
   "The (BODY STATE) of each trajectory path of the picture SVG."
-  (let ((paths '()))
-    (cl-ppcre:do-register-groups (body state)
-        ("<path class=\"trajectory[^\"]*\" data-body=\"([^\"]*)\" data-state=\"([0-9]+)\"" svg)
-      (push (list body (parse-integer state)) paths))
-    (nreverse paths)))
+  (let ((pattern "<path class=\"trajectory[^\"]*\" data-body=\"([^\"]*)\" data-state=\"([0-9]+)\""))
+    (mapcar (lambda (match)
+              (let ((groups (nth-value 1 (cl-ppcre:scan-to-strings pattern match))))
+                (list (aref groups 0) (parse-integer (aref groups 1)))))
+            (cl-ppcre:all-matches-as-strings pattern svg))))
 
 (defun check-formats (bridge history latex)
   "Check HISTORY's text, JSON and SVG (see the file header); write its LaTeX on LATEX."

@@ -50,6 +50,7 @@ compares terms (and the bases made of them) by their contents."
                  (mapcar (lambda (p) (cons (car p) (* (cdr p) exponent))) (term-powers term)))))
 
 (defun negate-sum (sum)
+  "SUM with every coefficient negated."
   (mapcar (lambda (term) (make-term (- (term-coefficient term)) (term-powers term))) sum))
 
 (defun collect-like-terms (sum)
@@ -163,6 +164,7 @@ their keys (a sum after the plain symbols of its class), then functions, then ro
         (t (list 9))))
 
 (defun term-degree (term variable)
+  "The power of VARIABLE in TERM (0 when it has none)."
   (or (cdr (assoc variable (term-powers term))) 0))
 
 (defun term-key (term arrangement)
@@ -191,6 +193,7 @@ terms first, fewer factors first, then its factors' keys."
 ;;; Display: the arranged expression of the algebra
 
 (defun sum-base-p (base)
+  "True when BASE is a sum kept as a factor."
   (and (consp base) (eq (first base) :sum)))
 
 (defun normalised-term (term arrangement)
@@ -219,6 +222,7 @@ knows it to be negative (the sign going to the coefficient when the power is odd
         (t (second base))))
 
 (defun display-power (base exponent arrangement)
+  "BASE to EXPONENT as an expression (BASE alone for exponent 1)."
   (let ((shown (display-base base arrangement)))
     (if (eql exponent 1) shown (list 'expt shown exponent))))
 

@@ -15,6 +15,7 @@
   (xml-escape text))
 
 (defun file-octets (pathname)
+  "The contents of the file PATHNAME as a vector of bytes."
   (with-open-file (in pathname :element-type '(unsigned-byte 8))
     (let ((octets (make-array (file-length in) :element-type '(unsigned-byte 8))))
       (read-sequence octets in)
@@ -82,6 +83,7 @@ figure{margin:1em 0}figure svg{max-width:100%;height:auto;border:1px solid #ddd}
           (write-string (math-html presenter (second part)) out)))))
 
 (defun numbers-html (presenter numbers)
+  "The TeX put beside a formula for NUMBERS (see NUMBERS-LATEX)."
   (let ((tex (numbers-latex presenter numbers)))
     (if (string= tex "") "" tex)))
 
@@ -91,6 +93,8 @@ figure{margin:1em 0}figure svg{max-width:100%;height:auto;border:1px solid #ddd}
             :display t))
 
 (defun timeline-html (presenter view stream)
+  "Write the timeline of VIEW's states and events: one segment per state, as wide as its
+share of the known durations."
   (format stream "<div class=\"timeline\">~%")
   (let ((total (reduce #'+ (mapcar (lambda (s) (or (getf s :duration-number) 0)) (getf view :states)))))
     (dolist (state (getf view :states))
@@ -102,6 +106,7 @@ figure{margin:1em 0}figure svg{max-width:100%;height:auto;border:1px solid #ddd}
   (format stream "</div>~%"))
 
 (defun state-html (presenter view stream)
+  "Write one state's VIEW as HTML on STREAM."
   (format stream "<div class=\"state\"><h3>State ~D, from ~A~@[ <span class=\"numbers\">(t = ~A)</span>~]</h3>~%"
           (getf view :index) (phrase-html presenter (cons "t = " (getf view :start)))
           (and (getf view :start-number) (number-text (getf view :start-number))))

@@ -60,6 +60,7 @@ subscript (mp -> m_{p}, v0 -> v_{0}, theta0 -> \\theta_{0}), or \\mathit{word}."
         text)))
 
 (defun contains-float-p (expression)
+  "True when EXPRESSION contains a float (a numeric form under parameter values)."
   (if (consp expression) (some #'contains-float-p expression) (floatp expression)))
 
 (defun numeric-form-latex (expression)
@@ -117,10 +118,12 @@ Numbers, and numeric forms such as 0.7483 + 1.692 tau, are written by NUMBER-TEX
           (numbers-latex presenter numbers)))
 
 (defun vector-latex (presenter pair)
+  "The TeX of the presented vector PAIR, (x, y)."
   (format nil "\\left(~A,\\ ~A\\right)" (formula-latex presenter (first pair))
           (formula-latex presenter (second pair))))
 
 (defun body-mass (presenter body)
+  "The mass of the scenario body named BODY, or NIL."
   (let ((object (find-scenario-body body (presenter-scenario presenter))))
     (and object (scenario-body-mass object))))
 

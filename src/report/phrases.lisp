@@ -37,6 +37,7 @@ and NIL parts are dropped."
 ;;; Features
 
 (defun body-shape-form (presenter name)
+  "The shape form of the scenario body named NAME, or NIL."
   (let ((body (find-scenario-body name (presenter-scenario presenter))))
     (and body (scenario-body-shape body))))
 
@@ -157,6 +158,7 @@ of wedge\", \"the right side of block-b against the face of wall\"."
 ;;; Forces
 
 (defun vector-value-p (x)
+  "True when X is a vector (X Y) of arithmetic expressions."
   (and (consp x) (= 2 (length x)) (every (lambda (c) (valid-expression-p c :kind :arithmetic)) x)))
 
 (defparameter *force-phrases*

@@ -222,6 +222,8 @@ returned as it is. Maxima's failures leave the renamed solved form."
                       (if (numerically-same-p presenter plain shown) shown plain))))))))
 
 (defun present-renamed (presenter expression variable)
+  "PRESENT's work on the renamed EXPRESSION: the assumptions' rewrites, then a polynomial
+in VARIABLE or the best candidate."
   (let* ((rewritten (complementary-angles presenter expression))
          (coefficients (and variable (not (free-of-p variable rewritten))
                             (ames.maxima:polynomial-coefficients (presenter-bridge presenter)

@@ -56,11 +56,13 @@ valued so far."
   (let ((x (number-at (first pair) bindings)) (y (number-at (second pair) bindings)))
     (and x y (list x y))))
 
-(defun v+ (a b) (list (+ (first a) (first b)) (+ (second a) (second b))))
-(defun v- (a b) (list (- (first a) (first b)) (- (second a) (second b))))
-(defun v* (k a) (list (* k (first a)) (* k (second a))))
-(defun vlength (a) (sqrt (+ (expt (first a) 2) (expt (second a) 2))))
-(defun vunit (a) (let ((l (vlength a))) (if (> l 1d-12) (v* (/ 1 l) a) (list 0d0 0d0))))
+(defun v+ (a b) "The sum of the points A and B." (list (+ (first a) (first b)) (+ (second a) (second b))))
+(defun v- (a b) "The point A minus B." (list (- (first a) (first b)) (- (second a) (second b))))
+(defun v* (k a) "The point A scaled by K." (list (* k (first a)) (* k (second a))))
+(defun vlength (a) "The length of A." (sqrt (+ (expt (first a) 2) (expt (second a) 2))))
+(defun vunit (a)
+  "A scaled to length 1 (the zero vector stays zero)."
+  (let ((l (vlength a))) (if (> l 1d-12) (v* (/ 1 l) a) (list 0d0 0d0))))
 
 ;;; Shapes in the plane
 

@@ -43,9 +43,11 @@
                 40)))
 
 (defun frame-height (frame)
+  "The height of FRAME's drawing area in pixels."
   (+ (* 2 (frame-margin frame)) (* (frame-scale frame) (- (frame-ymax frame) (frame-ymin frame)))))
 
 (defun points-attribute (frame points)
+  "POINTS as the points attribute of a polygon or polyline."
   (format nil "~{~{~,2F,~,2F~}~^ ~}" (mapcar (lambda (p) (to-picture frame p)) points)))
 
 (defun path-data (frame points)
@@ -82,6 +84,7 @@
                  (first (to-picture frame b)) (second (to-picture frame b))))))))
 
 (defun draw-label (stream frame point text &key (class "label") (dx 6) (dy -6))
+  "Write TEXT at POINT, offset by DX and DY pixels."
   (destructuring-bind (x y) (to-picture frame point)
     (format stream "<text class=\"~A\" x=\"~,2F\" y=\"~,2F\">~A</text>~%" class (+ x dx) (+ y dy)
             (xml-escape text))))
@@ -97,6 +100,7 @@
 ;;; Contacts and forces at the start
 
 (defun feature-body-index (feature)
+  "The body and the index (or NIL) of FEATURE."
   (values (getf (if (integerp (second feature)) (cddr feature) (rest feature)) :of)
           (and (integerp (second feature)) (second feature))))
 
@@ -121,6 +125,7 @@ body's point; NIL when unknown."
                                         (or (getf (rest shape) :solid) :inside))))))))))
 
 (defun edge-outward-normal (points)
+  "The unit outward normal of the edge POINTS (the solid on its left)."
   (destructuring-bind (p1 p2) points
     (let ((d (v- p2 p1))) (vunit (list (second d) (- (first d)))))))
 

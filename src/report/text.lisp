@@ -13,6 +13,7 @@
   (text-form expression :name-function #'text-name))
 
 (defun phrase-string (phrase)
+  "PHRASE as plain text."
   (phrase-text phrase #'text))
 
 (defun numbers-text (numbers)

@@ -70,6 +70,8 @@ state starts and ends along the curve, when known; else NIL."
         (t (numbers-of presenter expression))))
 
 (defun force-view (presenter entry state)
+  "The plist a report shows for the force ENTRY of STATE: :LABEL :SYMBOL :VALUE
+:VECTOR-P :NUMBERS :OPTIONS."
   (multiple-value-bind (label symbol value options) (force-entry entry)
     (list :label label :symbol symbol
           :value (if (vector-value-p value)
@@ -193,6 +195,7 @@ coefficient is ACCELERATION / 2, else the presented polynomial."
                                           (list (datum-text value))))))))))
 
 (defun moving-p (presenter body)
+  "True unless the scenario body named BODY is fixed."
   (let ((object (find-scenario-body body (presenter-scenario presenter))))
     (not (and object (scenario-body-fixed-p object)))))
 
