@@ -130,3 +130,22 @@ thesis (t/report-golden-wedge.txt; whitespace normalised)."
       (let ((text (with-output-to-string (out) (ames:print-history-text history out :bridge bridge))))
         (is (search "= 7.996" text))
         (is (search "(0.8463)" text))))))
+
+(test events-of-any-kind-read-as-phrases
+  "Events the knowledge base may name later, and their options, are printed generically."
+  (with-fixture simulator-bridge ()
+    (let ((history (history-of "projectile-off-table" bridge)))
+      (ames.report:call-with-presenter
+       history bridge
+       (lambda (presenter)
+         (flet ((phrase-of (event) (ames.report::phrase-text (ames.report::event-phrase presenter event))))
+           (let ((p 'ames-scenario::particle) (f 'ames-scenario::floor) (v0 'ames-scenario::v0)
+                 (m 'ames-scenario::m))
+             (let ((collision (phrase-of `(:collision ,p ,f :impulse (* ,m ,v0) :energy-lost (* 1/2 ,m (expt ,v0 2))))))
+               (is (search "particle collides with floor" collision))
+               (is (search "impulse m v0" collision))
+               (is (search "energy lost" collision)))
+             (is (search "starts sliding" (phrase-of `(:starts-sliding ,p ,f))))
+             (is (search "spins up particle" (phrase-of `(:spins-up ,p :rate 3))))
+             (is (search "rate 3" (phrase-of `(:spins-up ,p :rate 3))))
+             (is (search "nothing more changes" (phrase-of :none))))))))))

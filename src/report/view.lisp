@@ -84,7 +84,8 @@ state starts and ends along the curve, when known; else NIL."
                          (and (every #'identity numbers) (notevery #'realp value) numbers))
                        (and value (quantity-numbers presenter value state)))
           :options (loop for (key datum) on options by #'cddr
-                         collect (format nil "~A ~A" (keyword-words key) (datum-text datum))))))
+                         collect (format nil "~A ~A" (keyword-words key)
+                                         (if (keywordp datum) (keyword-words datum) (datum-text datum)))))))
 
 (defun half-acceleration-p (presenter coefficient acceleration)
   "True when COEFFICIENT is proven to be ACCELERATION / 2."
