@@ -4,14 +4,14 @@
 ;;;;   base  <-  maxima-bridge, tms  <-  geometry  <-  engine  <-  kb
 ;;;;   geometry, maxima-bridge  <-  scenario;   kb, scenario  <-  simulator  <-  report
 ;;;;   <-  interface (package AMES: the REPL API and bin/ames)
-;;;; Only Debian's CL packages are used (cl-alexandria, cl-fiveam, cl-ppcre).
+;;;; Only Debian's CL packages are used (cl-alexandria, cl-fiveam, cl-ppcre, cl-yason).
 
 (defsystem "ames"
   :description "AMES: a knowledge-based simulator that predicts in closed form how
 frictionless translating rigid bodies evolve (after Leon Wong's 1994 MIT thesis)."
   :version "0.1.0"
   :license "MIT"
-  :depends-on ("alexandria" "cl-ppcre")
+  :depends-on ("alexandria" "cl-ppcre" "yason")
   :components
   ((:module "base" :pathname "src/base/" :serial t
     :components ((:file "package")
@@ -35,6 +35,7 @@ frictionless translating rigid bodies evolve (after Leon Wong's 1994 MIT thesis)
                  (:file "elliptic")
                  (:file "linear-ode")
                  (:file "trig-roots")
+                 (:file "presentation")
                  (:static-file "maxima-server.lisp")))
    (:module "tms" :pathname "src/tms/" :serial t
     :depends-on ("base")
@@ -112,7 +113,20 @@ frictionless translating rigid bodies evolve (after Leon Wong's 1994 MIT thesis)
    (:module "report" :pathname "src/report/" :serial t
     :depends-on ("simulator")
     :components ((:file "package")
-                 (:file "report")))
+                 (:file "infix")
+                 (:file "forms")
+                 (:file "presentation")
+                 (:file "phrases")
+                 (:file "view")
+                 (:file "text")
+                 (:file "sexp")
+                 (:file "json")
+                 (:file "latex")
+                 (:file "scene")
+                 (:file "svg")
+                 (:file "picture")
+                 (:file "html")
+                 (:file "output")))
    (:module "interface" :pathname "src/interface/" :serial t
     :depends-on ("report")
     :components ((:file "package")
@@ -154,6 +168,9 @@ frictionless translating rigid bodies evolve (after Leon Wong's 1994 MIT thesis)
                (:file "friction-scenarios")
                (:file "simulator-fuzz")
                (:file "cli")
+               (:file "report-forms")
+               (:file "report-presentation")
+               (:file "report-formats")
                (:file "runner"))
   :perform (test-op (o c)
              (declare (ignore o c))

@@ -98,4 +98,4 @@
                     "--set" "g=9.81" "m=1")
     (is (eql 0 code))
     (is (search "contacts: none" output))
-    (is (search "(0, -g)" output))))
+    (is (search "a_y = -g = -9.81" output))))

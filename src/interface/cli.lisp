@@ -1,4 +1,4 @@
-;;;; src/interface/cli.lisp -- the command line: bin/ames run FILE... [--format text|sexp] [--set p=v ...]
+;;;; src/interface/cli.lisp -- the command line: bin/ames run FILE... [--format text|sexp|latex|json|html] [--svg FILE] [--set p=v ...]
 
 (in-package #:ames)
 
@@ -9,11 +9,15 @@
                      (ames-error-datum condition)))))
 
 (defparameter *usage*
-  "Usage: ames run FILE... [--format text|sexp] [--set PARAM=VALUE ...]
+  "Usage: ames run FILE... [--format text|sexp|latex|json|html] [--svg OUT.svg] [--set PARAM=VALUE ...]
        ames explain FILE... [--state N] [--set PARAM=VALUE ...]
   Simulate every scenario in each FILE and print a report.
   --format text   a report for people, state by state (the default)
   --format sexp   one readable s-expression per scenario (see the scenario language page)
+  --format latex  a LaTeX fragment per scenario (formulas through Maxima's tex)
+  --format json   the s-expression's content as JSON, one line per scenario
+  --format html   one self-contained page: pictures, timelines, typeset formulas
+  --svg OUT.svg   also draw each scenario (OUT-NAME.svg when the run has several)
   --set p=v ...   give parameter p the number v (an integer, ratio or decimal); numeric
                   values are then printed beside the closed forms
   explain         why each state's contacts and modes hold, where its equations
@@ -58,8 +62,9 @@ USAGE-ERROR naming TEXT when it is malformed."
 
 (defun parse-command-line (arguments)
   "Parse ARGUMENTS (strings, without the program name) into a plist (:COMMAND :FILES
-:FORMAT :SETTINGS). Signals USAGE-ERROR on anything malformed."
-  (let ((command (first arguments)) (files '()) (format :text) (settings '()) (state nil))
+:FORMAT :SETTINGS :SVG :STATE). Signals USAGE-ERROR on anything malformed."
+  (let ((command (first arguments)) (files '()) (format :text) (settings '()) (svg nil)
+        (state nil))
     (cond ((null command) (error 'usage-error :detail "no command given"))
           ((member command '("help" "--help" "-h") :test #'string=)
            (return-from parse-command-line (list :command :help)))
@@ -71,10 +76,13 @@ USAGE-ERROR naming TEXT when it is malformed."
                (cond ((string= argument "--format")
                       (let ((value (pop rest)))
                         (setf format
-                              (cond ((equal value "text") :text)
-                                    ((equal value "sexp") :sexp)
-                                    (t (error 'usage-error :datum value
-                                                           :detail "--format takes text or sexp"))))))
+                              (or (find value *report-formats* :test #'string-equal)
+                                  (error 'usage-error :datum value
+                                                      :detail "--format takes text, sexp, latex, json or html")))))
+                     ((string= argument "--svg")
+                      (setf svg (pop rest))
+                      (when (or (null svg) (eql 0 (search "--" svg)))
+                        (error 'usage-error :datum argument :detail "--svg takes the picture's file name")))
                      ((string= argument "--set")
                       (unless (and rest (find #\= (first rest)))
                         (error 'usage-error :datum argument :detail "--set takes PARAM=VALUE"))
@@ -92,7 +100,7 @@ USAGE-ERROR naming TEXT when it is malformed."
     (when (null files) (error 'usage-error :detail "run needs at least one scenario file"))
     (list :command (if (string= command "explain") :explain :run)
           :files (nreverse files) :format format
-          :settings (nreverse settings) :state state)))
+          :settings (nreverse settings) :svg svg :state state)))
 
 (defun main (arguments)
   "The entry point of bin/ames: run the command in ARGUMENTS (a list of strings) and quit
@@ -104,10 +112,12 @@ with 0 on success, 1 when any scenario had an error, 2 on a usage error."
                   (:help (write-string *usage*) (terpri) 0)
                   (:explain (explain-files (getf options :files) :state (getf options :state)
                                            :settings (getf options :settings)))
-                  (:run (run-files (getf options :files)
-                                   :format (getf options :format)
-                                   :settings (getf options :settings)
-                                   :stream *standard-output*))))
+                  (:run (let ((*package* (find-package '#:ames-scenario)))
+                          (run-files (getf options :files)
+                                     :format (getf options :format)
+                                     :settings (getf options :settings)
+                                     :svg (getf options :svg)
+                                     :stream *standard-output*)))))
             (usage-error (condition)
               (format *error-output* "ames: ~A~%~A~%" condition *usage*)
               2))))
@@ -127,13 +137,16 @@ Returns the exit status: 0, or 1 when a scenario could not be explained."
           (setf status 1)
           (format *error-output* "~&ames: ~A~%" condition))))))
 
-(defun run-files (files &key (format :text) settings (stream *standard-output*)
+(defun run-files (files &key (format :text) settings (stream *standard-output*) svg
                           (bridge (current-bridge)))
   "Simulate every scenario of each of FILES and print each history on STREAM in FORMAT
-(:TEXT or :SEXP). SETTINGS is an alist (PARAMETER-NAME . NUMBER). A defective scenario
-or file is reported on *ERROR-OUTPUT* and the others still run. Returns the exit status:
-0 when every scenario ran, 1 when any had an error."
-  (let ((status 0))
+(:TEXT, :SEXP, :LATEX, :JSON or :HTML, one page at the end), and, when SVG (a file
+name) is given, draw each to it (see AMES.REPORT:FINISH-REPORT). SETTINGS is an alist
+(PARAMETER-NAME . NUMBER). A defective scenario or file is reported on *ERROR-OUTPUT*
+and the others still run. Returns the exit status: 0 when every scenario ran, 1 when any
+had an error."
+  (let ((status 0)
+        (output (make-report-output format stream :svg svg :bridge bridge)))
     (flet ((report-error (condition)
              (setf status 1)
              (format *error-output* "~&ames: ~A~%" condition)))
@@ -144,10 +157,10 @@ or file is reported on *ERROR-OUTPUT* and the others still run. Returns the exit
             (handler-case
                 (let ((history (handler-bind ((ambiguous-transition #'stop-simulation))
                                  (simulate scenario :bridge bridge :parameter-values settings))))
-                  (ecase format
-                    (:text (print-history-text history stream))
-                    (:sexp (print-history-sexp history stream))))
-              (ames-error (condition) (report-error condition)))))))
+                  (report-history output history))
+              (ames-error (condition) (report-error condition))))))
+      (handler-case (finish-report output)
+        (ames-error (condition) (report-error condition))))
     status))
 
 (defun run-file (pathname &key settings (bridge (current-bridge)))

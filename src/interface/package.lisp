@@ -53,6 +53,8 @@ re-exported from the layers below) and the command line of bin/ames.")
    #:explain #:explain-files #:scenario-branch #:scenario-restitutions #:scenario-restitution
    #:body-entry
    #:history-sexp #:print-history-sexp #:print-history-text
+   #:print-history-latex #:print-history-html #:print-history-svg #:history-svg
+   #:history-json #:print-history-json #:json-to-sexp
    ;; the checks through Maxima (src/scenario/semantics.lisp)
    #:check-scenario #:check-scenario-assumptions #:check-scenario-geometry
    #:missing-assumption-error #:missing-assumption-fact))

@@ -21,6 +21,8 @@ only by this package's own translation (see translation.lisp and maxima-server.l
    #:travel-time #:numeric-travel-time #:position-over-time #:solve-linear-odes
    #:earliest-trigonometric-root
    #:solve-script
+   ;; presentation (presentation.lisp)
+   #:presentation-candidates #:polynomial-coefficients #:presentation-latex
    ;; conditions
    #:maxima-condition #:maxima-error #:maxima-error-message
    #:maxima-question #:maxima-question-text #:maxima-question-expressions

@@ -23,10 +23,6 @@
 (defparameter *branch-depth-limit* 4
   "The most forks on one path from the root of a run's tree.")
 
-(defvar *branching* nil
-  "The current run's tree while it grows: a plist (:COUNT branches so far :DEPTH forks
-on the current path :EXTRA-FACTS facts of the current branch), or NIL at the root.")
-
 (defun branch-room-p ()
   "True when the current tree may still fork."
   (let ((count (getf *branching* :count 0)) (depth (getf *branching* :depth 0)))

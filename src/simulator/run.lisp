@@ -8,6 +8,11 @@
 
 (in-package #:ames.simulator)
 
+(defvar *branching* nil
+  "The current run's tree while it grows (see branching.lisp): a plist (:COUNT branches
+so far :DEPTH forks on the current path :EXTRA-FACTS facts of the current branch), or
+NIL at the root.")
+
 (defclass run ()
   ((scenario :initarg :scenario :reader run-scenario)
    (bridge :initarg :bridge :reader run-bridge)
