@@ -11,6 +11,7 @@
 ;;;;                                                                 as a double-float)
 ;;;;   a ratio 1/2                                                -> {"ratio": [1, 2]}
 ;;;;   a string                                                   -> {"text": "..."}
+;;;;   a dotted list (a b . c)                                    -> {"dotted": [[a, b], c]}
 ;;;;   T                                                          -> true
 ;;;; So an expression (/ (* mp g) 2) is ["/", ["*", "mp", "g"], 2].
 
@@ -39,7 +40,7 @@
 
 (defun sexp-to-json (datum)
   "DATUM (the data of an s-expression report) as the objects yason encodes (see the file
-header). Signals REPORT-ERROR for what has no JSON form (an improper list, an object)."
+header). Signals REPORT-ERROR for what has no JSON form (a circular list, an object)."
   (cond ((eq datum t) t)
         ((null datum) (vector))
         ((keywordp datum) (format nil ":~(~A~)" (symbol-name datum)))
@@ -52,6 +53,10 @@ header). Signals REPORT-ERROR for what has no JSON form (an improper list, an ob
          (apply #'json-object (loop for (key value) on datum by #'cddr
                                     collect (cons (string-downcase (symbol-name key)) (sexp-to-json value)))))
         ((and (consp datum) (alexandria:proper-list-p datum)) (map 'vector #'sexp-to-json datum))
+        ((and (consp datum) (not (alexandria:circular-list-p datum)))
+         (let ((tail (cdr (last datum))))
+           (json-object (cons "dotted" (vector (map 'vector #'sexp-to-json (ldiff datum tail))
+                                               (sexp-to-json tail))))))
         (t (error 'report-error :datum datum :detail "This datum has no JSON form"))))
 
 (defun history-json (history)
@@ -89,6 +94,9 @@ in PACKAGES. Signals REPORT-ERROR when TEXT is no such JSON."
                       (/ (aref parts 0) (aref parts 1))))
                    ((and (consp x) (null (rest x)) (equal (car (first x)) "text"))
                     (cdr (first x)))
+                   ((and (consp x) (null (rest x)) (equal (car (first x)) "dotted"))
+                    (let ((parts (cdr (first x))))
+                      (append (back (aref parts 0)) (back (aref parts 1)))))
                    ((consp x)
                     (loop for (key . value) in x
                           append (list (json-symbol (concatenate 'string ":" key) packages)

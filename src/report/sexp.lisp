@@ -49,7 +49,11 @@
                      (state-branches state))))
      (loop for (key value) on notes by #'cddr
            unless (eq key :numeric-duration)
-             append (list key value)))))
+             append (list key (if (eq key :impact)
+                                  ;; the impact model's consistency search is the solver's
+                                  ;; working, not a result
+                                  (alexandria:remove-from-plist value :choices)
+                                  value))))))
 
 (defun state-forces-of (state)
   "The forces slot of STATE (named apart from the report function STATE-FORCES)."

@@ -17,13 +17,18 @@ a report block is about; printed a_x, a_y."
 
 (defun datum-text (datum)
   "Any datum as text without package prefixes: symbols by their lower-case names,
-keywords with their colon, numbers as NUMBER-TEXT writes them, lists in parentheses."
+keywords with their colon, numbers as NUMBER-TEXT writes them, lists in parentheses
+(an improper list with its dot: \"(a . :true)\")."
   (cond ((null datum) "()")
         ((keywordp datum) (format nil ":~(~A~)" (symbol-name datum)))
         ((symbolp datum) (name-text datum))
         ((stringp datum) datum)
         ((realp datum) (number-text datum))
-        ((consp datum) (format nil "(~{~A~^ ~})" (mapcar #'datum-text (alexandria:ensure-list datum))))
+        ((consp datum)
+         (let ((tail (cdr (last datum))))
+           (format nil "(~{~A~^ ~}~@[ . ~A~])"
+                   (loop for cell on datum while (consp cell) collect (datum-text (car cell)))
+                   (and tail (datum-text tail)))))
         (t (princ-to-string datum))))
 
 (defun parameter-phrases (presenter)
