@@ -51,6 +51,7 @@ SOLVED's state terms."
          (straight-arc-length-terms run solved (second term)))
         ((eq (first term) 'ames.kb:contact-gap)
          (ames.geometry:meeting-gap (contact-meeting-terms run solved (second term))))
+        ((eq (first term) 'ames.kb:initial-pos) (with-initial-positions run term))
         (t (quantity-value solved term))))
 
 (defun over-state-terms (run solved expression)

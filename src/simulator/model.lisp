@@ -162,7 +162,10 @@ the state variables. Returns a SOLVED-MODEL whose rates and initial values are f
 in. Signals UNSOLVABLE-MODEL."
   (let* ((derivatives (model-derivatives model))
          (state (mapcar #'car derivatives))
-         (equations (without-idle-path-terms (ames.engine:model-equations model) state))
+         (equations (without-idle-path-terms
+                     (mapcar (lambda (e) (with-initial-positions run e))
+                             (ames.engine:model-equations model))
+                     state))
          (unknowns (equation-unknowns equations state)))
     (multiple-value-bind (compact definitions) (eliminate-definitions equations unknowns)
       (let* ((compact (remove-if (lambda (equation) (identity-p run equation)) compact))

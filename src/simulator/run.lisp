@@ -15,6 +15,10 @@
            :documentation "Alist body name -> ames.geometry shape.")
    (contacts :initarg :contacts :reader run-contacts
              :documentation "Alist contact entity name -> ames.geometry simple contact.")
+   (locus-kinds :initarg :locus-kinds :initform '() :reader run-locus-kinds
+                :documentation "Alist contact name -> (:KIND K :POINT P) for the loci of points
+attached to bodies (see src/simulator/attachments.lisp); the other contacts are loci of two
+bodies' shapes.")
    (alternatives :initarg :alternatives :initform '() :reader run-alternatives
                  :documentation "Alist contact name -> the contacts that meet it at a convex
 or smooth corner of the configuration-space obstacle: where the observer sits on both,
@@ -174,15 +178,20 @@ are alternatives. At a concave corner both faces can push at once."
                                                 (car (push (list other) alternatives)))))))))
     alternatives))
 
+(defun body-entity (body &rest properties)
+  "The entity of the scenario BODY, with PROPERTIES: a fixed body's carries its :position."
+  (list* 'ames.kb:body (scenario-body-name body)
+         :fixed (and (scenario-body-fixed-p body) t)
+         :mass (scenario-body-mass body)
+         (append (and (scenario-body-fixed-p body) (list :position (scenario-body-position body)))
+                 properties)))
+
 (defun situation-entities (run)
-  "The entities the mechanics knowledge base reads (see src/kb/mechanics.lisp)."
+  "The entities the mechanics knowledge base reads (see src/kb/mechanics.lisp and the
+files it names)."
   (let ((scenario (run-scenario run)))
     (append
-     (mapcar (lambda (body)
-               (list 'ames.kb:body (scenario-body-name body)
-                     :fixed (and (scenario-body-fixed-p body) t)
-                     :mass (scenario-body-mass body)))
-             (scenario-bodies scenario))
+     (mapcar #'body-entity (scenario-bodies scenario))
      (when (scenario-gravity scenario)
        (list (list 'ames.kb:gravity-field 'earth :strength (scenario-gravity scenario))))
      (mapcar (lambda (force)
@@ -191,13 +200,9 @@ are alternatives. At a concave corner both faces can push at once."
                      :fx (first (scenario-force-value force))
                      :fy (second (scenario-force-value force))))
              (scenario-forces scenario))
-     (mapcar (lambda (entry)
-               (let ((contact (cdr entry)))
-                 (list 'ames.kb:simple-contact (car entry)
-                       :observer (ames.geometry:contact-observer contact)
-                       :obstacle (ames.geometry:contact-obstacle contact)
-                       :geometry contact)))
-             (run-contacts run)))))
+     (mapcar (lambda (entry) (contact-entity run (car entry) (cdr entry)))
+             (run-contacts run))
+     (attachment-entities run))))
 
 ;;; Which contacts touch at the start of a state
 
@@ -244,8 +249,9 @@ decided."
         (t :false))))
 
 (defun gap-relation-contact (relation)
-  "The contact K when RELATION is the touching relation (= (contact-gap K) 0), else NIL."
-  (and (consp relation) (eq (first relation) '=)
+  "The contact K when RELATION is the touching relation (= (contact-gap K) 0), or a probe's
+reaching relation (<= (contact-gap K) 0), else NIL."
+  (and (consp relation) (member (first relation) '(= <=))
        (consp (second relation)) (eq (first (second relation)) 'ames.kb:contact-gap)
        (second (second relation))))
 
@@ -256,9 +262,10 @@ the state's (STATE-DECIDER)."
 
 (defun state-decider (run)
   "The decider of the current state's activation and mode entry conditions: touching
-relations go to the geometry (see TOUCHING-VERDICT), everything else to Maxima."
+relations go to the geometry (see TOUCHING-VERDICT, PROBE-VERDICT), everything else to
+Maxima on the state's starting values (see STATE-RELATION-VERDICT)."
   (lambda (relation)
     (let ((contact (gap-relation-contact relation)))
-      (if contact
-          (touching-verdict run contact)
-          (decide run relation)))))
+      (cond ((null contact) (state-relation-verdict run relation))
+            ((eq (first relation) '<=) (probe-verdict run contact))
+            (t (touching-verdict run contact))))))
