@@ -3,8 +3,10 @@
 ;;;;
 ;;;; The simulator describes each rope, its pulleys resolved into points of bodies:
 ;;;;   (rope R :length L :segments (S0 S1 ...))
-;;;;   (rope-segment Si :rope R :from (B (X Y)) :to (B' (X' Y')))   the straight pieces,
-;;;;                                        in order from the rope's first end to its last
+;;;;   (rope-segment Si :rope R :from (B (X Y)) :to (B' (X' Y')) [:within-one-body T])
+;;;;                                        the straight pieces, in order from the rope's
+;;;;                                        first end to its last; the pulls of a piece
+;;;;                                        between two points of one body cancel
 ;;;; Each segment is a span (src/kb/spans.lisp). The rope has the thesis's two modes:
 ;;;;   TAUT   its length, the sum of its spans', is L: at the acceleration level the sum of the
 ;;;;          spans' length accelerations is zero, which the tension T (a compensating
@@ -97,7 +99,8 @@ needs, never negative) or slack (no tension, shorter than L)."
   "A taut rope's segment pulls the bodies at its two ends toward each other with the
 rope's tension (the same all along a frictionless rope over massless pulleys); Newton's
 third law gives the pull at its far end."
-  (:arguments (?segment :entity rope-segment :where (:rope ?rope :from (?body1 ?_) :to (?body2 ?_))))
+  (:arguments (?segment :entity rope-segment
+                        :where (:rope ?rope :from (?body1 ?_) :to (?body2 ?_) :within-one-body nil)))
   (:activation (:believes (taut ?rope)))
   (:assert (force (tension ?segment ?body1) :type tension :from ?body2 :on ?body1 :contact ?segment)
            (force (tension ?segment ?body2) :type tension :from ?body1 :on ?body2 :contact ?segment))
@@ -170,7 +173,8 @@ not changing just after (a plastic impact); without one its length must not grow
 (defcomponent rope-segment-jerk (:knowledge-base *impacts*)
   "A jerked rope's segment pulls the bodies at its ends toward each other with the
 rope's impulse; Newton's third law gives the far end's."
-  (:arguments (?segment :entity rope-segment :where (:rope ?rope :from (?body1 ?_) :to (?body2 ?_))))
+  (:arguments (?segment :entity rope-segment
+                        :where (:rope ?rope :from (?body1 ?_) :to (?body2 ?_) :within-one-body nil)))
   (:activation (:believes (jerked ?rope)))
   (:assert (impulse (rope-pull ?segment ?body1) :from ?body2 :on ?body1 :contact ?segment)
            (impulse (rope-pull ?segment ?body2) :from ?body1 :on ?body2 :contact ?segment))

@@ -16,11 +16,12 @@
 ;;;; so springs have closed forms in time and ropes constant accelerations (the thesis's
 ;;;; "springs along fixed directions"). Otherwise the span turns: the length is the square
 ;;;; root, the direction B - A over it, and the length's acceleration has its centripetal
-;;;; part. Which mode holds is settled by consistency at the start of each state: the
-;;;; fixed-direction mode is entered when the relative velocity across the span is zero and
-;;;; is consistent only when the points stay on the line (its exit, the points moving off it,
-;;;; must not fire at once). Both descriptions are exact where they hold; the turning one is
-;;;; always right, the fixed one is simpler.
+;;;; part. The fixed-direction mode is entered when the relative velocity across the span
+;;;; is zero at the start of a state; when the points leave the line at once (a relative
+;;;; acceleration across it), its exit fires at once and the span turns from the start (the
+;;;; simulator leaves a mode whose exit holds at once: src/simulator/choice.lisp). Both
+;;;; descriptions are exact where they hold; the turning one is always right, the fixed one
+;;;; is simpler.
 ;;;;
 ;;;; Quantity terms used here that the simulator provides: (pos B :x), (vel B :x), (acc B :x)
 ;;;; and (initial-pos B :x), a free body's position at the start of the state. A fixed body's
@@ -119,14 +120,14 @@ direction and the length's second derivative, with the direction fixed at its st
 value while the points move along the span's line, turning otherwise."
   (:arguments (?span :belief (span ?span :from ?a :to ?b)))
   (:mode :fixed-direction
-   (:entry (= (span-transverse-rate ?a ?b) 0))
+   (:entry (<= (expt (span-transverse-rate ?a ?b) 2) 0))
    (:equations (= (span-length ?span) (aligned-span-length ?a ?b))
                (= (span-direction ?span :x) (initial-span-direction ?a ?b :x))
                (= (span-direction ?span :y) (initial-span-direction ?a ?b :y))
                (= (span-acceleration ?span) (aligned-span-acceleration ?a ?b)))
    (:transition :to :turning :when (> (expt (span-offset ?a ?b) 2) 0) :event (:turns ?span)))
   (:mode :turning
-   (:entry (/= (span-transverse-rate ?a ?b) 0))
+   (:entry (> (expt (span-transverse-rate ?a ?b) 2) 0))
    (:equations (= (span-length ?span) (current-span-length ?a ?b))
                (= (span-direction ?span :x) (/ (span-vector ?a ?b :x) (span-length ?span)))
                (= (span-direction ?span :y) (/ (span-vector ?a ?b :y) (span-length ?span)))

@@ -9,9 +9,8 @@
 ;;;;
 ;;;; Choices where the language page is silent:
 ;;;; - Springs, pulleys and ropes are named in the namespace that parameters, bodies and
-;;;;   forces share. A spring's or rope's two ends are on two different bodies, and so are
-;;;;   two consecutive points of a rope (a span between points of one rigid body never
-;;;;   changes). A rope runs over at least zero pulleys, each at most once.
+;;;;   forces share. A spring's two ends are on two different bodies. A rope runs over any
+;;;;   number of pulleys, each at most once.
 ;;;; - An attached spring's rest length defaults to the distance between its attachment
 ;;;;   points at the start (an expression over the bodies' :positions). A bumper needs
 ;;;;   :rest-length, and its :toward may not be (0 0); it is normalized.
@@ -185,19 +184,10 @@ are the scenario's checked pulleys."
                                              "~A is not a declared pulley" (show x)))
                                    (cdr declaration)))
                                (butlast (rest through))))
-               (points (append (list first) middle (list last)))
-               (bodies (mapcar (lambda (p)
-                                 (if (consp p)
-                                     (first p)
-                                     (scenario-pulley-body (find p pulleys :key #'scenario-pulley-name))))
-                               points)))
+               (points (append (list first) middle (list last))))
+          (declare (ignore pulleys))
           (when (/= (length middle) (length (remove-duplicates middle)))
             (reject validation 'scenario-syntax-error through "the rope runs over a pulley twice"))
-          (loop for (a b) on bodies
-                while b
-                when (eq a b)
-                  do (reject validation 'scenario-syntax-error through
-                             "two consecutive points of the rope are on the body ~A" (show a)))
           (make-instance 'scenario-rope
                          :name name
                          :length (checked-positive validation (keyword-value :length arguments)

@@ -36,7 +36,8 @@
 
 (defun rope-entities (scenario)
   "The entities of SCENARIO's ropes (see src/kb/ropes.lisp): each rope and its straight
-segments between consecutive points, pulleys resolved into points of their bodies."
+segments between consecutive points, pulleys resolved into points of their bodies; a
+segment between two points of one body says so (:WITHIN-ONE-BODY T)."
   (loop for rope in (scenario-ropes scenario)
         for (nil . segments) in (rope-segment-names scenario)
         for points = (mapcar (lambda (p) (rope-point-position scenario p)) (scenario-rope-through rope))
@@ -45,8 +46,9 @@ segments between consecutive points, pulleys resolved into points of their bodie
         append (loop for segment in segments
                      for (from to) on points
                      for index from 0
-                     collect (list 'ames.kb:rope-segment segment :rope (scenario-rope-name rope)
-                                   :index index :from from :to to))))
+                     collect (list* 'ames.kb:rope-segment segment :rope (scenario-rope-name rope)
+                                    :index index :from from :to to
+                                    (and (eq (first from) (first to)) (list :within-one-body t))))))
 
 (defun massive-body-pairs (scenario)
   "Every two bodies of SCENARIO that have a mass and are not both fixed, as (B1 B2)."
@@ -237,13 +239,45 @@ touching case is recognised (a point behind it reads :FALSE)."
 
 (defun with-initial-positions (run expression)
   "EXPRESSION with every (initial-pos B :x) replaced by B's coordinate at the start of the
-state: a constant of the state."
-  (if (some (lambda (term) (and (consp term) (eq (first term) 'ames.kb:initial-pos)))
-            (expression-variables expression))
-      (substitute-expressions (remove 'ames.kb:initial-pos (starting-values run)
-                                      :key #'caar :test-not #'eq)
-                              expression)
-      expression))
+state: a constant of the state; then square roots of the constants' perfect squares
+taken (see CONSTANT-ROOTS-TAKEN)."
+  (constant-roots-taken
+   run (if (some (lambda (term) (and (consp term) (eq (first term) 'ames.kb:initial-pos)))
+                 (expression-variables expression))
+           (substitute-expressions (remove 'ames.kb:initial-pos (starting-values run)
+                                           :key #'caar :test-not #'eq)
+                                   expression)
+           expression)))
+
+(defun constant-roots-taken (run expression)
+  "EXPRESSION with each square root of a constant (no quantity term in it) whose radicand
+is the square of an expression X of decided sign replaced by X or -X (see
+TAKE-CONSTANT-ROOTS)."
+  (if (find-sqrt expression) (take-constant-roots run expression) expression))
+
+(defun find-sqrt (expression)
+  "True when EXPRESSION has a square root."
+  (and (consp expression)
+       (or (eq (first expression) 'sqrt) (some #'find-sqrt (rest expression)))))
+
+(defun take-constant-roots (run expression)
+  "EXPRESSION with each square root of a constant (no quantity term in it) whose radicand
+is the square of an expression X of decided sign replaced by X or -X: the length of a
+span along an axis, sqrt((top - h)^2) = top - h when top > h, which Maxima alone leaves
+when its sign needs the order of the parameters."
+  (cond ((atom expression) expression)
+        ((quantity-term-p expression) expression)
+        ((and (eq (first expression) 'sqrt)
+              (notany #'quantity-term-p (expression-variables (second expression))))
+         (let ((radicand (tidy run (second expression) :full)))
+           (if (and (consp radicand) (eq (first radicand) 'expt) (eql (third radicand) 2))
+               (case (sign-of run (second radicand))
+                 (1 (second radicand))
+                 (-1 `(- ,(second radicand)))
+                 (t expression))
+               expression)))
+        (t (cons (first expression)
+                 (mapcar (lambda (x) (take-constant-roots run x)) (rest expression))))))
 
 (defun state-relation-verdict (run relation)
   "RELATION, over the parameters and the state terms, decided on the state's starting
@@ -253,7 +287,7 @@ holding or stop at once: the consistency search settles which)."
   (let* ((values (starting-values run))
          (mentions (some (lambda (term) (assoc term values :test #'equal))
                          (expression-variables (relation-as-expression relation))))
-         (at-start (substitute-expressions values relation)))
+         (at-start (constant-roots-taken run (substitute-expressions values relation))))
     (if (and mentions (member (first relation) '(= /=)))
         (case (decide run `(= ,(relation-lhs at-start) ,(relation-rhs at-start)))
           (:true :choice)

@@ -51,7 +51,7 @@ choice (settled by consistency); everything else goes to Maxima."
     (if (and (consp relation) (consp (second relation))
              (eq (first (second relation)) 'ames.kb:separation-after))
         :choice
-        (decide run relation))))
+        (decide run (constant-roots-taken run relation)))))
 
 (defun call-with-model (run model decider thunk)
   "Call THUNK with RUN working on MODEL and DECIDER (an impact's), then restore the
