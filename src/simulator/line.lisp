@@ -65,7 +65,15 @@ positions and velocities (in GROUP-POSITIONS-AND-VELOCITIES's order); else NIL."
              (m (and k (position-if-not (lambda (g) (eql g 0)) gradient))))
         (unless m (return-from line-reduction nil))
         (let* ((pivot (nth m gradient))
-               (c (mapcar (lambda (g) (tidy run `(/ ,g ,pivot))) gradient))
+               (c (let* ((c (mapcar (lambda (g) (tidy run `(/ ,g ,pivot))) gradient))
+                         (s0 (cons '+ (mapcar (lambda (x q) `(* ,x ,(cdr (assoc q (solved-model-initial solved)
+                                                                                  :test #'equal))))
+                                              c positions))))
+                    ;; oriented so that the coordinate starts positive where that is decided
+                    ;; (a distance rather than its negative)
+                    (if (eql (sign-of run (tidy run s0)) -1)
+                        (mapcar (lambda (x) (tidy run `(- ,x))) c)
+                        c)))
                (lambdas (mapcar (lambda (a)
                                   (if (free-of-all-p positions a)
                                       0
