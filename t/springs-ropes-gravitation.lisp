@@ -1,0 +1,212 @@
+;;;; t/springs-ropes-gravitation.lisp -- forces that depend on where the bodies are (thesis 3.3.2,
+;;;; "Springs", "Ropes", "Universal Gravitation", "Momentum and Energy"): a bumper spring, two
+;;;; masses on a spring, an Atwood machine, a block pulled over a table's edge, two spheres
+;;;; falling together; energy and momentum conserved where they must be; the clauses'
+;;;; validation and the pieces the simulator adds for them.
+;;;;
+;;;; Expected results are the scenario files' headers, written over each scenario's own
+;;;; parameters and compared by Maxima-checked equivalence (helpers in
+;;;; t/simulator-scenarios.lisp).
+
+(in-package #:ames.tests)
+
+(def-suite forces :in all-tests
+  :description "Springs, ropes over pulleys, universal gravitation, energy and momentum.")
+
+(in-suite forces)
+
+;;; Helpers
+
+(defun run-scenario-file (name bridge &key parameter-values)
+  "The scenario of scenarios/NAME.lisp and its history (stopped at an ambiguity)."
+  (let ((scenario (scenario-named name)))
+    (values scenario (simulate-stopping-when-ambiguous scenario bridge
+                                                       :parameter-values parameter-values))))
+
+(defun reported-section (state section)
+  "The entries of the knowledge base's report SECTION (:ENERGY, :MOMENTUM) in STATE."
+  (getf (ames::state-notes state) section))
+
+(defun total-energy (state)
+  "The sum of every energy STATE reports (kinetic and potential), an expression over the
+state's variable."
+  (cons '+ (mapcar #'third (reported-section state :energy))))
+
+(defun total-momentum (state axis)
+  "The sum of the AXIS components of every momentum STATE reports."
+  (cons '+ (mapcar (lambda (entry) (funcall (if (eq axis :x) #'first #'second) (third entry)))
+                   (reported-section state :momentum))))
+
+(defun at-variable (expression variable value)
+  "EXPRESSION with the symbol VARIABLE replaced by VALUE."
+  (ames.base:substitute-expressions (list (cons variable value)) expression))
+
+(defun force-entry (state kind &rest names)
+  "The entry (KIND NAME... VALUE) of STATE's forces whose names are NAMES, or NIL."
+  (find-if (lambda (entry)
+             (and (eq (first entry) kind)
+                  (every #'same-name-p* names (subseq (rest entry) 0 (length names)))))
+           (ames::state-forces-of state)))
+
+(defun is-conserved (bridge what expression variable start)
+  "Check that EXPRESSION, a function of VARIABLE, equals its value at START throughout."
+  (is-same bridge what expression (at-variable expression variable start)))
+
+;;; A bumper spring
+
+(test block-bounces-off-a-bumper
+  "The block meets the bumper after d / v0, stays in contact pi sqrt(m/k), compressing it by
+v0 sqrt(m/k) half-way, leaves it with its velocity reversed and slides away forever; the
+energy m v0^2/2 is shared between the block and the spring meanwhile."
+  (with-fixture simulator-bridge ()
+    (multiple-value-bind (scenario history) (run-scenario-file "block-hits-bumper" bridge)
+      (let ((states (ames::history-states history)))
+        (flet ((x (form) (in-scenario-terms scenario form)))
+          (is (eq :complete (ames::history-outcome history)) "outcome ~S" (ames::history-outcome history))
+          (is (= 3 (length states)))
+          (destructuring-bind (&optional approach pressed away) states
+            (when away
+              (is (equal '(:contact "BLOCK" "BUMPER") (event-names (ames::state-end-event approach))))
+              (is (equal '(:leaves "BLOCK" "BUMPER") (event-names (ames::state-end-event pressed))))
+              (is (eq :forever (ames::state-duration away)))
+              (call-with-scenario-facts
+               bridge scenario
+               (lambda ()
+                 (is-same bridge "time to the bumper" (ames::state-duration approach) (x '(/ d v0)))
+                 (is-same bridge "contact time" (ames::state-duration pressed) (x '(* pi (sqrt (/ m k)))))
+                 (is-same-vector bridge "leaves with the velocity reversed"
+                                 (per-body (ames::state-final-velocities pressed) "BLOCK") (x '(v0 0)))
+                 (let* ((half (x '(* 1/2 pi (sqrt (/ m k)))))
+                        (front (first (per-body (ames::state-positions pressed) "BLOCK"))))
+                   (is-same bridge "maximum compression"
+                            (at-variable `(- ,(x 'l0) ,front) 'tau half) (x '(* v0 (sqrt (/ m k)))))
+                   (is-same bridge "the spring's push then"
+                            (at-variable (first (fourth (force-entry pressed :spring "BUMPER" "BLOCK")))
+                                         'tau half)
+                            (x '(* k v0 (sqrt (/ m k))))))
+                 (is-conserved bridge "energy while pressed" (total-energy pressed) 'tau 0)
+                 (is-same bridge "the energy" (at-variable (total-energy pressed) 'tau 0)
+                          (x '(* 1/2 m (expt v0 2)))))))))))))
+
+;;; Two masses joined by a spring
+
+(test two-masses-oscillate-on-a-spring
+  "Pushed, the second particle drags the first: the centre of mass moves uniformly and the
+stretch oscillates at sqrt(k (m1 + m2)/(m1 m2)); momentum and energy are conserved."
+  (with-fixture simulator-bridge ()
+    (multiple-value-bind (scenario history) (run-scenario-file "two-masses-on-a-spring" bridge)
+      (let ((state (first (ames::history-states history))))
+        (flet ((x (form) (in-scenario-terms scenario form)))
+          (is (eq :complete (ames::history-outcome history)))
+          (when state
+            (is (eq :forever (ames::state-duration state)))
+            (call-with-scenario-facts
+             bridge scenario
+             (lambda ()
+               (let ((w (x '(sqrt (/ (* k (+ m1 m2)) (* m1 m2))))))
+                 (is-same-vector bridge "first"
+                                 (per-body (ames::state-positions state) "FIRST")
+                                 (x `((/ (* m2 v0 (- tau (/ (sin (* ,w tau)) ,w))) (+ m1 m2)) 0)))
+                 (is-same-vector bridge "second"
+                                 (per-body (ames::state-positions state) "SECOND")
+                                 (x `((+ l0 (/ (+ (* m2 v0 tau) (/ (* m1 v0 (sin (* ,w tau))) ,w)) (+ m1 m2))) 0))))
+               (is-same bridge "momentum" (total-momentum state :x) (x '(* m2 v0)))
+               (is-same bridge "energy" (total-energy state) (x '(* 1/2 m2 (expt v0 2))))))))))))
+
+;;; An Atwood machine
+
+(test atwood-machine-falls-slackens-and-jerks
+  "Taut: accelerations g (m1 - m2)/(m1 + m2), tension 2 g m1 m2/(m1 + m2), the heavier
+mass lands after sqrt(2 h (m1 + m2)/(g (m1 - m2))); it stops, the rope goes slack and the
+lighter mass rises freely, the rope tightening again after 2 v / g and jerking both to
+m2 v / (m1 + m2); energy conserved while taut."
+  (with-fixture simulator-bridge ()
+    (multiple-value-bind (scenario history) (run-scenario-file "atwood-machine" bridge)
+      (let ((states (ames::history-states history)))
+        (flet ((x (form) (in-scenario-terms scenario form)))
+          (is (= 3 (length states)) "~D states" (length states))
+          (destructuring-bind (&optional taut slack jerked) states
+            (when jerked
+              (is (equal '(:collision "HEAVY" "FLOOR") (event-names (ames::state-end-event taut))))
+              (is (equal '(:tightens "ROPE") (event-names (ames::state-end-event slack))))
+              (call-with-scenario-facts
+               bridge scenario
+               (lambda ()
+                 (let ((a (x '(/ (* g (- m1 m2)) (+ m1 m2))))
+                       (v (x '(sqrt (/ (* 2 g h (- m1 m2)) (+ m1 m2))))))
+                   (is-same-vector bridge "heavy accelerates down"
+                                   (per-body (ames::state-accelerations taut) "HEAVY") `(0 (- ,a)))
+                   (is-same-vector bridge "light accelerates up"
+                                   (per-body (ames::state-accelerations taut) "LIGHT") `(0 ,a))
+                   (is-same bridge "tension" (third (force-entry taut :tension "ROPE"))
+                            (x '(/ (* 2 g m1 m2) (+ m1 m2))))
+                   (is-same bridge "time to the floor" (ames::state-duration taut)
+                            (x '(sqrt (/ (* 2 h (+ m1 m2)) (* g (- m1 m2))))))
+                   (is-conserved bridge "energy while taut" (total-energy taut) 'tau 0)
+                   (is-same bridge "slack rope" (third (force-entry slack :tension "ROPE")) 0)
+                   (is-same-vector bridge "the lighter mass keeps rising"
+                                   (per-body (ames:state-initial-velocities slack) "LIGHT") `(0 ,v))
+                   (is-same bridge "free flight until the rope tightens" (ames::state-duration slack)
+                            (x `(/ (* 2 ,v) g)))
+                   (is-same-vector bridge "the jerk lifts the heavier mass"
+                                   (per-body (ames:state-initial-velocities jerked) "HEAVY")
+                                   (x `(0 (/ (* m2 ,v) (+ m1 m2)))))
+                   (is-same-vector bridge "and slows the lighter one"
+                                   (per-body (ames:state-initial-velocities jerked) "LIGHT")
+                                   (x `(0 (- (/ (* m2 ,v) (+ m1 m2))))))))))))))))
+
+;;; A block pulled over a table's edge
+
+(test block-pulled-over-the-table-edge
+  "Both accelerate at g m2/(m1 + m2), the tension is g m1 m2/(m1 + m2), and the block
+reaches the pulley's block after sqrt(2 d (m1 + m2)/(g m2))."
+  (with-fixture simulator-bridge ()
+    (multiple-value-bind (scenario history) (run-scenario-file "block-pulled-over-table-edge" bridge)
+      (let ((state (first (ames::history-states history))))
+        (flet ((x (form) (in-scenario-terms scenario form)))
+          (when state
+            (is (equal '(:collision "BLOCK" "STOP") (event-names (ames::state-end-event state))))
+            (call-with-scenario-facts
+             bridge scenario
+             (lambda ()
+               (let ((a (x '(/ (* g m2) (+ m1 m2)))))
+                 (is-same-vector bridge "the block" (per-body (ames::state-accelerations state) "BLOCK")
+                                 `(,a 0))
+                 (is-same-vector bridge "the weight" (per-body (ames::state-accelerations state) "WEIGHT")
+                                 `(0 (- ,a)))
+                 (is-same bridge "tension" (third (force-entry state :tension "CORD"))
+                          (x '(/ (* g m1 m2) (+ m1 m2))))
+                 (is-same bridge "time to the pulley" (ames::state-duration state)
+                          (x '(sqrt (/ (* 2 d (+ m1 m2)) (* g m2)))))
+                 (is-conserved bridge "energy" (total-energy state) 'tau 0))))))))))
+
+;;; Two spheres under their mutual gravitation
+
+(test spheres-fall-together
+  "From rest at distance d they meet when their distance is a + b, after
+sqrt(d^3/(2 G (m1 + m2))) (sqrt(s (1 - s)) + acos(sqrt(s))), s = (a + b)/d, along the line
+of centres (a motion of one degree of freedom); momentum stays zero and the energy
+-G m1 m2 / d."
+  (with-fixture simulator-bridge ()
+    (multiple-value-bind (scenario history) (run-scenario-file "spheres-under-gravitation" bridge)
+      (let ((state (first (ames::history-states history))))
+        (flet ((x (form) (in-scenario-terms scenario form)))
+          (when state
+            (is (equal '(:collision "FIRST" "SECOND") (event-names (ames::state-end-event state))))
+            (is (equal '(:line) (remove-duplicates (mapcar #'second (getf (ames::state-analysis state)
+                                                                          :integrators)))))
+            (call-with-scenario-facts
+             bridge scenario
+             (lambda ()
+               (let ((s (x '(/ (+ a b) d))))
+                 ;; acos(x) written pi/2 - asin(x), which Maxima's simplifier keeps apart
+                 (is-same bridge "time to contact" (ames::state-duration state)
+                          (x `(* (sqrt (/ (expt d 3) (* 2 big-g (+ m1 m2))))
+                                 (+ (sqrt (* ,s (- 1 ,s))) (- (/ pi 2) (asin (sqrt ,s))))))))
+               (is-same bridge "momentum" (total-momentum state :x) 0)
+               (is-same bridge "energy" (total-energy state) (x '(- (/ (* big-g m1 m2) d))))
+               (let ((first (per-body (ames::state-final-positions state) "FIRST"))
+                     (second (per-body (ames::state-final-positions state) "SECOND")))
+                 (is-same bridge "they touch" `(- ,(first second) ,(first first)) (x '(+ a b)))
+                 (is-same bridge "the centre of mass stays"
+                          (x `(+ (* m1 ,(first first)) (* m2 ,(first second)))) (x '(* m2 d))))))))))))
