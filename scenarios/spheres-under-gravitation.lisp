@@ -12,7 +12,7 @@
   "Two spheres released from rest attract each other."
   (parameters (m1 :positive (:value 2)) (m2 :positive (:value 1)) (big-g :positive (:value 1))
               (a :positive (:value 1/2)) (b :positive (:value 1/4))
-              (d (> d (+ a b)) (:value 3)))
+              (d :positive (> d (+ a b)) (:value 3)))
   (gravitation big-g)
   (body first :mass m1 :position (0 0) :velocity (0 0) :shape (circle a))
   (body second :mass m2 :position (d 0) :velocity (0 0) :shape (circle b))

@@ -198,11 +198,12 @@ of centres (a motion of one degree of freedom); momentum stays zero and the ener
             (call-with-scenario-facts
              bridge scenario
              (lambda ()
-               (let ((s (x '(/ (+ a b) d))))
-                 ;; acos(x) written pi/2 - asin(x), which Maxima's simplifier keeps apart
-                 (is-same bridge "time to contact" (ames::state-duration state)
-                          (x `(* (sqrt (/ (expt d 3) (* 2 big-g (+ m1 m2))))
-                                 (+ (sqrt (* ,s (- 1 ,s))) (- (/ pi 2) (asin (sqrt ,s))))))))
+               ;; with s = (a + b)/d: sqrt(s (1 - s)) = sqrt(a + b) sqrt(d - a - b) / d and
+               ;; acos(sqrt(s)) = pi/2 - asin(sqrt(s)), forms Maxima's simplifier keeps apart
+               (is-same bridge "time to contact" (ames::state-duration state)
+                        (x '(* (/ (* d (sqrt d)) (sqrt (* 2 big-g (+ m1 m2))))
+                               (+ (/ (* (sqrt (+ a b)) (sqrt (- d a b))) d)
+                                  (- (/ pi 2) (asin (/ (sqrt (+ a b)) (sqrt d))))))))
                (is-same bridge "momentum" (total-momentum state :x) 0)
                (is-same bridge "energy" (total-energy state) (x '(- (/ (* big-g m1 m2) d))))
                (let ((first (per-body (ames::state-final-positions state) "FIRST"))
