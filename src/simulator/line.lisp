@@ -125,8 +125,10 @@ not decided."
                       (group-speed-squared group) energy
                       (group-speed group) speed
                       (group-ode-kind group) (ames.maxima:ode-solution-kind ode)
-                      (group-line group) (list :coordinate `(= ,+arc-length+
-                                                             (+ ,@(mapcar (lambda (x q) `(* ,x ,q)) c positions))))
+                      (group-line group) (list :coordinate
+                                               `(= ,+arc-length+
+                                                   ,(tidy run (cons '+ (mapcar (lambda (x q) `(* ,x ,q))
+                                                                               c positions)))))
                       (group-motion group)
                       (append (mapcar (lambda (entry) (cons (car entry) (tidy run (cdr entry) :full))) along)
                               (mapcar (lambda (v l) (cons v (tidy run `(/ (* ,l ,speed) ,gamma) :full)))

@@ -239,10 +239,13 @@ values) up to the earliest of the others."
                 ((eq result :unknown)
                  (push (list fact (condition-event condition nil)) unknown))))))
     (when (some (lambda (g) (eq (group-kind g) :numeric)) groups)
-      (let ((horizon (loop for c in candidates
-                           for time = (numeric-time run (candidate-time c))
-                           when time minimize time)))
+      ;; the scenario's time limit bounds the integration too
+      (let* ((bounds (append candidates (let ((limit (time-limit-candidate run)))
+                                          (and limit (list limit)))))
+             (horizon (loop for c in bounds
+                            for time = (numeric-time run (candidate-time c))
+                            when time minimize time)))
         (setf candidates (append (numeric-candidates run solved groups (reverse numeric)
-                                                     (and candidates horizon))
+                                                     (and bounds horizon))
                                  candidates))))
     (values (nreverse candidates) (nreverse unknown))))
