@@ -180,6 +180,33 @@ reaches the pulley's block after sqrt(2 d (m1 + m2)/(g m2))."
                           (x '(sqrt (/ (* 2 d (+ m1 m2)) (* g m2)))))
                  (is-conserved bridge "energy" (total-energy state) 'tau 0))))))))))
 
+;;; A particle on an incline tied over a pulley to a hanging mass
+
+(test incline-pulled-up-by-a-hanging-mass
+  "Along the 3-4-5 slope the particle accelerates up at g e/(m1 + m2), m2 = 3 m1/5 + e, the
+tension is 8 g m1 m2/(5 (m1 + m2)), and it reaches the top corner after
+sqrt(5 (m1 + m2)/(g e))."
+  (with-fixture simulator-bridge ()
+    (multiple-value-bind (scenario history) (run-scenario-file "incline-and-hanging-mass" bridge)
+      (let ((state (first (ames::history-states history))))
+        (flet ((x (form) (in-scenario-terms scenario form)))
+          (when state
+            (is (equal '(:leaves "PARTICLE" "INCLINE" :endpoint) (event-names (ames::state-end-event state))))
+            (call-with-scenario-facts
+             bridge scenario
+             (lambda ()
+               (let* ((m2 '(+ (* 3/5 m1) e))
+                      (a (x `(/ (* g e) (+ m1 ,m2)))))
+                 (is-same-vector bridge "up the slope" (per-body (ames::state-accelerations state) "PARTICLE")
+                                 `((* 4/5 ,a) (* 3/5 ,a)))
+                 (is-same-vector bridge "the weight" (per-body (ames::state-accelerations state) "WEIGHT")
+                                 `(0 (- ,a)))
+                 (is-same bridge "tension" (third (force-entry state :tension "LINE"))
+                          (x `(/ (* 8 g m1 ,m2) (* 5 (+ m1 ,m2)))))
+                 (is-same bridge "time to the top" (ames::state-duration state)
+                          (x `(sqrt (/ (* 5 (+ m1 ,m2)) (* g e)))))
+                 (is-conserved bridge "energy" (total-energy state) 'tau 0))))))))))
+
 ;;; Two spheres under their mutual gravitation
 
 (test spheres-fall-together
