@@ -351,3 +351,58 @@ it names: a contact's (:impulse A B J), a rope's (:rope-impulse R J)."
                (ames.simulator::impact-event '(:collision a b) impact)))
     (is (equal '(:tightens r :impulse 5 :energy-lost 7)
                (ames.simulator::impact-event '(:tightens r) impact)))))
+
+;;; A particle around a fixed sun: no closed form, numbers under parameter values
+
+(test a-circular-orbit-is-integrated-numerically
+  "A planet at distance 1 from a fixed sun (G M = 1) with speed 1 goes round a circle: no
+closed form (the run says so without numbers); with numbers, at t = 3 it is at
+(cos 3, sin 3)."
+  (with-fixture simulator-bridge ()
+    (let ((form '(scenario orbit "A particle around a fixed sun."
+                  (parameters (big-m :positive) (big-g :positive) (m :positive) (v :positive))
+                  (gravitation big-g)
+                  (body sun :fixed t :mass big-m :position (0 0) :shape (circle 1/10))
+                  (body planet :mass m :position (1 0) :velocity (0 v) :shape point)
+                  (simulate :states 2 :until 3))))
+      (is (eq :undecided (ames::history-outcome
+                          (simulate-stopping-when-ambiguous (ames:parse-scenario form) bridge))))
+      (let* ((history (simulate-stopping-when-ambiguous
+                       (ames:parse-scenario form) bridge
+                       :parameter-values '((big-m . 1) (big-g . 1) (m . 1/1000) (v . 1))))
+             (state (first (ames::history-states history)))
+             (at (per-body (getf (getf (ames::state-notes state) :numeric) :final-positions) "PLANET")))
+        (is (eq :time-limit (ames::history-outcome history)))
+        (is (and at (< (abs (- (first at) (cos 3d0))) 1d-6) (< (abs (- (second at) (sin 3d0))) 1d-6))
+            "the planet at ~S" at)))))
+
+;;; A rope that would have to push is slack
+
+(test a-rope-that-would-push-is-slack
+  "A mass hanging on a rope at its full length, pushed up harder than its weight: taut, the
+tension would be negative ((:slackens rope) at once), so the rope is slack from the start
+and the mass rises at f/m - g."
+  (with-fixture simulator-bridge ()
+    (let* ((scenario (ames:parse-scenario
+                      '(scenario pushed-up "A hanging mass pushed up."
+                        (parameters (m :positive) (g :positive) (f (> f (* m g))))
+                        (gravity g)
+                        (body ceiling :fixed t :position (0 2) :shape point)
+                        (body bob :mass m :position (0 0) :velocity (0 0) :shape point)
+                        (force push :on bob :value (0 f))
+                        (rope cord :length 2 :through ((ceiling (0 0)) (bob (0 0))))
+                        (simulate :states 1))))
+           (history (simulate-stopping-when-ambiguous scenario bridge))
+           (state (first (ames::history-states history))))
+      (flet ((x (form) (in-scenario-terms scenario form)))
+        (when state
+          (is (equal '(:slack)
+                     (loop for (key . option) in (getf (getf (ames::state-analysis state) :choices) :chosen)
+                           when (mentions-name-p "CORD" key) collect option))
+              "the rope's mode chosen: ~S" (getf (ames::state-analysis state) :choices))
+          (call-with-scenario-facts
+           bridge scenario
+           (lambda ()
+             (is-same bridge "slack" (third (force-entry state :tension "CORD")) 0)
+             (is-same-vector bridge "rising" (per-body (ames::state-accelerations state) "BOB")
+                             (x '(0 (- (/ f m) g)))))))))))
