@@ -63,9 +63,17 @@ INITIAL-POS (at the state's start), VEL or ACC (its rates)."
                 `(- ,(point-rate situation b axis head) ,(point-rate situation a axis head))))
           '(:x :y)))
 
-(defun dot-of (u v) `(+ (* ,(first u) ,(first v)) (* ,(second u) ,(second v))))
-(defun cross-of (u v) `(- (* ,(first u) ,(second v)) (* ,(second u) ,(first v))))
-(defun norm-of (u) `(sqrt ,(dot-of u u)))
+(defun dot-of (u v)
+  "The expression of the dot product of the vectors U and V."
+  `(+ (* ,(first u) ,(first v)) (* ,(second u) ,(second v))))
+
+(defun cross-of (u v)
+  "The expression of the z component of the cross product of U and V."
+  `(- (* ,(first u) ,(second v)) (* ,(second u) ,(first v))))
+
+(defun norm-of (u)
+  "The expression of the length of the vector U."
+  `(sqrt ,(dot-of u u)))
 
 (defun initial-direction (situation a b)
   "The unit vector from A to B at the start of the state."

@@ -163,9 +163,8 @@ names between."))
                      :name name :body (checked-body-name validation (keyword-value :on arguments))
                      :point (checked-vector validation (keyword-value :at arguments) ":at")))))
 
-(defun checked-rope (validation clause pulleys)
-  "The SCENARIO-ROPE that a (rope NAME :length L :through (...)) clause declares; PULLEYS
-are the scenario's checked pulleys."
+(defun checked-rope (validation clause)
+  "The SCENARIO-ROPE that a (rope NAME :length L :through (...)) clause declares."
   (let* ((name (cdr (declared validation (second clause))))
          (what (format nil "rope ~A" (symbol-name name))))
     (enter validation what clause)
@@ -185,7 +184,6 @@ are the scenario's checked pulleys."
                                    (cdr declaration)))
                                (butlast (rest through))))
                (points (append (list first) middle (list last))))
-          (declare (ignore pulleys))
           (when (/= (length middle) (length (remove-duplicates middle)))
             (reject validation 'scenario-syntax-error through "the rope runs over a pulley twice"))
           (make-instance 'scenario-rope
@@ -212,6 +210,6 @@ are the scenario's checked pulleys."
       (list :springs (mapcar (lambda (c) (checked-spring validation c bodies))
                              (clauses 'ames-scenario:spring))
             :pulleys pulleys
-            :ropes (mapcar (lambda (c) (checked-rope validation c pulleys))
+            :ropes (mapcar (lambda (c) (checked-rope validation c))
                            (clauses 'ames-scenario:rope))
             :gravitation (checked-gravitation validation (clauses 'ames-scenario:gravitation))))))
