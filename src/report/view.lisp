@@ -211,8 +211,8 @@ coefficient is ACCELERATION / 2, else the presented polynomial."
                               (list (phrase "each cycle " (present presenter (getf value :factor))
                                             " times the one before (the first lasted "
                                             (present presenter (getf value :cycle))
-                                            "): they accumulate at "
-                                            (list '= 't (present presenter (getf value :time)))
+                                            "): they accumulate at t = "
+                                            (present presenter (getf value :time))
                                             ", and the run goes on from there at rest")))))
                  (:energy (list (cons "energy" (energy-phrases presenter value))))
                  (:momentum (list (cons "momentum" (momentum-phrases presenter value))))

@@ -165,7 +165,8 @@ fork on, renumbered after the fork, as (:ASSUME FACT :STATES ... :OUTCOME ...
                                          (run-values run) check-incremental facts)
                       (simulation-error (condition)
                         ;; one branch that cannot be simulated does not lose the others
-                        (setf failure (princ-to-string condition))
+                        (setf failure (or (ames-error-detail condition)
+                                          (string-downcase (type-of condition))))
                         nil))))
          (states (and history
                       (remove-if (lambda (state) (< (state-index state) index))
