@@ -6,6 +6,13 @@
 ;;;; everything that depends on a parameter's value is left for DECIDE (decide.lisp).
 ;;;; Also here: the exact value and the clear sign of a constant expression, and the
 ;;;; derivative of an expression with respect to a variable (for contact approach rates).
+;;;;
+;;;; Bounds: exact arithmetic can grow without end ((expt 10 (expt 10 9)) in a coordinate,
+;;;; a product of thirty constant sums that doubles at every factor). The constructors work
+;;;; within the budget of the run in progress (src/base/limits.lisp): an exact power or
+;;;; product whose result would need more bits than the limits allow, and a sum or an
+;;;; expansion with more terms, signal BUDGET-EXCEEDED before they are built, and the
+;;;; recursions check the run's deadline as they go.
 
 (in-package #:ames.geometry)
 
@@ -35,6 +42,18 @@
   "True when X contains no variable and no quantity term."
   (null (expression-variables x)))
 
+(defun power-bits (base power)
+  "An upper bound on the size in bits of the rational BASE raised to the integer POWER."
+  (1+ (* (abs power) (max (integer-length (1- (abs (numerator base))))
+                          (integer-length (1- (denominator base)))))))
+
+(defun exact-expt (base power)
+  "BASE^POWER for a rational BASE and an integer POWER (BASE not 0 when POWER is
+negative), after checking that the result fits the current limits: signals
+BUDGET-EXCEEDED (quantity :INTEGER-BITS) when it would not."
+  (check-number-size (power-bits base power) (list 'expt base power))
+  (expt base power))
+
 (defun power-parts (x)
   "X as (values BASE EXPONENT) when it is a power with a numeric exponent, else X and 1.
 Nested powers flatten when the outer exponent is an integer."
@@ -53,7 +72,7 @@ factors are neither numbers nor products."
          (let ((coefficient 1) (factors '()))
            (dolist (f (cdr x))
              (multiple-value-bind (c fs) (product-factors f)
-               (setf coefficient (* coefficient c))
+               (setf coefficient (check-rational-size (* coefficient c) x))
                (setf factors (append factors fs))))
            (values coefficient factors)))
         ((and (consp x) (eq (car x) '-) (= (length x) 2))
@@ -81,11 +100,14 @@ coefficient: (values COEFFICIENT FACTORS)."
       (loop for (base . exponent) in (nreverse powers)
             do (cond ((zerop exponent))
                      ((and (rationalp base) (integerp exponent) (not (zerop base)))
-                      (setf coefficient (* coefficient (expt base exponent))))
+                      (setf coefficient (check-rational-size
+                                         (* coefficient (exact-expt base exponent)) base)))
                      ((and (consp base) (eq (car base) 'sqrt) (rationalp (second base))
                            (integerp exponent))
                       (multiple-value-bind (whole odd) (floor exponent 2)
-                        (setf coefficient (* coefficient (expt (second base) whole)))
+                        (setf coefficient (check-rational-size
+                                           (* coefficient (exact-expt (second base) whole))
+                                           base))
                         (when (= odd 1) (push base kept))))
                      ((eql exponent 1) (push base kept))
                      (t (push (list 'expt base exponent) kept))))
@@ -119,9 +141,20 @@ go to a denominator: (/ NUMERATOR DENOMINATOR)."
 (defun sum-expression-p (x)
   (and (consp x) (eq (car x) '+)))
 
+(defun expansion-size (factors)
+  "The number of terms that expanding the product of FACTORS over its sums gives at
+most (counted up to a little past the current limits, then no further)."
+  (let ((limit (limits-expression-size (current-limits))) (size 1))
+    (dolist (f factors size)
+      (when (sum-expression-p f)
+        (setf size (* size (length (cdr f))))
+        (when (> size limit) (return size))))))
+
 (defun e* (&rest factors)
   "The product of FACTORS: numbers folded, powers of equal bases combined; a product
-of constants is expanded over sums."
+of constants is expanded over sums. Signals BUDGET-EXCEEDED when a number or the
+expansion would be larger than the current limits allow."
+  (check-budget factors)
   (multiple-value-bind (c fs) (product-factors (cons '* factors))
     (setf fs (mapcan (lambda (f)
                        (if (and (consp f) (eq (car f) 'expt) (integerp (third f))
@@ -133,6 +166,7 @@ of constants is expanded over sums."
     (let ((sum (find-if #'sum-expression-p fs)))
       (if (and sum (or (null (rest fs)) (every #'constant-expression-p fs)))
           (let ((rest (remove sum fs :count 1 :test #'eq)))
+            (check-expression-size (expansion-size fs) (cons '* factors))
             (apply #'e+ (mapcar (lambda (term) (apply #'e* c term rest)) (cdr sum))))
           (build-product c fs)))))
 
@@ -184,13 +218,24 @@ c K sin(x)^2 replaced by c K."
         (unless found (return collected))))))
 
 (defun e+ (&rest addends)
-  "The sum of ADDENDS, with numbers folded and like terms collected."
-  (let ((collected '()))
-    (dolist (term (mapcan #'sum-terms addends))
-      (let ((entry (assoc (cdr term) collected :test #'equal)))
+  "The sum of ADDENDS, with numbers folded and like terms collected. Signals
+BUDGET-EXCEEDED when it has more terms than the current limits allow."
+  (let* ((collected '())
+         (terms (mapcan #'sum-terms addends))
+         (count (length terms))
+         ;; like terms are found by hashing when there are many (by EQUAL, as ASSOC did)
+         (index (and (> count 16) (make-hash-table :test 'equal :size count))))
+    (check-expression-size count (cons '+ addends))
+    (dolist (term terms)
+      (check-budget addends)
+      (let ((entry (if index
+                       (gethash (cdr term) index)
+                       (assoc (cdr term) collected :test #'equal))))
         (if entry
-            (incf (cdr entry) (car term))
-            (push (cons (cdr term) (car term)) collected))))
+            (setf (cdr entry) (check-rational-size (+ (cdr entry) (car term)) (cdr term)))
+            (let ((entry (cons (cdr term) (car term))))
+              (when index (setf (gethash (cdr term) index) entry))
+              (push entry collected)))))
     (setf collected (pythagorean-pairs collected))
     (let* ((constant (let ((entry (assoc 1 collected :test #'eql))) (if entry (cdr entry) 0)))
            (terms (loop for (key . coefficient) in collected
@@ -218,11 +263,12 @@ DIVISION-BY-ZERO for a literal zero denominator."
       (e* numerator (eexpt denominator -1))))
 
 (defun eexpt (base power)
-  "BASE raised to POWER."
+  "BASE raised to POWER. Signals BUDGET-EXCEEDED when an exact result would be larger
+than the current limits allow."
   (cond ((eql power 0) 1)
         ((eql power 1) base)
         ((and (rationalp base) (integerp power) (not (and (zerop base) (minusp power))))
-         (expt base power))
+         (exact-expt base power))
         ((and (eql base 0) (realp power) (plusp power)) 0)
         ((eql base 1) 1)
         ((and (integerp power) (or (consp base) (symbolp base)))
@@ -230,7 +276,7 @@ DIVISION-BY-ZERO for a literal zero denominator."
          (multiple-value-bind (c fs) (product-factors base)
            (if (and (zerop c) (minusp power))
                (list 'expt base power)
-               (build-product (expt c power)
+               (build-product (if (rationalp c) (exact-expt c power) (expt c power))
                               (mapcar (lambda (f) (list 'expt f power)) fs)))))
         (t (list 'expt base power))))
 
@@ -242,7 +288,8 @@ division; a large cofactor is kept whole in K)."
   (let ((m 1) (k 1))
     (loop for p from 2
           while (and (<= (* p p) n) (< p 100000))
-          do (loop while (zerop (mod n (* p p)))
+          do (check-budget n)
+             (loop while (zerop (mod n (* p p)))
                    do (setf n (/ n (* p p)) m (* m p)))
              (when (zerop (mod n p))
                (setf n (/ n p) k (* k p))))
@@ -378,7 +425,10 @@ multiple of PI/6 or PI/4, else NIL."
 
 (defun normalize-expression (expression)
   "EXPRESSION rebuilt bottom-up through the simplifying constructors: numbers folded,
-like terms collected. Quantity terms and unknown forms are kept as they are."
+like terms collected. Quantity terms and unknown forms are kept as they are. Signals
+BUDGET-EXCEEDED when a number or a sum would grow larger than the current limits allow,
+or the run's deadline passes."
+  (check-budget expression)
   (cond ((atom expression) expression)
         ((quantity-term-p expression) expression)
         (t (let ((operator (car expression))
@@ -415,6 +465,7 @@ rationals with + - * /, integer powers and rational roots), else NIL."
 lightly simplified. Quantity terms and other variables are constants. Signals MALFORMED-EXPRESSION for an operator it
 does not know."
   (labels ((d (x)
+             (check-budget expression)
              (cond ((eq x variable) 1)
                    ((or (atom x) (quantity-term-p x)) 0)
                    (t (let ((args (cdr x)))

@@ -36,10 +36,22 @@ forms printed short and in the scenario's package."
           (*package* (form-package (scenario-name scenario))))
       (apply #'format nil control arguments))))
 
+(defun location-source (scenario location)
+  "\"FILE, line N\" for LOCATION in SCENARIO: the clause of the body that LOCATION
+(\"body X\" or \"bodies X and Y\") names first, else the scenario's SOURCE."
+  (let ((body (find-if (lambda (body)
+                         (let ((name (symbol-name (scenario-body-name body))))
+                           (or (equal location (format nil "body ~A" name))
+                               (eql 0 (search (format nil "bodies ~A and " name) location)))))
+                       (scenario-bodies scenario))))
+    (if body
+        (scenario-body-source scenario (scenario-body-name body))
+        (scenario-source scenario))))
+
 (defun semantic-reject (scenario class location datum control &rest arguments)
   "Signal a scenario error of CLASS about SCENARIO at LOCATION (a string)."
   (error class :scenario (scenario-name scenario) :location location
-               :source (scenario-source scenario) :datum datum
+               :source (location-source scenario location) :datum datum
                :detail (apply #'scenario-detail scenario control arguments)))
 
 (defun polygon-signed-area (polygon)
@@ -140,7 +152,7 @@ force; signal for the first that is false or undecided."
              (:unknown
               (error 'missing-assumption-error
                      :scenario (scenario-name scenario) :location location
-                     :source (scenario-source scenario) :datum relation :fact relation
+                     :source (location-source scenario location) :datum relation :fact relation
                      :detail (scenario-detail scenario "the assumptions do not show that ~A; ~
                                                         declare what makes ~S hold"
                                               what relation))))))
@@ -164,7 +176,7 @@ UNDECIDABLE-GEOMETRIC-FACT into SCENARIO-ERRORs of SCENARIO at LOCATION."
   (flet ((wrap (class condition datum &rest initargs)
            (apply #'error class
                   :scenario (scenario-name scenario) :location location
-                  :source (scenario-source scenario) :cause condition
+                  :source (location-source scenario location) :cause condition
                   :datum (or datum location)
                   :detail (ames-error-detail condition)
                   initargs)))
@@ -177,7 +189,7 @@ UNDECIDABLE-GEOMETRIC-FACT into SCENARIO-ERRORs of SCENARIO at LOCATION."
         (let ((fact (ames.geometry:undecidable-fact condition)))
           (error 'missing-assumption-error
                  :scenario (scenario-name scenario) :location location
-                 :source (scenario-source scenario) :cause condition
+                 :source (location-source scenario location) :cause condition
                  :datum (or fact location) :fact fact
                  :detail (scenario-detail scenario "the geometry needs to know whether ~S, ~
                                                     and ~A"
