@@ -65,12 +65,13 @@ ALLOW-NIL; else signal INVALID-LIMIT naming WHAT."
   "New LIMITS for scenario runs. TIME-LIMIT: seconds of wall time for a whole run (NIL:
 none). MAXIMA-TIMEOUT: seconds one Maxima request may take (NIL: the bridge's own
 timeout, 20 s unless set). INTEGER-BITS: the most bits of an exact integer, numerator
-or denominator, that the Lisp side builds. EXPRESSION-SIZE: the most terms of a sum that
+or denominator, that the Lisp side builds (at least 64). EXPRESSION-SIZE: the most terms of a sum that
 the Lisp side builds. Signals INVALID-LIMIT for a value that is not a positive number
 (the sizes must be positive integers and may not be NIL)."
   (%make-limits (checked-limit time-limit "the time limit")
                 (checked-limit maxima-timeout "the Maxima timeout")
-                (checked-limit integer-bits "the integer size limit" :allow-nil nil :integer t)
+                (max 64 (checked-limit integer-bits "the integer size limit"
+                                       :allow-nil nil :integer t))
                 (checked-limit expression-size "the expression size limit"
                                :allow-nil nil :integer t)))
 
@@ -198,11 +199,14 @@ more than the current limits allow; DATUM is the operation about to build it."
   "The size in bits of the rational X: the larger of its numerator's and denominator's."
   (max (integer-length (numerator x)) (integer-length (denominator x))))
 
+(declaim (inline check-rational-size))
 (defun check-rational-size (x &optional datum)
   "X, after signalling BUDGET-EXCEEDED (quantity :INTEGER-BITS) when X is a rational
-larger than the current limits allow; DATUM is the operation that built it."
-  (when (rationalp x)
-    (check-number-size (rational-bits x) datum))
+larger than the current limits allow (never for a fixnum: the limit is at least 64
+bits); DATUM is the operation that built it."
+  (unless (typep x 'fixnum)
+    (when (rationalp x)
+      (check-number-size (rational-bits x) datum)))
   x)
 
 (defun check-expression-size (size &optional datum)

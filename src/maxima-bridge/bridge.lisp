@@ -17,6 +17,31 @@
   (asdf:system-relative-pathname "ames" "src/maxima-bridge/maxima-server.lisp")
   "The Lisp file Maxima preloads: the request server.")
 
+(defun cache-key-hash (key)
+  "A hash of the whole tree KEY (SXHASH looks only a few levels and elements deep, and
+the bridge's keys, Maxima forms under the facts in force, differ deep inside: with
+SXHASH a scenario with a thousand contacts spent most of its time comparing keys)."
+  (let ((hash 0))
+    (labels ((mix (x) (setf hash (logand (+ (* hash 31) x) most-positive-fixnum)))
+             (walk (x)
+               (loop while (consp x)
+                     do (mix 17)
+                        (walk (car x))
+                        (setf x (cdr x)))
+               (mix (sxhash x))))
+      (walk key))
+    hash))
+
+(defun cache-key-equal (a b)
+  "EQUAL, as the test of the bridge's cache (hashed by CACHE-KEY-HASH)."
+  (equal a b))
+
+(sb-ext:define-hash-table-test cache-key-equal cache-key-hash)
+
+(defun make-cache ()
+  "An empty cache table: keys compared by EQUAL, hashed over their whole tree."
+  (make-hash-table :test 'cache-key-equal))
+
 (defstruct (assumption-frame (:constructor make-assumption-frame (context facts maxima-facts)))
   "One WITH-ASSUMPTIONS scope: its Maxima context, the facts as given, and the facts as
 assumed in Maxima (including derived trigonometric sign facts)."
@@ -43,7 +68,7 @@ before the process is killed and replaced.")
    (names :initform (make-instance 'name-table) :accessor bridge-names)
    (frames :initform '() :accessor bridge-frames
            :documentation "Active assumption frames, innermost first.")
-   (cache :initform (make-hash-table :test 'equal) :accessor bridge-cache
+   (cache :initform (make-cache) :accessor bridge-cache
           :documentation "Answers to requests, and DECIDE's verdicts, under the facts in force.")
    (excess-names :initform (make-hash-table :test 'equal) :accessor bridge-excess-names
                  :documentation "Variable -> the uninterned symbol DECIDE-BY-ORDER-SUBSTITUTION
@@ -108,7 +133,7 @@ Returns BRIDGE."
     (discard-process bridge))
   ;; fresh tables rather than CLRHASH: an interrupted run may have left one inconsistent
   (setf (bridge-names bridge) (make-instance 'name-table)
-        (bridge-cache bridge) (make-hash-table :test 'equal)
+        (bridge-cache bridge) (make-cache)
         (bridge-excess-names bridge) (make-hash-table :test 'equal))
   bridge)
 
