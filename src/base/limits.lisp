@@ -29,7 +29,7 @@
 (defconstant +budget-check-interval+ 256
   "CHECK-BUDGET reads the clock once every this many calls.")
 
-(defconstant +backstop-grace+ 5
+(defparameter *backstop-grace* 5
   "Seconds after a budget's deadline at which its backstop timer interrupts the run.")
 
 (define-condition invalid-limit (ames-error) ()
@@ -232,7 +232,7 @@ seconds after it with an asynchronous BUDGET-EXCEEDED (for work no check covers)
           (sb-ext:schedule-timer timer
                                  (max 0 (+ (/ (- deadline (get-internal-real-time))
                                               internal-time-units-per-second)
-                                           +backstop-grace+)))
+                                           *backstop-grace*)))
           (unwind-protect (funcall thunk)
             (sb-ext:unschedule-timer timer))))))
 
