@@ -17,13 +17,13 @@ determinism, crash safety and the whole-path fuzz.")
   (/ (- (get-internal-real-time) start) internal-time-units-per-second))
 
 (defmacro within-seconds ((seconds) &body body)
-  "Run BODY; check that it took less than SECONDS of wall time. Returns BODY's value."
-  (let ((start (gensym "START")) (value (gensym "VALUE")))
+  "Run BODY; check that it took less than SECONDS of wall time. Returns BODY's values."
+  (let ((start (gensym "START")) (values (gensym "VALUES")))
     `(let* ((,start (get-internal-real-time))
-            (,value (progn ,@body)))
+            (,values (multiple-value-list (progn ,@body))))
        (is (< (seconds-since ,start) ,seconds) "took ~,2F s, more than ~A"
            (seconds-since ,start) ,seconds)
-       ,value)))
+       (values-list ,values))))
 
 (defun budget-condition (thunk)
   "The BUDGET-EXCEEDED that calling THUNK signals, or NIL."
