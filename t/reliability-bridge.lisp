@@ -100,10 +100,13 @@ exec yes 'x'"
          (ames.maxima:reset-bridge b)
          (is (zerop (hash-table-count (ames.maxima::bridge-cache b))))
          (is (equal fresh (answer b)))
-         ;; inside an assumption scope a reset also ends the process
+         ;; inside an assumption scope only a restart may reset, ending the process
          (ames.maxima:with-assumptions (b '((> p 0)))
            (ames.maxima:decide b '(> p 0))
-           (ames.maxima:reset-bridge b)
+           (is (ames.maxima:bridge-in-scope-p b))
+           (signals ames.maxima:invalid-bridge-argument (ames.maxima:reset-bridge b))
+           (ames.maxima:reset-bridge b :restart t)
+           (is (not (ames.maxima:bridge-in-scope-p b)))
            (is (not (ames.maxima:bridge-alive-p b))))
          (is (null (ames.maxima:current-assumptions b)))
          (is (eq :unknown (ames.maxima:decide b '(> p 0)))))))))

@@ -60,7 +60,9 @@ determinism, crash safety and the whole-path fuzz.")
                         (with-budget (:limits (make-limits :time-limit 1/2))
                           (with-budget (:limits (make-limits :time-limit 1000))
                             (loop (check-budget)))))))))
-    (is (typep condition 'budget-exceeded)))
+    (is (typep condition 'budget-exceeded))
+    ;; the limit named is the one whose deadline came
+    (is (= 1/2 (budget-exceeded-limit condition))))
   ;; no budget, no deadline: the checks do nothing
   (is (null (budget-time-left)))
   (is (null (dotimes (i 100000) (check-budget)))))

@@ -20,7 +20,7 @@
 ;;;; The size limits hold everywhere, run or not: outside CALL-WITH-BUDGET they are those of
 ;;;; *LIMITS*. The deadline exists only inside CALL-WITH-BUDGET. As a backstop for work no
 ;;;; check covers, a budget with a deadline also arms a timer that interrupts the run a
-;;;; little after the deadline (+BACKSTOP-GRACE+), with a BUDGET-EXCEEDED marked
+;;;; little after the deadline (*BACKSTOP-GRACE*), with a BUDGET-EXCEEDED marked
 ;;;; asynchronous: state the interrupted code was changing may then be inconsistent, so the
 ;;;; caller should start its Maxima bridge afresh (AMES.MAXIMA:RESET-BRIDGE does).
 
@@ -92,14 +92,16 @@ Signals INVALID-LIMIT like MAKE-LIMITS."
 the size limits of Lisp work outside any run. Bind or set it to a LIMITS from
 MAKE-LIMITS, e.g. (setf ames:*limits* (ames:make-limits :time-limit 60)).")
 
-(defstruct (budget (:constructor %make-budget (limits subject deadline))
+(defstruct (budget (:constructor %make-budget (limits subject deadline time-limit))
                    (:copier nil))
   "The budget of the scenario run in progress: its LIMITS, its SUBJECT (what is run,
-for messages), its DEADLINE (an internal-real-time, or NIL) and the countdown to the
-next reading of the clock."
+for messages), its DEADLINE (an internal-real-time, or NIL), the TIME-LIMIT in seconds
+that set the deadline (its own, or an outer budget's when that ends first) and the
+countdown to the next reading of the clock."
   (limits nil :read-only t)
   (subject nil :read-only t)
   (deadline nil :read-only t)
+  (time-limit nil :read-only t)
   (countdown +budget-check-interval+ :type fixnum))
 
 (defvar *budget* nil
@@ -152,6 +154,10 @@ expression or operation), when known.")
   "SECONDS as a count of internal time units."
   (round (* seconds internal-time-units-per-second)))
 
+(defun current-time-limit ()
+  "The time limit, in seconds, of the running budget's deadline, or NIL."
+  (and *budget* (budget-time-limit *budget*)))
+
 (defun budget-time-left ()
   "Seconds (a double-float, possibly zero or negative) left before the running budget's
 deadline, or NIL when no budget with a deadline is running."
@@ -175,7 +181,7 @@ loops instead."
       (setf (budget-countdown budget) +budget-check-interval+)
       (let ((deadline (budget-deadline budget)))
         (when (and deadline (> (get-internal-real-time) deadline))
-          (signal-budget-exceeded :time (limits-time-limit (budget-limits budget))
+          (signal-budget-exceeded :time (budget-time-limit budget)
                                   :datum datum :detail detail))))))
 
 (declaim (inline check-budget))
@@ -217,7 +223,7 @@ is more than the current limits allow; DATUM is the operation about to build it.
       (signal-budget-exceeded :expression-size limit :amount size :datum datum))))
 
 (defun call-with-backstop (budget thunk)
-  "Call THUNK; when BUDGET has a deadline, a timer interrupts THUNK +BACKSTOP-GRACE+
+  "Call THUNK; when BUDGET has a deadline, a timer interrupts THUNK *BACKSTOP-GRACE*
 seconds after it with an asynchronous BUDGET-EXCEEDED (for work no check covers)."
   (let ((deadline (budget-deadline budget)))
     (if (null deadline)
@@ -226,7 +232,7 @@ seconds after it with an asynchronous BUDGET-EXCEEDED (for work no check covers)
                (timer (sb-ext:make-timer
                        (lambda ()
                          (let ((*budget* budget))
-                           (signal-budget-exceeded :time (limits-time-limit (budget-limits budget))
+                           (signal-budget-exceeded :time (budget-time-limit budget)
                                                    :asynchronous t)))
                        :thread thread :name "AMES budget backstop")))
           (sb-ext:schedule-timer timer
@@ -248,8 +254,9 @@ THUNK's work makes, or from the backstop timer (see the file header)."
   (let* ((time-limit (limits-time-limit limits))
          (own (and time-limit (+ (get-internal-real-time) (seconds-to-internal time-limit))))
          (outer (and *budget* (budget-deadline *budget*)))
-         (budget (%make-budget limits subject
-                               (if (and own outer) (min own outer) (or own outer)))))
+         (budget (if (and outer (or (null own) (< outer own)))
+                     (%make-budget limits subject outer (budget-time-limit *budget*))
+                     (%make-budget limits subject own time-limit))))
     (let ((*budget* budget))
       (call-with-backstop budget thunk))))
 

@@ -19,7 +19,7 @@ bridge translates the algebra to anything else.")
    #:limits #:make-limits #:change-limits #:limits-p #:limits-time-limit
    #:limits-maxima-timeout #:limits-integer-bits #:limits-expression-size
    #:*limits* #:current-limits #:invalid-limit
-   #:call-with-budget #:with-budget #:*budget* #:budget-subject #:budget-time-left
+   #:call-with-budget #:with-budget #:*budget* #:budget-subject #:budget-time-left #:current-time-limit
    #:check-budget #:check-deadline #:check-number-size #:check-rational-size
    #:rational-bits #:check-expression-size
    #:budget-exceeded #:budget-exceeded-quantity #:budget-exceeded-limit

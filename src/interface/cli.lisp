@@ -153,7 +153,8 @@ with status +BROKEN-PIPE-STATUS+."
 a budget of LIMITS, by default *LIMITS*), and print each history on STREAM in FORMAT
 (:TEXT or :SEXP). SETTINGS is an alist (PARAMETER-NAME . NUMBER). A defective scenario
 or file, and a run that fails, are reported on *ERROR-OUTPUT*, naming the file, the
-scenario and the line; the others still run. Long messages are cut short unless VERBOSE.
+scenario and the line; the others still run (a Lisp error that is no AMES-ERROR, a defect
+of AMES, is reported as an INTERNAL-ERROR). Long messages are cut short unless VERBOSE.
 Returns the exit status: 0 when every scenario ran, 1 when any had an error."
   (let ((status 0)
         (*full-reports* (or verbose *full-reports*)))
@@ -172,7 +173,15 @@ Returns the exit status: 0 when every scenario ran, 1 when any had an error."
                     (:text (print-history-text history stream))
                     (:sexp (print-history-sexp history stream)))
                   (finish-output stream))
-              (ames-error (condition) (report-error condition)))))))
+              (ames-error (condition) (report-error condition))
+              ;; the output is gone (a closed pipe): nothing more can be reported
+              (stream-error (condition) (error condition))
+              ;; a defect of AMES in one scenario does not lose the others
+              (error (condition)
+                (let ((internal (make-condition 'internal-error :datum condition)))
+                  (setf (ames-error-context internal)
+                        (run-error-context scenario internal))
+                  (report-error internal))))))))
     status))
 
 (defun run-file (pathname &key settings (bridge (current-bridge)) (limits *limits*))

@@ -50,7 +50,7 @@ re-exported from the layers below) and the command line of bin/ames.")
    #:stop-simulation
    #:simulation-error #:ambiguous-transition #:ambiguous-transition-candidates
    #:ambiguous-transition-missing-fact #:unsolvable-model #:unsupported-situation
-   #:usage-error
+   #:usage-error #:internal-error
    #:simulation-history #:history-scenario #:history-states #:history-outcome
    #:history-notes #:history-rederived #:history-parameter-values
    #:qualitative-state #:state-index #:state-start #:state-duration #:state-contacts

@@ -17,6 +17,17 @@
 
 (in-package #:ames)
 
+(define-condition internal-error (ames-error) ()
+  (:documentation "A defect of AMES itself, met while running a scenario: a Lisp error
+that is no AMES-ERROR. DATUM is that error. RUN-FILES reports it as it reports the
+others, and goes on with the next scenario.")
+  (:report (lambda (condition stream)
+             (format-report stream "Internal error of AMES (please report it): ~A~%  condition: ~S"
+                            (let ((error (ames-error-datum condition)))
+                              (handler-case (princ-to-string error)
+                                (error () "(a condition that cannot be printed)")))
+                            (type-of (ames-error-datum condition))))))
+
 (defconstant +largest-datum-walk+ 100000
   "BODIES-NAMED looks at no more than this many conses of a condition's datum.")
 

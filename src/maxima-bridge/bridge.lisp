@@ -120,15 +120,24 @@ verdict lookups included), :CACHE-HITS (requests and verdicts answered from the 
   (clrhash (bridge-cache bridge))
   bridge)
 
+(defun bridge-in-scope-p (bridge)
+  "True when an assumption scope (WITH-ASSUMPTIONS) of BRIDGE is open."
+  (and (bridge-frames bridge) t))
+
 (defun reset-bridge (bridge &key restart)
   "Make BRIDGE answer as a new one would, so that what a scenario run prints does not
 depend on what ran before it: a fresh name table (the Maxima names of variables are
 given in order of first use, and Maxima orders terms by them), an empty cache and fresh
-excess names. With RESTART true, or when assumption scopes are still open (a run was
-interrupted inside one), the process is also ended and the scopes forgotten; the next
-request starts a new process. Call it between scenario runs, outside WITH-ASSUMPTIONS.
-Returns BRIDGE."
-  (when (or restart (bridge-frames bridge))
+excess names. With RESTART true the process is also ended and every assumption scope
+forgotten (for a run cut short: a request may still be running, a scope may not have
+been left); the next request starts a new process. Call it between scenario runs.
+Returns BRIDGE. Signals INVALID-BRIDGE-ARGUMENT when an assumption scope is open and
+RESTART is false."
+  (when (and (bridge-in-scope-p bridge) (not restart))
+    (error 'invalid-bridge-argument
+           :datum (current-assumptions bridge)
+           :detail "the bridge cannot be reset inside an assumption scope (WITH-ASSUMPTIONS)"))
+  (when restart
     (setf (bridge-frames bridge) '())
     (discard-process bridge))
   ;; fresh tables rather than CLRHASH: an interrupted run may have left one inconsistent
@@ -254,7 +263,7 @@ Signals MAXIMA-PROCESS-DIED when Maxima cannot be started."
 (defun signal-out-of-time (datum)
   "Signal MAXIMA-BUDGET-EXCEEDED: the run's time is up, DATUM was being asked."
   (error 'maxima-budget-exceeded
-         :quantity :time :limit (limits-time-limit (current-limits)) :datum datum
+         :quantity :time :limit (current-time-limit) :datum datum
          :subject (and *budget* (budget-subject *budget*))
          :detail "Maxima was answering a request"))
 

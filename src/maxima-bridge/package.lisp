@@ -10,6 +10,7 @@ only by this package's own translation (see translation.lisp and maxima-server.l
    ;; the bridge object
    #:bridge #:make-bridge #:close-bridge #:bridge-timeout #:bridge-alive-p #:bridge-process-id
    #:bridge-statistics #:reset-bridge-statistics #:clear-bridge-cache #:reset-bridge
+   #:bridge-in-scope-p
    #:*reply-limit*
    ;; operations
    #:simplify #:solve-equations #:decide #:holds-p #:equivalent-p #:sign-varies-p #:refuted-p
