@@ -23,7 +23,9 @@
                   ("(scenario broken \"a string never closed" 6 17 "string")
                   ("#| a comment never closed" 6 0 "comment")
                   ("(scenario broken (body |a name never closed" 6 23 "|")
-                  ("(scenario broken (parameters (m :positive)" 6 17 "not closed")))
+                  ("(scenario broken (parameters (m :positive)" 6 17 "not closed")
+                  ("'" 6 0 "not closed")
+                  ("#." 6 0 "not closed")))
     (destructuring-bind (bad line column word) case
       (let ((text (concatenate 'string (small-scenario-text "one") bad (string #\Newline)
                                (small-scenario-text "two") (small-scenario-text "three"))))

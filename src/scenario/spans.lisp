@@ -169,8 +169,11 @@ that were not UTF-8. Signals nothing."
                      (when (> i limit)
                        ;; a closed comment held the (scenario line: it does not count
                        (setf limit (or (first-at-or-after resyncs i) n)))
-                     (when (and (plusp depth) (>= i limit))
-                       (cut (first opens) "this ("))
+                     ;; past the start and not done: inside a list, or after a prefix
+                     (when (and (> i start) (>= i limit))
+                       (if opens
+                           (cut (first opens) "this (")
+                           (cut start "the form that starts here")))
                      (let ((c (at i)))
                        (flet ((done-if-top (j)
                                 (setf i j)
