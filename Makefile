@@ -2,13 +2,15 @@
 #   make demo   install missing Debian packages, then run the main job: bin/ames on the wedge
 #   make test   install missing Debian packages, then run every FiveAM suite
 #   make bench  run the benchmarks (they print numbers)
+#   make fuzz   the nightly-size fuzz: 10,000 whole-path cases and 500 runs with a kill -9 of
+#               Maxima, figures printed (FUZZ_FORMS, FUZZ_CRASH_RUNS, FUZZ_SEED size it)
 
 DEBS  = sbcl maxima maxima-share cl-alexandria cl-fiveam cl-ppcre \
         cl-yason cl-trivial-gray-streams libjs-katex
 SBCL ?= sbcl
 LISP  = $(SBCL) --noinform --non-interactive --no-sysinit --no-userinit
 
-.PHONY: deps demo test bench clean
+.PHONY: deps demo test bench fuzz clean
 
 deps:
 	@missing=""; for p in $(DEBS); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
@@ -30,6 +32,9 @@ test: deps
 
 bench: deps
 	$(LISP) --load bench/run.lisp
+
+fuzz: deps
+	$(LISP) --load t/fuzz.lisp
 
 clean:
 	rm -rf build

@@ -19,7 +19,9 @@
 (test command-lines-that-are-malformed-are-usage-errors
   (dolist (arguments '(() ("frobnicate") ("run") ("run" "--format") ("run" "x.lisp" "--format" "xml")
                        ("run" "x.lisp" "--set") ("run" "x.lisp" "--set" "g")
-                       ("run" "x.lisp" "--set" "g=abc") ("run" "x.lisp" "--verbose")))
+                       ("run" "x.lisp" "--set" "g=abc") ("run" "x.lisp" "--frobnicate")
+                       ("run" "x.lisp" "--time-limit") ("run" "x.lisp" "--time-limit" "0")
+                       ("run" "x.lisp" "--time-limit" "soon") ("run" "x.lisp" "--maxima-timeout" "-1")))
     (let ((condition (handler-case (ames::parse-command-line arguments)
                        (ames-error (c) c))))
       (is (typep condition 'ames:usage-error) "~S gave ~S" arguments condition)))

@@ -6,7 +6,8 @@
 ;;;; algebra's arithmetic operators over numbers. It is not EVAL: no symbol is ever called,
 ;;;; and a variable has a value only when the caller's bindings give it one.
 ;;;;
-;;;; Exactness: rationals met by + - * /, integer powers of a bounded size, and roots
+;;;; Exactness: rationals met by + - * / (within the current limits' size, see limits.lisp),
+;;;; integer powers of a bounded size, and roots
 ;;;; whose value is rational ((sqrt 9/4) = 3/2, (expt 8 2/3) = 4) stay exact rationals.
 ;;;; Everything else (PI, the transcendental functions, irrational roots, floats) is a
 ;;;; double-float approximation. Where the value is not a finite real (division by zero,
@@ -55,7 +56,8 @@ has one; else NIL. DEGREE is a positive integer. (rational-root 9/4 2) = 3/2,
 
 (defun exact-power (base exponent)
   "BASE^EXPONENT as a rational, when both are rationals, the power is a rational (its
-root exists) and its size is within +LARGEST-EXACT-POWER-BITS+; else NIL. 0^0 = 1; a
+root exists) and its size is within +LARGEST-EXACT-POWER-BITS+ and the current limits'
+integer size (see CURRENT-LIMITS); else NIL. 0^0 = 1; a
 zero BASE with a negative EXPONENT gives NIL."
   (when (and (rationalp base) (rationalp exponent)
              (not (and (zerop base) (minusp exponent))))
@@ -67,7 +69,8 @@ zero BASE with a negative EXPONENT gives NIL."
                  (<= (* (max 1 (integer-length (numerator root))
                              (integer-length (denominator root)))
                         (abs (numerator exponent)))
-                     +largest-exact-power-bits+))
+                     (min +largest-exact-power-bits+
+                          (limits-integer-bits (current-limits)))))
         (expt root (numerator exponent))))))
 
 (defun float-power (base exponent)
@@ -84,11 +87,20 @@ EXPONENT that is not an integer. May signal FLOATING-POINT-OVERFLOW."
          (expt (float base 1d0) exponent))
         (t nil)))
 
+(defun exact-arithmetic-fits-p (arguments)
+  "True when + - * or / over the rational ARGUMENTS cannot build a number larger than
+the current limits allow (the sum of their sizes in bits bounds the result's)."
+  (<= (loop for x in arguments sum (if (rationalp x) (rational-bits x) 0))
+      (limits-integer-bits (current-limits))))
+
 (defun apply-arithmetic-operator (operator arguments)
   "The value of the arithmetic OPERATOR applied to the real ARGUMENTS (rationals or
-double-floats, as many as OPERATOR takes): a rational when exact (see EXACT-POWER), else
-a double-float; NIL when the result is not a real. May signal ARITHMETIC-ERROR on
-overflow."
+double-floats, as many as OPERATOR takes): a rational when exact (see EXACT-POWER) and
+within the current limits' integer size, else a double-float; NIL when the result is not
+a real. May signal ARITHMETIC-ERROR on overflow."
+  (when (and (member operator '(+ - * /)) (not (exact-arithmetic-fits-p arguments)))
+    ;; exact numbers this large are taken in floating point (or overflow to NIL)
+    (setf arguments (mapcar (lambda (x) (float x 1d0)) arguments)))
   (flet ((argument () (first arguments))
          (approximate (function &rest reals)
            (apply function (mapcar (lambda (x) (float x 1d0)) reals))))
@@ -147,7 +159,12 @@ arguments, an improper list), when it is nested deeper than
 division by zero, 0 to a negative power, a negative number to a non-integer power, the
 square root or logarithm of a negative, ASIN or ACOS outside [-1, 1], (atan 0 0), a
 hyperbolic, elliptic or Jacobi function where SPECIAL-FUNCTION-VALUE gives none, or
-overflow. Signals nothing."
+overflow.
+
+Exact values stay within the current limits (CURRENT-LIMITS): an operation whose exact
+result could need more bits than they allow is computed in double precision instead.
+Signals nothing but BUDGET-EXCEEDED (quantity :TIME), when the deadline of the scenario
+run in progress passes during the evaluation."
   (labels ((give-up () (return-from expression-value (values nil nil)))
            (finite-or-give-up (x)
              (if (and (realp x) (finite-real-p x))
@@ -157,6 +174,7 @@ overflow. Signals nothing."
              (let ((entry (assoc x bindings :test #'equal)))
                (if entry (finite-or-give-up (cdr entry)) (give-up))))
            (value (x depth)
+             (check-budget expression)
              (cond ((realp x) (finite-or-give-up x))
                    ((constant-symbol-p x) (float pi 1d0))
                    ((and (consp x) (arithmetic-operator-p (car x)))

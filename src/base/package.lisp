@@ -3,7 +3,8 @@
 (defpackage #:ames.base
   (:use #:cl)
   (:documentation "What every AMES layer shares: the root condition AMES-ERROR,
-the prefix algebra (expressions such as (= (* mp (acc particle :x)) f)) that every
+the budget of a scenario run (time, and the size of exact numbers and expressions), the
+prefix algebra (expressions such as (= (* mp (acc particle :x)) f)) that every
 layer speaks, and the numeric value of its constant expressions. Only the Maxima
 bridge translates the algebra to anything else.")
   (:export
@@ -11,6 +12,18 @@ bridge translates the algebra to anything else.")
    #:ames-error #:ames-error-datum #:ames-error-detail
    #:malformed-expression #:malformed-expression-expression
    #:format-report
+   #:error-context #:make-error-context #:error-context-p #:error-context-file
+   #:error-context-line #:error-context-scenario #:error-context-location
+   #:ames-error-context #:ames-error-full-report #:*full-reports*
+   ;; the budget of a scenario run (limits.lisp)
+   #:limits #:make-limits #:change-limits #:limits-p #:limits-time-limit
+   #:limits-maxima-timeout #:limits-integer-bits #:limits-expression-size
+   #:*limits* #:current-limits #:invalid-limit
+   #:call-with-budget #:with-budget #:*budget* #:budget-subject #:budget-time-left #:current-time-limit
+   #:check-budget #:check-deadline #:check-number-size #:check-rational-size
+   #:rational-bits #:check-expression-size
+   #:budget-exceeded #:budget-exceeded-quantity #:budget-exceeded-limit
+   #:budget-exceeded-amount #:budget-exceeded-subject #:budget-exceeded-asynchronous-p
    ;; the algebra
    #:tau
    #:+arithmetic-operators+ #:+relation-operators+ #:+logical-operators+

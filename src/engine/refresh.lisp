@@ -139,7 +139,9 @@ collected."
   "Bring INSTANCE's assumptions in line with its prerequisites: forget the decisions
 of an unqualified instance; decide a qualified one's activation; give an active one
 a mode, up-to-date collections and its equations; forget the mode and collections
-of an inactive one."
+of an inactive one. Checks the running budget (AMES.BASE:CHECK-BUDGET): a model of
+very many instances cannot outlive its scenario run's time limit."
+  (check-budget instance)
   (cond ((not (instance-qualified-p instance))
          (forget-activation model instance)
          (forget-mode model instance)

@@ -17,17 +17,64 @@
        (nonnegative-p decider (cross (v- c b) (v- p b)))
        (nonnegative-p decider (cross (v- a c) (v- p c)))))
 
+(defun numeric-ear-clipping (points indices)
+  "TRIANGULATE for corners whose coordinates are all exact rationals: POINTS is a vector
+of conses (X . Y), indexed by the INDICES. The same ears, in the same order, as the
+general case finds, decided by plain rational arithmetic, with a bounding-box test
+before the exact one."
+  (labels ((x (i) (car (aref points i)))
+           (y (i) (cdr (aref points i)))
+           (turn (a b c)
+             ;; cross (b - a, c - b)
+             (- (* (- (x b) (x a)) (- (y c) (y b))) (* (- (y b) (y a)) (- (x c) (x b)))))
+           (left-of-or-on-p (a b p)
+             ;; cross (b - a, p - a) >= 0
+             (>= (- (* (- (x b) (x a)) (- (y p) (y a))) (* (- (y b) (y a)) (- (x p) (x a)))) 0))
+           (inside-p (p a b c)
+             (and (<= (min (x a) (x b) (x c)) (x p) (max (x a) (x b) (x c)))
+                  (<= (min (y a) (y b) (y c)) (y p) (max (y a) (y b) (y c)))
+                  (left-of-or-on-p a b p) (left-of-or-on-p b c p) (left-of-or-on-p c a p))))
+    (let ((remaining (coerce indices 'vector)) (triangles '()))
+      (loop while (> (length remaining) 3)
+            do (let* ((n (length remaining))
+                      (ear (loop for k below n
+                                 for a = (aref remaining (mod (1- k) n))
+                                 for b = (aref remaining k)
+                                 for c = (aref remaining (mod (1+ k) n))
+                                 do (check-budget indices)
+                                 when (and (plusp (turn a b c))
+                                           (notany (lambda (j)
+                                                     (and (/= j a) (/= j b) (/= j c)
+                                                          (inside-p j a b c)))
+                                                   remaining))
+                                   return k)))
+                 (unless ear
+                   (error 'geometry-error :datum (coerce points 'list)
+                                          :detail "internal: no ear found while triangulating the polygon"))
+                 (push (list (aref remaining (mod (1- ear) n)) (aref remaining ear)
+                             (aref remaining (mod (1+ ear) n)))
+                       triangles)
+                 (setf remaining (remove (aref remaining ear) remaining))))
+      (push (coerce remaining 'list) triangles)
+      (nreverse triangles))))
+
 (defun triangulate (decider vertices indices)
   "Ear-clipping triangulation of the simple counter-clockwise polygon whose corners are
-the VERTICES at INDICES: a list of index triples."
-  (let ((remaining (copy-list indices)) (triangles '()))
-    (flet ((point (i) (nth i vertices)))
+the VERTICES at INDICES: a list of index triples. Corners with numeric coordinates are
+handled by NUMERIC-EAR-CLIPPING (the same answer, faster)."
+  (let ((points (map 'vector #'exact-point vertices)))
+    (when (every #'identity points)
+      (return-from triangulate (numeric-ear-clipping points indices))))
+  (let ((remaining (copy-list indices)) (triangles '())
+        (vertices (coerce vertices 'vector)))
+    (flet ((point (i) (aref vertices i)))
       (loop while (> (length remaining) 3)
             do (let* ((n (length remaining))
                       (ear (loop for k below n
                                  for a = (nth (mod (1- k) n) remaining)
                                  for b = (nth k remaining)
                                  for c = (nth (mod (1+ k) n) remaining)
+                                 do (check-budget indices)
                                  when (and (positive-p decider (cross (v- (point b) (point a))
                                                                       (v- (point c) (point b))))
                                            (notany (lambda (j)
@@ -37,7 +84,7 @@ the VERTICES at INDICES: a list of index triples."
                                                    remaining))
                                    return k)))
                  (unless ear
-                   (error 'geometry-error :datum vertices
+                   (error 'geometry-error :datum (coerce vertices 'list)
                                           :detail "internal: no ear found while triangulating the polygon"))
                  (push (list (nth (mod (1- ear) n) remaining) (nth ear remaining)
                              (nth (mod (1+ ear) n) remaining))

@@ -4,8 +4,16 @@
 ;;;; fold numbers, drop neutral elements and collect like terms, so that rational inputs
 ;;;; stay exact rationals and symbolic results stay readable. They never decide a sign:
 ;;;; everything that depends on a parameter's value is left for DECIDE (decide.lisp).
-;;;; Also here: the exact value and the clear sign of a constant expression, and the
-;;;; derivative of an expression with respect to a variable (for contact approach rates).
+;;;; Also here: the exact value of a constant expression, and the derivative of an
+;;;; expression with respect to a variable (for contact approach rates). The circular
+;;;; functions and the clear sign of a constant are in angles.lisp.
+;;;;
+;;;; Bounds: exact arithmetic can grow without end ((expt 10 (expt 10 9)) in a coordinate,
+;;;; a product of thirty constant sums that doubles at every factor). The constructors work
+;;;; within the budget of the run in progress (src/base/limits.lisp): an exact power or
+;;;; product whose result would need more bits than the limits allow, and a sum or an
+;;;; expansion with more terms, signal BUDGET-EXCEEDED before they are built, and the
+;;;; recursions check the run's deadline as they go.
 
 (in-package #:ames.geometry)
 
@@ -35,6 +43,18 @@
   "True when X contains no variable and no quantity term."
   (null (expression-variables x)))
 
+(defun power-bits (base power)
+  "An upper bound on the size in bits of the rational BASE raised to the integer POWER."
+  (1+ (* (abs power) (max (integer-length (1- (abs (numerator base))))
+                          (integer-length (1- (denominator base)))))))
+
+(defun exact-expt (base power)
+  "BASE^POWER for a rational BASE and an integer POWER (BASE not 0 when POWER is
+negative), after checking that the result fits the current limits: signals
+BUDGET-EXCEEDED (quantity :INTEGER-BITS) when it would not."
+  (check-number-size (power-bits base power) (list 'expt base power))
+  (expt base power))
+
 (defun power-parts (x)
   "X as (values BASE EXPONENT) when it is a power with a numeric exponent, else X and 1.
 Nested powers flatten when the outer exponent is an integer."
@@ -53,7 +73,7 @@ factors are neither numbers nor products."
          (let ((coefficient 1) (factors '()))
            (dolist (f (cdr x))
              (multiple-value-bind (c fs) (product-factors f)
-               (setf coefficient (* coefficient c))
+               (setf coefficient (check-rational-size (* coefficient c) x))
                (setf factors (append factors fs))))
            (values coefficient factors)))
         ((and (consp x) (eq (car x) '-) (= (length x) 2))
@@ -81,11 +101,14 @@ coefficient: (values COEFFICIENT FACTORS)."
       (loop for (base . exponent) in (nreverse powers)
             do (cond ((zerop exponent))
                      ((and (rationalp base) (integerp exponent) (not (zerop base)))
-                      (setf coefficient (* coefficient (expt base exponent))))
+                      (setf coefficient (check-rational-size
+                                         (* coefficient (exact-expt base exponent)) base)))
                      ((and (consp base) (eq (car base) 'sqrt) (rationalp (second base))
                            (integerp exponent))
                       (multiple-value-bind (whole odd) (floor exponent 2)
-                        (setf coefficient (* coefficient (expt (second base) whole)))
+                        (setf coefficient (check-rational-size
+                                           (* coefficient (exact-expt (second base) whole))
+                                           base))
                         (when (= odd 1) (push base kept))))
                      ((eql exponent 1) (push base kept))
                      (t (push (list 'expt base exponent) kept))))
@@ -119,9 +142,20 @@ go to a denominator: (/ NUMERATOR DENOMINATOR)."
 (defun sum-expression-p (x)
   (and (consp x) (eq (car x) '+)))
 
+(defun expansion-size (factors)
+  "The number of terms that expanding the product of FACTORS over its sums gives at
+most (counted up to a little past the current limits, then no further)."
+  (let ((limit (limits-expression-size (current-limits))) (size 1))
+    (dolist (f factors size)
+      (when (sum-expression-p f)
+        (setf size (* size (length (cdr f))))
+        (when (> size limit) (return size))))))
+
 (defun e* (&rest factors)
   "The product of FACTORS: numbers folded, powers of equal bases combined; a product
-of constants is expanded over sums."
+of constants is expanded over sums. Signals BUDGET-EXCEEDED when a number or the
+expansion would be larger than the current limits allow."
+  (check-budget factors)
   (multiple-value-bind (c fs) (product-factors (cons '* factors))
     (setf fs (mapcan (lambda (f)
                        (if (and (consp f) (eq (car f) 'expt) (integerp (third f))
@@ -133,6 +167,7 @@ of constants is expanded over sums."
     (let ((sum (find-if #'sum-expression-p fs)))
       (if (and sum (or (null (rest fs)) (every #'constant-expression-p fs)))
           (let ((rest (remove sum fs :count 1 :test #'eq)))
+            (check-expression-size (expansion-size fs) (cons '* factors))
             (apply #'e+ (mapcar (lambda (term) (apply #'e* c term rest)) (cdr sum))))
           (build-product c fs)))))
 
@@ -184,13 +219,24 @@ c K sin(x)^2 replaced by c K."
         (unless found (return collected))))))
 
 (defun e+ (&rest addends)
-  "The sum of ADDENDS, with numbers folded and like terms collected."
-  (let ((collected '()))
-    (dolist (term (mapcan #'sum-terms addends))
-      (let ((entry (assoc (cdr term) collected :test #'equal)))
+  "The sum of ADDENDS, with numbers folded and like terms collected. Signals
+BUDGET-EXCEEDED when it has more terms than the current limits allow."
+  (let* ((collected '())
+         (terms (mapcan #'sum-terms addends))
+         (count (length terms))
+         ;; like terms are found by hashing when there are many (by EQUAL, as ASSOC did)
+         (index (and (> count 16) (make-hash-table :test 'equal :size count))))
+    (check-expression-size count (cons '+ addends))
+    (dolist (term terms)
+      (check-budget addends)
+      (let ((entry (if index
+                       (gethash (cdr term) index)
+                       (assoc (cdr term) collected :test #'equal))))
         (if entry
-            (incf (cdr entry) (car term))
-            (push (cons (cdr term) (car term)) collected))))
+            (setf (cdr entry) (check-rational-size (+ (cdr entry) (car term)) (cdr term)))
+            (let ((entry (cons (cdr term) (car term))))
+              (when index (setf (gethash (cdr term) index) entry))
+              (push entry collected)))))
     (setf collected (pythagorean-pairs collected))
     (let* ((constant (let ((entry (assoc 1 collected :test #'eql))) (if entry (cdr entry) 0)))
            (terms (loop for (key . coefficient) in collected
@@ -218,11 +264,12 @@ DIVISION-BY-ZERO for a literal zero denominator."
       (e* numerator (eexpt denominator -1))))
 
 (defun eexpt (base power)
-  "BASE raised to POWER."
+  "BASE raised to POWER. Signals BUDGET-EXCEEDED when an exact result would be larger
+than the current limits allow."
   (cond ((eql power 0) 1)
         ((eql power 1) base)
         ((and (rationalp base) (integerp power) (not (and (zerop base) (minusp power))))
-         (expt base power))
+         (exact-expt base power))
         ((and (eql base 0) (realp power) (plusp power)) 0)
         ((eql base 1) 1)
         ((and (integerp power) (or (consp base) (symbolp base)))
@@ -230,7 +277,7 @@ DIVISION-BY-ZERO for a literal zero denominator."
          (multiple-value-bind (c fs) (product-factors base)
            (if (and (zerop c) (minusp power))
                (list 'expt base power)
-               (build-product (expt c power)
+               (build-product (if (rationalp c) (exact-expt c power) (expt c power))
                               (mapcar (lambda (f) (list 'expt f power)) fs)))))
         (t (list 'expt base power))))
 
@@ -242,7 +289,8 @@ division; a large cofactor is kept whole in K)."
   (let ((m 1) (k 1))
     (loop for p from 2
           while (and (<= (* p p) n) (< p 100000))
-          do (loop while (zerop (mod n (* p p)))
+          do (check-budget n)
+             (loop while (zerop (mod n (* p p)))
                    do (setf n (/ n (* p p)) m (* m p)))
              (when (zerop (mod n p))
                (setf n (/ n p) k (* k p))))
@@ -259,126 +307,12 @@ for other non-negative rationals."
          (abs (second x)))
         (t (list 'sqrt x))))
 
-(defun pi-multiple (x)
-  "The rational R when X is structurally R*PI (or 0), else NIL."
-  (cond ((eql x 0) 0)
-        ((eq x 'pi) 1)
-        ((and (consp x) (eq (car x) '*))
-         (multiple-value-bind (c fs) (product-factors x)
-           (and (rationalp c) (equal fs '(pi)) c)))
-        ((and (consp x) (eq (car x) '-) (= (length x) 2))
-         (let ((r (pi-multiple (second x)))) (and r (- r))))
-        (t nil)))
-
-(defun special-angle-value (x function)
-  "The exact value of FUNCTION (COS or SIN) at X when X is a multiple of PI/4 or PI/6
-(using square roots of 2 and 3), else NIL."
-  (let ((r (pi-multiple x)))
-    (when r
-      (let ((r (mod r 2)))                ; the angle in [0, 2 pi) as a multiple of pi
-        (flet ((cosine (r)
-                 ;; r in [0, 2): reduce to the first quadrant with signs
-                 (multiple-value-bind (quadrant within) (floor r 1/2)
-                   (let* ((angle (if (oddp quadrant) (- 1/2 within) within))
-                          (magnitude (case angle
-                                       (0 1) (1/6 (e* 1/2 (esqrt 3))) (1/4 (e* 1/2 (esqrt 2)))
-                                       (1/3 1/2) (1/2 0) (t nil))))
-                     (and magnitude
-                          (if (member quadrant '(1 2)) (e- magnitude) magnitude))))))
-          (ecase function
-            (cos (cosine r))
-            (sin (cosine (mod (- r 1/2) 2)))))))))
-
-(defun two-argument-atan-p (x)
-  (and (consp x) (eq (car x) 'atan) (= (length x) 3)))
-
-(defun split-quarter-turns (x)
-  "X as (values REST K) with X = REST + K PI/2 for an integer K taken from X's terms."
-  (let ((k 0) (rest '()))
-    (dolist (term (if (and (consp x) (eq (car x) '+)) (cdr x) (list x)))
-      (let ((r (pi-multiple term)))
-        (if (and r (integerp (* 2 r)))
-            (incf k (* 2 r))
-            (push term rest))))
-    (values (apply #'e+ (nreverse rest)) (mod k 4))))
-
-(defun circular-function (function x)
-  "FUNCTION (COS or SIN) of X: exact at multiples of PI/4 and PI/6; quarter turns in X
-shifted out; at X = atan(y, u), cos = u / sqrt(u^2 + y^2) and sin = y / sqrt(u^2 + y^2)."
-  (multiple-value-bind (rest k) (split-quarter-turns x)
-    (cond ((special-angle-value x function))
-          ((and (not (equal rest x)) (not (eql rest 0)))
-           ;; cos(r + k pi/2), and sin(r + k pi/2) = cos(r + (k - 1) pi/2)
-           (ecase (mod (if (eq function 'sin) (1- k) k) 4)
-             (0 (ecos rest)) (1 (e- (esin rest))) (2 (e- (ecos rest))) (3 (esin rest))))
-          ((two-argument-atan-p x)
-           (destructuring-bind (y u) (rest x)
-             (e/ (ecase function (cos u) (sin y))
-                 (esqrt (e+ (esquare y) (esquare u))))))
-          (t (list function x)))))
-
-(defun ecos (x)
-  "The cosine of X, simplified as CIRCULAR-FUNCTION says."
-  (circular-function 'cos x))
-
-(defun esin (x)
-  "The sine of X, simplified as CIRCULAR-FUNCTION says."
-  (circular-function 'sin x))
-
-(defun etan (x)
-  "The tangent of X."
-  (let ((r (pi-multiple x)))
-    (if (and r (integerp r)) 0 (list 'tan x))))
-
-(defparameter +float-decision-margin+ 1d-9
-  "A constant expression whose floating value exceeds this in magnitude has that sign.")
-
-(defun constant-sign (x)
-  "The sign (-1, 0 or 1) of the expression X when arithmetic alone settles it: always
-when its value is an exact rational, else when its double-float value lies farther than
-+FLOAT-DECISION-MARGIN+ from zero; NIL otherwise (and whenever X has a variable)."
-  (multiple-value-bind (value exact) (expression-value x)
-    (cond ((null value) nil)
-          ((and exact (rationalp value)) (signum value))
-          ((> (abs value) +float-decision-margin+) (round (signum value)))
-          (t nil))))
-
-(defun special-atan2 (y x)
-  "The angle of (X, Y) as a multiple of PI when X and Y are constants making a
-multiple of PI/6 or PI/4, else NIL."
-  (let ((sx (constant-sign x)) (sy (constant-sign y)))
-    (when (and sx sy)
-      (cond ((and (zerop sy) (zerop sx)) nil)
-            ((zerop sy) (if (plusp sx) 0 1))
-            ((zerop sx) (if (plusp sy) 1/2 -1/2))
-            (t (let* ((ratio (e/ y x))
-                      (slope (let ((r (rational-value ratio))) (and r (abs r))))
-                      (slope-squared (rational-value (e* ratio ratio)))
-                      (first-quadrant (cond ((eql slope 1) 1/4)
-                                            ((eql slope-squared 3) 1/3)
-                                            ((eql slope-squared 1/3) 1/6))))
-                 (when first-quadrant
-                   (cond ((and (plusp sx) (plusp sy)) first-quadrant)
-                         ((plusp sy) (- 1 first-quadrant))
-                         ((plusp sx) (- first-quadrant))
-                         (t (- first-quadrant 1))))))))))
-
-(defun eatan2 (y x)
-  "The angle of the direction (X, Y), in (-PI, PI], as (ATAN Y X) unless exact."
-  (let ((special (special-atan2 y x)))
-    (cond (special (e* special 'pi))
-          ((and (rationalp y) (rationalp x))
-           ;; reduce (12, -16) to (3, -4)
-           (let ((scale (/ (max (abs x) (abs y)))))
-             (let* ((ny (* y scale)) (nx (* x scale))
-                    (common (/ (lcm (denominator nx) (denominator ny))
-                               (gcd (numerator nx) (numerator ny)))))
-               (list 'atan (* ny common) (* nx common)))))
-          (t (list 'atan y x)))))
-
 (defun normalize-expression (expression)
   "EXPRESSION rebuilt bottom-up through the simplifying constructors: numbers folded,
-like terms collected. Quantity terms and unknown forms are kept as they are."
+like terms collected. Quantity terms and unknown forms are kept as they are. Signals
+BUDGET-EXCEEDED when a number or a sum would grow larger than the current limits allow,
+or the run's deadline passes."
+  (check-budget expression)
   (cond ((atom expression) expression)
         ((quantity-term-p expression) expression)
         (t (let ((operator (car expression))
@@ -415,6 +349,7 @@ rationals with + - * /, integer powers and rational roots), else NIL."
 lightly simplified. Quantity terms and other variables are constants. Signals MALFORMED-EXPRESSION for an operator it
 does not know."
   (labels ((d (x)
+             (check-budget expression)
              (cond ((eq x variable) 1)
                    ((or (atom x) (quantity-term-p x)) 0)
                    (t (let ((args (cdr x)))

@@ -231,14 +231,16 @@ degenerate shape and UNDECIDABLE-GEOMETRIC-FACT when a needed fact cannot be dec
     (when (< (length vertices) 3)
       (invalid-shape form form "a polygon needs at least three vertices"))
     (let* ((n (length vertices))
-           (edges (loop for i below n
-                        collect (make-line-piece (nth i vertices) (nth (mod (1+ i) n) vertices)
-                                                 :name (list :edge i)))))
+           (edges (loop for (a b) on (append vertices (list (first vertices)))
+                        for i from 0
+                        while b
+                        collect (make-line-piece a b :name (list :edge i)))))
       (unless (= n 3)
-        (loop for i below n
-              do (check-distinct-points decider form (nth i vertices) (nth (mod (1+ i) n) vertices)
-                                        (list (nth i (rest form)) (nth (mod (1+ i) n) (rest form)))
-                                        "repeated vertex")))
+        (loop for (a b) on (append vertices (list (first vertices)))
+              for (written next) on (append (rest form) (list (second form)))
+              while b
+              do (check-budget form)
+                 (check-distinct-points decider form a b (list written next) "repeated vertex")))
       (case (sign-of decider (polygon-signed-area vertices))
         (:negative (invalid-shape form form "the vertices run clockwise; list them counter-clockwise"))
         (:zero (invalid-shape form form "the polygon has no area")))
@@ -284,15 +286,16 @@ degenerate shape and UNDECIDABLE-GEOMETRIC-FACT when a needed fact cannot be dec
                                 (e* (esquare r) (e- phi (esin phi))))))))))
 
 (defun parse-outline (decider form)
-  (let* ((pieces (loop for piece in (rest form) for i from 0
-                       collect (parse-outline-piece decider form piece i)))
-         (n (length pieces)))
+  (let ((pieces (loop for piece in (rest form) for i from 0
+                      collect (parse-outline-piece decider form piece i))))
     (when (null pieces)
       (invalid-shape form form "an outline needs at least one piece"))
-    (loop for i below n
-          for a = (nth i pieces) for b = (nth (mod (1+ i) n) pieces)
-          do (unless (vector-equal-p decider (piece-end a) (piece-start b))
-               (invalid-shape form (list (nth i (rest form)) (nth (mod (1+ i) n) (rest form)))
+    (loop for (a b) on (append pieces (list (first pieces)))
+          for (written next) on (append (rest form) (list (second form)))
+          while b
+          do (check-budget form)
+             (unless (vector-equal-p decider (piece-end a) (piece-start b))
+               (invalid-shape form (list written next)
                               "the pieces do not join: one ends where the next does not start")))
     (case (sign-of decider (outline-signed-area pieces))
       (:negative (invalid-shape form form "the outline runs clockwise; write it counter-clockwise"))
@@ -302,34 +305,36 @@ degenerate shape and UNDECIDABLE-GEOMETRIC-FACT when a needed fact cannot be dec
 
 (defun check-closed-boundary (decider form pieces)
   "Check that the closed chain PIECES does not fold back on itself or cross itself;
-return true when it bounds a convex solid (every arc convex, every corner turning left)."
-  (let ((n (length pieces)) (convex t))
-    (loop for i below n
-          for a = (nth i pieces) for b = (nth (mod (1+ i) n) pieces)
-          for t-in = (piece-end-tangent a) for t-out = (piece-start-tangent b)
-          do (case (sign-of decider (cross t-in t-out))
-               (:negative (setf convex nil))
-               (:zero (when (negative-p decider (dot t-in t-out))
-                        (invalid-shape form (shape-piece-form form i)
-                                       "the boundary folds back on itself at the end of this piece")))))
-    (when (some (lambda (p) (and (arc-piece-p p) (eq (arc-piece-sense p) :cw))) pieces)
-      (setf convex nil))
-    (when (> n 3)
-      (loop for i below n
-            do (loop for j from (+ i 2) below n
-                     unless (and (zerop i) (= j (1- n)))
-                       do (when (pieces-cross-p decider (nth i pieces) (nth j pieces))
-                            (invalid-shape form (list (shape-piece-form form i) (shape-piece-form form j))
-                                           "the boundary crosses itself")))))
-    ;; adjacent pieces may only share their joint
-    (when (>= n 2)
-      (loop for i below n
-            for a = (nth i pieces) for b = (nth (mod (1+ i) n) pieces)
-            do (let ((common (piece-intersections decider a b)))
-                 (when (> (length common) (if (= n 2) 2 1))
-                   (invalid-shape form (shape-piece-form form i)
-                                  "the boundary overlaps itself near this piece")))))
-    convex))
+return true when it bounds a convex solid (every arc convex, every corner turning left).
+Linear but for the crossings, found in O(n log n) for numeric line pieces (see
+boundary.lisp). Signals INVALID-SHAPE, UNDECIDABLE-GEOMETRIC-FACT, or BUDGET-EXCEEDED
+when the run's deadline passes."
+  (let* ((pieces (coerce pieces 'vector)) (n (length pieces)) (convex t))
+    (flet ((piece (i) (aref pieces (mod i n))))
+      (dotimes (i n)
+        (check-budget form)
+        (let ((t-in (piece-end-tangent (piece i))) (t-out (piece-start-tangent (piece (1+ i)))))
+          (case (sign-of decider (cross t-in t-out))
+            (:negative (setf convex nil))
+            (:zero (when (negative-p decider (dot t-in t-out))
+                     (invalid-shape form (shape-piece-form form i)
+                                    "the boundary folds back on itself at the end of this piece"))))))
+      (when (some (lambda (p) (and (arc-piece-p p) (eq (arc-piece-sense p) :cw))) pieces)
+        (setf convex nil))
+      (when (> n 3)
+        (let ((crossing (boundary-crossing decider pieces)))
+          (when crossing
+            (invalid-shape form (mapcar (lambda (i) (shape-piece-form form i)) crossing)
+                           "the boundary crosses itself"))))
+      ;; adjacent pieces may only share their joint
+      (when (>= n 2)
+        (dotimes (i n)
+          (check-budget form)
+          (let ((common (piece-intersections decider (piece i) (piece (1+ i)))))
+            (when (> (length common) (if (= n 2) 2 1))
+              (invalid-shape form (shape-piece-form form i)
+                             "the boundary overlaps itself near this piece")))))
+      convex)))
 
 (defun shape-piece-form (form index)
   "The written form of piece INDEX of a polygon or outline FORM, for error reports."

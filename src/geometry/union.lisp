@@ -26,13 +26,37 @@
       (setf sorted (merge 'list (list p) sorted
                           (lambda (a b) (fact-holds-p decider (list '< a b))))))))
 
-(defun cut-parameters (decider piece others)
+(defun piece-box (piece)
+  "The closed box (XMIN YMIN XMAX YMAX) of exact rationals that holds PIECE (for an arc,
+its whole circle), or NIL when PIECE is unbounded or not numeric."
+  (flet ((box-of (x y dx dy) (list (- x dx) (- y dy) (+ x dx) (+ y dy))))
+    (etypecase piece
+      (line-piece
+       (let ((a (and (not (line-piece-infinite piece)) (exact-point (line-piece-start piece))))
+             (b (exact-point (line-piece-end piece))))
+         (and a b (list (min (car a) (car b)) (min (cdr a) (cdr b))
+                        (max (car a) (car b)) (max (cdr a) (cdr b))))))
+      (arc-piece
+       (let ((c (exact-point (arc-piece-center piece)))
+             (r (exact-coordinate (arc-piece-radius piece))))
+         (and c r (box-of (car c) (cdr c) (abs r) (abs r))))))))
+
+(defun boxes-apart-p (a b)
+  "True when the boxes A and B (see PIECE-BOX) are known to have no point in common."
+  (and a b
+       (or (< (third a) (first b)) (< (third b) (first a))
+           (< (fourth a) (second b)) (< (fourth b) (second a)))))
+
+(defun cut-parameters (decider piece others &optional (box-of #'piece-box))
   "The parameters along PIECE where the pieces OTHERS meet it, strictly inside it (for
-a full circle, anywhere on it), sorted."
+a full circle, anywhere on it), sorted. Pieces whose numeric boxes (BOX-OF a piece) are
+apart from PIECE's are not asked (they cannot meet it)."
   (let* ((end (piece-end-parameter decider piece))
          (full (and (arc-piece-p piece) (arc-piece-full piece)))
+         (box (funcall box-of piece))
          (parameters
            (loop for other in others
+                 unless (boxes-apart-p box (funcall box-of other))
                  nconc (loop for q in (piece-intersections decider piece other)
                              for p = (piece-parameter decider piece q)
                              when (or full
@@ -132,23 +156,29 @@ else NIL."
 pieces, counter-clockwise)."
   (if (null (rest parts))
       (first parts)
-      (let ((kept '()))
-        (loop for part in parts
-              for a from 0
-              do (let ((others (loop for other in parts for b from 0
-                                     unless (= a b) nconc (mapcar #'sum-piece-piece other))))
-                   (dolist (sp part)
-                     (let ((piece (sum-piece-piece sp)))
-                       (dolist (sub (split-piece decider piece (cut-parameters decider piece others)))
-                         (let ((midpoint (piece-midpoint decider sub)))
-                           (when (on-union-boundary-p decider midpoint
-                                                      (piece-outward-normal-at sub midpoint)
-                                                      sp a parts)
-                             (push (make-sum-piece sub (sum-piece-obstacle-feature sp)
-                                                   (sum-piece-observer-feature sp)
-                                                   (sum-piece-source sp))
-                                   kept))))))))
-        (chain-sum-pieces decider (join-sum-pieces decider (nreverse kept))))))
+      (let ((kept '())
+            (boxes (make-hash-table :test 'eq)))
+        (flet ((box-of (piece)
+                 (multiple-value-bind (box found) (gethash piece boxes)
+                   (if found box (setf (gethash piece boxes) (piece-box piece))))))
+          (loop for part in parts
+                for a from 0
+                do (let ((others (loop for other in parts for b from 0
+                                       unless (= a b) nconc (mapcar #'sum-piece-piece other))))
+                     (dolist (sp part)
+                       (check-budget part)
+                       (let ((piece (sum-piece-piece sp)))
+                         (dolist (sub (split-piece decider piece
+                                                   (cut-parameters decider piece others #'box-of)))
+                           (let ((midpoint (piece-midpoint decider sub)))
+                             (when (on-union-boundary-p decider midpoint
+                                                        (piece-outward-normal-at sub midpoint)
+                                                        sp a parts)
+                               (push (make-sum-piece sub (sum-piece-obstacle-feature sp)
+                                                     (sum-piece-observer-feature sp)
+                                                     (sum-piece-source sp))
+                                     kept))))))))
+          (chain-sum-pieces decider (join-sum-pieces decider (nreverse kept)))))))
 
 (defun chain-sum-pieces (decider sum-pieces)
   "SUM-PIECES reordered so that each piece is followed by the one starting where it

@@ -36,9 +36,11 @@
 
 (defun vector-known-equal-p (decider a b)
   "True when A and B are known to be the same vector; NIL when they differ or when it
-cannot be decided (never signals)."
-  (and (fact-known-p decider (list '= (vx a) (vx b)))
-       (fact-known-p decider (list '= (vy a) (vy b)))))
+cannot be decided (never signals). Rational vectors are compared at once."
+  (if (and (rationalp (vx a)) (rationalp (vy a)) (rationalp (vx b)) (rationalp (vy b)))
+      (and (= (vx a) (vx b)) (= (vy a) (vy b)))
+      (and (fact-known-p decider (list '= (vx a) (vx b)))
+           (fact-known-p decider (list '= (vy a) (vy b))))))
 
 (defun unit-vector (decider v)
   "V divided by its length. Axis-aligned vectors give exact unit vectors (deciding the

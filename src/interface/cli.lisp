@@ -1,4 +1,4 @@
-;;;; src/interface/cli.lisp -- the command line: bin/ames run FILE... [--format text|sexp|latex|json|html] [--svg FILE] [--set p=v ...]
+;;;; src/interface/cli.lisp -- the command line: bin/ames run|explain FILE... [--format F] [--svg FILE] [--set p=v ...] [--time-limit S] [--maxima-timeout S] [--verbose]
 
 (in-package #:ames)
 
@@ -10,6 +10,7 @@
 
 (defparameter *usage*
   "Usage: ames run FILE... [--format text|sexp|latex|json|html] [--svg OUT.svg] [--set PARAM=VALUE ...]
+                 [--time-limit SECONDS] [--maxima-timeout SECONDS] [--verbose]
        ames explain FILE... [--state N] [--set PARAM=VALUE ...]
   Simulate every scenario in each FILE and print a report.
   --format text   a report for people, state by state (the default)
@@ -20,6 +21,9 @@
   --svg OUT.svg   also draw each scenario (OUT-NAME.svg when the run has several)
   --set p=v ...   give parameter p the number v (an integer, ratio or decimal); numeric
                   values are then printed beside the closed forms
+  --time-limit S  the wall time one scenario may take, in seconds (default 300)
+  --maxima-timeout S  the time one Maxima request may take, in seconds (default 20)
+  --verbose       print error messages in full (long ones are otherwise cut short)
   explain         why each state's contacts and modes hold, where its equations
                   come from, and why it ends when it does (or only state N)
 Exit codes: 0 success, 1 a scenario error, 2 usage."
@@ -60,11 +64,21 @@ USAGE-ERROR naming TEXT when it is malformed."
         (error 'usage-error :datum text :detail "--set needs a number after ="))
       (cons (subseq text 0 position) value))))
 
+(defun parse-seconds (option text)
+  "The positive number of seconds TEXT writes (as PARSE-DECIMAL reads it), for OPTION;
+signal USAGE-ERROR naming TEXT when it is not one."
+  (let ((value (and text (parse-decimal text))))
+    (unless (and value (plusp value) (<= value (* 365 24 3600)))
+      (error 'usage-error :datum (or text option)
+                          :detail (format nil "~A takes a positive number of seconds" option)))
+    value))
+
 (defun parse-command-line (arguments)
   "Parse ARGUMENTS (strings, without the program name) into a plist (:COMMAND :FILES
-:FORMAT :SETTINGS :SVG :STATE). Signals USAGE-ERROR on anything malformed."
+:FORMAT :SETTINGS :SVG :STATE :TIME-LIMIT :MAXIMA-TIMEOUT :VERBOSE); the two limits are
+NIL when not given. Signals USAGE-ERROR on anything malformed."
   (let ((command (first arguments)) (files '()) (format :text) (settings '()) (svg nil)
-        (state nil))
+        (state nil) (time-limit nil) (maxima-timeout nil) (verbose nil))
     (cond ((null command) (error 'usage-error :detail "no command given"))
           ((member command '("help" "--help" "-h") :test #'string=)
            (return-from parse-command-line (list :command :help)))
@@ -94,84 +108,131 @@ USAGE-ERROR naming TEXT when it is malformed."
                         (unless (and (integerp value) (>= value 0))
                           (error 'usage-error :datum argument :detail "--state takes a state's index"))
                         (setf state value)))
+                     ((string= argument "--time-limit")
+                      (setf time-limit (parse-seconds argument (pop rest))))
+                     ((string= argument "--maxima-timeout")
+                      (setf maxima-timeout (parse-seconds argument (pop rest))))
+                     ((string= argument "--verbose") (setf verbose t))
                      ((eql 0 (search "--" argument))
                       (error 'usage-error :datum argument :detail "unknown option"))
                      (t (push argument files)))))
     (when (null files) (error 'usage-error :detail "run needs at least one scenario file"))
     (list :command (if (string= command "explain") :explain :run)
           :files (nreverse files) :format format
-          :settings (nreverse settings) :svg svg :state state)))
+          :settings (nreverse settings) :svg svg :state state
+          :time-limit time-limit :maxima-timeout maxima-timeout :verbose verbose)))
+
+(defun command-line-limits (options)
+  "The LIMITS for the parsed command line OPTIONS: *LIMITS* with its time limit and
+Maxima timeout replaced by those given."
+  (let ((limits *limits*))
+    (when (getf options :time-limit)
+      (setf limits (change-limits limits :time-limit (getf options :time-limit))))
+    (when (getf options :maxima-timeout)
+      (setf limits (change-limits limits :maxima-timeout (getf options :maxima-timeout))))
+    limits))
+
+(defconstant +broken-pipe-status+ 141
+  "The exit status when the reader of the standard output went away (a shell's status for
+a process ended by SIGPIPE).")
 
 (defun main (arguments)
   "The entry point of bin/ames: run the command in ARGUMENTS (a list of strings) and quit
-with 0 on success, 1 when any scenario had an error, 2 on a usage error."
+with 0 on success, 1 when any scenario had an error, 2 on a usage error. When the
+standard output is a pipe whose reader went away (bin/ames run x | head), stop quietly
+with status +BROKEN-PIPE-STATUS+."
   (let ((status
           (handler-case
               (let ((options (parse-command-line arguments)))
                 (case (getf options :command)
                   (:help (write-string *usage*) (terpri) 0)
                   (:explain (explain-files (getf options :files) :state (getf options :state)
-                                           :settings (getf options :settings)))
+                                           :settings (getf options :settings)
+                                           :limits (command-line-limits options)))
                   (:run (let ((*package* (find-package '#:ames-scenario)))
                           (run-files (getf options :files)
                                      :format (getf options :format)
                                      :settings (getf options :settings)
                                      :svg (getf options :svg)
+                                     :limits (command-line-limits options)
+                                     :verbose (getf options :verbose)
                                      :stream *standard-output*)))))
             (usage-error (condition)
               (format *error-output* "ames: ~A~%~A~%" condition *usage*)
-              2))))
-    (finish-output *standard-output*)
-    (finish-output *error-output*)
+              2)
+            (sb-int:broken-pipe ()
+              (sb-ext:exit :code +broken-pipe-status+ :abort t)))))
+    (handler-case (progn (finish-output *standard-output*)
+                         (finish-output *error-output*))
+      (sb-int:broken-pipe ()
+        (sb-ext:exit :code +broken-pipe-status+ :abort t)))
     (uiop:quit status)))
 
-(defun explain-files (files &key state settings (stream *standard-output*))
-  "Explain every scenario of each of FILES (see EXPLAIN), or only the state STATE.
-Returns the exit status: 0, or 1 when a scenario could not be explained."
+(defun explain-files (files &key state settings (stream *standard-output*) (limits *limits*))
+  "Explain every scenario of each of FILES (see EXPLAIN), or only the state STATE, each
+run within a budget of LIMITS. Returns the exit status: 0, or 1 when a scenario could
+not be explained."
   (let ((status 0))
     (dolist (file files status)
       (handler-case
-          (dolist (history (run-file file :settings settings))
+          (dolist (history (run-file file :settings settings :limits limits))
             (explain history :state state :stream stream))
         (ames-error (condition)
           (setf status 1)
           (format *error-output* "~&ames: ~A~%" condition))))))
 
 (defun run-files (files &key (format :text) settings (stream *standard-output*) svg
-                          (bridge (current-bridge)))
-  "Simulate every scenario of each of FILES and print each history on STREAM in FORMAT
+                          (bridge (current-bridge)) (limits *limits*) verbose)
+  "Simulate every scenario of each of FILES, each by RUN-SCENARIO (a fresh bridge state,
+a budget of LIMITS, by default *LIMITS*), and print each history on STREAM in FORMAT
 (:TEXT, :SEXP, :LATEX, :JSON or :HTML, one page at the end), and, when SVG (a file
 name) is given, draw each to it (see AMES.REPORT:FINISH-REPORT). SETTINGS is an alist
-(PARAMETER-NAME . NUMBER). A defective scenario or file is reported on *ERROR-OUTPUT*
-and the others still run. Returns the exit status: 0 when every scenario ran, 1 when any
-had an error."
+(PARAMETER-NAME . NUMBER). A defective scenario or file, and a run that fails, are
+reported on *ERROR-OUTPUT*, naming the file, the scenario and the line; the others still
+run (a Lisp error that is no AMES-ERROR, a defect of AMES, is reported as an
+INTERNAL-ERROR). Long messages are cut short unless VERBOSE. Returns the exit status: 0
+when every scenario ran, 1 when any had an error."
   (let ((status 0)
+        (*full-reports* (or verbose *full-reports*))
         (output (make-report-output format stream :svg svg :bridge bridge)))
     (flet ((report-error (condition)
              (setf status 1)
-             (format *error-output* "~&ames: ~A~%" condition)))
+             (format *error-output* "~&ames: ~A~%" condition)
+             (finish-output *error-output*)))
       (dolist (file files)
         (multiple-value-bind (scenarios conditions) (read-scenario-file file :on-error :collect)
           (mapc #'report-error conditions)
           (dolist (scenario scenarios)
             (handler-case
-                (let ((history (handler-bind ((ambiguous-transition #'stop-simulation))
-                                 (simulate scenario :bridge bridge :parameter-values settings))))
-                  (report-history output history))
-              (ames-error (condition) (report-error condition))))))
+                (let ((history (run-scenario scenario :bridge bridge :settings settings
+                                                      :limits limits)))
+                  (report-history output history)
+                  (finish-output stream))
+              (ames-error (condition) (report-error condition))
+              ;; the output is gone (a closed pipe): nothing more can be reported
+              (stream-error (condition) (error condition))
+              ;; a defect of AMES in one scenario does not lose the others
+              (error (condition)
+                (let ((internal (make-condition 'internal-error :datum condition)))
+                  (setf (ames-error-context internal)
+                        (run-error-context scenario internal))
+                  (report-error internal)))))))
       (handler-case (finish-report output)
         (ames-error (condition) (report-error condition))))
     status))
 
-(defun run-file (pathname &key settings (bridge (current-bridge)))
-  "Simulate every scenario of the file PATHNAME and return their SIMULATION-HISTORYs.
-A scenario that ends ambiguously stops there (its history says so). Signals
-SCENARIO-ERROR for a defective scenario, with the restart SKIP-SCENARIO."
+(defun run-file (pathname &key settings (bridge (current-bridge)) (limits *limits*))
+  "Simulate every scenario of the file PATHNAME, each by RUN-SCENARIO (a fresh bridge
+state, a budget of LIMITS, by default *LIMITS*), and return their SIMULATION-HISTORYs.
+SETTINGS is an alist (PARAMETER-NAME . NUMBER). A scenario that ends ambiguously stops
+there (its history says so). Signals SCENARIO-ERROR for a defective scenario, and the
+errors of a run (named by their context: file, scenario, line), with the restart
+SKIP-SCENARIO; BUDGET-EXCEEDED when a run goes over its budget; PARAMETER-VALUES-ERROR
+for SETTINGS that are not an alist of names and numbers."
   (let ((histories '()))
     (dolist (scenario (read-scenario-file pathname) (nreverse histories))
       (restart-case
-          (push (handler-bind ((ambiguous-transition #'stop-simulation))
-                  (simulate scenario :bridge bridge :parameter-values settings))
+          (push (run-scenario scenario :bridge bridge :settings settings :limits limits)
                 histories)
         (skip-scenario ()
           :report "Skip this scenario and go on with the next one."

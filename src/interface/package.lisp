@@ -6,7 +6,15 @@
 accessors on a simulation history, the scenario language's reader and validator, all
 re-exported from the layers below) and the command line of bin/ames.")
   (:export
-   #:ames-error
+   #:ames-error #:ames-error-context #:ames-error-full-report #:*full-reports*
+   #:error-context #:error-context-file #:error-context-line #:error-context-scenario
+   #:error-context-location
+   ;; the budget of a scenario run (src/base/limits.lisp)
+   #:*limits* #:limits #:make-limits #:change-limits #:limits-time-limit
+   #:limits-maxima-timeout #:limits-integer-bits #:limits-expression-size
+   #:call-with-budget #:with-budget #:invalid-limit
+   #:budget-exceeded #:budget-exceeded-quantity #:budget-exceeded-limit
+   #:budget-exceeded-amount #:budget-exceeded-subject
    ;; scenario conditions (src/scenario/)
    #:scenario-error #:scenario-error-scenario #:scenario-error-location
    #:scenario-error-clause #:scenario-error-source
@@ -19,6 +27,7 @@ re-exported from the layers below) and the command line of bin/ames.")
    #:contradictory-assumptions-error #:overlapping-bodies-error
    #:scenario-error-cause
    #:skip-scenario
+   #:parameter-values-error #:check-parameter-values #:scenario-positions
    ;; scenario objects and the validator (src/scenario/)
    #:scenario #:parse-scenario #:scenario-p
    #:scenario-name #:scenario-description #:scenario-parameters #:scenario-gravity
@@ -39,11 +48,11 @@ re-exported from the layers below) and the command line of bin/ames.")
    ;; reading scenario files (src/scenario/reader.lisp)
    #:read-scenario-forms #:read-scenarios-from-string #:read-scenario-file
    ;; the simulator and its history (src/simulator/, src/report/)
-   #:simulate #:run-file #:run-files #:main #:*bridge* #:current-bridge
+   #:simulate #:run-file #:run-files #:run-scenario #:main #:*bridge* #:current-bridge
    #:stop-simulation
    #:simulation-error #:ambiguous-transition #:ambiguous-transition-candidates
    #:ambiguous-transition-missing-fact #:unsolvable-model #:unsupported-situation
-   #:usage-error
+   #:usage-error #:internal-error
    #:simulation-history #:history-scenario #:history-states #:history-outcome
    #:history-notes #:history-rederived #:history-parameter-values
    #:qualitative-state #:state-index #:state-start #:state-duration #:state-contacts

@@ -1,12 +1,9 @@
-;;;; src/maxima-bridge/bridge.lisp -- the bridge object: one Maxima process, its framed protocol, timeouts, restarts, cache.
+;;;; src/maxima-bridge/bridge.lisp -- the bridge object: one Maxima process, its restarts, its requests and cache.
 ;;;;
 ;;;; The process is Debian's `maxima` script run with `-p maxima-server.lisp`; the script
 ;;;; `exec`s the GCL binary, so the pid SBCL knows is the pid that must receive SIGINT.
-;;;; Requests are lines `(ID :EVAL FORM)`, each preceded by an empty line (a SIGINT that
-;;;; lands while the server waits eats one character); replies are frames between markers
-;;;; that carry a random nonce, so nothing Maxima prints by itself can be taken for a reply.
-;;;; Reading never blocks past the deadline: characters are taken with READ-CHAR-NO-HANG
-;;;; and the descriptor is waited on with a timeout.
+;;;; The framing of requests and replies, the bounded reply buffer and the timeout of one
+;;;; round trip are in framing.lisp.
 
 (in-package #:ames.maxima)
 
@@ -19,6 +16,31 @@
 (defparameter *server-file*
   (asdf:system-relative-pathname "ames" "src/maxima-bridge/maxima-server.lisp")
   "The Lisp file Maxima preloads: the request server.")
+
+(defun cache-key-hash (key)
+  "A hash of the whole tree KEY (SXHASH looks only a few levels and elements deep, and
+the bridge's keys, Maxima forms under the facts in force, differ deep inside: with
+SXHASH a scenario with a thousand contacts spent most of its time comparing keys)."
+  (let ((hash 0))
+    (labels ((mix (x) (setf hash (logand (+ (* hash 31) x) most-positive-fixnum)))
+             (walk (x)
+               (loop while (consp x)
+                     do (mix 17)
+                        (walk (car x))
+                        (setf x (cdr x)))
+               (mix (sxhash x))))
+      (walk key))
+    hash))
+
+(defun cache-key-equal (a b)
+  "EQUAL, as the test of the bridge's cache (hashed by CACHE-KEY-HASH)."
+  (equal a b))
+
+(sb-ext:define-hash-table-test cache-key-equal cache-key-hash)
+
+(defun make-cache ()
+  "An empty cache table: keys compared by EQUAL, hashed over their whole tree."
+  (make-hash-table :test 'cache-key-equal))
 
 (defstruct (assumption-frame (:constructor make-assumption-frame (context facts maxima-facts)))
   "One WITH-ASSUMPTIONS scope: its Maxima context, the facts as given, and the facts as
@@ -40,13 +62,15 @@ before the process is killed and replaced.")
    (buffer :initform (make-array 256 :element-type 'character :adjustable t :fill-pointer 0)
            :reader bridge-buffer
            :documentation "Characters read from Maxima and not yet consumed.")
+   (scanned :initform 0 :accessor bridge-scanned
+            :documentation "No end marker starts in the buffer before this index.")
    (next-id :initform 1 :accessor bridge-next-id)
-   (names :initform (make-instance 'name-table) :reader bridge-names)
+   (names :initform (make-instance 'name-table) :accessor bridge-names)
    (frames :initform '() :accessor bridge-frames
            :documentation "Active assumption frames, innermost first.")
-   (cache :initform (make-hash-table :test 'equal) :reader bridge-cache
+   (cache :initform (make-cache) :accessor bridge-cache
           :documentation "Answers to requests, and DECIDE's verdicts, under the facts in force.")
-   (excess-names :initform (make-hash-table :test 'equal) :reader bridge-excess-names
+   (excess-names :initform (make-hash-table :test 'equal) :accessor bridge-excess-names
                  :documentation "Variable -> the uninterned symbol DECIDE-BY-ORDER-SUBSTITUTION
 writes its excess over a bound with (see ORDER-EXCESS-NAME).")
    (statistics :initform (make-statistics) :accessor bridge-statistics-record))
@@ -96,6 +120,40 @@ verdict lookups included), :CACHE-HITS (requests and verdicts answered from the 
   (clrhash (bridge-cache bridge))
   bridge)
 
+(defun bridge-in-scope-p (bridge)
+  "True when an assumption scope (WITH-ASSUMPTIONS) of BRIDGE is open."
+  (and (bridge-frames bridge) t))
+
+(defun reset-bridge (bridge &key restart)
+  "Make BRIDGE answer as a new one would, so that what a scenario run prints does not
+depend on what ran before it: a fresh name table (the Maxima names of variables are
+given in order of first use, and Maxima orders terms by them), an empty cache and fresh
+excess names. With RESTART true the process is also ended and every assumption scope
+forgotten (for a run cut short: a request may still be running, a scope may not have
+been left); the next request starts a new process. Call it between scenario runs.
+Returns BRIDGE. Signals INVALID-BRIDGE-ARGUMENT when an assumption scope is open and
+RESTART is false."
+  (when (and (bridge-in-scope-p bridge) (not restart))
+    (error 'invalid-bridge-argument
+           :datum (current-assumptions bridge)
+           :detail "the bridge cannot be reset inside an assumption scope (WITH-ASSUMPTIONS)"))
+  (when restart
+    (setf (bridge-frames bridge) '())
+    (discard-process bridge))
+  ;; fresh tables rather than CLRHASH: an interrupted run may have left one inconsistent.
+  ;; The names of contexts and auxiliary variables are never given twice in one process:
+  ;; a context or fact of an earlier run left in Maxima must not reappear under them.
+  (let ((old (bridge-names bridge)) (new (make-instance 'name-table)))
+    (when old
+      (maphash (lambda (prefix count)
+                 (unless (string= prefix "$AMESV")
+                   (setf (gethash prefix (name-table-counts new)) count)))
+               (name-table-counts old)))
+    (setf (bridge-names bridge) new))
+  (setf (bridge-cache bridge) (make-cache)
+        (bridge-excess-names bridge) (make-hash-table :test 'equal))
+  bridge)
+
 (defun bridge-alive-p (bridge)
   "True when BRIDGE has a running Maxima process."
   (let ((process (bridge-process bridge)))
@@ -115,7 +173,8 @@ verdict lookups included), :CACHE-HITS (requests and verdicts answered from the 
   "Forget BRIDGE's process, ending it with SIGKILL when it still runs, and reap it."
   (let ((process (bridge-process bridge)))
     (setf (bridge-process bridge) nil
-          (fill-pointer (bridge-buffer bridge)) 0)
+          (fill-pointer (bridge-buffer bridge)) 0
+          (bridge-scanned bridge) 0)
     (when process
       (when (sb-ext:process-alive-p process)
         (sb-ext:process-kill process +sigkill+))
@@ -160,6 +219,7 @@ Signals MAXIMA-PROCESS-DIED when Maxima cannot be started."
     (incf (statistics-restarts (bridge-statistics-record bridge)))
     (setf (bridge-process bridge) process
           (fill-pointer (bridge-buffer bridge)) 0
+          (bridge-scanned bridge) 0
           (bridge-nonce bridge) (random (expt 2 60) (make-random-state t)))
     (setf (bridge-frame-begin bridge) (format nil "@AMES~D@BEGIN" (bridge-nonce bridge))
           (bridge-frame-end bridge) (format nil "@AMES~D@END" (bridge-nonce bridge)))
@@ -177,106 +237,6 @@ Signals MAXIMA-PROCESS-DIED when Maxima cannot be started."
   (unless (bridge-alive-p bridge)
     (when (bridge-process bridge) (discard-process bridge))
     (start-process bridge)))
-
-;;; Framing
-
-(defun print-request (id kind arguments)
-  "The request line for ID, KIND and ARGUMENTS, as the server reads it."
-  (let ((*package* (find-package '#:ames.maxima.wire))
-        (*print-pretty* nil) (*print-base* 10) (*print-radix* nil) (*print-case* :upcase)
-        (*print-readably* nil) (*print-circle* nil) (*print-level* nil) (*print-length* nil)
-        (*read-default-float-format* 'double-float))
-    (format nil "~%~S~%" (list* id kind arguments))))
-
-(defun send-line (bridge text)
-  "Write TEXT to BRIDGE's process. Signals SERVER-GONE when the pipe is closed."
-  (let ((stream (sb-ext:process-input (bridge-process bridge))))
-    (handler-case (progn (write-string text stream) (finish-output stream))
-      (stream-error () (error 'server-gone)))))
-
-(defun take-frame (bridge)
-  "The text of the first complete frame in BRIDGE's buffer, removed from it, or NIL."
-  (let* ((buffer (bridge-buffer bridge))
-         (end (search (bridge-frame-end bridge) buffer)))
-    (when end
-      (let* ((begin (search (bridge-frame-begin bridge) buffer :end2 end :from-end t))
-             (text (and begin (subseq buffer (+ begin (length (bridge-frame-begin bridge))) end)))
-             (rest-start (+ end (length (bridge-frame-end bridge))))
-             (rest (subseq buffer rest-start)))
-        (setf (fill-pointer buffer) 0)
-        (loop for c across rest do (vector-push-extend c buffer))
-        (or text "")))))
-
-(defun parse-frame (text)
-  "The reply (ID STATUS SECONDS . DATA) in frame TEXT, or NIL when unreadable."
-  (let ((*read-eval* nil)
-        (*package* (find-package '#:ames.maxima.wire))
-        (*read-default-float-format* 'double-float)
-        (*read-base* 10))
-    (handler-case (let ((reply (read-from-string text)))
-                    (and (consp reply) (consp (cdr reply)) (consp (cddr reply)) reply))
-      (reader-error () nil)
-      (end-of-file () nil))))
-
-(defun read-available (bridge)
-  "Move what Maxima has written into the buffer. Returns :EOF at end of output, T when
-something was read, NIL otherwise."
-  (let ((stream (sb-ext:process-output (bridge-process bridge)))
-        (buffer (bridge-buffer bridge))
-        (got nil))
-    (loop (let ((c (read-char-no-hang stream nil :eof)))
-            (cond ((eq c :eof) (return :eof))
-                  ((null c) (return got))
-                  (t (vector-push-extend c buffer) (setf got t)))))))
-
-(defun await-reply (bridge id deadline)
-  "Wait until DEADLINE for the reply to request ID. Returns the reply
-(ID STATUS SECONDS . DATA), or :TIMEOUT. Signals SERVER-GONE when the process ends."
-  (let ((fd (sb-sys:fd-stream-fd (sb-ext:process-output (bridge-process bridge)))))
-    (loop
-      (let ((text (take-frame bridge)))
-        (if text
-            (let ((reply (parse-frame text)))
-              ;; Only one request is ever outstanding. Frames of earlier (interrupted)
-              ;; requests are dropped; a frame without id (NIL: the server could not read
-              ;; the request) is ours, and so is a frame SBCL cannot read.
-              (cond ((null reply)
-                     (return (list id :lisp-error 0
-                                   (format nil "unreadable reply: ~A"
-                                           (subseq text 0 (min 200 (length text)))))))
-                    ((or (eql (first reply) id) (eq (first reply) +false+))
-                     (return reply))))
-            (let ((got (read-available bridge)))
-              (cond ((eq got :eof) (error 'server-gone))
-                    (got)
-                    (t (let ((remaining (- deadline (now))))
-                         (when (<= remaining 0) (return :timeout))
-                         (sb-sys:wait-until-fd-usable fd :input remaining))))))))))
-
-(defun round-trip (bridge request)
-  "Send REQUEST (KIND . ARGUMENTS) and return the reply's STATUS, DATA and SECONDS as
-values; on timeout, interrupt Maxima and return :TIMEOUT (killing the process when the
-interrupt does not take). Signals SERVER-GONE when the process ends."
-  (let* ((id (prog1 (bridge-next-id bridge) (incf (bridge-next-id bridge))))
-         (start (now))
-         (record (bridge-statistics-record bridge)))
-    (send-line bridge (print-request id (first request) (rest request)))
-    (incf (statistics-maxima-calls record))
-    (let ((reply (await-reply bridge id (+ start (bridge-timeout bridge)))))
-      (when (eq reply :timeout)
-        (incf (statistics-timeouts record))
-        (sb-ext:process-kill (bridge-process bridge) +sigint+)
-        (let ((late (handler-case (await-reply bridge id (+ (now) (bridge-interrupt-grace bridge)))
-                      (server-gone () :gone))))
-          (when (member late '(:timeout :gone)) (discard-process bridge))
-          (setf reply (if (and (consp late) (eq (second late) :ok)) late :timeout))))
-      (incf (statistics-round-trip-seconds record) (- (now) start))
-      (if (eq reply :timeout)
-          (values :timeout nil (- (now) start))
-          (destructuring-bind (reply-id status seconds &rest data) reply
-            (declare (ignore reply-id))
-            (when (realp seconds) (incf (statistics-maxima-seconds record) seconds))
-            (values status data seconds))))))
 
 ;;; Requests
 
@@ -308,12 +268,22 @@ interrupt does not take). Signals SERVER-GONE when the process ends."
         (make-condition 'maxima-question :text text :expressions (nreverse expressions)
                                          :datum datum)))))
 
+(defun signal-out-of-time (datum)
+  "Signal MAXIMA-BUDGET-EXCEEDED: the run's time is up, DATUM was being asked."
+  (error 'maxima-budget-exceeded
+         :quantity :time :limit (current-time-limit) :datum datum
+         :subject (and *budget* (budget-subject *budget*))
+         :detail "Maxima was answering a request"))
+
 (defun maxima-request (bridge form &key (cache t) datum)
   "Evaluate the Maxima FORM (built by the bridge's translation) in BRIDGE's Maxima and
 return Maxima's answer as a wire form. Identical requests under identical assumptions
 are answered from the cache when CACHE is true. DATUM (prefix algebra) names what the
-request is about in conditions. Signals MAXIMA-ERROR, MAXIMA-QUESTION (restart
-ASSUME-AND-RETRY), MAXIMA-TIMEOUT or MAXIMA-PROCESS-DIED."
+request is about in conditions. A request waits at most the configured timeout, and no
+longer than the time left in the budget of the run in progress (see REQUEST-TIMEOUT).
+Signals MAXIMA-ERROR, MAXIMA-QUESTION (restart ASSUME-AND-RETRY), MAXIMA-TIMEOUT,
+MAXIMA-BUDGET-EXCEEDED (the run's time is up, before or during the request),
+MAXIMA-OUTPUT-OVERFLOW or MAXIMA-PROCESS-DIED."
   (let* ((record (bridge-statistics-record bridge))
          (key (and cache (cons form (assumption-key bridge)))))
     (incf (statistics-calls record))
@@ -321,48 +291,53 @@ ASSUME-AND-RETRY), MAXIMA-TIMEOUT or MAXIMA-PROCESS-DIED."
       (when found
         (incf (statistics-cache-hits record))
         (return-from maxima-request answer)))
-    (multiple-value-bind (status data) (request-with-restart bridge form datum)
-      (ecase status
-        (:ok (let ((answer (first data))
-                   (cache (bridge-cache bridge)))
-               (when key
-                 (when (>= (hash-table-count cache) *cache-limit*) (clrhash cache))
-                 (setf (gethash key cache) answer))
-               answer))
-        (:timeout
-         (error 'maxima-timeout :seconds (bridge-timeout bridge) :datum datum
-                                :detail "the computation was interrupted"))
-        (:interrupted
-         (incf (statistics-errors record))
-         (error 'maxima-error :datum datum :message "interrupted"
-                              :detail "the computation was interrupted from outside"))
-        ((:error :lisp-error)
-         (incf (statistics-errors record))
-         (error 'maxima-error :datum datum :message (unmangle-text bridge (first data))))
-        (:rejected
-         (incf (statistics-errors record))
-         (error 'maxima-error :datum datum :message (first data)
-                              :detail "the server refused a request of the bridge"))
-        (:question
-         (incf (statistics-questions record))
-         (let ((condition (question-condition bridge data datum)))
-           (restart-case (error condition)
-             (assume-and-retry (facts)
-               :report "Assume some facts and ask again."
-               :interactive (lambda ()
-                              (format *query-io* "~&Facts (a list of relations): ")
-                              (finish-output *query-io*)
-                              (list (let ((*read-eval* nil)) (read *query-io*))))
-               (call-with-assumptions bridge facts
-                                      (lambda ()
-                                        (maxima-request bridge form :cache cache :datum datum)))))))))))
+    (multiple-value-bind (timeout budget-bound) (request-timeout bridge)
+      (when (and budget-bound (<= timeout 0)) (signal-out-of-time datum))
+      (multiple-value-bind (status data) (request-with-restart bridge form datum timeout)
+        (ecase status
+          (:ok (let ((answer (first data))
+                     (cache (bridge-cache bridge)))
+                 (when key
+                   (when (>= (hash-table-count cache) *cache-limit*) (clrhash cache))
+                   (setf (gethash key cache) answer))
+                 answer))
+          (:timeout
+           (if budget-bound
+               (signal-out-of-time datum)
+               (error 'maxima-timeout :seconds timeout :datum datum
+                                      :detail "the computation was interrupted")))
+          (:interrupted
+           (incf (statistics-errors record))
+           (error 'maxima-error :datum datum :message "interrupted"
+                                :detail "the computation was interrupted from outside"))
+          ((:error :lisp-error)
+           (incf (statistics-errors record))
+           (error 'maxima-error :datum datum :message (unmangle-text bridge (first data))))
+          (:rejected
+           (incf (statistics-errors record))
+           (error 'maxima-error :datum datum :message (first data)
+                                :detail "the server refused a request of the bridge"))
+          (:question
+           (incf (statistics-questions record))
+           (let ((condition (question-condition bridge data datum)))
+             (restart-case (error condition)
+               (assume-and-retry (facts)
+                 :report "Assume some facts and ask again."
+                 :interactive (lambda ()
+                                (format *query-io* "~&Facts (a list of relations): ")
+                                (finish-output *query-io*)
+                                (list (let ((*read-eval* nil)) (read *query-io*))))
+                 (call-with-assumptions bridge facts
+                                        (lambda ()
+                                          (maxima-request bridge form :cache cache :datum datum))))))))))))
 
-(defun request-with-restart (bridge form datum)
-  "Send FORM on a live process; when the process turns out to be gone, start a fresh one
-and try once more. Returns the reply's STATUS and DATA."
+(defun request-with-restart (bridge form datum timeout)
+  "Send FORM on a live process, to be answered within TIMEOUT seconds; when the process
+turns out to be gone, start a fresh one and try once more. Returns the reply's STATUS
+and DATA."
   (flet ((attempt ()
            (ensure-process bridge)
-           (round-trip bridge (list :eval form))))
+           (round-trip bridge (list :eval form) timeout)))
     (handler-case (attempt)
       (server-gone ()
         (discard-process bridge)

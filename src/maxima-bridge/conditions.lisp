@@ -108,3 +108,28 @@ the argument.")
              (format stream "Invalid argument to the Maxima bridge: ~A~@[~%  at fault: ~S~]"
                      (ames-error-detail condition)
                      (ames-error-datum condition)))))
+
+(define-condition maxima-budget-exceeded (budget-exceeded maxima-condition) ()
+  (:documentation "The time left in the budget of the scenario run in progress ran out
+before or while Maxima answered a request (see AMES.BASE:CALL-WITH-BUDGET). It is a
+BUDGET-EXCEEDED, and a MAXIMA-CONDITION so that the bridge's own clean-ups (leaving an
+assumption scope) treat it as the failure of a request. DATUM is the request's
+expression.")
+  (:report (lambda (condition stream)
+             (format-report stream "~@[The run of ~A: ~]the time limit of ~A s was exceeded while Maxima was answering a request~@[~%  at fault: ~S~]"
+                            (let ((subject (budget-exceeded-subject condition)))
+                              (and subject (not (ames-error-context condition))
+                                   (princ-to-string subject)))
+                            (budget-exceeded-limit condition)
+                            (ames-error-datum condition)))))
+
+(define-condition maxima-output-overflow (maxima-condition)
+  ((limit :initarg :limit :initform nil :reader maxima-output-overflow-limit
+          :documentation "The most characters a reply may have."))
+  (:documentation "Maxima printed a reply longer than the bridge's reply buffer holds
+(*REPLY-LIMIT* characters). The process was ended; the next request starts a new one.")
+  (:report (lambda (condition stream)
+             (format-report stream "Maxima's reply is longer than ~:D characters~@[ (~A)~]~@[~%  at fault: ~S~]"
+                            (maxima-output-overflow-limit condition)
+                            (ames-error-detail condition)
+                            (ames-error-datum condition)))))

@@ -9,7 +9,9 @@ only by this package's own translation (see translation.lisp and maxima-server.l
   (:export
    ;; the bridge object
    #:bridge #:make-bridge #:close-bridge #:bridge-timeout #:bridge-alive-p #:bridge-process-id
-   #:bridge-statistics #:reset-bridge-statistics #:clear-bridge-cache
+   #:bridge-statistics #:reset-bridge-statistics #:clear-bridge-cache #:reset-bridge
+   #:bridge-in-scope-p
+   #:*reply-limit*
    ;; operations
    #:simplify #:solve-equations #:decide #:holds-p #:equivalent-p #:sign-varies-p #:refuted-p
    #:call-with-assumptions #:with-assumptions #:current-assumptions
@@ -27,7 +29,8 @@ only by this package's own translation (see translation.lisp and maxima-server.l
    #:maxima-condition #:maxima-error #:maxima-error-message
    #:maxima-question #:maxima-question-text #:maxima-question-expressions
    #:maxima-timeout #:maxima-timeout-seconds
-   #:maxima-process-died
+   #:maxima-process-died #:maxima-budget-exceeded
+   #:maxima-output-overflow #:maxima-output-overflow-limit
    #:solve-failed #:inconsistent-assumptions #:inconsistent-assumptions-fact
    #:untranslatable-expression #:untranslatable-result
    #:numeric-evaluation-failed #:invalid-bridge-argument #:untranslatable-result-form

@@ -217,18 +217,19 @@ order."
              (enter validation (format nil "~(~A~) ~A" kind (symbol-name (second clause))) clause)
              (declare-name validation (second clause) kind))))
 
-(defun parse-scenario (form &key source)
+(defun parse-scenario (form &key source positions)
   "Validate FORM, the s-expression (scenario NAME [\"description\"] CLAUSE ...), and
 return the SCENARIO it describes. FORM may come from a scenario file or from the REPL
 in any package: the language's words are recognised by name. SOURCE (a string such as
-\"scenarios/x.lisp, line 3\") is recorded for messages.
+\"scenarios/x.lisp, line 3\") is recorded for messages; POSITIONS, the SOURCE-TEXT the
+form was read from (by the reader), lets messages name the line of the clause at fault.
 Signals a SCENARIO-ERROR naming the clause or body at fault: SCENARIO-SYNTAX-ERROR
 (and its UNKNOWN-CLAUSE-ERROR, DUPLICATE-CLAUSE-ERROR, MISSING-PROPERTY-ERROR),
 UNDECLARED-SYMBOL-ERROR, DUPLICATE-NAME-ERROR, SCENARIO-EXPRESSION-ERROR,
 SCENARIO-SHAPE-ERROR or CONTRADICTORY-ASSUMPTIONS-ERROR. Never evaluates anything of
 FORM. The checks that need Maxima or geometry are CHECK-SCENARIO-ASSUMPTIONS and
 CHECK-SCENARIO-GEOMETRY, which the caller runs when it has those layers."
-  (let ((validation (make-validation form source)))
+  (let ((validation (make-validation form source positions)))
     (enter validation "form" nil)
     (check-form-size validation form)
     (unless (and (consp form) (proper-list-p form) (named-p (first form) "SCENARIO"))
@@ -277,4 +278,4 @@ CHECK-SCENARIO-GEOMETRY, which the caller runs when it has those layers."
                                :restitutions (checked-restitutions
                                               validation (clauses 'ames-scenario:restitution))
                                :extensions (checked-extensions validation sorted bodies)
-                               :source source :form form)))))))))
+                               :source source :positions positions :form form)))))))))

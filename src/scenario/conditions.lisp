@@ -156,3 +156,15 @@ no such restart is active."
     (if restart
         (invoke-restart restart)
         (error 'control-error))))
+
+(define-condition parameter-values-error (scenario-error) ()
+  (:documentation "The numeric parameter values given to a simulation (the
+:PARAMETER-VALUES argument, or --set on the command line) are not an alist ((NAME .
+NUMBER) ...) of names and finite real numbers. DATUM is the argument or its offending
+entry. See CHECK-PARAMETER-VALUES.")
+  (:report (lambda (condition stream)
+             (format stream "Invalid parameter values~@[ for scenario ~A~]: ~A~%  at fault: ~A"
+                     (let ((name (scenario-error-scenario condition)))
+                       (and name (short-form-string name (form-package name))))
+                     (ames-error-detail condition)
+                     (short-form-string (ames-error-datum condition))))))

@@ -99,6 +99,9 @@ E) for a pair's impacts and (NIL NIL E) for every other impact (without one, E i
 src/scenario/extensions.lisp: :SPRINGS, :PULLEYS, :ROPES, :GRAVITATION).")
    (source :initarg :source :initform nil :reader scenario-source
            :documentation "Where the form came from (\"FILE, line N\"), or NIL.")
+   (positions :initarg :positions :initform nil :reader scenario-positions
+              :documentation "The SOURCE-TEXT the form was read from (where each of its
+clauses is), or NIL for a form given at the REPL.")
    (form :initarg :form :initform nil :reader scenario-form
          :documentation "The form the scenario was validated from."))
   (:documentation "A validated scenario: parameters, gravity, bodies, forces, when to
@@ -161,6 +164,23 @@ the pair's own, else the scenario's default, else 0 (a plastic impact)."
                         entries)
                (find nil entries :key #'first)
                '(nil nil 0)))))
+
+(defun scenario-body-source (scenario body-name)
+  "\"FILE, line N\" of the clause declaring the body named BODY-NAME in SCENARIO (by
+name), else the scenario's own SOURCE; NIL for a scenario given at the REPL."
+  (let* ((positions (scenario-positions scenario))
+         (clause (and positions
+                      (find-if (lambda (clause)
+                                 (and (consp clause) (symbolp (first clause))
+                                      (string= (symbol-name (first clause)) "BODY")
+                                      (consp (rest clause)) (symbolp (second clause))
+                                      (second clause)
+                                      (string= (symbol-name (second clause))
+                                               (symbol-name body-name))))
+                               (and (alexandria:proper-list-p (scenario-form scenario))
+                                    (scenario-form scenario)))))
+         (line (and clause (form-line positions clause))))
+    (if line (source-description positions line) (scenario-source scenario))))
 
 (defun scenario-p (object)
   "True when OBJECT is a validated SCENARIO."
@@ -233,6 +253,53 @@ NUMBER)."
         when (scenario-parameter-value parameter)
           collect (cons (scenario-parameter-name parameter)
                         (scenario-parameter-value parameter))))
+
+(defun check-parameter-values (values &optional scenario)
+  "VALUES, the numeric parameter values a simulation is given (its :PARAMETER-VALUES
+argument): an alist ((NAME . NUMBER) ...) whose NAMEs are symbols or strings, matched
+by name (case-insensitively) and each given once, and whose NUMBERs are finite reals.
+Returns VALUES; when SCENARIO is given, as an alist keyed by SCENARIO's own parameter
+symbols, in the order of VALUES.
+Signals PARAMETER-VALUES-ERROR naming VALUES, or the entry at fault, when it is not such
+an alist, and UNDECLARED-SYMBOL-ERROR naming a name that is not a parameter of
+SCENARIO."
+  (flet ((fail (datum control &rest arguments)
+           (error 'parameter-values-error
+                  :scenario (and scenario (scenario-name scenario))
+                  :location "the parameter values" :datum (or datum "NIL")
+                  :detail (apply #'format nil control arguments)))
+         (entry-name (entry) (string (car entry))))
+    (unless (alexandria:proper-list-p values)
+      (fail values "the parameter values must be a list ((NAME . NUMBER) ...), not ~A"
+            (short-form-string values)))
+    (loop for (entry . later) on values
+          do (unless (and (consp entry)
+                          (or (stringp (car entry)) (and (symbolp (car entry)) (car entry))))
+               (fail entry "each parameter value is a pair (NAME . NUMBER) with a symbol or ~
+                            string NAME, not ~A" (short-form-string entry)))
+             (unless (and (realp (cdr entry)) (finite-real-p (cdr entry)))
+               (fail entry "the value of ~A must be a finite real number, not ~A"
+                     (entry-name entry) (short-form-string (cdr entry))))
+             (when (find (entry-name entry) later
+                         :key (lambda (other) (and (consp other)
+                                                   (or (stringp (car other)) (symbolp (car other)))
+                                                   (string (car other))))
+                         :test #'equalp)
+               (fail entry "~A is given two values" (entry-name entry))))
+    (if (null scenario)
+        values
+        (mapcar (lambda (entry)
+                  (let ((parameter (find (entry-name entry) (scenario-parameters scenario)
+                                         :key (lambda (p) (symbol-name (scenario-parameter-name p)))
+                                         :test #'string-equal)))
+                    (unless parameter
+                      (error 'undeclared-symbol-error
+                             :scenario (scenario-name scenario) :location "the parameter values"
+                             :source (scenario-source scenario) :datum (car entry)
+                             :detail (format nil "~A is not a parameter of this scenario"
+                                             (entry-name entry))))
+                    (cons (scenario-parameter-name parameter) (cdr entry))))
+                values))))
 
 (defparameter +shape-kinds+
   '((ames-scenario:point . :point) (ames-scenario:circle . :circle)

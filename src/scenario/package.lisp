@@ -43,8 +43,9 @@ and Maxima (assumptions, overlaps).")
    #:contradictory-assumptions-error #:overlapping-bodies-error
    #:scenario-error-cause
    #:skip-scenario
+   #:parameter-values-error #:check-parameter-values
    ;; scenario objects and the validator
-   #:scenario #:parse-scenario #:scenario-p
+   #:scenario #:parse-scenario #:scenario-p #:scenario-positions #:scenario-body-source
    #:scenario-name #:scenario-description #:scenario-parameters #:scenario-gravity
    #:scenario-bodies #:scenario-forces #:scenario-states #:scenario-until
    #:scenario-branch
@@ -73,6 +74,7 @@ and Maxima (assumptions, overlaps).")
    #:constant-value
    ;; reading scenario files
    #:read-scenario-forms #:read-scenarios-from-string #:read-scenario-file
+   #:source-text #:source-text-p #:source-text-file #:form-line #:decode-utf-8
    ;; the checks through Maxima and the geometry
    #:check-scenario #:check-scenario-assumptions #:check-scenario-geometry
    #:missing-assumption-error #:missing-assumption-fact))

@@ -15,19 +15,19 @@
 ;;;; Floats without an exponent marker are read as double-floats.
 ;;;;
 ;;;; A file may hold several scenarios. Before reading, the text is split into its
-;;;; top-level forms by a scanner that knows strings, comments and escapes, and each is
-;;;; read and validated on its own, so that one bad scenario, even one that does not
-;;;; read, does not stop the others. Each failure is signalled as a SCENARIO-ERROR with
-;;;; the restart SKIP-SCENARIO active; with :ON-ERROR :COLLECT the readers skip on
-;;;; their own and return the conditions as a second value.
+;;;; top-level forms by a scanner that knows strings, comments and escapes (spans.lisp),
+;;;; and each is read and validated on its own, so that one bad scenario, even one that
+;;;; does not read or is never closed, does not stop the others. Each failure is
+;;;; signalled as a SCENARIO-ERROR with the restart SKIP-SCENARIO active; with :ON-ERROR
+;;;; :COLLECT the readers skip on their own and return the conditions as a second value.
+;;;;
+;;;; A file's bytes are decoded as UTF-8 with each bad byte standing for U+FFFD
+;;;; (positions.lisp): only the scenario that holds one outside a comment fails, with a
+;;;; SCENARIO-FILE-ERROR naming its line and column. The reader notes where it read every
+;;;; list and element (a SOURCE-TEXT), so that the validator's messages name the line of
+;;;; the clause at fault.
 
 (in-package #:ames.scenario)
-
-(defconstant +deepest-list+ 100
-  "The deepest nesting of lists the reader accepts.")
-
-(defconstant +longest-token+ 4096
-  "The longest symbol or number token the reader accepts, in characters.")
 
 (defconstant +largest-file+ (* 4 1024 1024)
   "The largest scenario text accepted, in characters.")
@@ -41,122 +41,16 @@ on syntax the scenario language does not have; turned into a SCENARIO-READ-ERROR
              (write-string (forbidden-syntax-detail condition) stream))))
 
 ;;; ------------------------------------------------------------------------------------
-;;; Splitting a text into its top-level forms
-
-(defstruct (span (:constructor make-span (start end &optional problem-position problem)))
-  "A top-level form's text: [START, END) in the text; PROBLEM, a string, when the
-scanner already knows the form cannot be read (at PROBLEM-POSITION)."
-  start end problem-position problem)
-
-(defun blank-char-p (char)
-  "True for the characters the reader takes as whitespace."
-  (member char '(#\Space #\Tab #\Newline #\Return #\Linefeed #\Page)))
-
-(defun separator-char-p (char)
-  "True for the characters that end a token (besides the forbidden prefixes)."
-  (or (blank-char-p char) (member char '(#\( #\) #\" #\;))))
-
-(defun top-level-spans (text)
-  "The SPANs of the top-level forms of TEXT, in order. Signals nothing: a form that
-is not closed runs to the end of TEXT, where reading it will fail."
-  (let ((n (length text))
-        (spans '())
-        (problem nil) (problem-position nil))
-    (labels ((note (position detail)
-               (unless problem (setf problem detail problem-position position)))
-             (at (i) (and (< i n) (char text i)))
-             (block-comment-end (i)
-               ;; I is just after "#|"; the index after the matching "|#", or NIL.
-               (loop with depth = 1
-                     while (< i n)
-                     do (cond ((and (eql (at i) #\|) (eql (at (1+ i)) #\#))
-                               (incf i 2)
-                               (when (zerop (decf depth)) (return i)))
-                              ((and (eql (at i) #\#) (eql (at (1+ i)) #\|))
-                               (incf i 2) (incf depth))
-                              (t (incf i)))
-                     finally (return nil)))
-             (skip-blank (i)
-               ;; Past whitespace and comments; stops at an unclosed #| comment.
-               (loop
-                 (let ((c (at i)))
-                   (cond ((null c) (return i))
-                         ((blank-char-p c) (incf i))
-                         ((eql c #\;)
-                          (setf i (or (position #\Newline text :start i) n)))
-                         ((and (eql c #\#) (eql (at (1+ i)) #\|))
-                          (let ((end (block-comment-end (+ i 2))))
-                            (if end (setf i end) (return i))))
-                         (t (return i))))))
-             (scan-string (i)
-               ;; I is just after the opening quote.
-               (loop (let ((c (at i)))
-                       (cond ((null c) (return n))
-                             ((eql c #\\) (incf i 2))
-                             ((eql c #\") (return (1+ i)))
-                             (t (incf i))))))
-             (scan-token (i)
-               (let ((start i))
-                 (loop (let ((c (at i)))
-                         (cond ((or (null c) (separator-char-p c) (member c '(#\' #\` #\,)))
-                                (return))
-                               ((eql c #\\) (incf i 2))
-                               ((eql c #\|)
-                                (incf i)
-                                (loop (let ((d (at i)))
-                                        (cond ((null d) (return))
-                                              ((eql d #\\) (incf i 2))
-                                              ((eql d #\|) (incf i) (return))
-                                              (t (incf i))))))
-                               (t (incf i)))))
-                 (setf i (min i n))
-                 (when (> (- i start) +longest-token+)
-                   (note start (format nil "a token longer than ~D characters" +longest-token+)))
-                 i))
-             (scan-form (i)
-               ;; I is at a non-blank character; the index after the form. Iterative,
-               ;; so that no nesting depth can exhaust the stack.
-               (let ((depth 0))
-                 (loop
-                   (setf i (skip-blank i))
-                   (let ((c (at i)))
-                     (flet ((done-if-top (j)
-                              (setf i j)
-                              (when (zerop depth) (return i))))
-                       (case c
-                         ((nil) (return n))
-                         (#\( (incf depth) (incf i))
-                         (#\) (incf i)
-                          (when (or (zerop depth) (zerop (decf depth))) (return i)))
-                         ((#\' #\` #\,)
-                          ;; a prefix: the next form belongs to it
-                          (setf i (if (and (eql c #\,) (eql (at (1+ i)) #\@)) (+ i 2) (1+ i))))
-                         (#\" (done-if-top (scan-string (1+ i))))
-                         (#\# (let ((j (1+ i)))
-                                (loop while (and (at j) (digit-char-p (at j))) do (incf j))
-                                (let ((d (at j)))
-                                  (cond ((null d) (return n))
-                                        ((eql d #\|) (return n)) ; an unclosed block comment
-                                        ((eql d #\\) (done-if-top (scan-token (min n (+ j 2)))))
-                                        ((eql d #\() (setf i j))
-                                        ;; #. #S #P #+ ...: the next form belongs to it
-                                        (t (setf i (1+ j)))))))
-                         (t (done-if-top (scan-token i))))))))))
-      (let ((i (skip-blank 0)))
-        (loop while (< i n)
-              do (setf problem nil problem-position nil)
-                 (let ((end (max (scan-form i) (1+ i))))
-                   (push (make-span i end problem-position problem) spans)
-                   (setf i (skip-blank end))))))
-    (nreverse spans)))
-
-;;; ------------------------------------------------------------------------------------
 ;;; The restricted readtable
 
-(defstruct (reading (:constructor make-reading (text)))
-  "The state of the restricted reader over one text: the span being read (its start
-in TEXT) and the current list depth."
-  text (offset 0) (depth 0))
+(defstruct (reading (:constructor make-reading (source)))
+  "The state of the restricted reader over one SOURCE-TEXT: the span being read (its
+start in the text) and the current list depth."
+  source (offset 0) (depth 0))
+
+(defun reading-text (reading)
+  "The text READING reads."
+  (source-text-text (reading-source reading)))
 
 (defun forbid (stream position control &rest arguments)
   "Signal FORBIDDEN-SYNTAX on STREAM at the text POSITION."
@@ -168,12 +62,33 @@ in TEXT) and the current list depth."
   (+ (reading-offset reading) (file-position stream)))
 
 (defun read-scenario-list (reading stream)
-  "The ( macro: a list, at most +DEEPEST-LIST+ deep, with no consing dot."
-  (when (> (incf (reading-depth reading)) +deepest-list+)
-    (forbid stream (1- (reading-position reading stream))
-            "lists are nested more than ~D deep" +deepest-list+))
-  (unwind-protect (read-delimited-list #\) stream t)
-    (decf (reading-depth reading))))
+  "The ( macro: a list, at most +DEEPEST-LIST+ deep, with no consing dot. The position
+of the list and of each of its elements is noted in READING's SOURCE-TEXT."
+  (let ((open (1- (reading-position reading stream))))
+    (when (> (incf (reading-depth reading)) +deepest-list+)
+      (forbid stream open "lists are nested more than ~D deep" +deepest-list+))
+    (unwind-protect
+         (let ((items '()) (positions '()))
+           (loop (let ((c (peek-char t stream t nil t)))
+                   (when (char= c #\)) (read-char stream) (return))
+                   (let* ((at (reading-position reading stream))
+                          (macro (get-macro-character c))
+                          ;; a macro character at the start of an element is called as
+                          ;; READ would call it; a comment gives no value
+                          (values (if macro
+                                      (progn (read-char stream)
+                                             (multiple-value-list (funcall macro stream c)))
+                                      (list (read stream t nil t)))))
+                     (when values
+                       (push (first values) items)
+                       (push at positions)))))
+           (let ((list (nreverse items)) (source (reading-source reading)))
+             (loop for cell on list
+                   for at in (nreverse positions)
+                   do (note-element-position source cell at))
+             (note-list-position source list open)
+             list))
+      (decf (reading-depth reading)))))
 
 (defun read-scenario-sharp (reading stream)
   "The # macro: a #| |# comment (nestable), or forbidden syntax."
@@ -244,25 +159,25 @@ and ; comments, with # ' ` , : and ( replaced by the restricted macros above."
 ;;; ------------------------------------------------------------------------------------
 ;;; Reading the spans
 
-(defun line-and-column (text position)
-  "The 1-based line and 0-based column of POSITION in TEXT."
-  (let ((position (max 0 (min position (length text)))))
-    (values (1+ (count #\Newline text :end position))
-            (- position (1+ (or (position #\Newline text :end position :from-end t) -1))))))
-
 (defun text-excerpt (text start)
-  "Up to 40 characters of TEXT from START, for a condition's datum."
+  "Up to 40 characters of TEXT from START to the end of its line, for a condition's
+datum."
   (let* ((start (max 0 (min start (length text))))
-         (end (min (length text) (+ start 40)))
-         (excerpt (substitute #\Space #\Newline (subseq text start end))))
-    (if (string= excerpt "") "end of text" excerpt)))
+         (end (min (length text) (+ start 40)
+                   (or (position #\Newline text :start start) (length text))))
+         (excerpt (subseq text start end)))
+    (cond ((string/= excerpt "") excerpt)
+          ((< start (length text)) "end of line")
+          (t "end of text"))))
 
-(defun span-read-error (text file position detail &optional (class 'scenario-read-error))
-  "A SCENARIO-READ-ERROR (not yet signalled) at POSITION of TEXT."
-  (multiple-value-bind (line column) (line-and-column text position)
-    (make-condition class :file file :line line :column column :position position
-                          :source (format nil "~@[~A, ~]line ~D" file line)
-                          :datum (text-excerpt text position) :detail detail)))
+(defun span-read-error (source position detail &optional (class 'scenario-read-error))
+  "A SCENARIO-READ-ERROR of CLASS (not yet signalled) at POSITION of SOURCE's text."
+  (multiple-value-bind (line column) (text-line-and-column source position)
+    (let ((file (source-text-file source)))
+      (make-condition class :file file :line line :column column :position position
+                            :source (source-description source line)
+                            :datum (text-excerpt (source-text-text source) position)
+                            :detail detail))))
 
 (defun reader-error-detail (condition)
   "What the Lisp reader's CONDITION says, without its stream description."
@@ -284,16 +199,18 @@ the Lisp reader's complaint about the token it just read should point."
     (loop while (and (> p start) (not (separator-char-p (char text (1- p))))) do (decf p))
     p))
 
-(defun read-span (reading readtable file span)
+(defun read-span (reading readtable span)
   "The form in SPAN of READING's text, read with READTABLE, or a SCENARIO-READ-ERROR
 condition object (not signalled) saying why it cannot be read."
-  (let* ((text (reading-text reading))
+  (let* ((source (reading-source reading))
+         (text (source-text-text source))
          (start (span-start span))
          (stream (make-string-input-stream text start (span-end span))))
     (setf (reading-offset reading) start
           (reading-depth reading) 0)
     (if (span-problem span)
-        (span-read-error text file (span-problem-position span) (span-problem span))
+        (span-read-error source (span-problem-position span) (span-problem span)
+                         (span-problem-class span))
         (handler-case
             (with-standard-io-syntax
               (let ((*readtable* readtable)
@@ -303,30 +220,31 @@ condition object (not signalled) saying why it cannot be read."
                 (let ((form (read stream t nil nil)))
                   (if (eq (read stream nil stream nil) stream)
                       form
-                      (span-read-error text file start
+                      (span-read-error source start
                                        "more than one form where one was expected")))))
           (forbidden-syntax (condition)
-            (span-read-error text file (or (forbidden-syntax-position condition)
-                                           (reading-position reading stream))
+            (span-read-error source (or (forbidden-syntax-position condition)
+                                        (reading-position reading stream))
                              (reader-error-detail condition)))
           (stream-error (condition)
-            (span-read-error text file
+            (span-read-error source
                              (if (typep condition 'end-of-file)
                                  start
                                  (token-start text start (1- (reading-position reading stream))))
                              (reader-error-detail condition)))))))
 
-(defun read-scenario-items (text file)
-  "Each top-level form of TEXT as (:FORM FORM SOURCE) or (:ERROR CONDITION), in order."
-  (let* ((reading (make-reading text))
+(defun read-scenario-items (source)
+  "Each top-level form of the SOURCE-TEXT SOURCE as (:FORM FORM DESCRIPTION) or
+(:ERROR CONDITION), in order; DESCRIPTION is \"FILE, line N\" of the form's start."
+  (let* ((reading (make-reading source))
          (readtable (make-scenario-readtable reading)))
-    (loop for span in (top-level-spans text)
-          collect (let ((form (read-span reading readtable file span)))
+    (loop for span in (top-level-spans (source-text-text source) source)
+          collect (let ((form (read-span reading readtable span)))
                     (if (typep form 'scenario-read-error)
                         (list :error form)
                         (list :form form
-                              (format nil "~@[~A, ~]line ~D" file
-                                      (line-and-column text (span-start span)))))))))
+                              (source-description
+                               source (text-line-and-column source (span-start span)))))))))
 
 (defun call-with-skip-restart (on-error thunk)
   "Call THUNK with the restart SKIP-SCENARIO active. Returns THUNK's value, or, when
@@ -362,10 +280,10 @@ CALL-WITH-SKIP-RESTART with ON-ERROR. Returns (values RESULTS CONDITIONS)."
             (push result results))))
     (values (nreverse results) (nreverse conditions))))
 
-(defun check-text-size (text file)
-  "Signal SCENARIO-READ-ERROR when TEXT is longer than +LARGEST-FILE+."
-  (when (> (length text) +largest-file+)
-    (error (span-read-error "" file 0
+(defun check-text-size (source)
+  "Signal SCENARIO-READ-ERROR when the text of SOURCE is longer than +LARGEST-FILE+."
+  (when (> (length (source-text-text source)) +largest-file+)
+    (error (span-read-error (make-source-text "" :file (source-text-file source)) 0
                             (format nil "the text is longer than ~D characters"
                                     +largest-file+)))))
 
@@ -375,9 +293,17 @@ file's header), without validating them. FILE names the source in messages.
 Returns (values FORMS CONDITIONS). Each form that cannot be read signals a
 SCENARIO-READ-ERROR with the restart SKIP-SCENARIO; with ON-ERROR :COLLECT they are
 skipped at once and returned as CONDITIONS."
-  (check-text-size string file)
-  (call-per-scenario (read-scenario-items string file) on-error
-                     (lambda (form source) (declare (ignore source)) form)))
+  (let ((source (make-source-text string :file file)))
+    (check-text-size source)
+    (call-per-scenario (read-scenario-items source) on-error
+                       (lambda (form description) (declare (ignore description)) form))))
+
+(defun read-scenarios-from-source (source on-error)
+  "The SCENARIOs of the SOURCE-TEXT SOURCE, as READ-SCENARIOS-FROM-STRING returns them."
+  (check-text-size source)
+  (call-per-scenario (read-scenario-items source) on-error
+                     (lambda (form description)
+                       (parse-scenario form :source description :positions source))))
 
 (defun read-scenarios-from-string (string &key file (on-error :signal))
   "The SCENARIOs of STRING, each read by the restricted reader and validated by
@@ -385,39 +311,39 @@ PARSE-SCENARIO. FILE names the source in messages. Returns (values SCENARIOS
 CONDITIONS). Each scenario that cannot be read or is invalid signals its
 SCENARIO-ERROR with the restart SKIP-SCENARIO active (invoke it with the function
 SKIP-SCENARIO to go on with the next); with ON-ERROR :COLLECT, bad scenarios are
-skipped at once and their conditions returned as CONDITIONS."
-  (check-text-size string file)
-  (call-per-scenario (read-scenario-items string file) on-error
-                     (lambda (form source) (parse-scenario form :source source))))
+skipped at once and their conditions returned as CONDITIONS. Messages name the line
+(and for reading faults the column) of the fault."
+  (read-scenarios-from-source (make-source-text string :file file) on-error))
 
-(defun file-text (pathname)
-  "The text of the file PATHNAME, decoded as UTF-8. Signals SCENARIO-FILE-ERROR when
-it cannot be opened or decoded, or is longer than +LARGEST-FILE+ characters."
+(defun file-source (pathname)
+  "The SOURCE-TEXT of the file PATHNAME: its bytes decoded as UTF-8, each byte that is
+not UTF-8 noted (see DECODE-UTF-8). Signals SCENARIO-FILE-ERROR when the file cannot be
+opened or holds more bytes than 4 * +LARGEST-FILE+."
   (let ((name (enough-namestring pathname)))
     (flet ((fail (detail)
              (error 'scenario-file-error :file name :datum name :detail detail
                                          :source name)))
       (handler-case
-          (with-open-file (stream pathname :external-format :utf-8 :element-type 'character)
+          (with-open-file (stream pathname :element-type '(unsigned-byte 8))
             (when (> (file-length stream) (* 4 +largest-file+))
               (fail (format nil "the file is longer than ~D characters" +largest-file+)))
-            (let* ((buffer (make-string (file-length stream)))
-                   (end (read-sequence buffer stream)))
-              (subseq buffer 0 end)))
+            (let* ((octets (make-array (file-length stream) :element-type '(unsigned-byte 8)))
+                   (end (read-sequence octets stream)))
+              (multiple-value-bind (text bad-bytes) (decode-utf-8 octets :end end)
+                (make-source-text text :file name :bad-bytes bad-bytes))))
         (file-error (condition)
           (fail (format nil "cannot open the file: ~A" (reader-error-detail condition))))
         (stream-error (condition)
-          (fail (format nil "the file is not UTF-8 text: ~A"
-                        (reader-error-detail condition))))))))
+          (fail (format nil "cannot read the file: ~A" (reader-error-detail condition))))))))
 
 (defun read-scenario-file (pathname &key (on-error :signal))
   "The SCENARIOs of the scenario file PATHNAME, read as data (never loaded) and
 validated, as READ-SCENARIOS-FROM-STRING does. Returns (values SCENARIOS CONDITIONS).
-A file that cannot be read signals SCENARIO-FILE-ERROR (with SKIP-SCENARIO active;
-with ON-ERROR :COLLECT it is returned among CONDITIONS)."
-  (multiple-value-bind (text condition)
-      (call-with-skip-restart on-error (lambda () (file-text pathname)))
+A byte that is not UTF-8 spoils only the scenario that holds it (outside a comment),
+with a SCENARIO-FILE-ERROR. A file that cannot be read signals SCENARIO-FILE-ERROR
+(with SKIP-SCENARIO active; with ON-ERROR :COLLECT it is returned among CONDITIONS)."
+  (multiple-value-bind (source condition)
+      (call-with-skip-restart on-error (lambda () (file-source pathname)))
     (if condition
         (values '() (list condition))
-        (read-scenarios-from-string text :file (enough-namestring pathname)
-                                         :on-error on-error))))
+        (read-scenarios-from-source source on-error))))

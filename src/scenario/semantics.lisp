@@ -36,10 +36,42 @@ forms printed short and in the scenario's package."
           (*package* (form-package (scenario-name scenario))))
       (apply #'format nil control arguments))))
 
+(defun location-body (scenario location)
+  "The body of SCENARIO that LOCATION (\"body X\" or \"bodies X and Y\") names first, or
+NIL."
+  (find-if (lambda (body)
+             (let ((name (symbol-name (scenario-body-name body))))
+               (or (equal location (format nil "body ~A" name))
+                   (eql 0 (search (format nil "bodies ~A and " name) location)))))
+           (scenario-bodies scenario)))
+
+(defun location-source (scenario location)
+  "\"FILE, line N\" for LOCATION in SCENARIO: the clause of the body that LOCATION
+names first, else the scenario's SOURCE."
+  (let ((body (location-body scenario location)))
+    (if body
+        (scenario-body-source scenario (scenario-body-name body))
+        (scenario-source scenario))))
+
+(defun location-context (scenario location)
+  "The ERROR-CONTEXT of LOCATION (a string such as \"body X\") in SCENARIO: its file,
+the line of the body's clause (else the scenario's), the scenario's name."
+  (let* ((positions (scenario-positions scenario))
+         (body (location-body scenario location))
+         (form (scenario-form scenario))
+         (clause (and body (alexandria:proper-list-p form)
+                      (find-if (lambda (clause) (and (consp clause) (consp (cdr clause))
+                                                     (eq (second clause) (scenario-body-name body))))
+                               form))))
+    (make-error-context :file (and positions (source-text-file positions))
+                        :line (and positions (or (and clause (form-line positions clause))
+                                                 (form-line positions form)))
+                        :scenario (scenario-name scenario) :location location)))
+
 (defun semantic-reject (scenario class location datum control &rest arguments)
   "Signal a scenario error of CLASS about SCENARIO at LOCATION (a string)."
   (error class :scenario (scenario-name scenario) :location location
-               :source (scenario-source scenario) :datum datum
+               :source (location-source scenario location) :datum datum
                :detail (apply #'scenario-detail scenario control arguments)))
 
 (defun polygon-signed-area (polygon)
@@ -140,7 +172,7 @@ force; signal for the first that is false or undecided."
              (:unknown
               (error 'missing-assumption-error
                      :scenario (scenario-name scenario) :location location
-                     :source (scenario-source scenario) :datum relation :fact relation
+                     :source (location-source scenario location) :datum relation :fact relation
                      :detail (scenario-detail scenario "the assumptions do not show that ~A; ~
                                                         declare what makes ~S hold"
                                               what relation))))))
@@ -160,15 +192,27 @@ do not decide, and the bridge's own conditions when Maxima fails."
 
 (defun call-wrapping-geometry-conditions (scenario location thunk)
   "Call THUNK; turn the geometry layer's INVALID-SHAPE, UNSUPPORTED-SHAPE-PAIR and
-UNDECIDABLE-GEOMETRIC-FACT into SCENARIO-ERRORs of SCENARIO at LOCATION."
+UNDECIDABLE-GEOMETRIC-FACT into SCENARIO-ERRORs of SCENARIO at LOCATION; give other
+AMES-ERRORs leaving THUNK (a BUDGET-EXCEEDED, a Maxima failure) the context of LOCATION."
   (flet ((wrap (class condition datum &rest initargs)
            (apply #'error class
                   :scenario (scenario-name scenario) :location location
-                  :source (scenario-source scenario) :cause condition
+                  :source (location-source scenario location) :cause condition
                   :datum (or datum location)
                   :detail (ames-error-detail condition)
                   initargs)))
-    (handler-case (funcall thunk)
+    (handler-case
+        ;; other conditions (the budget's, Maxima's) leave as they are, with the place
+        (handler-bind ((ames-error
+                         (lambda (condition)
+                           (unless (or (ames-error-context condition)
+                                       (typep condition '(or scenario-error
+                                                          ames.geometry:invalid-shape
+                                                          ames.geometry:unsupported-shape-pair
+                                                          ames.geometry:undecidable-geometric-fact)))
+                             (setf (ames-error-context condition)
+                                   (location-context scenario location))))))
+          (funcall thunk))
       (ames.geometry:invalid-shape (condition)
         (wrap 'scenario-shape-error condition (ames-error-datum condition)))
       (ames.geometry:unsupported-shape-pair (condition)
@@ -177,7 +221,7 @@ UNDECIDABLE-GEOMETRIC-FACT into SCENARIO-ERRORs of SCENARIO at LOCATION."
         (let ((fact (ames.geometry:undecidable-fact condition)))
           (error 'missing-assumption-error
                  :scenario (scenario-name scenario) :location location
-                 :source (scenario-source scenario) :cause condition
+                 :source (location-source scenario location) :cause condition
                  :datum (or fact location) :fact fact
                  :detail (scenario-detail scenario "the geometry needs to know whether ~S, ~
                                                     and ~A"

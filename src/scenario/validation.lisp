@@ -6,23 +6,40 @@
 ;;; ------------------------------------------------------------------------------------
 ;;; The validation in progress: where we are, for the conditions, and the names declared
 
-(defstruct (validation (:constructor make-validation (form source)))
+(defstruct (validation (:constructor make-validation (form source &optional positions)))
   "What the validator knows while it checks one form."
   (form nil)
   (source nil)
+  (positions nil)            ; the SOURCE-TEXT the form was read from, or NIL
   (name nil)                 ; the scenario's name, once known
   (location nil)             ; "body WEDGE", "clause GRAVITY"...
   (clause nil)               ; the clause being checked
   (names (make-hash-table :test 'equal))) ; symbol name -> (KIND . SYMBOL)
 
+(defun fault-source (validation datum)
+  "\"FILE, line N\" for DATUM at VALIDATION's current place: the line where DATUM was
+read within the clause, else the clause's, else where DATUM appears in the form, else
+the scenario's SOURCE."
+  (let* ((positions (validation-positions validation))
+         (clause (validation-clause validation))
+         (line (and positions
+                    (or (and datum (form-line positions datum clause))
+                        (and clause (form-line positions clause))
+                        (and datum (form-line positions datum (validation-form validation)))))))
+    (if line
+        (source-description positions line)
+        (validation-source validation))))
+
 (defun reject-because (validation class cause datum control &rest arguments)
   "Signal a scenario error of CLASS at VALIDATION's current place, wrapping CAUSE (or
-NIL), with DATUM at fault (the clause, or the whole form, when DATUM is NIL)."
+NIL), with DATUM at fault (the clause, or the whole form, when DATUM is NIL). The
+condition's SOURCE names the line of DATUM, or of its clause, when the form was read
+from a text."
   (error class
          :scenario (validation-name validation)
          :location (validation-location validation)
          :clause (validation-clause validation)
-         :source (validation-source validation)
+         :source (fault-source validation datum)
          :cause cause
          :datum (or datum (validation-clause validation) (validation-form validation)
                     "NIL (an empty form)")

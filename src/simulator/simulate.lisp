@@ -129,7 +129,8 @@ more changes, an impact, or LIMIT states. When the assumptions leave a state amb
 but the history's parameter values decide the missing fact, that fact is assumed (and
 noted in the history) for the rest of the run."
   (loop for index from index
-        do (when (>= index limit)
+        do (check-budget index)
+           (when (>= index limit)
              (setf (history-outcome history) :state-limit)
              (return))
            (multiple-value-bind (state fired)
@@ -166,7 +167,7 @@ noted in the history) for the rest of the run."
                    (t (enter-next-state run state fired :check-incremental check-incremental))))))
 
 (defun simulate (scenario &key (bridge (current-bridge)) parameter-values
-                            (check-incremental t))
+                            (check-incremental t) (limits *limits*))
   "Simulate SCENARIO (a SCENARIO object, or a scenario form as in a file) and return its
 SIMULATION-HISTORY. BRIDGE is the Maxima bridge (by default the current one).
 PARAMETER-VALUES, an alist (PARAMETER-NAME . NUMBER) matched by name, adds numeric
@@ -175,8 +176,22 @@ compares every incrementally updated model with a rebuild from scratch.
 Signals SCENARIO-ERROR for a defective scenario, AMBIGUOUS-TRANSITION (restart
 STOP-SIMULATION, which returns the history so far) when the assumptions do not decide
 which contacts hold or which event ends a state, UNSOLVABLE-MODEL and
-UNSUPPORTED-SITUATION, and the Maxima bridge's conditions."
-  (let ((scenario (if (scenario-p scenario) scenario (parse-scenario scenario))))
+UNSUPPORTED-SITUATION, and the Maxima bridge's conditions.
+The run has a budget made from LIMITS (see AMES.BASE:CALL-WITH-BUDGET): going over its
+time or sizes signals BUDGET-EXCEEDED. PARAMETER-VALUES are checked first
+(PARAMETER-VALUES-ERROR). Outside an assumption scope the bridge is reset first (fresh
+names and cache), so that what a run prints does not depend on what ran before it."
+  (let* ((scenario (if (scenario-p scenario) scenario (parse-scenario scenario)))
+         (parameter-values (check-parameter-values parameter-values scenario)))
+    (unless (ames.maxima:bridge-in-scope-p bridge)
+      (ames.maxima:reset-bridge bridge))
+    (call-with-budget
+     (lambda () (simulate-within-budget scenario bridge parameter-values check-incremental))
+     :limits limits :subject (scenario-name scenario))))
+
+(defun simulate-within-budget (scenario bridge parameter-values check-incremental)
+  "SIMULATE's run of the validated SCENARIO, once its budget is set."
+  (progn
     (handler-bind ((arithmetic-error
                      ;; numbers beyond floating point in the geometry's or our own arithmetic
                      (lambda (condition)
@@ -206,7 +221,7 @@ the scenario's assumptions in BRIDGE). PARAMETER-VALUES as SIMULATE takes them."
                                     :contacts contacts :locus-kinds kinds
                                     :alternatives (corner-alternatives bridge contacts)
                                     :positions positions :velocities velocities
-                                    :values (resolve-parameter-values scenario parameter-values))))
+                                    :values (check-parameter-values parameter-values scenario))))
            (situation (ames.engine:make-situation (situation-entities run) :data run)))
       (handler-bind ((ames.engine:undecided-relation #'undecided-to-ambiguity))
         (setf (run-model run)
@@ -221,7 +236,7 @@ besides the scenario's own assumptions (a branch's)."
   (ames.maxima:with-assumptions (bridge (append (scenario-assumption-relations scenario) extra-facts))
     (let ((history (make-instance 'simulation-history
                                   :scenario scenario
-                                  :parameter-values (resolve-parameter-values scenario parameter-values)))
+                                  :parameter-values (check-parameter-values parameter-values scenario)))
           (limit (or (scenario-states scenario) *default-state-limit*))
           (run nil))
       (restart-case
@@ -250,21 +265,6 @@ besides the scenario's own assumptions (a branch's)."
       history)))
 
 ;;; Numbers beside the formulas
-
-(defun resolve-parameter-values (scenario settings)
-  "The alist (PARAMETER . NUMBER) for SETTINGS, an alist whose keys are parameter
-symbols or names (strings), matched by name. Signals SCENARIO-ERROR naming a setting
-that is not a parameter of SCENARIO."
-  (mapcar (lambda (setting)
-            (let ((parameter (find (string (car setting)) (scenario-parameters scenario)
-                                   :key (lambda (p) (symbol-name (scenario-parameter-name p)))
-                                   :test #'string-equal)))
-              (unless parameter
-                (error 'undeclared-symbol-error
-                       :scenario (scenario-name scenario) :datum (car setting)
-                       :detail (format nil "~A is not a parameter of this scenario" (car setting))))
-              (cons (scenario-parameter-name parameter) (cdr setting))))
-          settings))
 
 (defun numeric-duration (bridge state values)
   "STATE's duration as a number under VALUES, or NIL."

@@ -1,0 +1,222 @@
+;;;; src/scenario/spans.lisp -- splitting a scenario text into its top-level forms, and recovering after a fault.
+;;;;
+;;;; Before anything is read, a scanner that knows lists, strings, |escaped| names, \
+;;;; escapes and comments (; and nestable #| |#) splits the text into SPANs, one per
+;;;; top-level form, so that each scenario is read and validated on its own. The scanner
+;;;; never fails; what it already knows to be wrong becomes the span's PROBLEM, at the
+;;;; position of the fault:
+;;;;   - a ( that is not closed (the innermost one open), a string or a #| comment that is
+;;;;     not closed (its first character);
+;;;;   - a byte that was not UTF-8, outside a comment (a bad byte in a comment is harmless);
+;;;;   - a token longer than +LONGEST-TOKEN+, lists nested deeper than +DEEPEST-LIST+.
+;;;; Recovery: a line whose first non-blank characters are "(scenario" followed by a
+;;;; separator starts a scenario. A form (or string, or |name|) still open when the scan
+;;;; reaches such a line is cut there, as not closed, and the next span starts on that line,
+;;;; so that a missing ) or " spoils one scenario only. (A closed #| |# comment may hold
+;;;; such lines: commenting out a scenario is fine. A string that holds one is taken as
+;;;; not closed.)
+
+(in-package #:ames.scenario)
+
+(defconstant +longest-token+ 4096
+  "The longest symbol or number token the reader accepts, in characters.")
+
+(defconstant +deepest-list+ 100
+  "The deepest nesting of lists the reader accepts.")
+
+(defstruct (span (:constructor make-span (start end &optional problem-position problem
+                                                  (problem-class 'scenario-read-error))))
+  "A top-level form's text: [START, END) in the text; PROBLEM, a string, when the
+scanner already knows the form cannot be read (at PROBLEM-POSITION; the condition to
+signal is of PROBLEM-CLASS)."
+  start end problem-position problem problem-class)
+
+(defun blank-char-p (char)
+  "True for the characters the reader takes as whitespace."
+  (member char '(#\Space #\Tab #\Newline #\Return #\Linefeed #\Page)))
+
+(defun separator-char-p (char)
+  "True for the characters that end a token (besides the forbidden prefixes)."
+  (or (blank-char-p char) (member char '(#\( #\) #\" #\;))))
+
+(defun scenario-line-starts (text)
+  "The positions, ascending in a vector, of each ( that begins a line of TEXT (after
+blanks) as \"(scenario\" followed by a separator or the end of TEXT."
+  (let ((n (length text)) (starts (make-array 8 :adjustable t :fill-pointer 0)))
+    (loop with line-start = 0
+          while (< line-start n)
+          do (let ((i line-start))
+               (loop while (and (< i n) (member (char text i) '(#\Space #\Tab #\Page #\Return)))
+                     do (incf i))
+               (let ((after (+ i (length "(scenario"))))
+                 (when (and (<= after n)
+                            (string-equal "(scenario" text :start2 i :end2 after)
+                            (or (= after n) (separator-char-p (char text after))))
+                   (vector-push-extend i starts)))
+               (setf line-start (let ((newline (position #\Newline text :start i)))
+                                  (if newline (1+ newline) n)))))
+    starts))
+
+(defun first-at-or-after (positions x)
+  "The first element of the ascending vector POSITIONS that is >= X, or NIL."
+  (let ((low 0) (high (length positions)))
+    (loop while (< low high)
+          do (let ((middle (floor (+ low high) 2)))
+               (if (< (aref positions middle) x) (setf low (1+ middle)) (setf high middle))))
+    (and (< low (length positions)) (aref positions low))))
+
+(defun note-bad-bytes (spans comments bad-bytes source)
+  "Make each byte of BAD-BYTES (a vector of (POSITION . BYTE), ascending) that lies
+outside the COMMENTS (a list of (START . END), ascending) the problem of the span of
+SPANS (ascending) that holds it, unless that span has an earlier problem. One walk
+through the three sequences."
+  (loop for (position . byte) across bad-bytes
+        do (loop while (and comments (<= (cdr (first comments)) position)) do (pop comments))
+           (loop while (and spans (<= (span-end (first spans)) position)) do (pop spans))
+           (let ((span (first spans)))
+             (unless (or (and comments (<= (car (first comments)) position))
+                         (null span) (< position (span-start span))
+                         (and (span-problem span) (< (span-problem-position span) position)))
+               (multiple-value-bind (line column) (text-line-and-column source position)
+                 (setf (span-problem span)
+                       (format nil "the byte #x~2,'0X at line ~D, column ~D is not UTF-8 text"
+                               byte line column)
+                       (span-problem-position span) position
+                       (span-problem-class span) 'scenario-file-error))))))
+
+(defun top-level-spans (text &optional source)
+  "The SPANs of the top-level forms of TEXT, in order (see this file's header). SOURCE,
+the SOURCE-TEXT of TEXT when there is one, gives the lines for messages and the bytes
+that were not UTF-8. Signals nothing."
+  (let* ((n (length text))
+         (resyncs (scenario-line-starts text))
+         (spans '()) (comments '())
+         (problem nil) (problem-position nil))
+    (labels ((note (position detail)
+               (unless problem (setf problem detail problem-position position)))
+             (line-of (position)
+               (if source
+                   (values (text-line-and-column source position))
+                   (1+ (count #\Newline text :end position))))
+             (at (i) (and (< i n) (char text i)))
+             (block-comment-end (i)
+               ;; I is just after "#|"; the index after the matching "|#", or NIL.
+               (loop with depth = 1
+                     while (< i n)
+                     do (cond ((and (eql (at i) #\|) (eql (at (1+ i)) #\#))
+                               (incf i 2)
+                               (when (zerop (decf depth)) (return i)))
+                              ((and (eql (at i) #\#) (eql (at (1+ i)) #\|))
+                               (incf i 2) (incf depth))
+                              (t (incf i)))
+                     finally (return nil)))
+             (skip-blank (i)
+               ;; Past whitespace and comments; stops at an unclosed #| comment.
+               (loop
+                 (let ((c (at i)))
+                   (cond ((null c) (return i))
+                         ((blank-char-p c) (incf i))
+                         ((eql c #\;)
+                          (let ((end (or (position #\Newline text :start i) n)))
+                            (push (cons i end) comments)
+                            (setf i end)))
+                         ((and (eql c #\#) (eql (at (1+ i)) #\|))
+                          (let ((end (block-comment-end (+ i 2))))
+                            (if end
+                                (progn (push (cons i end) comments) (setf i end))
+                                (return i))))
+                         (t (return i))))))
+             (scan-string (i)
+               ;; I is just after the opening quote; the index after the closing one, or
+               ;; NIL when the string is not closed.
+               (loop (let ((c (at i)))
+                       (cond ((null c) (return nil))
+                             ((eql c #\\) (incf i 2))
+                             ((eql c #\") (return (1+ i)))
+                             (t (incf i))))))
+             (scan-token (i)
+               (let ((start i))
+                 (loop (let ((c (at i)))
+                         (cond ((or (null c) (separator-char-p c) (member c '(#\' #\` #\,)))
+                                (return))
+                               ((eql c #\\) (incf i 2))
+                               ((eql c #\|)
+                                (incf i)
+                                (loop (let ((d (at i)))
+                                        (cond ((null d) (return))
+                                              ((eql d #\\) (incf i 2))
+                                              ((eql d #\|) (incf i) (return))
+                                              (t (incf i))))))
+                               (t (incf i)))))
+                 (setf i (min i n))
+                 (when (> (- i start) +longest-token+)
+                   (note start (format nil "a token longer than ~D characters" +longest-token+)))
+                 i))
+             (scan-form (start)
+               ;; START is at a non-blank character; the index after the form, or where the
+               ;; form is cut. Iterative, so that no nesting depth can exhaust the stack.
+               (let ((depth 0) (opens '()) (i start)
+                     (limit (or (first-at-or-after resyncs (1+ start)) n)))
+                 (flet ((cut (position what)
+                          (note position
+                                (if (< limit n)
+                                    (format nil "~A is not closed before the (scenario of line ~D, ~
+                                                 where reading goes on" what (line-of limit))
+                                    (format nil "~A is not closed" what)))
+                          (return-from scan-form limit)))
+                   (loop
+                     (setf i (skip-blank i))
+                     (when (> i limit)
+                       ;; a closed comment held the (scenario line: it does not count
+                       (setf limit (or (first-at-or-after resyncs i) n)))
+                     ;; past the start and not done: inside a list, or after a prefix
+                     (when (and (> i start) (>= i limit))
+                       (if opens
+                           (cut (first opens) "this (")
+                           (cut start "the form that starts here")))
+                     (let ((c (at i)))
+                       (flet ((done-if-top (j)
+                                (setf i j)
+                                (when (zerop depth) (return i))))
+                         (case c
+                           ((nil) (return n))
+                           (#\( (push i opens)
+                            (when (= (incf depth) (1+ +deepest-list+))
+                              (note i (format nil "lists are nested more than ~D deep"
+                                              +deepest-list+)))
+                            (incf i))
+                           (#\) (incf i)
+                            (when (zerop depth) (return i))
+                            (pop opens)
+                            (when (zerop (decf depth)) (return i)))
+                           ((#\' #\` #\,)
+                            ;; a prefix: the next form belongs to it
+                            (setf i (if (and (eql c #\,) (eql (at (1+ i)) #\@)) (+ i 2) (1+ i))))
+                           (#\" (let ((j (scan-string (1+ i))))
+                                  (when (or (null j) (> j limit))
+                                    (cut i "the string that starts here"))
+                                  (done-if-top j)))
+                           (#\# (let ((j (1+ i)))
+                                  (loop while (and (at j) (digit-char-p (at j))) do (incf j))
+                                  (let ((d (at j)))
+                                    (cond ((null d) (return n))
+                                          ;; skip-blank stopped here: a #| never closed
+                                          ((eql d #\|) (cut i "the #| comment that starts here"))
+                                          ((eql d #\\) (done-if-top (scan-token (min n (+ j 2)))))
+                                          ((eql d #\() (setf i j))
+                                          ;; #. #S #P #+ ...: the next form belongs to it
+                                          (t (setf i (1+ j)))))))
+                           (t (let ((j (scan-token i)))
+                                (when (> j limit)
+                                  (cut i "the | (a name between bars) that starts this token"))
+                                (done-if-top j)))))))))))
+      (let ((i (skip-blank 0)))
+        (loop while (< i n)
+              do (setf problem nil problem-position nil)
+                 (let ((end (max (scan-form i) (1+ i))))
+                   (push (make-span i end problem-position problem) spans)
+                   (setf i (skip-blank end))))))
+    (setf spans (nreverse spans))
+    (when (and source (plusp (length (source-text-bad-bytes source))))
+      (note-bad-bytes spans (nreverse comments) (source-text-bad-bytes source) source))
+    spans))
