@@ -18,7 +18,8 @@
 (defparameter +arithmetic-operators+
   '((+ 1 nil) (- 1 nil) (* 1 nil) (/ 1 nil) (expt 2 2)
     (sqrt 1 1) (exp 1 1) (log 1 1)
-    (sin 1 1) (cos 1 1) (tan 1 1) (asin 1 1) (acos 1 1) (atan 1 2))
+    (sin 1 1) (cos 1 1) (tan 1 1) (asin 1 1) (acos 1 1) (atan 1 2)
+    (abs 1 1))
   "Each arithmetic operator with its least and greatest number of arguments (NIL:
 no limit).")
 

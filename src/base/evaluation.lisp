@@ -104,6 +104,7 @@ overflow."
       (sqrt (cond ((minusp (argument)) nil)
                   ((rational-root (argument) 2))
                   (t (approximate #'sqrt (argument)))))
+      (abs (abs (argument)))
       (exp (approximate #'exp (argument)))
       (log (and (plusp (argument)) (approximate #'log (argument))))
       (sin (approximate #'sin (argument)))

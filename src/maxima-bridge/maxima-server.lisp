@@ -52,7 +52,7 @@
 (defvar *ames-allowed-heads*
   '(;; the algebra
     mplus mtimes mexpt mquotient mminus rat mlist
-    %sin %cos %tan %asin %acos %atan %sqrt %log $atan2 %derivative
+    %sin %cos %tan %asin %acos %atan %sqrt %log mabs $atan2 %derivative
     mequal mnotequal mlessp mgreaterp mleqp mgeqp mand mor mnot $equal $notequal
     ;; operations the bridge uses
     $ratsimp $trigsimp $trigreduce $trigexpand $radcan $expand $factor $factorsum $fullratsimp

@@ -93,7 +93,7 @@ Lower case; parentheses only where precedence needs them."
                                    2 context))
                           (expt (wrap (format nil "~A^~A" (render (first args) 4) (render (second args) 4))
                                       3 context))
-                          (t (if (member (first x) '(sin cos tan asin acos atan sqrt exp log))
+                          (t (if (member (first x) '(sin cos tan asin acos atan sqrt exp log abs))
                                  (format nil "~(~A~)(~{~A~^, ~})" (first x)
                                          (mapcar (lambda (a) (render a 0)) args))
                                  (format nil "~S" x)))))))))

@@ -7,7 +7,7 @@
                 ;; the prefix algebra's operators, so that a file read here and a form
                 ;; typed at the REPL (in CL-USER) hold the very same operator symbols
                 #:+ #:- #:* #:/ #:expt #:sqrt #:exp #:log
-                #:sin #:cos #:tan #:asin #:acos #:atan
+                #:sin #:cos #:tan #:asin #:acos #:atan #:abs
                 #:= #:/= #:< #:> #:<= #:>= #:and #:or #:not
                 #:pi #:t #:nil)
   (:import-from #:ames.base #:tau)

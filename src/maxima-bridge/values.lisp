@@ -1,0 +1,3 @@
+;;;; src/maxima-bridge/values.lisp -- stub
+
+(in-package #:ames.maxima)
