@@ -146,6 +146,23 @@ is there or the form is not linear in it."
                (= (cond ((only :zero) :true) ((none :zero) :false) (t :unknown)))
                (/= (cond ((none :zero) :true) ((only :zero) :false) (t :unknown))))))))
 
+(defun opposite-truth (bridge relation lhs rhs)
+  "The truth of RELATION that is() gives through the opposite relation (X <= 0 for
+X > 0, equal for notequal ...): :FALSE when is() proves the opposite, :TRUE when it
+refutes it, else :UNKNOWN. LHS and RHS are RELATION's sides in Maxima form."
+  (let* ((operator (expression-operator relation))
+         (question (ecase operator
+                     (= (mform +notequal+ lhs rhs))
+                     (/= (mform +equal+ lhs rhs))
+                     (< (mform +mgeqp+ lhs rhs))
+                     (> (mform +mleqp+ lhs rhs))
+                     (<= (mform +mgreaterp+ lhs rhs))
+                     (>= (mform +mlessp+ lhs rhs)))))
+    (ecase (maxima-truth (maxima-request bridge (mcall "$IS" question) :datum relation))
+      (:true :false)
+      (:false :true)
+      (:unknown :unknown))))
+
 (defun decide-relation (bridge relation)
   "The truth of one RELATION (= /= < > <= >=) under the current assumptions: is(), then
 numeric witnesses that no strategy can decide it (see RELATION-WITNESSES), then the
@@ -174,6 +191,11 @@ and /=), and the order substitution."
                      (continuous-and-admissible-between-p
                       (list '- (relation-lhs relation) (relation-rhs relation)) facts holds fails)))
         (return-from decide-relation :unknown))
+      ;; is() proves X <= 0 from the fact X <= 0 but not that X > 0 fails: ask the
+      ;; opposite relation too
+      (setf verdict (opposite-truth bridge relation lhs rhs))
+      (unless (eq verdict :unknown)
+        (return-from decide-relation verdict))
       ;; the signs are asked for only until they decide the relation
       (setf verdict (relation-verdict operator
                                       (form-signs bridge (mdifference lhs rhs)

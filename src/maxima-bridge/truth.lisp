@@ -191,7 +191,8 @@ plain variable. NIL when Maxima finds X outside the reals."
                  (maxima-error () nil)))))
         (let ((signs (handler-case (form-signs bridge (to-mx bridge x) :datum x)
                        (maxima-error () nil))))
-          (when (and signs (rest signs) (not (subject-p x)))
+          (when (and signs (rest signs) (not (subject-p x))
+                     (<= (expression-size x) *largest-decided-part*))
             (flet ((rule-out (sign relation)
                      (ecase (decide bridge relation)
                        (:true (setf signs (list sign)))
@@ -289,7 +290,8 @@ simplifies it (factored, often)."
          (verdict (relation-verdict operator (expression-signs prover difference :top t))))
     (if (not (eq verdict :unknown))
         verdict
-        (let ((simplified (full-simplification (prover-bridge prover) difference)))
+        (let ((simplified (and (<= (expression-size relation) *largest-rewritten-relation*)
+                               (full-simplification (prover-bridge prover) difference))))
           (if (or (null simplified) (equal simplified difference))
               :unknown
               (relation-verdict operator (expression-signs prover simplified :top t)))))))
@@ -423,7 +425,8 @@ sqrt(A)/sqrt(g) and sqrt(B)/sqrt(g) are ordered as A/g and B/g."
   (let ((lhs (relation-lhs relation)) (rhs (relation-rhs relation))
         (bridge (prover-bridge prover)))
     (if (not (and (or (radical-expression-p lhs) (radical-expression-p rhs))
-                  (not (eql lhs 0)) (not (eql rhs 0))))
+                  (not (eql lhs 0)) (not (eql rhs 0))
+                  (<= (expression-size relation) *largest-rewritten-relation*)))
         :unknown
         (let* ((left (expression-signs prover lhs))
                (right (and left (expression-signs prover rhs)))
@@ -502,6 +505,22 @@ by its CDR."
                  (mapcar (lambda (x) (substitute-subexpressions bindings x)) (cdr expression))))
           (t expression))))
 
+(defparameter *largest-rewritten-relation* 160
+  "The steps that have Maxima rewrite a whole relation (its difference simplified, its
+sides squared) leave alone one with more atoms and operators than this: the facts a
+physicist reads off that way are short, and on the long relations of a simulation (sums
+of products of square roots) those rewritings cost much and prove little.")
+
+(defparameter *largest-decided-part* 60
+  "LEAF-SIGNS asks DECIDE about a part of at most this many atoms and operators; a
+longer one gets Maxima's sign() only.")
+
+(defparameter *deepest-reasoning* 3
+  "How many DECIDE-BY-REASONING calls may be under way at once.")
+
+(defvar *reasoning-depth* 0
+  "How many DECIDE-BY-REASONING calls are under way.")
+
 (defparameter *reasoning-steps*
   '(decide-by-quarter-turns decide-by-signed-parts decide-by-common-factors
     decide-by-monotonicity decide-by-squares decide-by-angle-substitution)
@@ -510,8 +529,12 @@ by its CDR."
 (defun decide-by-reasoning (bridge relation)
   "RELATION (= /= < > <= >=) decided as a physicist would (see this file's header):
 :TRUE or :FALSE when a step proves it, else :UNKNOWN."
-  (let ((prover (prover-for bridge)))
-    (dolist (step *reasoning-steps* :unknown)
-      (let ((verdict (funcall step prover relation)))
-        (unless (eq verdict :unknown)
-          (return verdict))))))
+  (cond ((>= *reasoning-depth* *deepest-reasoning*)
+         (push :depth *cut-short*)
+         :unknown)
+        (t (let ((prover (prover-for bridge))
+                 (*reasoning-depth* (1+ *reasoning-depth*)))
+             (dolist (step *reasoning-steps* :unknown)
+               (let ((verdict (funcall step prover relation)))
+                 (unless (eq verdict :unknown)
+                   (return verdict))))))))
