@@ -177,10 +177,26 @@ it gives none."
                     (:positive '(:positive)) (:negative '(:negative))
                     (:nonnegative '(:positive :zero)) (:nonpositive '(:negative :zero))))))))
 
+(defun facts-signs (bridge x)
+  "The signs of X that is() shows from the facts in force (X >= 0, X < 0 ...), in one
+round trip: is() uses a fact about a compound X that sign() ignores."
+  (let ((form (to-mx bridge x))
+        (signs (list :positive :zero :negative)))
+    (loop for (head . excluded) in `((,+mgreaterp+ :negative :zero) (,+mlessp+ :positive :zero)
+                                     (,+mgeqp+ :negative) (,+mleqp+ :positive))
+          for answer in (request-list bridge
+                                      (loop for (head) in `((,+mgreaterp+) (,+mlessp+) (,+mgeqp+) (,+mleqp+))
+                                            collect (mcall "$IS" (mform head form 0)))
+                                      :datum x)
+          when (eq (maxima-truth answer) :true)
+            do (setf signs (set-difference signs excluded)))
+    signs))
+
 (defun leaf-signs (prover x)
   "The signs of X found as a whole: by exact arithmetic when X is a constant, from
-Maxima's sign() of its forms, then from DECIDE about X > 0 and X < 0 when X is not a
-plain variable. NIL when Maxima finds X outside the reals."
+Maxima's sign() of its forms and is() of its sign facts, then from DECIDE about X > 0
+and X < 0 when X is a short compound expression. NIL when Maxima finds X outside the
+reals."
   (let ((bridge (prover-bridge prover)))
     (if (null (expression-variables x))
         (let ((ball (expression-ball x '())))
@@ -191,6 +207,9 @@ plain variable. NIL when Maxima finds X outside the reals."
                  (maxima-error () nil)))))
         (let ((signs (handler-case (form-signs bridge (to-mx bridge x) :datum x)
                        (maxima-error () nil))))
+          (when (and signs (rest signs) (not (subject-p x)))
+            (setf signs (intersection signs (handler-case (facts-signs bridge x)
+                                              (maxima-error () signs)))))
           (when (and signs (rest signs) (not (subject-p x))
                      (<= (expression-size x) *largest-decided-part*))
             (flet ((rule-out (sign relation)
@@ -290,7 +309,7 @@ simplifies it (factored, often)."
          (verdict (relation-verdict operator (expression-signs prover difference :top t))))
     (if (not (eq verdict :unknown))
         verdict
-        (let ((simplified (and (<= (expression-size relation) *largest-rewritten-relation*)
+        (let ((simplified (and (<= (expression-size relation) *largest-simplified-relation*)
                                (full-simplification (prover-bridge prover) difference))))
           (if (or (null simplified) (equal simplified difference))
               :unknown
@@ -426,7 +445,7 @@ sqrt(A)/sqrt(g) and sqrt(B)/sqrt(g) are ordered as A/g and B/g."
         (bridge (prover-bridge prover)))
     (if (not (and (or (radical-expression-p lhs) (radical-expression-p rhs))
                   (not (eql lhs 0)) (not (eql rhs 0))
-                  (<= (expression-size relation) *largest-rewritten-relation*)))
+                  (<= (expression-size relation) *largest-squared-relation*)))
         :unknown
         (let* ((left (expression-signs prover lhs))
                (right (and left (expression-signs prover rhs)))
@@ -505,11 +524,15 @@ by its CDR."
                  (mapcar (lambda (x) (substitute-subexpressions bindings x)) (cdr expression))))
           (t expression))))
 
-(defparameter *largest-rewritten-relation* 160
-  "The steps that have Maxima rewrite a whole relation (its difference simplified, its
-sides squared) leave alone one with more atoms and operators than this: the facts a
-physicist reads off that way are short, and on the long relations of a simulation (sums
-of products of square roots) those rewritings cost much and prove little.")
+(defparameter *largest-simplified-relation* 400
+  "DECIDE-BY-SIGNED-PARTS has Maxima simplify (and factor) the difference of the sides
+of a relation of at most this many atoms and operators.")
+
+(defparameter *largest-squared-relation* 160
+  "DECIDE-BY-SQUARES leaves alone a relation with more atoms and operators than this:
+the comparisons a physicist makes through squares are short, and squaring the long
+relations of a simulation (sums of products of square roots) costs much and proves
+little.")
 
 (defparameter *largest-decided-part* 60
   "LEAF-SIGNS asks DECIDE about a part of at most this many atoms and operators; a
