@@ -1,6 +1,21 @@
-;;;; src/interface/cli.lisp -- the command line: bin/ames run FILE... [--format text|sexp] [--set p=v ...]
+;;;; src/interface/cli.lisp -- the command line: bin/ames run FILE... [--format text|sexp] [--numeric] [--set p=v ...]
+;;;;
+;;;; Exit codes, so that a script can tell a finished run from one that stopped:
+;;;;   0  every scenario ran to its end;
+;;;;   1  a scenario error (a defective scenario or file, values that break an assumption,
+;;;;      a failure of the simulation); the other scenarios of the files still run;
+;;;;   2  a usage error (nothing is run);
+;;;;   3  every scenario was valid, but a run ended ambiguous or undecided: the
+;;;;      assumptions (and the values, if any) did not decide which event comes first.
+;;;; When a run has both an error and an undecided scenario, the status is 1.
 
 (in-package #:ames)
+
+(defconstant +exit-complete+ 0 "Exit status: every scenario ran to its end.")
+(defconstant +exit-scenario-error+ 1 "Exit status: a scenario (or file) had an error.")
+(defconstant +exit-usage+ 2 "Exit status: the command line is malformed.")
+(defconstant +exit-undecided+ 3
+  "Exit status: a run ended ambiguous or undecided (and no scenario had an error).")
 
 (define-condition usage-error (ames-error) ()
   (:documentation "The command line is malformed. DATUM is the offending argument.")
@@ -9,13 +24,17 @@
                      (ames-error-datum condition)))))
 
 (defparameter *usage*
-  "Usage: ames run FILE... [--format text|sexp] [--set PARAM=VALUE ...]
+  "Usage: ames run FILE... [--format text|sexp] [--numeric] [--set PARAM=VALUE ...]
   Simulate every scenario in each FILE and print a report.
   --format text   a report for people, state by state (the default)
   --format sexp   one readable s-expression per scenario (see the scenario language page)
-  --set p=v ...   give parameter p the number v (an integer, ratio or decimal); numeric
-                  values are then printed beside the closed forms
-Exit codes: 0 success, 1 a scenario error, 2 usage."
+  --numeric       use the scenario's (:value N) defaults as parameter values
+  --set p=v ...   give parameter p the number v (an integer, ratio or decimal), over its
+                  default; numeric values are then printed beside the closed forms, and
+                  a fact the assumptions leave open but the values decide is used and
+                  reported. Values that break a declared assumption are an error.
+Exit codes: 0 complete, 1 a scenario error, 2 usage, 3 a run that ended ambiguous or
+undecided (1 wins when both happen)."
   "The text printed for `ames help` and after a usage error.")
 
 (defun parse-decimal (text)
@@ -55,8 +74,8 @@ USAGE-ERROR naming TEXT when it is malformed."
 
 (defun parse-command-line (arguments)
   "Parse ARGUMENTS (strings, without the program name) into a plist (:COMMAND :FILES
-:FORMAT :SETTINGS). Signals USAGE-ERROR on anything malformed."
-  (let ((command (first arguments)) (files '()) (format :text) (settings '()))
+:FORMAT :SETTINGS :NUMERIC). Signals USAGE-ERROR on anything malformed."
+  (let ((command (first arguments)) (files '()) (format :text) (settings '()) (numeric nil))
     (cond ((null command) (error 'usage-error :detail "no command given"))
           ((member command '("help" "--help" "-h") :test #'string=)
            (return-from parse-command-line (list :command :help)))
@@ -72,6 +91,8 @@ USAGE-ERROR naming TEXT when it is malformed."
                                     ((equal value "sexp") :sexp)
                                     (t (error 'usage-error :datum value
                                                            :detail "--format takes text or sexp"))))))
+                     ((string= argument "--numeric")
+                      (setf numeric t))
                      ((string= argument "--set")
                       (unless (and rest (find #\= (first rest)))
                         (error 'usage-error :datum argument :detail "--set takes PARAM=VALUE"))
@@ -83,59 +104,89 @@ USAGE-ERROR naming TEXT when it is malformed."
                      (t (push argument files)))))
     (when (null files) (error 'usage-error :detail "run needs at least one scenario file"))
     (list :command :run :files (nreverse files) :format format
-          :settings (nreverse settings))))
+          :settings (nreverse settings) :numeric numeric)))
 
 (defun main (arguments)
   "The entry point of bin/ames: run the command in ARGUMENTS (a list of strings) and quit
-with 0 on success, 1 when any scenario had an error, 2 on a usage error."
+with the status RUN-FILES returns (0 complete, 1 a scenario error, 3 a run ended
+ambiguous or undecided), or 2 on a usage error."
   (let ((status
           (handler-case
               (let ((options (parse-command-line arguments)))
                 (case (getf options :command)
-                  (:help (write-string *usage*) (terpri) 0)
+                  (:help (write-string *usage*) (terpri) +exit-complete+)
                   (:run (run-files (getf options :files)
                                    :format (getf options :format)
                                    :settings (getf options :settings)
+                                   :numeric (getf options :numeric)
                                    :stream *standard-output*))))
             (usage-error (condition)
               (format *error-output* "ames: ~A~%~A~%" condition *usage*)
-              2))))
+              +exit-usage+))))
     (finish-output *standard-output*)
     (finish-output *error-output*)
     (uiop:quit status)))
 
-(defun run-files (files &key (format :text) settings (stream *standard-output*)
+(defun undecided-history-p (history)
+  "True when HISTORY ended without deciding what comes next: its outcome is :AMBIGUOUS
+(or :UNDECIDED)."
+  (and (member (history-outcome history) '(:ambiguous :undecided)) t))
+
+(defun simulate-with-values (scenario bridge values)
+  "Simulate SCENARIO with the checked parameter VALUES (an alist (PARAMETER . NUMBER)),
+stopping at an ambiguity; the facts the values decided outside the simulator's own
+transitions (geometric checks) are added to the history's notes as :ASSUMED."
+  (ames.maxima:with-parameter-values (values)
+    (let ((history (handler-bind ((ambiguous-transition #'stop-simulation))
+                     (simulate scenario :bridge bridge :parameter-values values))))
+      (dolist (fact (ames.maxima:facts-from-values))
+        (unless (member fact (getf (history-notes history) :assumed)
+                        :key (lambda (entry) (getf entry :fact)) :test #'equal)
+          (push (list :state nil :fact fact) (getf (history-notes history) :assumed))))
+      history)))
+
+(defun run-files (files &key (format :text) settings numeric (stream *standard-output*)
                           (bridge (current-bridge)))
   "Simulate every scenario of each of FILES and print each history on STREAM in FORMAT
-(:TEXT or :SEXP). SETTINGS is an alist (PARAMETER-NAME . NUMBER). A defective scenario
-or file is reported on *ERROR-OUTPUT* and the others still run. Returns the exit status:
-0 when every scenario ran, 1 when any had an error."
-  (let ((status 0))
+(:TEXT or :SEXP). SETTINGS is an alist (PARAMETER-NAME . NUMBER); with NUMERIC, the
+scenarios' (:value N) defaults are used too, SETTINGS overriding them; the values are
+checked against every assumption (see RUN-PARAMETER-VALUES). A defective scenario or
+file is reported on *ERROR-OUTPUT* and the others still run. Returns the exit status:
++EXIT-COMPLETE+ (0) when every scenario ran to its end, +EXIT-SCENARIO-ERROR+ (1) when
+any had an error, else +EXIT-UNDECIDED+ (3) when any ended ambiguous or undecided."
+  (let ((error-seen nil) (undecided-seen nil))
     (flet ((report-error (condition)
-             (setf status 1)
+             (setf error-seen t)
              (format *error-output* "~&ames: ~A~%" condition)))
       (dolist (file files)
         (multiple-value-bind (scenarios conditions) (read-scenario-file file :on-error :collect)
           (mapc #'report-error conditions)
           (dolist (scenario scenarios)
             (handler-case
-                (let ((history (handler-bind ((ambiguous-transition #'stop-simulation))
-                                 (simulate scenario :bridge bridge :parameter-values settings))))
+                (let* ((values (run-parameter-values scenario :settings settings :numeric numeric))
+                       (history (simulate-with-values scenario bridge values)))
+                  (when (undecided-history-p history)
+                    (setf undecided-seen t))
                   (ecase format
                     (:text (print-history-text history stream))
                     (:sexp (print-history-sexp history stream))))
               (ames-error (condition) (report-error condition)))))))
-    status))
+    (cond (error-seen +exit-scenario-error+)
+          (undecided-seen +exit-undecided+)
+          (t +exit-complete+))))
 
-(defun run-file (pathname &key settings (bridge (current-bridge)))
+(defun run-file (pathname &key settings numeric (bridge (current-bridge)))
   "Simulate every scenario of the file PATHNAME and return their SIMULATION-HISTORYs.
-A scenario that ends ambiguously stops there (its history says so). Signals
-SCENARIO-ERROR for a defective scenario, with the restart SKIP-SCENARIO."
+SETTINGS and NUMERIC give parameter values as for RUN-FILES, checked against every
+assumption. A scenario that ends ambiguously stops there (its history says so). Signals
+SCENARIO-ERROR for a defective scenario (PARAMETER-VALUE-ERROR for values that break an
+assumption), with the restart SKIP-SCENARIO."
   (let ((histories '()))
     (dolist (scenario (read-scenario-file pathname) (nreverse histories))
       (restart-case
-          (push (handler-bind ((ambiguous-transition #'stop-simulation))
-                  (simulate scenario :bridge bridge :parameter-values settings))
+          (push (simulate-with-values scenario bridge
+                                      (run-parameter-values scenario :settings settings
+                                                                     :numeric numeric))
                 histories)
         (skip-scenario ()
           :report "Skip this scenario and go on with the next one."

@@ -51,4 +51,8 @@ re-exported from the layers below) and the command line of bin/ames.")
    #:history-sexp #:print-history-sexp #:print-history-text
    ;; the checks through Maxima (src/scenario/semantics.lisp)
    #:check-scenario #:check-scenario-assumptions #:check-scenario-geometry
-   #:missing-assumption-error #:missing-assumption-fact))
+   #:missing-assumption-error #:missing-assumption-fact
+   ;; the numbers of a run (src/scenario/values.lisp)
+   #:parameter-value-error #:parameter-value-error-parameter #:parameter-value-error-assumption
+   #:check-parameter-values #:run-parameter-values
+   #:+exit-complete+ #:+exit-scenario-error+ #:+exit-usage+ #:+exit-undecided+))

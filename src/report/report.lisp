@@ -183,7 +183,7 @@ their features, the forces, accelerations and trajectories, the end event and it
                                 (format nil "= (~,4F, ~,4F)" (first numbers) (second numbers)))
                            (infix (first velocity)) (infix (second velocity)))))))
     (dolist (assumed (reverse (getf (history-notes history) :assumed)))
-      (format stream "~%Assumed from the given values at state ~D: ~A~%"
+      (format stream "~%Assumed from the given values~:[ while checking the geometry~; at state ~:*~D~]: ~A~%"
               (getf assumed :state) (infix-relation (getf assumed :fact))))
     (format stream "~%Outcome: ~(~A~)~%" (history-outcome history))
     (let ((stopped (getf (history-notes history) :stopped-by)))

@@ -59,4 +59,7 @@ and Maxima (assumptions, overlaps).")
    #:read-scenario-forms #:read-scenarios-from-string #:read-scenario-file
    ;; the checks through Maxima and the geometry
    #:check-scenario #:check-scenario-assumptions #:check-scenario-geometry
-   #:missing-assumption-error #:missing-assumption-fact))
+   #:missing-assumption-error #:missing-assumption-fact
+   ;; the numbers of a run (values.lisp)
+   #:parameter-value-error #:parameter-value-error-parameter #:parameter-value-error-assumption
+   #:check-parameter-values #:run-parameter-values))
