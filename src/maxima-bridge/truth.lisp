@@ -437,12 +437,36 @@ u and v where f is strictly monotone."
            (and (eq (expression-operator x) 'expt) (not (integerp (third x))))
            (some #'radical-expression-p (expression-arguments x)))))
 
+(defun two-sided (relation)
+  "RELATION with a difference against 0 written as a comparison of its two parts:
+(>= (- P Q) 0) becomes (>= P Q), (< (+ P (- Q)) 0) becomes (< P Q); else RELATION."
+  (let ((lhs (relation-lhs relation)) (rhs (relation-rhs relation)))
+    (if (and (eql rhs 0) (compound-expression-p lhs))
+        (let ((arguments (expression-arguments lhs)))
+          (case (expression-operator lhs)
+            (- (if (= (length arguments) 2)
+                   (list (expression-operator relation) (first arguments) (second arguments))
+                   relation))
+            (+ (let ((negated (find-if (lambda (a) (and (compound-expression-p a)
+                                                        (eq (expression-operator a) '-)
+                                                        (null (rest (expression-arguments a)))))
+                                       arguments)))
+                 (if (and negated (= (length arguments) 2))
+                     (list (expression-operator relation)
+                           (first (remove negated arguments :count 1))
+                           (second negated))
+                     relation)))
+            (t relation)))
+        relation)))
+
 (defun decide-by-squares (prover relation)
   "Step 5: sides of one sign, one of them with a radical, compared through their squares
 (x -> x^2 is increasing on [0, oo) and decreasing on (-oo, 0]): two times
-sqrt(A)/sqrt(g) and sqrt(B)/sqrt(g) are ordered as A/g and B/g."
-  (let ((lhs (relation-lhs relation)) (rhs (relation-rhs relation))
-        (bridge (prover-bridge prover)))
+sqrt(A)/sqrt(g) and sqrt(B)/sqrt(g) are ordered as A/g and B/g. A difference of two
+parts against 0 is taken as the comparison of the parts."
+  (let* ((relation (two-sided relation))
+         (lhs (relation-lhs relation)) (rhs (relation-rhs relation))
+         (bridge (prover-bridge prover)))
     (if (not (and (or (radical-expression-p lhs) (radical-expression-p rhs))
                   (not (eql lhs 0)) (not (eql rhs 0))
                   (<= (expression-size relation) *largest-squared-relation*)))

@@ -129,7 +129,7 @@ there; POINT itself, with its values as rationals, when no rounding does."
 
 (defun point-description (point subjects)
   "The values of SUBJECTS at POINT, as text: \"a = 0.3, h = 2\"."
-  (let ((*print-case* :downcase))
+  (let ((*print-case* :downcase) (*read-default-float-format* 'double-float))
     (format nil "~{~A~^, ~}"
             (loop for subject in subjects
                   for entry = (assoc subject point :test #'equal)
