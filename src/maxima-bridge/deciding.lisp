@@ -167,7 +167,11 @@ refutes it, else :UNKNOWN. LHS and RHS are RELATION's sides in Maxima form."
   "The truth of one RELATION (= /= < > <= >=) under the current assumptions: is(), then
 numeric witnesses that no strategy can decide it (see RELATION-WITNESSES), then the
 signs of the difference of its sides, after clearing a square root, equivalence (for =
-and /=), and the order substitution."
+and /=), what a physicist knows (truth.lisp) and the order substitution. A relation
+with a product of square roots of negative radicands, which Maxima's is() and sign()
+would take for real square roots, is left to truth.lisp alone."
+  (when (imaginary-radicands bridge relation)
+    (return-from decide-relation (decide-with-imaginary-radicands bridge relation)))
   (let* ((operator (expression-operator relation))
          (equation (member operator '(= /=)))
          (lhs (to-mx bridge (relation-lhs relation)))

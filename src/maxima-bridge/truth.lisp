@@ -150,10 +150,6 @@ angle shifted by quarter turns or negated written with the plain angle."
     (and (notany #'null term-signs)
          (or (agree :positive) (agree :negative)))))
 
-(defun product-signs (factor-signs)
-  (and (notany #'null factor-signs)
-       (reduce #'sign-product factor-signs :initial-value '(:positive))))
-
 (defun power-signs (base-signs exponent)
   "The signs of a power whose base has BASE-SIGNS, for a rational EXPONENT."
   (cond ((null base-signs) nil)
@@ -167,15 +163,77 @@ angle shifted by quarter turns or negated written with the plain angle."
         ((and (plusp exponent) (only-signs-p base-signs :positive :zero)) base-signs)
         (t nil)))
 
+(defun square-root-radicand (x)
+  "The radicand A when X is (SQRT A) or (EXPT A 1/2), else NIL."
+  (and (compound-expression-p x)
+       (case (expression-operator x)
+         (sqrt (second x))
+         (expt (and (eql (third x) 1/2) (second x))))))
+
+(defun quotient-signs (prover x)
+  "The signs of the product or quotient X from those of its factors. A square root of a
+negative radicand is i times a positive number, so two of them make a real product:
+sqrt(A) sqrt(B) = -sqrt(A B) for A, B < 0 (Maxima writes some times that way); an odd
+number of them leaves the reals (NIL)."
+  (multiple-value-bind (coefficient factors) (product-parts x)
+    (let ((signs (list (first (number-signs coefficient))))
+          (turns 0))                    ; the power of i: +1 per imaginary factor above, -1 below
+      (dolist (factor factors)
+        (destructuring-bind (part . power) factor
+          (let ((part-signs (expression-signs prover part)))
+            (cond ((and part-signs (not (and (= power -1) (member :zero part-signs))))
+                   (setf signs (sign-product signs part-signs)))
+                  ((and (null part-signs) (square-root-radicand part)
+                        (only-signs-p (expression-signs prover (square-root-radicand part)) :negative))
+                   (incf turns power))
+                  (t (return-from quotient-signs nil))))))
+      (cond ((oddp turns) nil)
+            ((= 2 (mod turns 4)) (negated-signs signs))
+            (t signs)))))
+
+(defun admissible-value (bridge expression)
+  "The value of EXPRESSION at one point that surely satisfies the facts in force (a
+double float), or NIL when none is found."
+  (let ((value nil))
+    (call-with-admissible-points bridge expression
+                                 (lambda (point)
+                                   (let ((ball (expression-ball expression point)))
+                                     (when ball (setf value (ball-center ball))))))
+    value))
+
+(defun placed-trigonometric-signs (prover kernel)
+  "The signs of KERNEL, (SIN X), (COS X) or (TAN X), found by placing X between two
+consecutive zeros (or a zero and a pole) of the function: the piece is guessed from X's
+value at an admissible point, and both bounds are asked of DECIDE (0 < b - a < pi with
+b > a for sin(b - a)). NIL when that fails."
+  (let* ((bridge (prover-bridge prover))
+         (function (expression-operator kernel))
+         (angle (second kernel))
+         (value (admissible-value bridge angle)))
+    (when value
+      (multiple-value-bind (width offset) (if (eq function 'tan)
+                                              (values 1/2 0)
+                                              (values 1 (if (eq function 'sin) 0 -1/2)))
+        ;; the piece [offset + k width, offset + (k + 1) width], in multiples of pi
+        (let* ((k (floor (- (/ value pi) offset) width))
+               (low (+ offset (* k width))) (high (+ offset (* (1+ k) width))))
+          (flet ((bound (operator multiple)
+                   (eq :true (decide bridge (list operator angle (list '* multiple 'pi))))))
+            ;; sin, cos and tan are positive on the even pieces, negative on the odd ones
+            (when (and (bound '> low) (bound '< high))
+              (if (evenp k) '(:positive) '(:negative)))))))))
+
 (defun trigonometric-signs (prover kernel)
-  "The signs of KERNEL, (SIN X), (COS X) or (TAN X), that the range of X gives; NIL when
-it gives none."
-  (let ((range (expression-range (second kernel) (prover-ranges prover))))
-    (when range
-      (let ((sign (range-trigonometric-sign (expression-operator kernel) range)))
-        (and sign (ecase sign
-                    (:positive '(:positive)) (:negative '(:negative))
-                    (:nonnegative '(:positive :zero)) (:nonpositive '(:negative :zero))))))))
+  "The signs of KERNEL, (SIN X), (COS X) or (TAN X), that the range of X gives, or else
+that placing X between two zeros gives (see PLACED-TRIGONOMETRIC-SIGNS); NIL when
+neither does."
+  (let* ((range (expression-range (second kernel) (prover-ranges prover)))
+         (sign (and range (range-trigonometric-sign (expression-operator kernel) range))))
+    (cond (sign (ecase sign
+                  (:positive '(:positive)) (:negative '(:negative))
+                  (:nonnegative '(:positive :zero)) (:nonpositive '(:negative :zero))))
+          ((subject-p (second kernel)) nil)
+          (t (placed-trigonometric-signs prover kernel)))))
 
 (defun facts-signs (bridge x)
   "The signs of X that is() shows from the facts in force (X >= 0, X < 0 ...), in one
@@ -192,19 +250,32 @@ round trip: is() uses a fact about a compound X that sign() ignores."
             do (setf signs (set-difference signs excluded)))
     signs))
 
+(defvar *imaginary-radicands* '()
+  "The radicands, proven negative, of the square roots in the relation being decided by
+DECIDE-WITH-IMAGINARY-RADICANDS: Maxima is not asked about an expression holding one.")
+
+(defun mentions-imaginary-root-p (x)
+  "True when X has a square root of one of *IMAGINARY-RADICANDS*."
+  (and *imaginary-radicands* (consp x) (not (quantity-term-p x))
+       (or (member (square-root-radicand x) *imaginary-radicands* :test #'equal)
+           (some #'mentions-imaginary-root-p (expression-arguments x)))))
+
 (defun leaf-signs (prover x)
   "The signs of X found as a whole: by exact arithmetic when X is a constant, from
 Maxima's sign() of its forms and is() of its sign facts, then from DECIDE about X > 0
 and X < 0 when X is a short compound expression. NIL when Maxima finds X outside the
 reals."
   (let ((bridge (prover-bridge prover)))
-    (if (null (expression-variables x))
+    (cond
+      ((mentions-imaginary-root-p x) nil)
+      ((null (expression-variables x))
         (let ((ball (expression-ball x '())))
           (case (and ball (ball-sign ball))
             (:positive '(:positive))
             (:negative '(:negative))
             (t (handler-case (form-signs bridge (to-mx bridge x) :datum x)
-                 (maxima-error () nil)))))
+                 (maxima-error () nil))))))
+      (t
         (let ((signs (handler-case (form-signs bridge (to-mx bridge x) :datum x)
                        (maxima-error () nil))))
           (when (and signs (rest signs) (not (subject-p x)))
@@ -220,7 +291,7 @@ reals."
               (rule-out :positive (list '> x 0))
               (when (rest signs)
                 (rule-out :negative (list '< x 0)))))
-          signs))))
+          signs)))))
 
 (defun expression-signs (prover x &key top)
   "The signs the arithmetic expression X may take at every admissible point, from the
@@ -245,15 +316,7 @@ for X itself when TOP is true. NIL when nothing is known or X may be undefined."
                           (whole))
                       (let ((inner (signs (first arguments))))
                         (and inner (negated-signs inner)))))
-               (* (or (product-signs (mapcar #'signs arguments)) (whole)))
-               (/ (let ((numerator (signs (first arguments)))
-                        (denominators (mapcar #'signs (if (rest arguments) (rest arguments) arguments))))
-                    (if (and (notany #'null denominators)
-                             (notany (lambda (s) (member :zero s)) denominators))
-                        (product-signs (if (rest arguments)
-                                           (cons numerator denominators)
-                                           denominators))
-                        (whole))))
+               ((* /) (or (quotient-signs prover x) (whole)))
                (expt (let ((exponent (second arguments)))
                        (or (if (rationalp exponent)
                                (power-signs (signs (first arguments)) exponent)
@@ -400,7 +463,7 @@ domain holding the values of U and V, where both are defined; NIL when not shown
 
 (defun decide-by-monotonicity (prover relation)
   "Step 4: f(u) against f(v), f the same function (or the same power), compared through
-u and v where f is strictly monotone."
+u and v where f is strictly monotone; sin u against cos v is sin u against sin(pi/2 - v)."
   (let ((lhs (relation-lhs relation)) (rhs (relation-rhs relation))
         (operator (expression-operator relation)))
     (flet ((by (direction u v)
@@ -408,6 +471,13 @@ u and v where f is strictly monotone."
                (:increasing (decide (prover-bridge prover) (list operator u v)))
                (:decreasing (decide (prover-bridge prover) (list (flipped-operator operator) u v)))
                (t :unknown))))
+      (when (and (compound-expression-p lhs) (compound-expression-p rhs)
+                 (equal (list (expression-operator lhs) (expression-operator rhs)) '(sin cos)))
+        ;; cos v = sin(pi/2 - v)
+        (setf rhs (list 'sin (list '- (list '/ 'pi 2) (second rhs)))))
+      (when (and (compound-expression-p lhs) (compound-expression-p rhs)
+                 (equal (list (expression-operator lhs) (expression-operator rhs)) '(cos sin)))
+        (setf lhs (list 'sin (list '- (list '/ 'pi 2) (second lhs)))))
       (cond ((not (and (compound-expression-p lhs) (compound-expression-p rhs)
                        (eq (expression-operator lhs) (expression-operator rhs))))
              :unknown)
@@ -484,7 +554,10 @@ parts against 0 is taken as the comparison of the parts."
               :unknown
               (let ((left-square (full-simplification bridge (list 'expt lhs 2)))
                     (right-square (full-simplification bridge (list 'expt rhs 2))))
-                (if (and left-square right-square)
+                (if (and left-square right-square
+                         ;; squares that grew are no simpler to compare
+                         (<= (+ (expression-size left-square) (expression-size right-square))
+                             (expression-size relation)))
                     (decide bridge (list operator left-square right-square))
                     :unknown)))))))
 
@@ -548,6 +621,48 @@ by its CDR."
                  (mapcar (lambda (x) (substitute-subexpressions bindings x)) (cdr expression))))
           (t expression))))
 
+(defun product-root-radicands (expression)
+  "The radicands of the square roots that stand, two or more together, as factors of
+one product or quotient somewhere in EXPRESSION, each once."
+  (let ((found '()))
+    (labels ((walk (x)
+               (when (and (consp x) (not (quantity-term-p x)))
+                 (when (member (expression-operator x) '(* /))
+                   (let ((radicands (loop for (factor) in (nth-value 1 (product-parts x))
+                                          for radicand = (square-root-radicand factor)
+                                          when radicand collect radicand)))
+                     (when (rest radicands)
+                       (dolist (radicand radicands) (pushnew radicand found :test #'equal)))))
+                 (mapc #'walk (expression-arguments x)))))
+      (walk expression))
+    (nreverse found)))
+
+(defun imaginary-radicands (bridge relation)
+  "The radicands of RELATION's products of square roots (see PRODUCT-ROOT-RADICANDS)
+that are proven negative: there sqrt(A) sqrt(B) = -sqrt(A B), which is() and sign(),
+taking every square root for a real one, get wrong. A radicand sign() finds
+nonnegative is not asked further."
+  (loop for radicand in (product-root-radicands relation)
+        for signs = (handler-case (form-signs bridge (to-mx bridge radicand) :datum relation)
+                      (maxima-error () nil))
+        when (and (not (only-signs-p signs :positive :zero))
+                  (member :negative signs)
+                  (eq :true (decide bridge (list '< radicand 0))))
+          collect radicand))
+
+(defun decide-with-imaginary-radicands (bridge relation)
+  "RELATION decided without asking Maxima about its square roots of negative radicands
+(see IMAGINARY-RADICANDS): from the signs of its parts (two imaginary factors make a
+negative real one), then through squares."
+  (let* ((*imaginary-radicands* (imaginary-radicands bridge relation))
+         (prover (prover-for bridge))
+         (verdict (relation-verdict (expression-operator relation)
+                                    (expression-signs prover (relation-difference relation) :top t))))
+    (if (eq verdict :unknown)
+        (handler-case (decide-by-squares prover relation)
+          ((or maxima-timeout maxima-error) () :unknown))
+        verdict)))
+
 (defparameter *largest-simplified-relation* 400
   "DECIDE-BY-SIGNED-PARTS has Maxima simplify (and factor) the difference of the sides
 of a relation of at most this many atoms and operators.")
@@ -582,6 +697,11 @@ longer one gets Maxima's sign() only.")
         (t (let ((prover (prover-for bridge))
                  (*reasoning-depth* (1+ *reasoning-depth*)))
              (dolist (step *reasoning-steps* :unknown)
-               (let ((verdict (funcall step prover relation)))
+               (let ((verdict (handler-case (funcall step prover relation)
+                                ;; a step whose rewriting Maxima cannot finish proves
+                                ;; nothing (and the relation may do better elsewhere)
+                                ((or maxima-timeout maxima-error) ()
+                                  (push :depth *cut-short*)
+                                  :unknown))))
                  (unless (eq verdict :unknown)
                    (return verdict))))))))

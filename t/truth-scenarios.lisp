@@ -1,0 +1,2 @@
+;;;; t/truth-scenarios.lisp -- stub
+(in-package #:ames.tests)
