@@ -3,7 +3,8 @@
 #   make test   install missing Debian packages, then run every FiveAM suite
 #   make bench  run the benchmarks (they print numbers)
 
-DEBS  = sbcl maxima maxima-share cl-alexandria cl-fiveam cl-ppcre
+DEBS  = sbcl maxima maxima-share cl-alexandria cl-fiveam cl-ppcre \
+        cl-yason cl-trivial-gray-streams libjs-katex
 SBCL ?= sbcl
 LISP  = $(SBCL) --noinform --non-interactive --no-sysinit --no-userinit
 

@@ -165,6 +165,15 @@ included."
                        (getf warm-statistics :cache-hits))
                (format t "  instances re-derived per transition: ~:[none (no transition)~;~:*~{~D~^ ~}~]~%"
                        rederived)
+               (when (typep outcome 'ames::simulation-history)
+                 (let* ((sizes (getf (ames::history-notes outcome) :model-sizes))
+                        (solves (getf sizes :solves))
+                        (free (length (ames:scenario-moving-bodies scenario))))
+                   (when (and solves (plusp solves) (plusp free))
+                     (format t "  equations per free body in a solved model: ~,1F as the components assert them, ~,1F after eliminating definitions (target <= 6; ~D solves)~%"
+                             (/ (getf sizes :equations-before) solves free)
+                             (/ (getf sizes :equations-after) solves free)
+                             solves))))
                (let ((best-cold (reduce #'min (loop repeat *runs* collect (cold-seconds scenario)))))
                  (format t "  cold, uninstrumented: ~,3F s (best of ~D)~%" best-cold *runs*)
                  (if solves

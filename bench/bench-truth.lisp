@@ -44,7 +44,10 @@ the condition that ended it."
       (let ((history (handler-bind ((ames:ambiguous-transition #'ames:stop-simulation))
                        (ames:simulate scenario :bridge bridge :parameter-values values))))
         (ames:history-outcome history))
-    (ames:ames-error (condition) (type-of condition))))
+    (ames:ames-error (condition) (type-of condition))
+    ;; a failure of the simulator itself is shown as the outcome, not hidden: the
+    ;; benchmark goes on with the next scenario
+    (error (condition) (list :failed (type-of condition)))))
 
 (defun measure ()
   "Print the tallies per scenario and run, then the totals."

@@ -61,4 +61,4 @@
   (body p28 :mass m :position (56 h28) :velocity (0 0) :shape point)
   (body p29 :mass m :position (58 h29) :velocity (0 0) :shape point)
   (body p30 :mass m :position (60 h30) :velocity (0 0) :shape point)
-  (simulate :states 2))
+  (simulate :states 31))

@@ -10,11 +10,11 @@
 ;;;;   State 0: contacts A-floor, B-wall and B's corner on A's inclined face;
 ;;;;     a_Ax = l3 (f l3 - mb g (l1 - l2)) / (ma l3^2 + mb (l1 - l2)^2),  a_By = k a_Ax.
 ;;;;     Whether B rises is the sign of f l3 - mb g (l1 - l2), which the assumptions leave
-;;;;     open: the run stops as ambiguous without numbers (bin/ames exits 3). With the
-;;;;     default values (bin/ames run ... --numeric: f l3 = 20 > mb g (l1 - l2) = 19.62)
-;;;;     B rises, and its corner reaches the upper end of A's face at
+;;;;     open: the run branches there (a fork of zero duration). With the default values
+;;;;     (bin/ames run ... --numeric: f l3 = 20 > mb g (l1 - l2) = 19.62) the rising branch
+;;;;     is selected: B rises, and its corner reaches the upper end of A's face at
 ;;;;       t1 = sqrt(l3 / a_Ax) = sqrt((ma l3^2 + mb (l1 - l2)^2) / (f l3 - mb g (l1 - l2))),
-;;;;     the end of state 0: (:leaves block-b block-a :endpoint).
+;;;;     where the state ends: (:leaves block-a block-b :endpoint).
 ;;;; One state only: after it, the order of the next events (A meeting the segment's foot,
 ;;;; B leaving the segment's top, B landing) is a comparison of times written with three
 ;;;; square roots, which the bridge does not decide yet.

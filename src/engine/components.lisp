@@ -18,12 +18,22 @@ to the canonically sorted values of COLLECT over every believed match of PATTERN
   (collect nil)
   (clause nil))
 
-(defstruct (transition (:constructor make-transition (target relation clause)))
+(defstruct (event-spec (:constructor make-event-spec (event impact)))
+  "What a termination condition stands for, as the component that owns it says: the
+EVENT template reported when it fires, and the IMPACT template reported instead when it
+is reached at a non-zero rate, an impulsive event such as a collision (NIL when the
+component gives none). Templates are lists over the component's variables, e.g.
+(:lift-off ?body1 ?body2)."
+  (event nil :type list)
+  (impact nil :type list))
+
+(defstruct (transition (:constructor make-transition (target relation clause &optional event)))
   "A mode transition condition: when RELATION becomes true, the instance enters the
-mode TARGET."
+mode TARGET; EVENT, an EVENT-SPEC or NIL, says how it is reported."
   (target nil :type symbol)
   (relation nil)
-  (clause nil))
+  (clause nil)
+  (event nil))
 
 (defstruct (mode (:constructor make-mode (name &key entry-p entry-beliefs entry-relations
                                                  assertions equations transitions)))
@@ -46,7 +56,9 @@ PARSE-COMPONENT or DEFCOMPONENT."
   (arguments '() :type list)
   (activation-beliefs '() :type list)     ; patterns, existential
   (activation-relations '() :type list)   ; decided on the initial values
+  (activation-event nil)                  ; an EVENT-SPEC or NIL
   (deactivation-relations '() :type list) ; termination conditions
+  (deactivation-events '() :type list)    ; an EVENT-SPEC or NIL for each of them
   (assertions '() :type list)             ; in every mode
   (equations '() :type list)              ; in every mode
   (modes '() :type list)

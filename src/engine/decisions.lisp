@@ -5,18 +5,20 @@
 
 ;;; Deciding quantitative conditions
 
-(defun ask-decider (model relation)
-  "MODEL's decider's answer for RELATION: :TRUE, :FALSE or :UNKNOWN."
-  (let ((decider (model-decider model)))
+(defun ask-decider (model relation &optional (decider (model-decider model)))
+  "DECIDER's answer (by default MODEL's decider's) for RELATION: :TRUE, :FALSE,
+:UNKNOWN or :CHOICE."
+  (let ((decider decider))
     (unless decider
       (error 'missing-decider :datum relation
                               :detail "A quantitative condition must be decided, but the ~
                                        model has no decider."))
     (let ((answer (funcall decider relation)))
-      (unless (member answer '(:true :false :unknown))
+      (unless (member answer '(:true :false :unknown :choice))
         (error 'invalid-decision :datum answer
                                  :detail (format nil "The decider answered this for ~S; it ~
-                                                      must answer :TRUE, :FALSE or :UNKNOWN."
+                                                      must answer :TRUE, :FALSE, :UNKNOWN ~
+                                                      or :CHOICE."
                                                  relation)))
       answer)))
 
@@ -42,22 +44,27 @@ through the USE-DECISION restart."
                                  :detail "USE-DECISION takes :TRUE or :FALSE."))
       decision)))
 
-(defun conjunction-answer (model relations answers)
+(defun conjunction-answer (model relations answers &optional (decider (model-decider model)))
   "The decider's verdict on the conjunction of RELATIONS without resolving unknowns:
-:FALSE at the first false one, else :UNKNOWN if any is unknown, else :TRUE. ANSWERS
-is a hash table caching each relation's answer."
+:FALSE at the first false one, else :UNKNOWN if any is unknown, else :CHOICE if any
+is a choice (the decider's answer for a condition that may hold or not, to be settled
+by the caller's consistency search), else :TRUE. ANSWERS is a hash table caching
+each relation's answer."
   (let ((verdict :true))
     (dolist (relation relations verdict)
       (let ((answer (or (gethash relation answers)
-                        (setf (gethash relation answers) (ask-decider model relation)))))
+                        (setf (gethash relation answers) (ask-decider model relation decider)))))
         (case answer
           (:false (return :false))
-          (:unknown (setf verdict :unknown)))))))
+          (:unknown (setf verdict :unknown))
+          (:choice (unless (eq verdict :unknown) (setf verdict :choice))))))))
 
 (defun decide-activation (model instance)
   "Decide INSTANCE's activation: (values decision reason), the decision being :TRUE
 or :FALSE. Uses a given decision when building, else the decider; an unknown answer
-is resolved through UNDECIDED-RELATION, never guessed."
+is resolved through UNDECIDED-RELATION, never guessed. A :CHOICE (the activation may
+hold or not) is taken as :TRUE, with the reason (:CHOICE RELATIONS): the caller's
+consistency search (see MODEL-CHOICE-POINTS) settles it."
   (let* ((key (instance-key instance))
          (given (gethash (list :activation key) (model-given model)))
          (templates (component-activation-relations (instance-component instance))))
@@ -69,7 +76,9 @@ is resolved through UNDECIDED-RELATION, never guessed."
                     (answers (make-hash-table :test #'equal))
                     (verdict (conjunction-answer model relations answers)))
                (if (not (eq verdict :unknown))
-                   (values verdict (list :decided relations))
+                   (if (eq verdict :choice)
+                       (values :true (list :choice relations))
+                       (values verdict (list :decided relations)))
                    (let ((assumed '()))
                      (dolist (relation relations (values :true (list :assumed assumed)))
                        (when (eq (gethash relation answers) :unknown)
@@ -88,7 +97,9 @@ is resolved through UNDECIDED-RELATION, never guessed."
 mode is used when building if its qualitative entry conditions hold. Exactly one
 mode's conditions must hold (they are exclusive by contract, so the others are not
 pressed when one is true); unknown answers are resolved through
-UNDECIDED-RELATION, and none or several true modes signal MODE-SELECTION-ERROR."
+UNDECIDED-RELATION, and none or several true modes signal MODE-SELECTION-ERROR.
+When no mode is true but some are a :CHOICE, the first of those is taken with the
+reason (:CHOICE RELATIONS): the caller's consistency search settles it."
   (let* ((component (instance-component instance))
          (key (instance-key instance))
          (given (gethash (list :mode key) (model-given model)))
@@ -96,7 +107,7 @@ UNDECIDED-RELATION, and none or several true modes signal MODE-SELECTION-ERROR."
     (when (and given (find-mode component given) (mode-valid-p instance given))
       (return-from decide-mode (values given '(:given))))
     (loop
-      (let ((true '()) (unknown '()))
+      (let ((true '()) (unknown '()) (choices '()))
         (dolist (mode (component-modes component))
           (let* ((relations (mapcar (lambda (template) (expanded-relation model instance template))
                                     (mode-entry-relations mode)))
@@ -105,10 +116,14 @@ UNDECIDED-RELATION, and none or several true modes signal MODE-SELECTION-ERROR."
                               :false)))
             (case verdict
               (:true (push (cons mode relations) true))
+              (:choice (push (cons mode relations) choices))
               (:unknown (push (cons mode relations) unknown)))))
         (cond ((= 1 (length true))
                (return (values (mode-name (car (first true)))
                                (list :decided (cdr (first true))))))
+              ((and (null true) (null unknown) choices)
+               (let ((first (car (last choices))))
+                 (return (values (mode-name (car first)) (list :choice (cdr first))))))
               ((or (rest true) (null unknown))
                (return
                  (restart-case

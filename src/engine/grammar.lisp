@@ -162,12 +162,33 @@ the argument and the variables it binds."
                                                          :clause spec)
                      (list variable)))))))))
 
+(defun parse-event-spec (name item bound collections &key (event-key :event))
+  "Parse the event part of a condition ITEM: the plist after it holding EVENT-KEY
+TEMPLATE and optionally :IMPACT TEMPLATE. Returns an EVENT-SPEC, or NIL when ITEM
+names no event."
+  (let ((event (getf item event-key)) (impact (getf item :impact)))
+    (loop for (key) on item by #'cddr
+          unless (member key (list event-key :impact :when))
+            do (definition-error name item (format nil "Unknown option ~S in an event ~
+                                                      condition." key)))
+    (when (or event impact)
+      (dolist (template (remove nil (list event impact)))
+        (unless (and (consp template) (proper-list-p template) (keywordp (car template)))
+          (definition-error name item "An event is a list (:KIND ARGUMENT...), such as ~
+                                       (:lift-off ?body1 ?body2)."))
+        (check-variables-bound name template item bound "The event" collections))
+      (make-event-spec event impact))))
+
 (defun parse-conditions (name section bound collections
-                         &key allow-beliefs allow-always allow-never)
+                         &key allow-beliefs allow-always allow-never allow-events)
   "Parse the items of an activation, deactivation or entry SECTION: returns the
-belief patterns and the relation templates (none when SECTION is NIL, absent). BOUND
-are the variables relations may use."
-  (let ((items (section-body name section)) (beliefs '()) (relations '()))
+belief patterns, the relation templates (none when SECTION is NIL, absent) and, with
+ALLOW-EVENTS, the EVENT-SPECs: for an activation section a single one, from an
+item (:event TEMPLATE [:impact TEMPLATE]); for a deactivation section one per
+relation (NIL for a bare relation), from items (:when RELATION :event TEMPLATE
+[:impact TEMPLATE]). BOUND are the variables relations may use."
+  (let ((items (section-body name section))
+        (beliefs '()) (relations '()) (events '()) (activation-event nil))
     (dolist (item items)
       (cond ((member item '(:always :never))
              (unless (if (eq item :always) allow-always allow-never)
@@ -185,10 +206,31 @@ are the variables relations may use."
                (definition-error name item "A belief condition is (:BELIEVES PATTERN)." section))
              (check-pattern name (second item) item "The pattern after :BELIEVES")
              (push (second item) beliefs))
+            ((and (consp item) (eq (car item) :event))
+             (unless (eq allow-events :activation)
+               (definition-error name item "(:EVENT ...) names the event of an activation ~
+                                            section; a deactivation names its event with ~
+                                            (:WHEN RELATION :EVENT ...)." section))
+             (when activation-event
+               (definition-error name item "An activation section names one event." section))
+             (check-plist name item item "An event item")
+             (setf activation-event (parse-event-spec name item bound collections)))
+            ((and (consp item) (eq (car item) :when))
+             (unless (eq allow-events :deactivation)
+               (definition-error name item "(:WHEN RELATION :EVENT ...) belongs in a ~
+                                            deactivation section." section))
+             (check-plist name item item "A deactivation condition")
+             (let ((relation (getf item :when)))
+               (check-relation-template name relation item "A condition")
+               (check-variables-bound name relation item bound "The condition" collections)
+               (push relation relations)
+               (push (parse-event-spec name item bound collections) events)))
             (t (check-relation-template name item item "A condition")
                (check-variables-bound name item item bound "The condition" collections)
-               (push item relations))))
-    (values (nreverse beliefs) (nreverse relations))))
+               (push item relations)
+               (push nil events))))
+    (values (nreverse beliefs) (nreverse relations)
+            (if (eq allow-events :activation) activation-event (nreverse events)))))
 
 (defun parse-assertions (name section bound collections)
   "Parse an :ASSERT section: belief patterns whose variables are all in BOUND (none
@@ -234,15 +276,21 @@ the REPEATABLE keys repeat. Returns an alist (KEY . sections)."
   "Parse (:TRANSITION :TO MODE :WHEN RELATION) into a TRANSITION."
   (check-plist name (cdr clause) clause "A transition")
   (loop for (key) on (cdr clause) by #'cddr
-        unless (member key '(:to :when))
+        unless (member key '(:to :when :event :impact))
           do (definition-error name clause (format nil "Unknown transition option ~S." key)))
   (let ((target (getf (cdr clause) :to)) (relation (getf (cdr clause) :when)))
     (unless (and target relation)
-      (definition-error name clause "A transition is (:TRANSITION :TO MODE :WHEN RELATION)."))
+      (definition-error name clause "A transition is (:TRANSITION :TO MODE :WHEN RELATION ~
+                                     [:EVENT TEMPLATE] [:IMPACT TEMPLATE])."))
     (check-relation-template name relation clause "A transition condition")
     (check-variables-bound name relation clause all-bound "The transition condition"
                            collections)
-    (make-transition target relation clause)))
+    (make-transition target relation clause
+                     (parse-event-spec name (list* :when relation
+                                                   (loop for (k v) on (cdr clause) by #'cddr
+                                                         when (member k '(:event :impact))
+                                                           append (list k v)))
+                                       all-bound collections))))
 
 (defun parse-mode (name clause key-bound all-bound collections)
   "Parse a (:MODE NAME CLAUSE...) section into a MODE (transition targets are
@@ -295,24 +343,27 @@ grammar). Signals COMPONENT-DEFINITION-ERROR naming the clause at fault."
                                 collect (argument-variable a)))
            (key-bound (set-difference bound collections))
            (all-bound bound))
-      (multiple-value-bind (activation-beliefs activation-relations)
+      (multiple-value-bind (activation-beliefs activation-relations activation-event)
           (parse-conditions name (section :activation parts) key-bound collections
-                            :allow-beliefs t :allow-always t)
-        (let ((deactivation-relations
-                (nth-value 1 (parse-conditions name (section :deactivation parts)
-                                               all-bound collections :allow-never t)))
-              (modes (loop for clause in (cdr (assoc :mode parts))
+                            :allow-beliefs t :allow-always t :allow-events :activation)
+        (multiple-value-bind (ignored deactivation-relations deactivation-events)
+            (parse-conditions name (section :deactivation parts)
+                              all-bound collections :allow-never t :allow-events :deactivation)
+          (declare (ignore ignored))
+         (let ((modes (loop for clause in (cdr (assoc :mode parts))
                            collect (parse-mode name clause key-bound all-bound collections))))
           (check-modes name modes (cdr (assoc :mode parts)))
           (%make-component
            :name name :documentation documentation :arguments arguments
            :activation-beliefs activation-beliefs
            :activation-relations activation-relations
+           :activation-event activation-event
            :deactivation-relations deactivation-relations
+           :deactivation-events deactivation-events
            :assertions (parse-assertions name (section :assert parts) key-bound collections)
            :equations (parse-equations name (section :equations parts) all-bound)
            :modes modes
-           :definition sections))))))
+           :definition sections)))))))
 
 (defun check-modes (name modes clauses)
   "Check MODES (parsed from CLAUSES) together: unique names, transitions to other
@@ -341,16 +392,25 @@ declared modes, and entry conditions wherever there is a choice."
   (defcomponent NAME (:knowledge-base KB-FORM)
     \"Docstring: what piece of knowledge this is.\"
     (:arguments ARGUMENT...)
-    (:activation CONDITION... | :always)
-    (:deactivation RELATION... | :never)
+    (:activation CONDITION... [(:event EVENT [:impact EVENT])] | :always)
+    (:deactivation RELATION-OR-EVENT-CONDITION... | :never)
     (:assert PATTERN...)             ; qualitative assertions, in every mode
     (:equations EQUATION...)         ; quantitative assertions, in every mode
-    (:mode MODE-NAME                 ; zero or more modes, mutually exclusive
+    (:mode MODE-NAME                 ; zero or more modes, mutually exclusive, listed
+                                     ; in order of preference (see below)
       (:entry CONDITION...)          ; needed when there are several modes
       (:assert PATTERN...)
       (:equations EQUATION...)
-      (:transition :to MODE-NAME :when RELATION) ...)
+      (:transition :to MODE-NAME :when RELATION [:event EVENT] [:impact EVENT]) ...)
     ...)
+
+Components own their events: EVENT is a list (:KIND ARGUMENT...) over the
+component's variables, e.g. (:lift-off ?body1 ?body2), reported when the condition
+ends a state; the optional :IMPACT event is reported instead when the condition is
+reached at a non-zero rate (a position-level condition crossed with a velocity: an
+impulsive event, such as (:collision ?body1 ?body2)). A deactivation condition with
+an event is written (:when RELATION :event EVENT [:impact EVENT]); a bare RELATION
+has no event of its own (the caller reports the change it stands for).
 
 KB-FORM is evaluated: it gives the KNOWLEDGE-BASE to register in. Every section is
 optional; with no :ACTIVATION the component is always active once its arguments are
@@ -394,6 +454,11 @@ relation or equation: (:activation (on-contact ?c)).
 Deactivation and transition relations are termination conditions: the engine never
 decides them; they are tested on the solved model, so they may mention quantities
 that are not state variables (a normal force).
+
+When the decider leaves several modes open (:CHOICE), the engine takes the first of
+them listed and MODEL-CHOICE-POINTS offers them in the order listed: a caller that
+finds several consistent prefers the earlier ones (a friction contact that can stick
+does not start sliding).
 
 Example (the thesis's figure 2-8, Newton's second law):
 

@@ -209,16 +209,21 @@ Signals ENGINE-ERROR when MODEL has no node for DATUM."
 ;;; Termination conditions
 
 (defstruct (termination-condition (:constructor make-termination-condition
-                                      (kind instance relation change)))
+                                      (kind instance relation change &optional event impact)))
   "A condition under which the state's model stops being valid: KIND is
 :DEACTIVATION, :MODE-TRANSITION or :ACTIVATION; INSTANCE the instance's key;
 RELATION the expanded relation in the prefix algebra; CHANGE what it stands for,
 to give APPLY-TRANSITION when it fires: (:deactivate KEY), (:activate KEY) or
-(:mode KEY :from MODE :to MODE)."
+(:mode KEY :from MODE :to MODE). EVENT is the event the owning component says the
+condition is, its variables replaced, e.g. (:lift-off particle sphere), or NIL when
+the component names none; IMPACT the event it is instead when it is reached at a
+non-zero rate (an impulsive event), or NIL."
   (kind nil :type (member :deactivation :mode-transition :activation))
   (instance nil)
   (relation nil)
-  (change nil))
+  (change nil)
+  (event nil)
+  (impact nil))
 
 (defmethod print-object ((condition termination-condition) stream)
   (print-unreadable-object (condition stream :type t)

@@ -37,7 +37,12 @@ function, so the engine never talks to Maxima itself.")
    #:instance-equations #:instance-collections
    #:termination-condition #:termination-condition-p #:termination-condition-kind
    #:termination-condition-instance #:termination-condition-relation
-   #:termination-condition-change
+   #:termination-condition-change #:termination-condition-event
+   #:termination-condition-impact
+   ;; choices left open at the start of a state
+   #:choice-point #:choice-point-p #:choice-point-instance #:choice-point-kind
+   #:choice-point-options #:choice-point-current #:choice-point-relations
+   #:model-choice-points #:choice-change #:stale-activation-changes
    ;; transitions and the incremental check
    #:apply-transition #:transition-report #:transition-report-changes
    #:transition-report-rederived #:transition-report-rederived-count

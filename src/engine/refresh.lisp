@@ -226,36 +226,53 @@ each active instance with modes. BUILD-MODEL accepts them as :DECISIONS."
         (push (list :mode (instance-key instance) (instance-mode instance)) decisions)))
     (canonical-sort decisions)))
 
+(defun instance-event (instance spec)
+  "The event and impact event of the EVENT-SPEC SPEC (or NIL) for INSTANCE: its
+templates with INSTANCE's bindings and collections substituted. Two values."
+  (if spec
+      (let ((bindings (append (instance-collections instance) (instance-bindings instance))))
+        (values (substitute-bindings bindings (event-spec-event spec))
+                (substitute-bindings bindings (event-spec-impact spec))))
+      (values nil nil)))
+
 (defun model-termination-conditions (model)
   "The termination conditions of MODEL's state, as TERMINATION-CONDITION objects:
 the deactivation conditions and the current mode's transition conditions of every
 active instance, and the activation condition (a conjunction) of every qualified
-instance that is not active. Relations are expanded for the instance."
+instance that is not active. Relations are expanded for the instance; each carries
+the event its component names for it."
   (let ((conditions '()))
     (dolist (instance (model-instances model) (nreverse conditions))
       (let* ((component (instance-component instance))
              (key (instance-key instance)))
         (cond ((instance-active-p instance)
-               (dolist (template (component-deactivation-relations component))
-                 (push (make-termination-condition
-                        :deactivation key (expanded-relation model instance template)
-                        (list :deactivate key))
-                       conditions))
+               (loop for template in (component-deactivation-relations component)
+                     for spec in (component-deactivation-events component)
+                     do (multiple-value-bind (event impact) (instance-event instance spec)
+                          (push (make-termination-condition
+                                 :deactivation key (expanded-relation model instance template)
+                                 (list :deactivate key) event impact)
+                                conditions)))
                (let ((mode (instance-mode instance)))
                  (when mode
                    (dolist (transition (mode-transitions (find-mode component mode)))
-                     (push (make-termination-condition
-                            :mode-transition key
-                            (expanded-relation model instance (transition-relation transition))
-                            (list :mode key :from mode :to (transition-target transition)))
-                           conditions)))))
+                     (multiple-value-bind (event impact)
+                         (instance-event instance (transition-event transition))
+                       (push (make-termination-condition
+                              :mode-transition key
+                              (expanded-relation model instance (transition-relation transition))
+                              (list :mode key :from mode :to (transition-target transition))
+                              event impact)
+                             conditions))))))
               ((and (component-activation-relations component)
                     (instance-qualified-p instance))
                (let ((relations (mapcar (lambda (template)
                                           (expanded-relation model instance template))
                                         (component-activation-relations component))))
-                 (push (make-termination-condition
-                        :activation key
-                        (if (rest relations) (cons 'and relations) (first relations))
-                        (list :activate key))
-                       conditions))))))))
+                 (multiple-value-bind (event impact)
+                     (instance-event instance (component-activation-event component))
+                   (push (make-termination-condition
+                          :activation key
+                          (if (rest relations) (cons 'and relations) (first relations))
+                          (list :activate key) event impact)
+                         conditions)))))))))

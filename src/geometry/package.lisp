@@ -22,8 +22,9 @@ and call inside ames.maxima:with-assumptions for symbolic shapes):
   CONTACTS-AT pair q                      -> ((contact . s) ...) holding at q
   CONTACT-OUTWARD-NORMAL / -NORMAL-ANGLE  -> normal force direction at s
   CONTACT-POINT, -UNIT-TANGENT, -CURVATURE, PATH-VELOCITY, PATH-ACCELERATION
-  CONTACT-MEETING / EARLIEST-MEETING      -> when q(tau) meets a contact
-  CONTACT-LEAVINGS / EARLIEST-LEAVING     -> when s(tau) passes an end")
+  CONTACT-MEETING                         -> the conditions for q(tau) to meet a contact
+  CONTACT-LEAVINGS                        -> the conditions for s(tau) to pass an end
+(when they first hold is the simulator's question: src/simulator/termination.lisp)")
   (:export
    ;; conditions
    #:geometry-error #:invalid-shape #:invalid-shape-form
@@ -56,5 +57,4 @@ and call inside ames.maxima:with-assumptions for symbolic shapes):
    #:contact-meeting #:meeting #:meeting-contact #:meeting-gap #:meeting-rate
    #:meeting-extent #:meeting-conditions
    #:contact-leavings #:leaving #:leaving-contact #:leaving-endpoint #:leaving-point
-   #:leaving-equation #:leaving-direction #:leaving-neighbour
-   #:earliest-meeting #:earliest-leaving))
+   #:leaving-equation #:leaving-direction #:leaving-neighbour))

@@ -1,12 +1,12 @@
-;;;; src/interface/cli.lisp -- the command line: bin/ames run FILE... [--format text|sexp] [--numeric] [--set p=v ...]
+;;;; src/interface/cli.lisp -- the command line: bin/ames run FILE... [--format text|sexp|latex|json|html] [--svg FILE] [--numeric] [--set p=v ...]
 ;;;;
 ;;;; Exit codes, so that a script can tell a finished run from one that stopped:
-;;;;   0  every scenario ran to its end;
+;;;;   0  every scenario ran to its end (a run that branched ran every branch to its end);
 ;;;;   1  a scenario error (a defective scenario or file, values that break an assumption,
 ;;;;      a failure of the simulation); the other scenarios of the files still run;
 ;;;;   2  a usage error (nothing is run);
-;;;;   3  every scenario was valid, but a run ended ambiguous or undecided: the
-;;;;      assumptions (and the values, if any) did not decide which event comes first.
+;;;;   3  every scenario was valid, but a run (or a branch of it) ended ambiguous or
+;;;;      undecided: the assumptions (and the values, if any) did not decide what comes next.
 ;;;; When a run has both an error and an undecided scenario, the status is 1.
 
 (in-package #:ames)
@@ -24,17 +24,25 @@
                      (ames-error-datum condition)))))
 
 (defparameter *usage*
-  "Usage: ames run FILE... [--format text|sexp] [--numeric] [--set PARAM=VALUE ...]
+  "Usage: ames run FILE... [--format text|sexp|latex|json|html] [--svg OUT.svg] [--numeric]
+                [--set PARAM=VALUE ...]
+       ames explain FILE... [--state N] [--numeric] [--set PARAM=VALUE ...]
   Simulate every scenario in each FILE and print a report.
   --format text   a report for people, state by state (the default)
   --format sexp   one readable s-expression per scenario (see the scenario language page)
+  --format latex  a LaTeX fragment per scenario (formulas through Maxima's tex)
+  --format json   the s-expression's content as JSON, one line per scenario
+  --format html   one self-contained page: pictures, timelines, typeset formulas
+  --svg OUT.svg   also draw each scenario (OUT-NAME.svg when the run has several)
   --numeric       use the scenario's (:value N) defaults as parameter values
   --set p=v ...   give parameter p the number v (an integer, ratio or decimal), over its
                   default; numeric values are then printed beside the closed forms, and
                   a fact the assumptions leave open but the values decide is used and
                   reported. Values that break a declared assumption are an error.
-Exit codes: 0 complete, 1 a scenario error, 2 usage, 3 a run that ended ambiguous or
-undecided (1 wins when both happen)."
+  explain         why each state's contacts and modes hold, where its equations
+                  come from, and why it ends when it does (or only state N)
+Exit codes: 0 complete, 1 a scenario error, 2 usage, 3 a run (or a branch) that ended
+ambiguous or undecided (1 wins when both happen)."
   "The text printed for `ames help` and after a usage error.")
 
 (defun parse-decimal (text)
@@ -74,23 +82,27 @@ USAGE-ERROR naming TEXT when it is malformed."
 
 (defun parse-command-line (arguments)
   "Parse ARGUMENTS (strings, without the program name) into a plist (:COMMAND :FILES
-:FORMAT :SETTINGS :NUMERIC). Signals USAGE-ERROR on anything malformed."
-  (let ((command (first arguments)) (files '()) (format :text) (settings '()) (numeric nil))
+:FORMAT :SETTINGS :SVG :STATE :NUMERIC). Signals USAGE-ERROR on anything malformed."
+  (let ((command (first arguments)) (files '()) (format :text) (settings '()) (svg nil)
+        (state nil) (numeric nil))
     (cond ((null command) (error 'usage-error :detail "no command given"))
           ((member command '("help" "--help" "-h") :test #'string=)
            (return-from parse-command-line (list :command :help)))
-          ((string/= command "run") (error 'usage-error :datum command
-                                                        :detail "unknown command")))
+          ((not (member command '("run" "explain") :test #'string=))
+           (error 'usage-error :datum command :detail "unknown command")))
     (loop with rest = (rest arguments)
           while rest
           do (let ((argument (pop rest)))
                (cond ((string= argument "--format")
                       (let ((value (pop rest)))
                         (setf format
-                              (cond ((equal value "text") :text)
-                                    ((equal value "sexp") :sexp)
-                                    (t (error 'usage-error :datum value
-                                                           :detail "--format takes text or sexp"))))))
+                              (or (find value *report-formats* :test #'string-equal)
+                                  (error 'usage-error :datum value
+                                                      :detail "--format takes text, sexp, latex, json or html")))))
+                     ((string= argument "--svg")
+                      (setf svg (pop rest))
+                      (when (or (null svg) (eql 0 (search "--" svg)))
+                        (error 'usage-error :datum argument :detail "--svg takes the picture's file name")))
                      ((string= argument "--numeric")
                       (setf numeric t))
                      ((string= argument "--set")
@@ -99,12 +111,18 @@ USAGE-ERROR naming TEXT when it is malformed."
                       (loop while (and rest (find #\= (first rest))
                                        (not (eql 0 (search "--" (first rest)))))
                             do (push (parse-setting (pop rest)) settings)))
+                     ((and (string= command "explain") (string= argument "--state"))
+                      (let ((value (and rest (parse-decimal (pop rest)))))
+                        (unless (and (integerp value) (>= value 0))
+                          (error 'usage-error :datum argument :detail "--state takes a state's index"))
+                        (setf state value)))
                      ((eql 0 (search "--" argument))
                       (error 'usage-error :datum argument :detail "unknown option"))
                      (t (push argument files)))))
     (when (null files) (error 'usage-error :detail "run needs at least one scenario file"))
-    (list :command :run :files (nreverse files) :format format
-          :settings (nreverse settings) :numeric numeric)))
+    (list :command (if (string= command "explain") :explain :run)
+          :files (nreverse files) :format format
+          :settings (nreverse settings) :svg svg :state state :numeric numeric)))
 
 (defun main (arguments)
   "The entry point of bin/ames: run the command in ARGUMENTS (a list of strings) and quit
@@ -115,11 +133,16 @@ ambiguous or undecided), or 2 on a usage error."
               (let ((options (parse-command-line arguments)))
                 (case (getf options :command)
                   (:help (write-string *usage*) (terpri) +exit-complete+)
-                  (:run (run-files (getf options :files)
-                                   :format (getf options :format)
-                                   :settings (getf options :settings)
-                                   :numeric (getf options :numeric)
-                                   :stream *standard-output*))))
+                  (:explain (explain-files (getf options :files) :state (getf options :state)
+                                           :settings (getf options :settings)
+                                           :numeric (getf options :numeric)))
+                  (:run (let ((*package* (find-package '#:ames-scenario)))
+                          (run-files (getf options :files)
+                                     :format (getf options :format)
+                                     :settings (getf options :settings)
+                                     :numeric (getf options :numeric)
+                                     :svg (getf options :svg)
+                                     :stream *standard-output*)))))
             (usage-error (condition)
               (format *error-output* "ames: ~A~%~A~%" condition *usage*)
               +exit-usage+))))
@@ -127,15 +150,43 @@ ambiguous or undecided), or 2 on a usage error."
     (finish-output *error-output*)
     (uiop:quit status)))
 
+(defun explain-files (files &key state settings numeric (stream *standard-output*))
+  "Explain every scenario of each of FILES (see EXPLAIN), or only the state STATE.
+SETTINGS and NUMERIC give parameter values as for RUN-FILES. Returns the exit status:
+0, or 1 when a scenario could not be explained."
+  (let ((status 0))
+    (dolist (file files status)
+      (handler-case
+          (dolist (history (run-file file :settings settings :numeric numeric))
+            (explain history :state state :stream stream))
+        (ames-error (condition)
+          (setf status 1)
+          (format *error-output* "~&ames: ~A~%" condition))))))
+
 (defun undecided-history-p (history)
-  "True when HISTORY ended without deciding what comes next: its outcome is :AMBIGUOUS
-(or :UNDECIDED)."
-  (and (member (history-outcome history) '(:ambiguous :undecided)) t))
+  "True when HISTORY, or a branch of one of its forks, ended without deciding what
+comes next: its outcome is :AMBIGUOUS or :UNDECIDED. At a fork whose branch the run's
+values select (:SELECTED T), only that branch counts."
+  (labels ((undecided-outcome-p (outcome) (member outcome '(:ambiguous :undecided)))
+           (counted-branches (branches)
+             (let ((selected (find-if (lambda (branch) (getf branch :selected)) branches)))
+               (if selected (list selected) branches)))
+           (undecided-states-p (states)
+             (some (lambda (state)
+                     (some (lambda (branch)
+                             (or (undecided-outcome-p (getf branch :outcome))
+                                 (undecided-states-p (getf branch :states))))
+                           (counted-branches (state-branches state))))
+                   states)))
+    (and (or (undecided-outcome-p (history-outcome history))
+             (undecided-states-p (history-states history)))
+         t)))
 
 (defun simulate-with-values (scenario bridge values)
   "Simulate SCENARIO with the checked parameter VALUES (an alist (PARAMETER . NUMBER)),
-stopping at an ambiguity; the facts the values decided outside the simulator's own
-transitions (geometric checks) are added to the history's notes as :ASSUMED."
+stopping at an ambiguity that cannot be branched on; the facts the values decided
+outside the simulator's own transitions (geometric checks) are added to the history's
+notes as :ASSUMED, with :STATE NIL."
   (ames.maxima:with-parameter-values (values)
     (let ((history (handler-bind ((ambiguous-transition #'stop-simulation))
                      (simulate scenario :bridge bridge :parameter-values values))))
@@ -145,16 +196,19 @@ transitions (geometric checks) are added to the history's notes as :ASSUMED."
           (push (list :state nil :fact fact) (getf (history-notes history) :assumed))))
       history)))
 
-(defun run-files (files &key (format :text) settings numeric (stream *standard-output*)
+(defun run-files (files &key (format :text) settings numeric (stream *standard-output*) svg
                           (bridge (current-bridge)))
   "Simulate every scenario of each of FILES and print each history on STREAM in FORMAT
-(:TEXT or :SEXP). SETTINGS is an alist (PARAMETER-NAME . NUMBER); with NUMERIC, the
-scenarios' (:value N) defaults are used too, SETTINGS overriding them; the values are
-checked against every assumption (see RUN-PARAMETER-VALUES). A defective scenario or
-file is reported on *ERROR-OUTPUT* and the others still run. Returns the exit status:
-+EXIT-COMPLETE+ (0) when every scenario ran to its end, +EXIT-SCENARIO-ERROR+ (1) when
-any had an error, else +EXIT-UNDECIDED+ (3) when any ended ambiguous or undecided."
-  (let ((error-seen nil) (undecided-seen nil))
+(:TEXT, :SEXP, :LATEX, :JSON or :HTML, one page at the end), and, when SVG (a file
+name) is given, draw each to it (see AMES.REPORT:FINISH-REPORT). SETTINGS is an alist
+(PARAMETER-NAME . NUMBER); with NUMERIC, the scenarios' (:value N) defaults are used
+too, SETTINGS overriding them; the values are checked against every assumption (see
+RUN-PARAMETER-VALUES). A defective scenario or file is reported on *ERROR-OUTPUT* and
+the others still run. Returns the exit status: +EXIT-COMPLETE+ (0) when every scenario
+ran to its end, +EXIT-SCENARIO-ERROR+ (1) when any had an error, else +EXIT-UNDECIDED+
+(3) when any (or a branch of one) ended ambiguous or undecided."
+  (let ((error-seen nil) (undecided-seen nil)
+        (output (make-report-output format stream :svg svg :bridge bridge)))
     (flet ((report-error (condition)
              (setf error-seen t)
              (format *error-output* "~&ames: ~A~%" condition)))
@@ -167,10 +221,10 @@ any had an error, else +EXIT-UNDECIDED+ (3) when any ended ambiguous or undecide
                        (history (simulate-with-values scenario bridge values)))
                   (when (undecided-history-p history)
                     (setf undecided-seen t))
-                  (ecase format
-                    (:text (print-history-text history stream))
-                    (:sexp (print-history-sexp history stream))))
-              (ames-error (condition) (report-error condition)))))))
+                  (report-history output history))
+              (ames-error (condition) (report-error condition))))))
+      (handler-case (finish-report output)
+        (ames-error (condition) (report-error condition))))
     (cond (error-seen +exit-scenario-error+)
           (undecided-seen +exit-undecided+)
           (t +exit-complete+))))

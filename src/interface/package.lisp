@@ -29,6 +29,8 @@ re-exported from the layers below) and the command line of bin/ames.")
    #:scenario-body #:scenario-body-name #:scenario-body-shape #:scenario-body-mass
    #:scenario-body-position #:scenario-body-velocity #:scenario-body-fixed-p
    #:scenario-force #:scenario-force-name #:scenario-force-body #:scenario-force-value
+   #:scenario-frictions #:scenario-friction #:scenario-friction-bodies
+   #:scenario-friction-static #:scenario-friction-kinetic #:find-scenario-friction
    #:find-scenario-parameter #:find-scenario-body #:find-scenario-force
    #:scenario-assumption-relations #:scenario-parameter-values
    #:scenario-moving-bodies #:scenario-fixed-bodies
@@ -47,8 +49,12 @@ re-exported from the layers below) and the command line of bin/ames.")
    #:qualitative-state #:state-index #:state-start #:state-duration #:state-contacts
    #:state-accelerations #:state-forces-of #:state-positions #:state-velocities
    #:state-end-event #:state-final-positions #:state-final-velocities #:state-notes
+   #:state-initial-velocities #:state-analysis #:state-branches #:history-answers
+   #:explain #:explain-files #:scenario-branch #:scenario-restitutions #:scenario-restitution
    #:body-entry
    #:history-sexp #:print-history-sexp #:print-history-text
+   #:print-history-latex #:print-history-html #:print-history-svg #:history-svg
+   #:history-json #:print-history-json #:json-to-sexp
    ;; the checks through Maxima (src/scenario/semantics.lisp)
    #:check-scenario #:check-scenario-assumptions #:check-scenario-geometry
    #:missing-assumption-error #:missing-assumption-fact

@@ -1,21 +1,38 @@
 ;;;; src/kb/mechanics.lisp -- AMES's knowledge of frictionless translational mechanics.
 ;;;;
 ;;;; One DEFCOMPONENT per piece of the thesis's knowledge (sections 2.5.2-2.5.7 and figures
-;;;; 2-6 to 2-9). The simulator describes each state's situation with these entities:
+;;;; 2-6 to 2-9). The components own what the simulator must not know by name:
+;;;;   - their EVENTS: each activation, deactivation and transition condition names the
+;;;;     event it is, e.g. (:lift-off ?body1 ?body2), and the impulsive event it is when
+;;;;     reached at a non-zero rate, e.g. (:collision ?body1 ?body2);
+;;;;   - their DYNAMICS: (derivative X RATE) beliefs say that the state variable X changes
+;;;;     at RATE (both quantity terms); the simulator gathers them into the state's ODEs,
+;;;;     solves the rest of the model for the rates and picks an integrator;
+;;;;   - their REPORT: (reported :forces ENTRY) beliefs are the entries of a state's force
+;;;;     list, as the scenario language's output section writes them, with quantity terms
+;;;;     that the simulator replaces by their values.
+;;;; The simulator describes each state's situation with these entities:
 ;;;;   (body NAME :fixed T-or-NIL :mass EXPR)
 ;;;;   (gravity-field NAME :strength EXPR)                      pointing -y
 ;;;;   (external-force NAME :on BODY :fx EXPR :fy EXPR)
 ;;;;   (simple-contact K :observer A :obstacle B :geometry C)   C an ames.geometry contact
+;;;;   (friction-coefficients F :between (A B) :static MU-S :kinetic MU-K)   see friction.lisp
 ;;;; and reads back equations over these quantity terms (fixed frame, cartesian unless said):
 ;;;;   (acc B :x)  (vel B :x)  (pos B :x)        acceleration, velocity, position of body B
-;;;;   (vel0 B :x) (pos0 B :x)                   their values when the state starts
 ;;;;   (rel-acc A B :x)                          A's acceleration measured in B's frame
 ;;;;   (fx KIND ...) (fy KIND ...)               components of the force named (KIND ...)
 ;;;;   (normal-force K)                          magnitude of contact K's normal force
 ;;;;   (path-acc K :tangential) (path-acc K :normal)   A's relative acceleration in contact K's
 ;;;;                                             path coordinates (normal: toward the obstacle)
 ;;;;   (path-position K) (path-speed K)          arc length s and its rate along contact K
-;;;;   (contact-gap K)                           how far A is from contact K's locus
+;;;;                                             (the rate: the observer's velocity relative
+;;;;                                             to the obstacle along the unit tangent)
+;;;;   (friction-force K)                        the friction on the observer of contact K,
+;;;;                                             its signed component along the unit tangent
+;;;;   (contact-gap K)                           how far A is from contact K's locus (the
+;;;;                                             geometry's gap: the simulator computes it)
+;;;; The state variables are the positions and velocities of the free bodies and, on a
+;;;; curved contact, the arc length and speed along it (path coordinates).
 ;;;; Forces are named by lists: (gravity B), (external F), (normal K) on the observer and
 ;;;; (reaction K) on the obstacle.
 
@@ -36,7 +53,8 @@
   (find-entity situation name))
 
 (defun contact-geometry (situation contact)
-  "The ames.geometry simple contact behind the situation's contact entity CONTACT."
+  "The ames.geometry simple contact behind the situation's contact entity CONTACT (a
+symbol naming a SIMPLE-CONTACT entity of SITUATION)."
   (entity-property (entity-named situation contact) :geometry))
 
 (defun axis-component (vector axis)
@@ -137,9 +155,10 @@ simple contact of its configuration-space obstacle. The contact ends when the ob
 moves past an end of the contact's locus, or when keeping it would need an attractive
 normal force (figure 2-6)."
   (:arguments (?contact :entity simple-contact :where (:observer ?body1 :obstacle ?body2)))
-  (:activation (touching ?contact))
-  (:deactivation (< (normal-force ?contact) 0)
-                 (past-an-end ?contact))
+  (:activation (touching ?contact)
+               (:event (:contact ?body1 ?body2) :impact (:collision ?body1 ?body2)))
+  (:deactivation (:when (< (normal-force ?contact) 0) :event (:lift-off ?body1 ?body2))
+                 (:when (past-an-end ?contact) :event (:leaves ?body1 ?body2 :endpoint)))
   (:assert (in-contact ?body1 ?body2 :along ?contact)))
 
 ;;; Kinematics (section 2.5.3)
@@ -170,7 +189,8 @@ normal of the contact's locus; its magnitude is not given: it is the compensatin
 that the kinematic restriction fixes (section 2.5.4)."
   (:arguments (?contact :belief (in-contact ?body1 ?body2 :along ?contact)))
   (:assert (force (normal ?contact) :type normal :from ?body2 :on ?body1 :contact ?contact)
-           (force (reaction ?contact) :type normal :from ?body1 :on ?body2 :contact ?contact))
+           (force (reaction ?contact) :type normal :from ?body1 :on ?body2 :contact ?contact)
+           (reported :forces (:normal ?body1 ?body2 (normal-force ?contact))))
   (:equations (= (force-x (normal ?contact))
                  (* (normal-force ?contact) (outward-normal ?contact :x)))
               (= (force-y (normal ?contact))
@@ -181,7 +201,8 @@ that the kinematic restriction fixes (section 2.5.4)."
 strength (figure 2-7)."
   (:arguments (?body :entity body :where (:fixed nil))
               (?field :entity gravity-field))
-  (:assert (force (gravity ?body) :type gravity :from ?field :on ?body))
+  (:assert (force (gravity ?body) :type gravity :from ?field :on ?body)
+           (reported :forces (:gravity ?body ((fx gravity ?body) (fy gravity ?body)))))
   (:equations (= (force-x (gravity ?body)) 0)
               (= (force-y (gravity ?body)) (- (* (mass ?body) (strength ?field))))))
 
@@ -189,7 +210,8 @@ strength (figure 2-7)."
   "A constant force from outside the scenario acts on a body with the value the user
 gave (section 2.5.4)."
   (:arguments (?force :entity external-force :where (:on ?body)))
-  (:assert (force (external ?force) :type external :from environment :on ?body))
+  (:assert (force (external ?force) :type external :from environment :on ?body)
+           (reported :forces (:external ?force ?body ((fx external ?force) (fy external ?force)))))
   (:equations (= (force-x (external ?force)) (force-value ?force :x))
               (= (force-y (external ?force)) (force-value ?force :y))))
 
@@ -213,18 +235,16 @@ opposite directions, are vector negations of each other (figure 2-9)."
   (:equations (= (force-x ?force1) (- (force-x ?force2)))
               (= (force-y ?force1) (- (force-y ?force2)))))
 
-(defcomponent derivative-relations (:knowledge-base *mechanics*)
-  "Velocity is the time derivative of position and acceleration that of velocity. While
-the acceleration is constant over the state (every contact straight), they integrate to
-the familiar polynomials in the state's time tau (section 2.5.5). On a curved contact
-the simulator integrates the path-coordinate equation instead."
+(defcomponent kinematics-of-a-body (:knowledge-base *mechanics*)
+  "Velocity is the time derivative of position and acceleration that of velocity
+(section 2.5.5): a free body's state variables are its position and velocity, and
+these are their ODEs. The simulator solves the rest of the model for the
+accelerations and integrates (polynomials in tau while they are constant)."
   (:arguments (?body :entity body :where (:fixed nil)))
-  (:equations (= (vel ?body :x) (+ (vel0 ?body :x) (* (acc ?body :x) tau)))
-              (= (vel ?body :y) (+ (vel0 ?body :y) (* (acc ?body :y) tau)))
-              (= (pos ?body :x) (+ (pos0 ?body :x) (* (vel0 ?body :x) tau)
-                                   (* 1/2 (acc ?body :x) (expt tau 2))))
-              (= (pos ?body :y) (+ (pos0 ?body :y) (* (vel0 ?body :y) tau)
-                                   (* 1/2 (acc ?body :y) (expt tau 2))))))
+  (:assert (derivative (pos ?body :x) (vel ?body :x))
+           (derivative (pos ?body :y) (vel ?body :y))
+           (derivative (vel ?body :x) (acc ?body :x))
+           (derivative (vel ?body :y) (acc ?body :y))))
 
 ;;; Reference frames (section 2.5.6) and coordinate systems (section 2.5.7)
 
@@ -255,6 +275,8 @@ normal component comes from the kinematic restriction."
                      (* (path-acc ?contact :normal) (cosine-of-rotation ?contact))))))
   (:mode :path
    (:entry (/= (curvature ?contact) 0))
+   (:assert (derivative (path-position ?contact) (path-speed ?contact))
+            (derivative (path-speed ?contact) (path-acc ?contact :tangential)))
    (:equations (= (rel-acc ?body1 ?body2 :x)
                   (+ (* (path-acc ?contact :tangential) (unit-tangent ?contact :x))
                      (* (path-acc ?contact :normal) (inward-normal ?contact :x))))

@@ -298,11 +298,29 @@ whole of RANGE, or NIL when it is not monotone there (or RANGE is unbounded)."
   (list (ecase sign (:positive '>) (:negative '<) (:nonnegative '>=) (:nonpositive '<=))
         expression 0))
 
+(defun range-avoids-p (range point)
+  "True when RANGE holds no number POINT + 2 k pi (POINT a PI-NUMBER, k an integer)."
+  (multiple-value-bind (k away-low away-high) (range-piece range (pi-number 0 2) point)
+    (and k away-low away-high)))
+
+(defun range-bound-facts (function subject range)
+  "The facts that FUNCTION (SIN or COS) of SUBJECT stays strictly inside [-1, 1] on
+RANGE, where RANGE avoids the points at which it reaches 1 or -1: 0 < a < pi/2 gives
+cos a < 1 and sin a < 1 (Maxima knows only cos a <= 1)."
+  (let ((top (if (eq function 'sin) (pi-number 0 1/2) (pi-number 0)))
+        (bottom (if (eq function 'sin) (pi-number 0 -1/2) (pi-number 0 1)))
+        (value (list function subject)))
+    (append (when (range-avoids-p range top) (list (list '< value 1)))
+            (when (range-avoids-p range bottom) (list (list '> value -1))))))
+
 (defun angle-sign-facts (facts)
   "The sign facts of sin, cos and tan of each subject that the flattened FACTS bound on
-both sides: 0 < a < pi/2 gives sin a > 0, cos a > 0 and tan a > 0."
+both sides, and the strict bounds of sin and cos inside [-1, 1]: 0 < a < pi/2 gives
+sin a > 0, cos a > 0, tan a > 0, sin a < 1 and cos a < 1 (and > -1)."
   (loop for (subject . range) in (subject-ranges facts)
         when (and (range-lower range) (range-upper range))
-          append (loop for function in '(sin cos tan)
-                       for sign = (range-trigonometric-sign function range)
-                       when sign collect (sign-fact sign (list function subject)))))
+          append (append (loop for function in '(sin cos tan)
+                               for sign = (range-trigonometric-sign function range)
+                               when sign collect (sign-fact sign (list function subject)))
+                         (range-bound-facts 'sin subject range)
+                         (range-bound-facts 'cos subject range))))

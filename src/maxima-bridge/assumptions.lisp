@@ -55,7 +55,7 @@ equal() and notequal())."
                    (t nil)))
            (apply-operator (operator arguments)
              (handler-case
-                 (ecase operator
+                 (case operator
                    (+ (apply #'+ arguments)) (- (apply #'- arguments))
                    (* (apply #'* arguments)) (/ (apply #'/ arguments))
                    (expt (expt (first arguments) (second arguments)))
@@ -167,7 +167,8 @@ the process is discarded: a new one is built from the remaining frames."
 ((> mp 0) (> a 0) (< a (/ pi 2)))) assumed in BRIDGE's Maxima, in a scope of their own
 that ends when THUNK returns or exits; scopes nest. Adds the sign facts of sin, cos and
 tan that follow from numeric bounds (0 < a < pi/2 gives sin a > 0, cos a > 0, tan a > 0).
-Returns THUNK's values.
+A fact with a product of square roots of negative radicands is told to Maxima with
+real roots (sqrt(A) sqrt(B) = -sqrt(-A) sqrt(-B) for A, B < 0). Returns THUNK's values.
 Signals UNTRANSLATABLE-EXPRESSION for a fact outside the algebra, MAXIMA-ERROR when
 Maxima cannot assume a fact (a disjunction, say), and INCONSISTENT-ASSUMPTIONS naming
 the fact that contradicts the facts in force; its restart RETRACT-ASSUMPTION calls THUNK
@@ -184,9 +185,16 @@ under the other facts."
          (flat (flatten-facts facts))
          ;; Derived facts go first, so that a contradiction is laid at a given fact.
          (sources (append derived flat))
+         ;; Maxima is told facts with real square roots only (see REALIFIED-RELATION)
+         (assumed (append derived
+                          (mapcar (lambda (fact)
+                                    (if (product-root-radicands fact)
+                                        (realified-relation bridge fact)
+                                        fact))
+                                  flat)))
          (frame (make-assumption-frame (fresh-context-name table) facts
                                        (mapcar (lambda (fact) (fact-to-maxima table fact))
-                                               sources)))
+                                               assumed)))
          (answer (let ((opened nil))
                    (unwind-protect
                         (prog1 (maxima-request bridge (frame-setup-form frame)

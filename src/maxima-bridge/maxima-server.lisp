@@ -53,12 +53,15 @@
   '(;; the algebra
     mplus mtimes mexpt mquotient mminus rat mlist
     %sin %cos %tan %asin %acos %atan %sqrt %log mabs $atan2 %derivative
+    %sinh %cosh %tanh %asinh %acosh %atanh
+    %elliptic_f %elliptic_kc %elliptic_e %jacobi_sn %jacobi_cn %jacobi_dn %jacobi_am %gamma
     mequal mnotequal mlessp mgreaterp mleqp mgeqp mand mor mnot $equal $notequal
     ;; operations the bridge uses
     $ratsimp $trigsimp $trigreduce $trigexpand $radcan $expand $factor $factorsum $fullratsimp
     $solve $is $sign $assume $supcontext $killcontext $float $tex
     $ode2 $ic2 $integrate $diff $substitute $ratsubst $hipow $ratcoef $freeof $num $denom
     $realroots $rhs $lhs
+    $ilt
     ;; helpers defined in this file
     $ames_pop_context $ames_polynomial_coefficients $ames_expression_size
     $ames_simplification_candidates $ames_trigsimp)
@@ -207,19 +210,65 @@ no power (2 or more) of sin, cos, sinh or cosh, which are all its search works o
 (defun $ames_simplification_candidates (expr trigonometric radicals)
   "The forms the bridge's simplest-form compares, each computed once (a request listing
 them as separate calls computes ratsimp(EXPR) and trigsimp(EXPR) twice):
-[ratsimp(EXPR), trigsimp(EXPR), ratsimp(trigsimp(EXPR)), factor(ratsimp(EXPR)), radcan(EXPR)],
+[ratsimp(EXPR), trigsimp(EXPR), ratsimp(trigsimp(EXPR)), factor(ratsimp(EXPR)), radcan(EXPR),
+radcan(trigsimp(EXPR))],
 trigsimp as $AMES_TRIGSIMP computes it. When TRIGONOMETRIC is false (EXPR has no sin,
 cos or tan, so that trigsimp(EXPR) is ratsimp(EXPR) again), the two trigsimp forms are
 left out; when RADICALS is false (EXPR has no radical, logarithm or power with a
 symbolic or fractional exponent, where radcan(EXPR) is ratsimp(EXPR) again),
-radcan(EXPR) is left out."
+radcan(EXPR) is left out; radcan(trigsimp(EXPR)) needs both (a square root whose
+argument is a square once sin^2 + cos^2 = 1 is used)."
   (let* ((ratsimped (ames-call '$ratsimp expr))
          (trigsimped (and trigonometric ($ames_trigsimp expr))))
     (cons '(mlist simp)
           (append (list ratsimped)
                   (and trigonometric (list trigsimped (ames-call '$ratsimp trigsimped)))
                   (list (ames-call '$factor ratsimped))
-                  (and radicals (list (ames-call '$radcan expr)))))))
+                  (and radicals (list (ames-call '$radcan expr)))
+                  (and radicals trigonometric (list (ames-call '$radcan trigsimped)))))))
+
+;;; Presentation (src/maxima-bridge/presentation.lisp): the forms a textbook writes, and
+;;; Maxima's tex() of a form exactly as the bridge structured it.
+
+(defun ames-scanmap-factorsum (expr)
+  "scanmap(factorsum, EXPR): every sum within EXPR grouped into factorable parts
+((l2^2 - 2 l1 l2 + l1^2) mb + l3^2 ma becomes (l2 - l1)^2 mb + l3^2 ma)."
+  (meval (list '($scanmap) '$factorsum (list '(mquote) expr))))
+
+(defun $ames_presentation_candidates (expr trigonometric)
+  "The forms of EXPR a presentation chooses from, each equal to EXPR by Maxima's own
+algebra: [r, factor(r), scanmap(factorsum, factor(r)), multthru(r)] for r = ratsimp(EXPR)
+(multthru: a quotient of a sum split into a sum of quotients) and, when
+TRIGONOMETRIC is true, also for r = ratsimp(trigsimp(EXPR)) (sin^2 + cos^2 = 1, tan as
+sin/cos), in that order."
+  (let ((bases (cons (ames-call '$ratsimp expr)
+                     (and trigonometric
+                          (list (ames-call '$ratsimp ($ames_trigsimp expr)))))))
+    (cons '(mlist simp)
+          (loop for base in bases
+                for factored = (ames-call '$factor base)
+                append (list base factored (ames-scanmap-factorsum factored)
+                             (ames-call '$multthru base))))))
+
+(defun $ames_presentation_coefficients (expr var)
+  "The list [c0, c1, ..., cd] with EXPR = c0 + c1 VAR + ... + cd VAR^d and every ci free
+of VAR (each ratsimp'd), or false when EXPR is no such polynomial in VAR."
+  (let ((coefficients ($ames_polynomial_coefficients expr var))
+        (denominator ($denom ($ratsimp expr))))
+    (and coefficients
+         (cons '(mlist simp)
+               (mapcar #'(lambda (c) (ames-call '$ratsimp (div c denominator)))
+                       (cdr coefficients))))))
+
+(defmspec $ames_tex_as_is (form)
+  "tex(X, false) for the unevaluated argument X of FORM, printed exactly as it is
+structured (simp:false): the order of terms and factors, quotients and negations are the
+caller's. Returns the TeX string."
+  (let (($simp nil))
+    (meval (list '($tex) (list '(mquote) (cadr form)) nil))))
+
+(dolist (head '($ames_presentation_candidates $ames_presentation_coefficients $ames_tex_as_is))
+  (pushnew head *ames-allowed-heads*))
 
 ;;; The loop.
 

@@ -145,9 +145,24 @@ finds none."
 
 ;;; Numeric values
 
+(defparameter *lisp-evaluated-operators*
+  '(elliptic-f elliptic-k elliptic-e jacobi-sn jacobi-cn jacobi-dn jacobi-am)
+  "Operators whose numeric values NUMERIC-VALUE takes from AMES.BASE:EXPRESSION-VALUE
+rather than Maxima's float(): Maxima 5.46 gives jacobi_am(u, m) beyond the first
+quarter period as asin(sn(u, m)) (wrong), and complex rounding residues (or complex
+values) for jacobi_dn and elliptic_e with m > 1.")
+
+(defun mentions-operator-p (expression operators)
+  "True when EXPRESSION has an operator form whose operator is one of OPERATORS."
+  (and (consp expression) (not (quantity-term-p expression))
+       (or (member (first expression) operators)
+           (some (lambda (x) (mentions-operator-p x operators)) (rest expression)))))
+
 (defun numeric-value (bridge expression bindings)
   "The value of the arithmetic EXPRESSION, as a double-float, when each name in the
-alist BINDINGS ((name . real) ...) is replaced by its number.
+alist BINDINGS ((name . real) ...) is replaced by its number. An expression with an
+elliptic or Jacobi function is evaluated in Lisp where it has a real value there (see
+*LISP-EVALUATED-OPERATORS*), else like any other by Maxima's float().
 Signals NUMERIC-EVALUATION-FAILED naming what is left when the result is no real
 number (a name without value, a complex value, a division by zero);
 INVALID-BRIDGE-ARGUMENT for malformed BINDINGS; UNTRANSLATABLE-EXPRESSION;
@@ -162,6 +177,9 @@ MAXIMA-TIMEOUT."
     (when unbound
       (error 'numeric-evaluation-failed :datum expression
                                         :detail (format nil "no value for ~{~S~^, ~}" unbound)))
+    (when (mentions-operator-p substituted *lisp-evaluated-operators*)
+      (let ((value (expression-value substituted)))
+        (when value (return-from numeric-value (float value 1d0)))))
     (let ((answer (handler-case (maxima-request bridge (mcall "$FLOAT" (to-mx bridge substituted))
                                                 :datum expression)
                     (maxima-error (c)

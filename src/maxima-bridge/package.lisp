@@ -21,7 +21,12 @@ only by this package's own translation (see translation.lisp and maxima-server.l
    #:solve-autonomous-ode #:ode-solution #:ode-solution-kind #:ode-solution-position
    #:ode-solution-velocity #:ode-solution-speed-squared
    #:numeric-value #:latex
+   ;; integrators (integrals.lisp, elliptic.lisp, quadrature.lisp, linear-ode.lisp, trig-roots.lisp)
+   #:travel-time #:numeric-travel-time #:position-over-time #:solve-linear-odes
+   #:earliest-trigonometric-root
    #:solve-script
+   ;; presentation (presentation.lisp)
+   #:presentation-candidates #:polynomial-coefficients #:presentation-latex
    ;; conditions
    #:maxima-condition #:maxima-error #:maxima-error-message
    #:maxima-question #:maxima-question-text #:maxima-question-expressions
@@ -30,6 +35,7 @@ only by this package's own translation (see translation.lisp and maxima-server.l
    #:solve-failed #:inconsistent-assumptions #:inconsistent-assumptions-fact
    #:untranslatable-expression #:untranslatable-result
    #:numeric-evaluation-failed #:invalid-bridge-argument #:untranslatable-result-form
+   #:linear-ode-failed
    ;; restarts
    #:retract-assumption #:assume-and-retry))
 

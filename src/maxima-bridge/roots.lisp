@@ -44,8 +44,9 @@ candidates of an undecided answer are wanted."
 (defun root-candidates (search offsets)
   "The translatable roots AFTER + OFFSET for OFFSETS."
   (loop for offset in offsets
-        for root = (handler-case (root-expression search offset)
-                     (untranslatable-result () nil))
+        for root = (and (not (contains-symbol-p +i+ offset)) ; a complex root is no time
+                        (handler-case (root-expression search offset)
+                          (untranslatable-result () nil)))
         when root collect root))
 
 (defun found (search offset)
@@ -68,10 +69,25 @@ another (see WITNESSED-BOTH-WAYS-P): its signs include :POSITIVE and :NEGATIVE."
 (defun sign-pattern-of (search form)
   "The signs of FORM, for the tests that only ask whether they lie within a set that
 lacks :POSITIVE or :NEGATIVE (ONLY, ROOT-VERDICT): all three, without asking Maxima,
-when FORM is seen to take both signs, else SIGNS-OF. Not for tests of :ZERO alone."
+when FORM is seen to take both signs, else SIGNS-OF, narrowed by DECIDE (which knows
+more than Maxima's sign(): trigonometric bounds, orderings) when Maxima leaves several."
   (if (mixed-signs-p search form)
       (list :positive :negative :zero)
-      (signs-of search form)))
+      (let ((signs (signs-of search form)))
+        (if (rest signs) (decided-signs search form signs) signs))))
+
+(defun decided-signs (search form signs)
+  "SIGNS (several) narrowed by DECIDE on FORM's translation: the sign it proves, or the
+pair it proves with >= or <=; SIGNS when it proves nothing."
+  (let* ((bridge (search-bridge search))
+         (expression (handler-case (from-mx bridge form)
+                       (untranslatable-result () (return-from decided-signs signs)))))
+    (flet ((proved (operator) (eq (decide bridge (list operator expression 0)) :true)))
+      (cond ((proved '>) (list :positive))
+            ((proved '<) (list :negative))
+            ((and (member :zero signs) (proved '>=)) (list :positive :zero))
+            ((and (member :zero signs) (proved '<=)) (list :negative :zero))
+            (t signs)))))
 
 (defun earliest-root (bridge expression variable &key (after 0) (strictly t) (candidates t))
   "The earliest real root of EXPRESSION = 0 in VARIABLE greater than AFTER (or equal to
@@ -127,52 +143,75 @@ depending on VARIABLE), MAXIMA-ERROR, MAXIMA-TIMEOUT."
   "c0 + c1 s = 0: the one root -c0/c1, when c1 cannot vanish."
   (destructuring-bind (c0 c1) coefficients
     (let ((offset (mform +mtimes+ -1 (mquotient c0 c1))))
-      (if (member :zero (signs-of search c1))
+      (if (member :zero (sign-pattern-of search c1))
           (unknown search (list offset))
           (ecase (root-verdict (sign-pattern-of search offset) (search-strictly search))
             (:yes (found search offset))
             (:no (values :none nil))
             (:maybe (unknown search (list offset))))))))
 
+(defun real-square-root (search radicand)
+  "The square root of the Maxima form RADICAND, written so that Maxima's simplifier does
+not turn it into the imaginary unit over a factor whose sign it does not know (it
+splits sqrt(N/D) into sqrt(N)/sqrt(D) when it knows N < 0): RADICAND in rational form,
+its numerator and denominator both negated when the numerator is negative."
+  (let* ((bridge (search-bridge search))
+         (datum (search-expression search))
+         (rational (maxima-request bridge (mcall "$RATSIMP" radicand) :datum datum))
+         (numerator (maxima-request bridge (mcall "$NUM" rational) :datum datum)))
+    (mform +mexpt+
+           (if (equal (sign-pattern-of search numerator) '(:negative))
+               (mquotient (maxima-request bridge (mcall "$EXPAND" (mform +mtimes+ -1 numerator))
+                                          :datum datum)
+                          (maxima-request bridge (mcall "$EXPAND" (mform +mtimes+ -1
+                                                                         (mcall "$DENOM" rational)))
+                                          :datum datum))
+               rational)
+           (mform +rat+ 1 2))))
+
 (defun quadratic-earliest-root (search coefficients form offset-variable)
   "c0 + c1 s + c2 s^2 = 0, through the product P = c0/c2 and sum S = -c1/c2 of the roots
 and the reduced discriminant S^2/4 - P: the roots are S/2 -+ sqrt(S^2/4 - P)."
   (destructuring-bind (c0 c1 c2) coefficients
-    (when (member :zero (signs-of search c2))
+    (when (member :zero (sign-pattern-of search c2))
       (return-from quadratic-earliest-root
         (solved-earliest-root search form offset-variable coefficients)))
     (let* ((product (mquotient c0 c2))
            (sum (mform +mtimes+ -1 (mquotient c1 c2)))
            (half-sum (mform +mtimes+ (mform +rat+ 1 2) sum))
            (discriminant (mdifference (mform +mexpt+ half-sum 2) product))
-           (root-of-discriminant (mform +mexpt+ discriminant (mform +rat+ 1 2)))
-           (larger (mform +mplus+ half-sum root-of-discriminant))
-           (smaller (mdifference half-sum root-of-discriminant))
            (product-signs (sign-pattern-of search product))
-           (strictly (search-strictly search)))
-      (flet ((only (signs &rest allowed) (and signs (subsetp signs allowed))))
-        (cond
-          ;; Roots of opposite signs: the larger is the only one after the start.
-          ((only product-signs :negative) (found search larger))
-          ;; A root at the start itself; the other is S.
-          ((equal product-signs '(:zero))
-           (if (not strictly)
-               (found search 0)
-               (ecase (root-verdict (sign-pattern-of search sum) t)
-                 (:yes (found search sum))
-                 (:no (values :none nil))
-                 (:maybe (unknown search (list sum))))))
-          ;; Roots of the same sign (or complex): both before the start when S <= 0.
-          ((only product-signs :positive)
-           (let ((sum-signs (sign-pattern-of search sum)))
-             (cond ((only sum-signs :negative :zero) (values :none nil))
-                   ((only sum-signs :positive)
-                    (let ((discriminant-signs (sign-pattern-of search discriminant)))
-                      (cond ((only discriminant-signs :negative) (values :none nil))
-                            ((only discriminant-signs :positive :zero) (found search smaller))
-                            (t (unknown search (list smaller larger))))))
-                   (t (unknown search (list smaller larger))))))
-          (t (unknown search (list smaller larger))))))))
+           (strictly (search-strictly search))
+           (root-of-discriminant nil))
+      (flet ((only (signs &rest allowed) (and signs (subsetp signs allowed)))
+             (root-of-discriminant ()
+               ;; made once, when a root is wanted (it costs round trips)
+               (or root-of-discriminant
+                   (setf root-of-discriminant (real-square-root search discriminant)))))
+        (symbol-macrolet ((larger (mform +mplus+ half-sum (root-of-discriminant)))
+                          (smaller (mdifference half-sum (root-of-discriminant))))
+          (cond
+            ;; Roots of opposite signs: the larger is the only one after the start.
+            ((only product-signs :negative) (found search larger))
+            ;; A root at the start itself; the other is S.
+            ((equal product-signs '(:zero))
+             (if (not strictly)
+                 (found search 0)
+                 (ecase (root-verdict (sign-pattern-of search sum) t)
+                   (:yes (found search sum))
+                   (:no (values :none nil))
+                   (:maybe (unknown search (list sum))))))
+            ;; Roots of the same sign (or complex): both before the start when S <= 0.
+            ((only product-signs :positive)
+             (let ((sum-signs (sign-pattern-of search sum)))
+               (cond ((only sum-signs :negative :zero) (values :none nil))
+                     ((only sum-signs :positive)
+                      (let ((discriminant-signs (sign-pattern-of search discriminant)))
+                        (cond ((only discriminant-signs :negative) (values :none nil))
+                              ((only discriminant-signs :positive :zero) (found search smaller))
+                              (t (unknown search (list smaller larger))))))
+                     (t (unknown search (list smaller larger))))))
+            (t (unknown search (list smaller larger)))))))))
 
 (defun solved-earliest-root (search form offset-variable coefficients)
   "The general case: the roots solve() finds, compared pairwise. COEFFICIENTS is the

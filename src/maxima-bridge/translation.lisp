@@ -39,6 +39,18 @@
     (sqrt . ,+sqrt+) (log . ,+log+) (abs . ,+abs+))
   "One-argument functions of the algebra and their Maxima heads.")
 
+(defparameter *special-function-heads*
+  `((sinh . ,(wire "%SINH")) (cosh . ,(wire "%COSH")) (tanh . ,(wire "%TANH"))
+    (asinh . ,(wire "%ASINH")) (acosh . ,(wire "%ACOSH")) (atanh . ,(wire "%ATANH"))
+    (elliptic-f . ,(wire "%ELLIPTIC_F")) (elliptic-k . ,(wire "%ELLIPTIC_KC"))
+    (elliptic-e . ,(wire "%ELLIPTIC_E"))
+    (jacobi-sn . ,(wire "%JACOBI_SN")) (jacobi-cn . ,(wire "%JACOBI_CN"))
+    (jacobi-dn . ,(wire "%JACOBI_DN")) (jacobi-am . ,(wire "%JACOBI_AM"))
+    (gamma-function . ,(wire "%GAMMA")))
+  "The hyperbolic, elliptic and Jacobi functions of the algebra and their Maxima heads
+(elliptic_f(phi, m), elliptic_kc(m), elliptic_e(phi, m), jacobi_sn(u, m) ...: the same
+argument order, parameter m as in AMES.BASE's special-functions.lisp).")
+
 (defparameter *relation-heads*
   `((= . ,+mequal+) (/= . ,+mnotequal+) (< . ,+mlessp+) (> . ,+mgreaterp+)
     (<= . ,+mleqp+) (>= . ,+mgeqp+))
@@ -184,6 +196,7 @@ UNTRANSLATABLE-EXPRESSION for anything outside the algebra."
                                     (mform +atan2+ (first arguments) (second arguments))
                                     (mform +atan+ (first arguments))))
                           (t (let ((head (or (cdr (assoc operator *function-heads*))
+                                             (cdr (assoc operator *special-function-heads*))
                                              (cdr (assoc operator *relation-heads*))
                                              (cdr (assoc operator *logical-heads*)))))
                                (apply #'mform head arguments)))))))))
@@ -225,6 +238,12 @@ TABLE. Signals UNTRANSLATABLE-RESULT for anything outside the algebra."
                ((eq head +atan+) (list 'atan (back (first arguments))))
                ((rassoc head *function-heads*)
                 (list (car (rassoc head *function-heads*)) (back (first arguments))))
+               ((rassoc head *special-function-heads*)
+                (let ((operator (car (rassoc head *special-function-heads*))))
+                  (unless (= (length arguments)
+                             (second (assoc operator +arithmetic-operators+)))
+                    (refuse-result x form (format nil "~A with ~D arguments" head (length arguments))))
+                  (list* operator (mapcar #'back arguments))))
                ((rassoc head *relation-heads*)
                 (list (car (rassoc head *relation-heads*))
                       (back (first arguments)) (back (second arguments))))

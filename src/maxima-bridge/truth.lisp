@@ -23,6 +23,22 @@
 
 (in-package #:ames.maxima)
 
+(defparameter *largest-simplified-relation* 400
+  "DECIDE-BY-SIGNED-PARTS has Maxima simplify (and factor) the difference of the sides
+of a relation of at most this many atoms and operators.")
+
+(defparameter *largest-squared-relation* 160
+  "DECIDE-BY-SQUARES leaves alone a relation with more atoms and operators than this:
+the comparisons a physicist makes through squares are short, and squaring the long
+relations of a simulation (sums of products of square roots) costs much and proves
+little.")
+
+(defparameter *deepest-reasoning* 3
+  "How many DECIDE-BY-REASONING calls may be under way at once.")
+
+(defvar *reasoning-depth* 0
+  "How many DECIDE-BY-REASONING calls are under way.")
+
 ;;; The steps
 
 (defun decide-by-quarter-turns (prover relation)
@@ -288,8 +304,9 @@ one product or quotient somewhere in EXPRESSION, each once."
 
 (defun imaginary-radicands (bridge relation)
   "The radicands of RELATION's products of square roots (see PRODUCT-ROOT-RADICANDS)
-that are proven negative: there sqrt(A) sqrt(B) = -sqrt(A B), which is() and sign(),
-taking every square root for a real one, get wrong. A radicand sign() finds
+that are proven negative: there sqrt(A) sqrt(B) = -sqrt(A B) is real, but Maxima's
+sign() takes the square root of a radicand it cannot see is negative for a nonnegative
+number, and one it sees is negative for an imaginary one. A radicand sign() finds
 nonnegative is not asked further."
   (loop for radicand in (product-root-radicands relation)
         for signs = (handler-case (form-signs bridge (to-mx bridge radicand) :datum relation)
@@ -299,34 +316,68 @@ nonnegative is not asked further."
                   (eq :true (decide bridge (list '< radicand 0))))
           collect radicand))
 
+(defun realified (expression radicands)
+  "EXPRESSION with each product or quotient holding an even number of square roots of
+the negative RADICANDS written with real roots: sqrt(A) sqrt(B) = -sqrt(-A) sqrt(-B) and
+sqrt(A) / sqrt(B) = sqrt(-A) / sqrt(-B) for A, B < 0 (i i = -1, i / i = 1). A product
+with an odd number of them, which is not real, is left as it is."
+  (labels ((walk (x)
+             (cond ((or (atom x) (quantity-term-p x)) x)
+                   ((member (expression-operator x) '(* /))
+                    (multiple-value-bind (coefficient factors) (product-parts x)
+                      (let ((turns 0))
+                        (let ((rewritten
+                                (loop for (factor . power) in factors
+                                      for radicand = (square-root-radicand factor)
+                                      collect (if (and radicand (member radicand radicands :test #'equal))
+                                                  (progn (incf turns power)
+                                                         (cons (list 'sqrt (list '- (walk radicand))) power))
+                                                  (cons (walk factor) power)))))
+                          (if (evenp turns)
+                              (product-expression (if (= 2 (mod turns 4)) (- coefficient) coefficient)
+                                                  rewritten)
+                              (cons (expression-operator x) (mapcar #'walk (expression-arguments x))))))))
+                   (t (cons (expression-operator x) (mapcar #'walk (expression-arguments x)))))))
+    (walk expression)))
+
+(defun realified-relation (bridge relation)
+  "RELATION (a relation or logical form) with its products of square roots of negative
+radicands written with real roots (see REALIFIED), or RELATION itself when it has none:
+Maxima takes the square root of a negative for an imaginary number, and so finds such a
+relation complex, or a fact about it inconsistent."
+  (let ((radicands (imaginary-radicands bridge relation)))
+    (if radicands (realified relation radicands) relation)))
+
 (defun decide-with-imaginary-radicands (bridge relation)
-  "RELATION decided without asking Maxima about its square roots of negative radicands
-(see IMAGINARY-RADICANDS): from the signs of its parts (two imaginary factors make a
-negative real one), then through squares."
-  (let* ((*imaginary-radicands* (imaginary-radicands bridge relation))
-         (prover (prover-for bridge))
-         (verdict (relation-verdict (expression-operator relation)
-                                    (expression-signs prover (relation-difference relation) :top t))))
-    (if (eq verdict :unknown)
-        (handler-case (decide-by-squares prover relation)
-          ((or maxima-timeout maxima-error) () :unknown))
-        verdict)))
+  "RELATION, which has products of square roots of negative radicands (see
+IMAGINARY-RADICANDS), decided in real terms: written with real roots where the products
+hold an even number of them (REALIFIED), and asked of DECIDE; else, without asking
+Maxima about those roots, from the signs of its parts (two imaginary factors make a
+negative real one) and through squares."
+  (let* ((radicands (imaginary-radicands bridge relation))
+         (real (realified relation radicands)))
+    (if (and (not (equal real relation)) (null (product-root-radicands-among real radicands)))
+        (decide bridge real)
+        (let* ((*imaginary-radicands* radicands)
+               (prover (prover-for bridge))
+               (verdict (relation-verdict (expression-operator relation)
+                                          (expression-signs prover (relation-difference relation) :top t))))
+          (if (eq verdict :unknown)
+              (handler-case (decide-by-squares prover relation)
+                ((or maxima-timeout maxima-error) () :unknown))
+              verdict)))))
 
-(defparameter *largest-simplified-relation* 400
-  "DECIDE-BY-SIGNED-PARTS has Maxima simplify (and factor) the difference of the sides
-of a relation of at most this many atoms and operators.")
-
-(defparameter *largest-squared-relation* 160
-  "DECIDE-BY-SQUARES leaves alone a relation with more atoms and operators than this:
-the comparisons a physicist makes through squares are short, and squaring the long
-relations of a simulation (sums of products of square roots) costs much and proves
-little.")
-
-(defparameter *deepest-reasoning* 3
-  "How many DECIDE-BY-REASONING calls may be under way at once.")
-
-(defvar *reasoning-depth* 0
-  "How many DECIDE-BY-REASONING calls are under way.")
+(defun product-root-radicands-among (expression radicands)
+  "The RADICANDS still under a square root in EXPRESSION."
+  (let ((found '()))
+    (labels ((walk (x)
+               (when (and (consp x) (not (quantity-term-p x)))
+                 (let ((radicand (square-root-radicand x)))
+                   (when (and radicand (member radicand radicands :test #'equal))
+                     (pushnew radicand found :test #'equal)))
+                 (mapc #'walk (expression-arguments x)))))
+      (walk expression))
+    found))
 
 (defparameter *reasoning-steps*
   '(decide-by-quarter-turns decide-by-signed-parts decide-by-common-factors

@@ -71,9 +71,9 @@
 
 (defun ball-function (operator a)
   "OPERATOR (sqrt exp log sin cos tan asin acos atan abs) of the ball A, or NIL where it
-is undefined or not real somewhere in A."
+is undefined or not real somewhere in A, and for the operators it does not know."
   (let ((x (ball-center a)) (rx (ball-radius a)))
-    (ecase operator
+    (case operator
       (abs (make-ball (abs x) rx))
       (sqrt (cond ((and (zerop x) (zerop rx)) (make-ball 0d0 0d0))
                   ((>= (- x rx) 0)

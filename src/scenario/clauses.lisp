@@ -95,21 +95,72 @@ are more."
       (checked-expression validation (second clause)))))
 
 (defun checked-simulate (validation clauses)
-  "The :states and :until of the (simulate ...) clause among CLAUSES, as two values."
+  "The :states, :until and :branch of the (simulate ...) clause among CLAUSES, as three
+values (:branch defaults to T)."
   (let ((clause (single-clause validation 'ames-scenario:simulate clauses)))
-    (when clause
-      (let* ((arguments (checked-keywords validation (rest clause) '(:states :until)
-                                          "simulate"))
-             (states (keyword-value :states arguments))
-             (until (multiple-value-bind (until present) (keyword-value :until arguments)
-                      (and present (checked-expression validation until)))))
-        (when (and (assoc :states arguments) (not (and (integerp states) (plusp states))))
-          (reject validation 'scenario-syntax-error states
-                  ":states takes a positive integer, not ~A" (show states)))
-        (when until
-          (check-positive-constant validation until "the :until time"
-                                   'scenario-expression-error))
-        (values states until)))))
+    (if (null clause)
+        (values nil nil t)
+        (let* ((arguments (checked-keywords validation (rest clause) '(:states :until :branch)
+                                            "simulate"))
+               (states (keyword-value :states arguments))
+               (until (multiple-value-bind (until present) (keyword-value :until arguments)
+                        (and present (checked-expression validation until))))
+               (branch (multiple-value-bind (value present) (keyword-value :branch arguments)
+                         (cond ((not present) t)
+                               ((named-p value "T") t)
+                               ((named-p value "NIL") nil)
+                               (t (reject validation 'scenario-syntax-error value
+                                          ":branch takes T or NIL, not ~A" (show value)))))))
+          (when (and (assoc :states arguments) (not (and (integerp states) (plusp states))))
+            (reject validation 'scenario-syntax-error states
+                    ":states takes a positive integer, not ~A" (show states)))
+          (when until
+            (check-positive-constant validation until "the :until time"
+                                     'scenario-expression-error))
+          (values states until branch)))))
+
+;;; ------------------------------------------------------------------------------------
+;;; Collisions
+
+(defun checked-restitution (validation clause)
+  "The entry (BODY1 BODY2 E), or (NIL NIL E) for the default, that the clause
+(restitution E) or (restitution BODY1 BODY2 E) declares. E must lie in [0, 1] when it
+is a number."
+  (enter validation "clause RESTITUTION" clause)
+  (flet ((coefficient (x)
+           (let* ((e (checked-expression validation x))
+                  (value (expression-value e)))
+             (when (and value (not (<= 0 value 1)))
+               (reject validation 'scenario-expression-error x
+                       "a coefficient of restitution lies between 0 and 1, not ~A" (show x)))
+             e))
+         (body (x)
+           (let ((declaration (declared validation x)))
+             (unless (and declaration (eq (car declaration) :body))
+               (reject validation 'undeclared-symbol-error x "~A is not a declared body" (show x)))
+             (cdr declaration))))
+    (case (length clause)
+      (2 (list nil nil (coefficient (second clause))))
+      (4 (let ((b1 (body (second clause))) (b2 (body (third clause))))
+           (when (eq b1 b2)
+             (reject validation 'scenario-syntax-error clause
+                     "an impact takes two different bodies"))
+           (list b1 b2 (coefficient (fourth clause)))))
+      (t (reject validation 'scenario-syntax-error clause
+                 "restitution is (restitution E) or (restitution BODY1 BODY2 E)")))))
+
+(defun checked-restitutions (validation clauses)
+  "The restitution entries of CLAUSES; at most one default and one per pair."
+  (let ((entries '()))
+    (dolist (clause clauses (nreverse entries))
+      (let ((entry (checked-restitution validation clause)))
+        (when (find-if (lambda (old) (or (and (eq (first old) (first entry)) (eq (second old) (second entry)))
+                                         (and (eq (first old) (second entry)) (eq (second old) (first entry)))))
+                       entries)
+          (reject validation 'duplicate-clause-error clause
+                  "~:[the default coefficient of restitution~;this pair's coefficient of restitution~] is given twice"
+                  (first entry)))
+        (push entry entries)))))
 
 ;;; ------------------------------------------------------------------------------------
 ;;; The scenario
@@ -136,7 +187,7 @@ order."
             ((not (clause-word clause))
              (reject validation 'unknown-clause-error clause
                      "~A is not a clause of the scenario language; the clauses are ~
-                      parameters, gravity, body, force, simulate and query"
+                      parameters, gravity, body, force, simulate, query, restitution and friction"
                      (show (car clause))))
             (t (push clause (cdr (assoc (clause-word clause) sorted))))))
     (dolist (entry sorted sorted)
@@ -206,16 +257,20 @@ CHECK-SCENARIO-GEOMETRY, which the caller runs when it has those layers."
                   (bodies (mapcar (lambda (clause) (checked-body validation clause))
                                   (clauses 'ames-scenario:body)))
                   (forces (mapcar (lambda (clause) (checked-force validation clause))
-                                  (clauses 'ames-scenario:force))))
+                                  (clauses 'ames-scenario:force)))
+                  (frictions (checked-frictions validation (clauses 'ames-scenario:friction))))
               (when (null bodies)
                 (enter validation "form" form)
                 (reject validation 'missing-property-error form "the scenario has no body"))
-              (multiple-value-bind (states until)
+              (multiple-value-bind (states until branch)
                   (checked-simulate validation (clauses 'ames-scenario:simulate))
                 (make-instance 'scenario
                                :name name :description description
                                :parameters parameters :gravity gravity
-                               :bodies bodies :forces forces
-                               :states states :until until
-                               :queries (mapcar #'rest (clauses 'ames-scenario:query))
+                               :bodies bodies :forces forces :frictions frictions
+                               :states states :until until :branch branch
+                               :queries (mapcar (lambda (clause) (checked-query validation clause))
+                                                (clauses 'ames-scenario:query))
+                               :restitutions (checked-restitutions
+                                              validation (clauses 'ames-scenario:restitution))
                                :source source :form form)))))))))

@@ -39,6 +39,10 @@
 ;;;;   must be positive when it is a number. Either may be absent: NIL means no limit
 ;;;;   from the scenario (the simulator applies its own). Both: whichever comes first.
 ;;;; - (query ...) clauses are kept as data, unchecked, for the simulator.
+;;;; - (friction BODY1 BODY2 :static MU-S [:kinetic MU-K]) names two distinct declared
+;;;;   bodies, not both fixed; one clause per pair (in either order). The coefficients are
+;;;;   expressions; a constant one must not be negative, and constant ones must have
+;;;;   MU-K <= MU-S (the textbook's Coulomb friction). MU-K defaults to MU-S.
 ;;;; - Bounds: a form nested more than +DEEPEST-FORM+ deep or holding more than
 ;;;;   +LARGEST-FORM+ conses (or circular) is rejected before anything else.
 ;;;;
@@ -74,12 +78,22 @@ expression, or NIL when the scenario has no gravity.")
            :documentation "The SCENARIO-BODYs, in order of declaration.")
    (forces :initarg :forces :initform '() :reader scenario-forces
            :documentation "The SCENARIO-FORCEs, in order of declaration.")
+   (frictions :initarg :frictions :initform '() :reader scenario-frictions
+              :documentation "The SCENARIO-FRICTIONs (Coulomb friction between pairs of
+bodies), in order of declaration.")
    (states :initarg :states :initform nil :reader scenario-states
            :documentation "Stop after this many states (a positive integer), or NIL.")
    (until :initarg :until :initform nil :reader scenario-until
           :documentation "Stop at this global time (an expression), or NIL.")
+   (branch :initarg :branch :initform t :reader scenario-branch
+           :documentation "True when an ambiguity splits the run into branches; NIL when it
+stops the run, naming the missing fact.")
    (queries :initarg :queries :initform '() :reader scenario-queries
-            :documentation "The arguments of each (query ...) clause, as data.")
+            :documentation "The validated queries, each (NAME QUESTION) in the canonical form
+of src/scenario/queries.lisp.")
+   (restitutions :initarg :restitutions :initform '() :reader scenario-restitutions
+                 :documentation "Newton's coefficients of restitution: a list of (BODY1 BODY2
+E) for a pair's impacts and (NIL NIL E) for every other impact (without one, E is 0).")
    (source :initarg :source :initform nil :reader scenario-source
            :documentation "Where the form came from (\"FILE, line N\"), or NIL.")
    (form :initarg :form :initform nil :reader scenario-form
@@ -123,6 +137,28 @@ words (POINT, (POLYGON (X Y) ...), ...) and checked expressions.")
           :documentation "The constant force (FX FY) in the fixed frame."))
   (:documentation "A constant external force on one body."))
 
+(defclass scenario-friction ()
+  ((bodies :initarg :bodies :reader scenario-friction-bodies
+           :documentation "The symbols of the two bodies, as the clause names them.")
+   (static :initarg :static :reader scenario-friction-static
+           :documentation "The coefficient of static friction MU-S, an expression.")
+   (kinetic :initarg :kinetic :reader scenario-friction-kinetic
+            :documentation "The coefficient of kinetic friction MU-K, an expression (MU-S
+when the clause gives none)."))
+  (:documentation "Coulomb friction on every contact between two bodies: the clause
+(friction BODY1 BODY2 :static MU-S [:kinetic MU-K])."))
+
+(defun scenario-restitution (scenario body1 body2)
+  "The coefficient of restitution of impacts between BODY1 and BODY2 (either order):
+the pair's own, else the scenario's default, else 0 (a plastic impact)."
+  (let ((entries (scenario-restitutions scenario)))
+    (third (or (find-if (lambda (entry)
+                          (or (and (eq (first entry) body1) (eq (second entry) body2))
+                              (and (eq (first entry) body2) (eq (second entry) body1))))
+                        entries)
+               (find nil entries :key #'first)
+               '(nil nil 0)))))
+
 (defun scenario-p (object)
   "True when OBJECT is a validated SCENARIO."
   (typep object 'scenario))
@@ -142,6 +178,10 @@ words (POINT, (POLYGON (X Y) ...), ...) and checked expressions.")
 (defmethod print-object ((force scenario-force) stream)
   (print-unreadable-object (force stream :type t)
     (prin1 (scenario-force-name force) stream)))
+
+(defmethod print-object ((friction scenario-friction) stream)
+  (print-unreadable-object (friction stream :type t)
+    (format stream "~{~S~^ ~}" (scenario-friction-bodies friction))))
 
 (defun same-name-p (a b)
   "True when the symbols A and B have the same name (names are compared by name)."

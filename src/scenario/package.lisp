@@ -15,6 +15,8 @@
    ;; the words of the scenario language; validated scenarios hold their shapes with
    ;; these symbols whatever package the user's form was written in
    #:scenario #:parameters #:gravity #:body #:force #:simulate #:query
+   #:restitution
+   #:friction
    #:point #:circle #:polygon #:outline #:line #:arc #:segment #:half-plane)
   (:documentation "The package scenario files are read into (with *READ-EVAL* nil and
 a restricted readtable). It uses no package: it holds the user's names, and imports
@@ -44,12 +46,16 @@ and Maxima (assumptions, overlaps).")
    #:scenario #:parse-scenario #:scenario-p
    #:scenario-name #:scenario-description #:scenario-parameters #:scenario-gravity
    #:scenario-bodies #:scenario-forces #:scenario-states #:scenario-until
+   #:scenario-branch
    #:scenario-queries #:scenario-source #:scenario-form
+   #:scenario-restitutions #:scenario-restitution
    #:scenario-parameter #:scenario-parameter-name #:scenario-parameter-assumptions
    #:scenario-parameter-value
    #:scenario-body #:scenario-body-name #:scenario-body-shape #:scenario-body-mass
    #:scenario-body-position #:scenario-body-velocity #:scenario-body-fixed-p
    #:scenario-force #:scenario-force-name #:scenario-force-body #:scenario-force-value
+   #:scenario-frictions #:scenario-friction #:scenario-friction-bodies
+   #:scenario-friction-static #:scenario-friction-kinetic #:find-scenario-friction
    #:find-scenario-parameter #:find-scenario-body #:find-scenario-force
    #:scenario-assumption-relations #:scenario-parameter-values
    #:scenario-moving-bodies #:scenario-fixed-bodies

@@ -81,7 +81,9 @@ under the print settings REJECT-BECAUSE binds (short, in the form's package)."
 
 (defparameter +clause-words+
   '(ames-scenario:parameters ames-scenario:gravity ames-scenario:body
-    ames-scenario:force ames-scenario:simulate ames-scenario:query)
+    ames-scenario:force ames-scenario:simulate ames-scenario:query
+    ames-scenario:restitution
+    ames-scenario:friction)
   "The clauses of a scenario.")
 
 (defun check-name (validation name what)

@@ -20,15 +20,19 @@ assumptions do not decide which event ends it (see the history's notes).")
    (accelerations :initarg :accelerations :initform '() :accessor state-accelerations
                   :documentation "List of (BODY (AX AY)) in the fixed frame.")
    (forces :initarg :forces :initform '() :accessor state-forces
-           :documentation "List of (:NORMAL B1 B2 MAGNITUDE), (:GRAVITY B (FX FY)),
-(:EXTERNAL NAME B (FX FY)).")
+           :documentation "The entries the knowledge base reports, such as (:NORMAL B1 B2
+MAGNITUDE), (:GRAVITY B (FX FY)), (:EXTERNAL NAME B (FX FY)).")
    (positions :initarg :positions :initform '() :accessor state-positions
               :documentation "List of (BODY (X-of-TAU Y-of-TAU)).")
+   (initial-velocities :initarg :initial-velocities :initform '() :accessor state-initial-velocities
+                       :documentation "List of (BODY (VX VY)) when the state starts: after an
+impact, the velocities just after it.")
    (velocities :initarg :velocities :initform '() :accessor state-velocities
                :documentation "List of (BODY (VX-of-TAU VY-of-TAU)).")
    (end-event :initarg :end-event :initform :none :accessor state-end-event
               :documentation "How the state ends: (:LEAVES A B :ENDPOINT), (:LIFT-OFF A B),
-(:CONTACT A B), (:COLLISION A B), (:TIME-LIMIT T), :UNDECIDED (an ambiguous end), or :NONE.")
+(:CONTACT A B), (:COLLISION A B), (:TIME-LIMIT T), :UNDECIDED (an ambiguous end), or :NONE:
+whatever event the knowledge base's component names for the condition that fired.")
    (final-positions :initarg :final-positions :initform '() :accessor state-final-positions
                     :documentation "List of (BODY (X Y)) at the end, or NIL when it never ends.")
    (final-velocities :initarg :final-velocities :initform '()
@@ -36,7 +40,16 @@ assumptions do not decide which event ends it (see the history's notes).")
                      :documentation "List of (BODY (VX VY)) at the end, or NIL.")
    (notes :initarg :notes :initform '() :accessor state-notes
           :documentation "Extra facts a person should know: energy integrals, numeric values
-under --set, contact-breaking positions ...; a plist."))
+under --set, contact-breaking positions ...; a plist.")
+   (branches :initarg :branches :initform '() :accessor state-branches
+             :documentation "For a fork (end event (:BRANCH)): the branches, each a plist
+(:ASSUME FACT :STATES STATES :OUTCOME OUTCOME [:SELECTED T] [:SUBSTITUTION (P V)]).")
+   (analysis :initarg :analysis :initform '() :accessor state-analysis
+             :documentation "How AMES reached the state, for explanations: a plist with
+:EQUATIONS (the model's equations), :CHOICES (the consistency argument: each
+assignment of the open contacts and modes tried, and why it was kept or rejected),
+:INTEGRATOR (how each group of bodies was integrated) and :CANDIDATES (every
+termination condition with its time, or why it never fires)."))
   (:documentation "One qualitative state: a period over which one model describes the motion."))
 
 (defclass simulation-history ()
@@ -46,10 +59,13 @@ under --set, contact-breaking positions ...; a plist."))
            :documentation "The QUALITATIVE-STATEs in order.")
    (outcome :initarg :outcome :initform :complete :accessor history-outcome
             :documentation ":COMPLETE (nothing more changes), :STATE-LIMIT, :TIME-LIMIT,
-:COLLISION (no collision model: the run ends there), or :AMBIGUOUS.")
+:AMBIGUOUS, :BRANCHED (the last state is a fork: see STATE-BRANCHES), or :UNDECIDED
+(a state's end could not be found: no closed form and no numbers to integrate with).")
    (parameter-values :initarg :parameter-values :initform '()
                      :reader history-parameter-values
                      :documentation "Alist (PARAMETER . NUMBER) used for numeric values.")
+   (answers :initform '() :accessor history-answers
+            :documentation "The answers to the scenario's queries (see ANSWER-QUERIES).")
    (notes :initform '() :accessor history-notes
           :documentation "A plist: :STOPPED-BY holds the condition that stopped the run early.")
    (rederived :initform '() :accessor history-rederived

@@ -13,8 +13,9 @@ knowledge base's (package AMES.KB).")
    #:ambiguous-transition-missing-fact #:ambiguous-transition-state
    #:unsolvable-model #:unsupported-situation
    #:simulation-history #:history-scenario #:history-states #:history-outcome
-   #:history-notes #:history-rederived #:history-parameter-values
+   #:history-notes #:history-rederived #:history-parameter-values #:history-answers
+   #:unanswerable
    #:qualitative-state #:state-index #:state-start #:state-duration #:state-contacts
    #:state-accelerations #:state-forces #:state-positions #:state-velocities
    #:state-end-event #:state-final-positions #:state-final-velocities #:state-notes
-   #:body-entry #:numeric-or-nil))
+   #:state-analysis #:state-initial-velocities #:state-branches #:body-entry #:numeric-or-nil))

@@ -1,0 +1,142 @@
+;;;; src/interface/explain.lisp -- "why?": explanations of a run from what the simulator kept of
+;;;; each state's model (thesis 3.2.2: every belief has its justification in the JTMS).
+;;;;
+;;;; For a state, EXPLAIN says in plain language
+;;;;   - why these contacts and modes hold: every assignment the consistency search tried
+;;;;     and why it was kept or rejected (a force that would pull, a contact penetrated at
+;;;;     once, a degenerate choice);
+;;;;   - where each equation comes from: the component that asserted it (its own
+;;;;     description, with the thesis's figure or section where it cites one);
+;;;;   - why the state ends when it does: the event, and every other termination
+;;;;     condition with its time, or why it never fires.
+
+(in-package #:ames)
+
+(defun component-summary (name)
+  "The first sentence of the mechanics component NAME's description and the thesis
+figure or section it cites, or NIL."
+  (let* ((component (or (ames.engine:find-component (ames.kb:mechanics-knowledge-base) name nil)
+                        (ames.engine:find-component (ames.kb:impact-knowledge-base) name nil)))
+         (text (and component (ames.engine:component-documentation component))))
+    (when text
+      (let* ((flat (substitute #\Space #\Newline text))
+             (end (or (search ". " flat) (length flat)))
+             (cite (cl-ppcre:scan-to-strings "(figures? [0-9]-[0-9]+( to [0-9]-[0-9]+)?|section [0-9.]+)" flat)))
+        (values (subseq flat 0 (min (length flat) (1+ end))) cite)))))
+
+(defvar *contact-names* '()
+  "While a state is explained: an alist contact entity -> its phrase (\"particle on wedge\").")
+
+(defun readable-terms (x)
+  "X with every quantity term written as a readable symbol: (acc particle :x) as
+acc_x(particle), a contact entity by its bodies."
+  (cond ((and (symbolp x) (assoc x *contact-names*))
+         (make-symbol (format nil "[~A]" (cdr (assoc x *contact-names*)))))
+        ((quantity-term-p x)
+         (let* ((axis (find-if #'keywordp (rest x)))
+                (names (mapcar (lambda (a) (if (assoc a *contact-names*)
+                                               (format nil "[~A]" (cdr (assoc a *contact-names*)))
+                                               (string-downcase (princ-to-string a))))
+                               (remove-if #'keywordp (rest x)))))
+           (make-symbol (format nil "~(~A~)~@[_~(~A~)~](~{~A~^, ~})" (first x) axis names))))
+        ((consp x) (cons (first x) (mapcar #'readable-terms (rest x))))
+        (t x)))
+
+(defun phrase (x)
+  "X for people: an expression in infix (its quantity terms readable), an event or
+anything else as written, lower case."
+  (let ((*package* (find-package '#:ames-scenario)) (*print-case* :downcase))
+    (cond ((and (consp x) (keywordp (first x)))
+           (format nil "~(~A~)~{ ~A~}" (first x)
+                   (loop for (item . rest) on (rest x)
+                         until (keywordp item)
+                         collect (string-downcase (princ-to-string item)))))
+          ((or (consp x) (symbolp x) (numberp x)) (infix (readable-terms x)))
+          (t (princ-to-string x)))))
+
+(defun key-phrase (key)
+  "A phrase for the instance KEY: its component and the bodies its contact joins."
+  (format nil "~(~A~)~@[ (~A)~]" (first key)
+          (some (lambda (x) (cdr (assoc x *contact-names*))) (rest key))))
+
+(defun describe-assignment (assignment)
+  "A phrase for the ASSIGNMENT of the open choices: which are active, which modes."
+  (format nil "~{~A~^, ~}"
+          (mapcar (lambda (entry)
+                    (let ((key (car entry)) (option (cdr entry)))
+                      (format nil "~A ~A" (key-phrase key)
+                              (case option (:true "on") (:false "off") (t (format nil "in mode ~(~A~)" option))))))
+                  assignment)))
+
+(defun explain-choices (state stream)
+  "Print why STATE's contacts and modes hold."
+  (let ((choices (getf (state-analysis state) :choices)))
+    (format stream "~&Why these contacts and modes:~%")
+    (if (null (getf choices :tried))
+        (format stream "  nothing was open: every contact and mode followed from the state's start.~%")
+        (dolist (trial (getf choices :tried))
+          (format stream "  ~A: ~(~A~)~:[~;, degenerate (a contact with no force, or one only grazed)~]~%"
+                  (describe-assignment (getf trial :assignment)) (getf trial :verdict)
+                  (plusp (getf trial :degenerate 0)))
+          (dolist (why (getf trial :why))
+            (format stream "      ~A~%"
+                    (case (first why)
+                      (:flip (format nil "turned ~A ~A because ~A at once" (key-phrase (second why))
+                                     (if (eq (third why) :true) "on" "off") (phrase (fifth why))))
+                      (:violates (format nil "rejected: ~{~A~^, ~} at once" (mapcar #'phrase (second why))))
+                      (:singular "redundant constraints: no unique solution")
+                      (:unsolvable (format nil "no unique solution: ~A" (second why)))
+                      (t (phrase why)))))))
+    (when (getf choices :chosen)
+      (format stream "  kept: ~A~%" (describe-assignment (getf choices :chosen))))))
+
+(defun explain-equations (state stream)
+  "Print where each equation of STATE's model comes from, grouped by component."
+  (format stream "~&Where the equations come from:~%")
+  (let ((by-component '()))
+    (dolist (entry (getf (state-analysis state) :equations))
+      (destructuring-bind (equation component &optional instance) entry
+        (declare (ignore instance))
+        (push equation (cdr (or (assoc component by-component)
+                                (car (push (list component) by-component)))))))
+    (dolist (group (reverse by-component))
+      (multiple-value-bind (summary cite) (component-summary (first group))
+        (format stream "  ~(~A~)~@[ (thesis ~A)~]: ~@[~A~]~%" (first group) cite summary)
+        (dolist (equation (reverse (rest group)))
+          (format stream "      ~A = ~A~%" (phrase (relation-lhs equation)) (phrase (relation-rhs equation))))))))
+
+(defun explain-end (state stream)
+  "Print why STATE ends when it does."
+  (format stream "~&Why the state ends then:~%")
+  (let ((candidates (getf (state-analysis state) :candidates)))
+    (format stream "  it ends with ~A~@[ after ~A~].~%" (phrase (state-end-event state))
+            (let ((d (state-duration state))) (and (not (keywordp d)) (phrase d))))
+    (dolist (candidate candidates)
+      (let ((event (first candidate)) (plist (rest candidate)))
+        (cond ((eq (first plist) :never) (format stream "  ~A: never in this state.~%" (phrase event)))
+              ((getf plist :fired) (format stream "  ~A: at ~A, first.~%" (phrase event) (phrase (getf plist :at))))
+              (t (format stream "  ~A: at ~A, later.~%" (phrase event) (phrase (getf plist :at)))))))))
+
+(defun explain (history &key state (stream *standard-output*))
+  "Explain HISTORY (a SIMULATION-HISTORY, or a scenario file's pathname: its first
+scenario is run) state by state, or only the state whose index is STATE: why its
+contacts and modes hold, where each equation comes from, and why it ends when it does.
+Signals what SIMULATE and RUN-FILE signal."
+  (let ((history (if (typep history 'simulation-history)
+                     history
+                     (or (first (run-file history))
+                         (error 'usage-error :datum history :detail "the file holds no scenario")))))
+    (labels ((walk (states)
+               (dolist (s states)
+                 (when (or (null state) (eql state (state-index s)))
+                   (let ((*contact-names* (getf (state-analysis s) :contact-names)))
+                     (format stream "~&~%State ~D~%" (state-index s))
+                     (explain-choices s stream)
+                     (explain-equations s stream)
+                     (explain-end s stream)))
+                 (dolist (branch (state-branches s))
+                   (format stream "~&~%Branch assuming ~A:~%" (phrase (getf branch :assume)))
+                   (walk (getf branch :states))))))
+      (format stream "~&Scenario ~(~A~)~%" (scenario-name (history-scenario history)))
+      (walk (history-states history)))
+    history))

@@ -1,0 +1,102 @@
+;;;; src/maxima-bridge/presentation.lisp -- what the reports ask of Maxima: forms to present, and TeX.
+;;;;
+;;;; A report writes each quantity as a textbook would; Maxima does the algebra of that. It
+;;;; offers candidate forms, each equal to the solved form by Maxima's own algebra (ratsimp,
+;;;; factor, grouping sums into factorable parts, trigsimp), and the coefficients of a
+;;;; polynomial in a variable (tau). Choosing among the candidates and ordering terms and
+;;;; factors is the report's (it knows the scenario's conventions). PRESENTATION-LATEX gives
+;;;; Maxima's tex() of a form exactly as the report structured it: no simplification
+;;;; reorders it.
+
+(in-package #:ames.maxima)
+
+(defun presentation-candidates (bridge expression)
+  "Forms of the arithmetic EXPRESSION to present, each equal to it by Maxima's algebra
+under the current assumptions, most direct first: r, factor(r), factor(r) with every
+sum grouped into factorable parts, and r's numerator divided term by term, for
+r = ratsimp(EXPRESSION) and, when it has
+sin, cos or tan, also for r = ratsimp(trigsimp(EXPRESSION)). Candidates Maxima gives
+outside the algebra are left out; the list is never empty (EXPRESSION itself comes
+last). Signals UNTRANSLATABLE-EXPRESSION, MAXIMA-ERROR, MAXIMA-TIMEOUT."
+  (let* ((form (to-mx bridge expression))
+         (answer (maxima-request bridge (mcall "$AMES_PRESENTATION_CANDIDATES" form
+                                               (if (trigonometric-form-p form) +true+ +false+))
+                                 :datum expression))
+         (candidates '()))
+    (dolist (candidate (mlist-items answer))
+      (let ((translated (handler-case (from-mx bridge candidate)
+                          (untranslatable-result () nil))))
+        (when translated (pushnew translated candidates :test #'equal))))
+    (nreverse (cons expression candidates))))
+
+(defun polynomial-coefficients (bridge expression variable)
+  "The list (C0 C1 ... Cd) when EXPRESSION equals C0 + C1 VARIABLE + ... + Cd VARIABLE^d
+with every Ci free of VARIABLE (Maxima's ratsimp form of each), else NIL. VARIABLE is a
+variable of the algebra (such as TAU). Signals UNTRANSLATABLE-EXPRESSION,
+INVALID-BRIDGE-ARGUMENT when VARIABLE is no variable, MAXIMA-ERROR, MAXIMA-TIMEOUT."
+  (unless (variable-symbol-p variable)
+    (error 'invalid-bridge-argument :datum variable :detail "the variable must be a symbol"))
+  (if (free-of-p variable expression)
+      (list expression)
+      (let ((answer (maxima-request bridge (mcall "$AMES_PRESENTATION_COEFFICIENTS"
+                                                  (to-mx bridge expression) (to-mx bridge variable))
+                                    :datum expression)))
+        (and (mform-p answer +mlist+)
+             (handler-case (mapcar (lambda (c) (from-mx bridge c)) (mlist-items answer))
+               (untranslatable-result () nil))))))
+
+;;; TeX of a form as it is structured
+
+(defun as-is-form (bridge expression)
+  "The unsimplified Maxima form of EXPRESSION (arithmetic or a relation) keeping its
+structure for tex(): negations as MMINUS, quotients as MQUOTIENT, negative numbers as
+negations, the order of arguments as given."
+  (check-translatable expression :any)
+  (let ((table (bridge-names bridge)))
+    (labels ((out (x)
+               (cond ((and (realp x) (minusp x)) (mform +mminus+ (out (- x))))
+                     ((realp x) (number-to-maxima x))
+                     ((constant-symbol-p x) +pi+)
+                     ((or (variable-symbol-p x) (quantity-term-p x)) (maxima-name table x))
+                     (t (let ((operator (expression-operator x))
+                              (arguments (mapcar #'out (expression-arguments x))))
+                          (case operator
+                            (+ (if (rest arguments) (apply #'mform +mplus+ arguments) (first arguments)))
+                            (- (if (rest arguments)
+                                   (apply #'mform +mplus+ (first arguments)
+                                          (mapcar (lambda (a) (mform +mminus+ a)) (rest arguments)))
+                                   (mform +mminus+ (first arguments))))
+                            (* (if (rest arguments) (apply #'mform +mtimes+ arguments) (first arguments)))
+                            (/ (if (rest arguments)
+                                   (mform +mquotient+ (first arguments)
+                                          (if (cddr arguments)
+                                              (apply #'mform +mtimes+ (rest arguments))
+                                              (second arguments)))
+                                   (mform +mquotient+ 1 (first arguments))))
+                            (expt (mform +mexpt+ (first arguments) (second arguments)))
+                            (exp (mform +mexpt+ +e+ (first arguments)))
+                            (atan (if (rest arguments)
+                                      (mform +atan2+ (first arguments) (second arguments))
+                                      (mform +atan+ (first arguments))))
+                            (t (let ((head (or (cdr (assoc operator *function-heads*))
+                                               (cdr (assoc operator *relation-heads*))
+                                               (cdr (assoc operator *logical-heads*)))))
+                                 (apply #'mform head arguments)))))))))
+      (out expression))))
+
+(defun presentation-latex (bridge expression &key (name-function #'latex-name))
+  "The LaTeX of EXPRESSION (arithmetic or a relation) as Maxima's tex() writes it, without
+the surrounding $$, and with EXPRESSION's structure kept exactly (nothing is simplified
+or reordered: the order of terms and factors is the caller's). Each variable or quantity
+term NAME is written as (funcall NAME-FUNCTION NAME), a LaTeX string (by default
+LATEX-NAME's). Signals UNTRANSLATABLE-EXPRESSION, MAXIMA-ERROR, MAXIMA-TIMEOUT."
+  (let* ((answer (maxima-request bridge (mcall "$AMES_TEX_AS_IS" (as-is-form bridge expression))
+                                 :datum expression))
+         (text (string-trim '(#\$ #\Space #\Newline #\Return) (if (stringp answer) answer ""))))
+    (cl-ppcre:regex-replace-all
+     "(?:\\{\\\\it\\s+)?amesv([a-z]+)(?:\\})?" (substitute #\Space #\Newline text)
+     (lambda (match letters)
+       (multiple-value-bind (name found)
+           (user-name (bridge-names bridge) (wire (concatenate 'string "$AMESV" (string-upcase letters))))
+         (if found (format nil "{~A}" (funcall name-function name)) match)))
+     :simple-calls t)))

@@ -1,0 +1,119 @@
+;;;; src/maxima-bridge/trig-roots.lisp -- the earliest root of A + B cos(w t) + C sin(w t), proven earliest.
+;;;;
+;;;; Springs make termination conditions sinusoidal in time: a bumper's compression
+;;;; (v0/w) sin(w t) returns to 0 at t = pi/w. With x = w t and the half angle
+;;;; u = tan(x/2) (cos x = (1 - u^2)/(1 + u^2), sin x = 2u/(1 + u^2)), a root x in (0, pi)
+;;;; of g(x) = A + B cos x + C sin x is a root u > 0 of the quadratic
+;;;;   P(u) = (A - B) u^2 + 2 C u + (A + B)
+;;;; (x = 2 atan u); x = pi is a root exactly when A = B; a root in (pi, 2 pi) is
+;;;; pi + 2 atan u' for a root u' > 0 of g(pi + x') in the same way,
+;;;;   P'(u') = (A + B) u'^2 - 2 C u' + (A - B);
+;;;; and x = 2 pi when A + B = 0. g has period 2 pi, so if none of these is a root there is
+;;;; none at all. EARLIEST-ROOT (roots.lisp) proves which root of a quadratic is earliest
+;;;; from the signs of their product and sum, so the earliest x is proven in the same
+;;;; way. A root exists at all only when A^2 <= B^2 + C^2: when that is not decided, the
+;;;; answer is :UNKNOWN with that fact.
+
+(in-package #:ames.maxima)
+
+(defun earliest-trigonometric-root (bridge expression variable &key (after 0) (strictly t))
+  "The earliest real root of EXPRESSION = 0 in VARIABLE greater than AFTER (or equal to
+it, when STRICTLY is false), proven earliest under the current assumptions, where
+EXPRESSION is A + B cos(w VARIABLE + c) + C sin(w VARIABLE + c') with A, B, C, w, c,
+c' free of VARIABLE (one frequency). Returns, like EARLIEST-ROOT,
+  (values ROOT :FOUND)      the proven earliest root (prefix algebra);
+  (values :NONE NIL)        proven: no root after AFTER (A^2 > B^2 + C^2);
+  (values :UNKNOWN FACT)    not decided; FACT is the relation whose truth is missing
+                            (the amplitude condition (<= (expt A 2) (+ (expt B 2)
+                            (expt C 2))), or whether a special point is a root), or NIL
+                            (several frequencies, or signs the assumptions leave open).
+An EXPRESSION without sine or cosine of VARIABLE goes to EARLIEST-ROOT (whose :UNKNOWN
+carries candidates instead). Every root returned is substituted back: it must make
+EXPRESSION simplify to 0 (or vanish numerically at admissible points); else :UNKNOWN.
+Signals UNTRANSLATABLE-EXPRESSION, INVALID-BRIDGE-ARGUMENT (VARIABLE not a name, AFTER
+depending on VARIABLE), MAXIMA-ERROR, MAXIMA-TIMEOUT."
+  (check-translatable expression :arithmetic)
+  (check-translatable after :arithmetic)
+  (unless (subject-p variable)
+    (error 'invalid-bridge-argument :datum variable
+                                    :detail "the variable must be a variable or a quantity term"))
+  (unless (free-of-p variable after)
+    (error 'invalid-bridge-argument :datum after
+                                    :detail (format nil "the start may not depend on ~S" variable)))
+  (unless (trigonometric-arguments expression variable)
+    (return-from earliest-trigonometric-root
+      (earliest-root bridge expression variable :after after :strictly strictly :candidates nil)))
+  (let* ((shifted (if (eql after 0)
+                      expression
+                      (substitute-expressions (list (cons variable `(+ ,after ,variable))) expression)))
+         (parts (call-or-nil (lambda () (sinusoid-coefficients bridge shifted variable)))))
+    (if (null parts)
+        (values :unknown nil)
+        (destructuring-bind (a b c w) parts
+          (case (decided-sign bridge w)
+            (:positive)
+            (:negative (setf c (simplified bridge `(- ,c)) w (simplified bridge `(- ,w))))
+            (t (return-from earliest-trigonometric-root (values :unknown nil))))
+          (multiple-value-bind (angle status) (earliest-angle bridge a b c strictly)
+            (case status
+              (:found
+               (let ((root (simplified bridge `(+ ,after (/ ,angle ,w)))))
+                 (if (root-checked-p bridge expression variable root (list a b c))
+                     (values root :found)
+                     (values :unknown nil))))
+              (:none (values :none nil))
+              (t (values :unknown angle))))))))
+
+(defun earliest-angle (bridge a b c strictly)
+  "The earliest x > 0 (x >= 0 unless STRICTLY) with A + B cos x + C sin x = 0, as
+(values X :FOUND), (values NIL :NONE), or (values FACT :UNKNOWN), FACT the missing
+relation or NIL (see the file header)."
+  (let ((amplitude `(<= ,(simplified bridge `(expt ,a 2))
+                        ,(simplified bridge `(+ (expt ,b 2) (expt ,c 2)))))
+        (u (auxiliary-variable bridge *half-angle-variable*)))
+    (flet ((settled (relation)
+             (let ((verdict (decide bridge relation)))
+               (when (eq verdict :unknown)
+                 (return-from earliest-angle (values relation :unknown)))
+               (eq verdict :true)))
+           (first-positive-root (polynomial)
+             (multiple-value-bind (root status)
+                 (earliest-root bridge polynomial u :after 0 :strictly t :candidates nil)
+               (case status
+                 (:found root)
+                 (t (if (eq root :none)
+                        nil
+                        (return-from earliest-angle (values nil :unknown))))))))
+      (unless (settled amplitude)
+        (return-from earliest-angle (values nil :none)))
+      (when (and (not strictly) (settled `(= (+ ,a ,b) 0)))
+        (return-from earliest-angle (values 0 :found)))
+      (let ((first (first-positive-root `(+ (* (- ,a ,b) (expt ,u 2)) (* 2 ,c ,u) (+ ,a ,b)))))
+        (when first
+          (return-from earliest-angle (values `(* 2 (atan ,first)) :found))))
+      (when (settled `(= ,a ,b))
+        (return-from earliest-angle (values 'pi :found)))
+      (let ((second (first-positive-root `(- (+ (* (+ ,a ,b) (expt ,u 2)) (- ,a ,b)) (* 2 ,c ,u)))))
+        (when second
+          (return-from earliest-angle (values `(+ pi (* 2 (atan ,second))) :found))))
+      (if (settled `(= (+ ,a ,b) 0))
+          (values '(* 2 pi) :found)
+          (values nil :none)))))
+
+(defun root-checked-p (bridge expression variable root coefficients)
+  "True when EXPRESSION vanishes at VARIABLE = ROOT: by simplification, else at
+admissible points within 1e-9 of the size of COEFFICIENTS (A, B and C)."
+  (let ((value (substitute-expressions (list (cons variable root)) expression)))
+    (or (call-or-nil (lambda () (zero-expression-p bridge value)))
+        (let ((size `(+ ,@(mapcar (lambda (c) `(sqrt (expt ,c 2))) coefficients)))
+              (checked 0) (failed nil))
+          (call-with-admissible-points
+           bridge `(> (+ ,value ,size) 0)
+           (lambda (point)
+             (let ((residual (expression-value value point))
+                   (scale (expression-value size point)))
+               (cond ((null scale))
+                     ((and residual (<= (abs residual) (* 1d-9 (max scale 1d-300)))) (incf checked))
+                     (t (setf failed t))))
+             failed))
+          (and (not failed) (>= checked *verification-points*))))))

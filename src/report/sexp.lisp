@@ -1,0 +1,71 @@
+;;;; src/report/sexp.lisp -- a simulation history as the readable s-expression of the scenario language's output section.
+;;;;
+;;;; The data as solved, for programs: no presentation step. Keys the simulator adds later
+;;;; (state notes such as :initial-velocities, history notes) are kept as they come.
+
+(in-package #:ames.report)
+
+(defun history-sexp (history)
+  "HISTORY as the s-expression of the scenario language's output section:
+(:scenario NAME :states ((:index 0 :start ... :duration ... :contacts ... :accelerations
+... :forces ... :positions ... :end-event ... :final-positions ... :final-velocities ...)
+...) :outcome ...), with extra keys :velocities, :events and :numeric where known."
+  (list* :scenario (scenario-name (history-scenario history))
+         :states (mapcar #'state-sexp (history-states history))
+         :outcome (history-outcome history)
+         :answers (history-answers history)
+         (let ((stopped (getf (history-notes history) :stopped-by)))
+           (append
+            (let ((assumed (getf (history-notes history) :assumed)))
+              (when assumed (list :assumed-from-values (reverse assumed))))
+            (when (typep stopped 'ambiguous-transition)
+             (list :ambiguity (list :missing-fact (ambiguous-transition-missing-fact stopped)
+                                    :candidates (ambiguous-transition-candidates stopped))))))))
+
+(defun state-sexp (state)
+  "One QUALITATIVE-STATE as a plist (see HISTORY-SEXP)."
+  (let ((notes (state-notes state)))
+    (append
+     (list :index (state-index state)
+           :start (state-start state)
+           :duration (state-duration state)
+           :contacts (state-contacts state)
+           :accelerations (state-accelerations state)
+           :forces (state-forces-of state)
+           :positions (state-positions state)
+           :velocities (state-velocities state)
+           :initial-velocities (state-initial-velocities state)
+           :end-event (state-end-event state)
+           :final-positions (state-final-positions state)
+           :final-velocities (state-final-velocities state))
+     (when (state-branches state)
+       (list :branches
+             (mapcar (lambda (branch)
+                       (list* :assume (getf branch :assume)
+                              :states (mapcar #'state-sexp (getf branch :states))
+                              (loop for (key value) on branch by #'cddr
+                                    unless (member key '(:assume :states))
+                                      append (list key value))))
+                     (state-branches state))))
+     (loop for (key value) on notes by #'cddr
+           unless (eq key :numeric-duration)
+             append (list key (if (eq key :impact)
+                                  ;; the impact model's consistency search is the solver's
+                                  ;; working, not a result
+                                  (alexandria:remove-from-plist value :choices)
+                                  value))))))
+
+(defun state-forces-of (state)
+  "The forces slot of STATE (named apart from the report function STATE-FORCES)."
+  (state-forces state))
+
+(defun print-history-sexp (history stream)
+  "Print HISTORY-SEXP of HISTORY readably on STREAM, symbols in lower case."
+  (with-standard-io-syntax
+    (let ((*package* (find-package '#:ames-scenario))
+          (*print-case* :downcase)
+          (*print-readably* nil)
+          (*print-right-margin* 100)
+          (*print-pretty* t))
+      (pprint (history-sexp history) stream)
+      (terpri stream))))

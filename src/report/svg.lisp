@@ -1,0 +1,182 @@
+;;;; src/report/svg.lisp -- the picture of a run: one SVG per scenario.
+;;;;
+;;;; The scenario at its start (fixed bodies grey, moving bodies coloured and named, the first
+;;;; state's contacts marked, its forces as arrows scaled to their sizes and labelled), then
+;;;; each moving body's trajectory state by state (one <path> per body per state, solid and
+;;;; dashed in turn, numbered by state), the bodies' outlines where each state ends, and every
+;;;; event marked where it happens, labelled with what happens and when. Numbers come from
+;;;; scene.lisp; the caption says which values were used.
+
+(in-package #:ames.report)
+
+(defparameter *body-colours* '("#1f5fa8" "#c0392b" "#2e8b57" "#8e44ad" "#d35400" "#7f6000")
+  "The colours of the moving bodies, in the order of declaration.")
+
+(defparameter *picture-width* 720 "The width of a picture in pixels.")
+
+(defun xml-escape (text)
+  "TEXT with & < > \" escaped for XML."
+  (with-output-to-string (out)
+    (loop for c across text
+          do (case c (#\& (write-string "&amp;" out)) (#\< (write-string "&lt;" out))
+                   (#\> (write-string "&gt;" out)) (#\" (write-string "&quot;" out))
+                   (t (write-char c out))))))
+
+(defstruct (frame (:constructor make-frame (xmin ymin xmax ymax scale margin)))
+  "The map from the plane (y up) to the picture (y down)."
+  xmin ymin xmax ymax scale margin)
+
+(defun to-picture (frame point)
+  "POINT in picture coordinates, as (X Y)."
+  (list (+ (frame-margin frame) (* (frame-scale frame) (- (first point) (frame-xmin frame))))
+        (+ (frame-margin frame) (* (frame-scale frame) (- (frame-ymax frame) (second point))))))
+
+(defun frame-for (points)
+  "The frame that shows POINTS with a margin, *PICTURE-WIDTH* wide."
+  (let* ((xs (mapcar #'first points)) (ys (mapcar #'second points))
+         (xmin (reduce #'min xs)) (xmax (reduce #'max xs))
+         (ymin (reduce #'min ys)) (ymax (reduce #'max ys))
+         (size (max (- xmax xmin) (- ymax ymin) 1d-6))
+         (pad (* 0.12d0 size)))
+    (make-frame (- xmin pad) (- ymin pad) (+ xmax pad) (+ ymax pad)
+                (/ (- *picture-width* 80) (+ (- xmax xmin) (* 2 pad)))
+                40)))
+
+(defun frame-height (frame)
+  "The height of FRAME's drawing area in pixels."
+  (+ (* 2 (frame-margin frame)) (* (frame-scale frame) (- (frame-ymax frame) (frame-ymin frame)))))
+
+(defun points-attribute (frame points)
+  "POINTS as the points attribute of a polygon or polyline."
+  (format nil "~{~{~,2F,~,2F~}~^ ~}" (mapcar (lambda (p) (to-picture frame p)) points)))
+
+(defun path-data (frame points)
+  "The d attribute of a path through POINTS (a single point gives a zero-length path)."
+  (let ((shown (mapcar (lambda (p) (to-picture frame p)) points)))
+    (format nil "M ~{~,2F ~,2F~}~{ L ~{~,2F ~,2F~}~}" (first shown) (or (rest shown) (list (first shown))))))
+
+(defun draw-outline (stream frame outline class &key (colour "none") (extra ""))
+  "Write OUTLINE as an SVG element of CLASS."
+  (ecase (first outline)
+    (:polygon (format stream "<polygon class=\"~A\" points=\"~A\" style=\"fill:~A\"~A/>~%" class
+                      (points-attribute frame (second outline)) colour extra))
+    (:polyline (format stream "<polyline class=\"~A\" points=\"~A\" style=\"stroke:~A;stroke-width:3;fill:none\"~A/>~%"
+                       class (points-attribute frame (second outline))
+                       (if (member class '("fixed" "ghost") :test #'string=) "#555" colour) extra))
+    (:circle (destructuring-bind (x y) (to-picture frame (second outline))
+               (format stream "<circle class=\"~A\" cx=\"~,2F\" cy=\"~,2F\" r=\"~,2F\" style=\"fill:~A\"~A/>~%"
+                       class x y (* (frame-scale frame) (third outline)) colour extra)))
+    (:point (destructuring-bind (x y) (to-picture frame (second outline))
+              (format stream "<circle class=\"~A point\" cx=\"~,2F\" cy=\"~,2F\" r=\"5\" style=\"fill:~A\"~A/>~%"
+                      class x y (if (string= colour "none") "#333" colour) extra)))
+    (:half-plane
+     ;; the solid lies left of P1 -> P2: a large quadrilateral on that side, clipped
+     (destructuring-bind (p1 p2) (rest outline)
+       (let* ((direction (vunit (v- p2 p1)))
+              (inward (list (- (second direction)) (first direction)))
+              (reach (* 4 (max (- (frame-xmax frame) (frame-xmin frame)) (- (frame-ymax frame) (frame-ymin frame)))))
+              (a (v- p1 (v* reach direction))) (b (v+ p1 (v* reach direction))))
+         (format stream "<polygon class=\"~A\" points=\"~A\" clip-path=\"url(#view)\"~A/>~%" class
+                 (points-attribute frame (list a b (v+ b (v* reach inward)) (v+ a (v* reach inward))))
+                 extra)
+         (format stream "<line class=\"surface\" x1=\"~,2F\" y1=\"~,2F\" x2=\"~,2F\" y2=\"~,2F\" clip-path=\"url(#view)\"/>~%"
+                 (first (to-picture frame a)) (second (to-picture frame a))
+                 (first (to-picture frame b)) (second (to-picture frame b))))))))
+
+(defun draw-label (stream frame point text &key (class "label") (dx 6) (dy -6))
+  "Write TEXT at POINT, offset by DX and DY pixels."
+  (destructuring-bind (x y) (to-picture frame point)
+    (format stream "<text class=\"~A\" x=\"~,2F\" y=\"~,2F\">~A</text>~%" class (+ x dx) (+ y dy)
+            (xml-escape text))))
+
+(defun draw-arrow (stream frame from vector label colour)
+  "An arrow from FROM along VECTOR (plane units), labelled."
+  (let ((to (v+ from vector)))
+    (destructuring-bind ((x1 y1) (x2 y2)) (list (to-picture frame from) (to-picture frame to))
+      (format stream "<line class=\"force\" x1=\"~,2F\" y1=\"~,2F\" x2=\"~,2F\" y2=\"~,2F\" style=\"stroke:~A\" marker-end=\"url(#arrow)\"/>~%"
+              x1 y1 x2 y2 colour)
+      (draw-label stream frame to label :class "force-label" :dx 4 :dy 4))))
+
+;;; Contacts and forces at the start
+
+(defun feature-body-index (feature)
+  "The body and the index (or NIL) of FEATURE."
+  (values (getf (if (integerp (second feature)) (cddr feature) (rest feature)) :of)
+          (and (integerp (second feature)) (second feature))))
+
+(defun feature-geometry (scenario feature bindings)
+  "For a FEATURE at the start: (values KIND DATA): :EDGE with its two points, :VERTEX
+with its point, :CIRCLE or :ARC with the shape's centre and solid side, :POINT with the
+body's point; NIL when unknown."
+  (multiple-value-bind (name index) (feature-body-index feature)
+    (let* ((body (find-scenario-body name scenario))
+           (shape (and body (scenario-body-shape body)))
+           (origin (and body (body-origin body bindings))))
+      (flet ((at (pair) (let ((p (point-at pair bindings))) (and p (v+ origin p)))))
+        (case (first feature)
+          (:point (values :point origin))
+          (:edge (let ((points (edge-points shape index)))
+                   (and points (values :edge (mapcar #'at points)))))
+          (:vertex (and (eq (shape-kind shape) :polygon)
+                        (values :vertex (at (nth index (rest shape))))))
+          (:circle (values :circle (list origin :inside)))
+          (:arc (and (eq (shape-kind shape) :arc)
+                     (values :arc (list (at (getf (rest shape) :center))
+                                        (or (getf (rest shape) :solid) :inside))))))))))
+
+(defun edge-outward-normal (points)
+  "The unit outward normal of the edge POINTS (the solid on its left)."
+  (destructuring-bind (p1 p2) points
+    (let ((d (v- p2 p1))) (vunit (list (second d) (- (first d)))))))
+
+(defun contact-point-and-normal (scenario contact bindings)
+  "The point of CONTACT at the start and the unit normal from its obstacle (the second
+body) into its observer (the first), or NIL."
+  (destructuring-bind (observer obstacle &key feature observer-feature &allow-other-keys) contact
+    (declare (ignore observer obstacle))
+    (multiple-value-bind (fkind fdata) (feature-geometry scenario feature bindings)
+      (multiple-value-bind (gkind gdata) (feature-geometry scenario observer-feature bindings)
+        (let ((point (cond ((member gkind '(:point :vertex)) gdata)
+                           ((eq fkind :vertex) fdata)
+                           ((eq gkind :edge) (v* 0.5d0 (v+ (first gdata) (second gdata)))))))
+          (when (and point (every #'identity (alexandria:ensure-list (if (eq fkind :edge) fdata '(t)))))
+            (let ((normal (case fkind
+                            (:edge (edge-outward-normal fdata))
+                            (:circle (vunit (v- point (first fdata))))
+                            (:arc (if (eq (second fdata) :outside)
+                                      (vunit (v- (first fdata) point))
+                                      (vunit (v- point (first fdata)))))
+                            (:vertex (and (eq gkind :edge) (v* -1 (edge-outward-normal gdata)))))))
+              (and normal (> (vlength normal) 0.5d0) (list point normal)))))))))
+
+(defun force-arrows (scenario state bindings)
+  "The arrows of STATE's forces at the start: (FROM VECTOR LABEL) in the plane."
+  (let ((s0 (number-at (getf (getf (state-notes state) :path-coordinates) :arc-length-from) bindings))
+        (arrows '()))
+    (dolist (entry (state-forces state) (nreverse arrows))
+      (let ((point (if s0 (acons +arc-length+ s0 bindings) bindings)))
+        (multiple-value-bind (label symbol value) (force-entry entry)
+          (declare (ignore label))
+          (cond ((eq (first entry) :normal)
+                 (let* ((contact (contact-of state (second entry) (third entry)))
+                        (geometry (and contact (contact-point-and-normal scenario contact bindings)))
+                        (size (number-at value point)))
+                   (when (and geometry size)
+                     (push (list (first geometry)
+                                 (v* (if (eq (first contact) (second entry)) size (- size)) (second geometry))
+                                 (or symbol "N"))
+                           arrows))))
+                ((vector-value-p value)
+                 (let* ((body-name (find-if (lambda (x) (and (symbolp x) (find-scenario-body x scenario)))
+                                            (reverse (rest entry))))
+                        (body (and body-name (find-scenario-body body-name scenario)))
+                        (vector (point-at value point))
+                        (outline (and body (shape-outline (scenario-body-shape body)
+                                                          (body-origin body bindings) bindings))))
+                   (when (and vector outline)
+                     (push (list (outline-anchor outline) vector
+                                 (case (first entry)
+                                   (:gravity "weight")
+                                   (:external (name-text (second entry)))
+                                   (t (keyword-words (first entry)))))
+                           arrows))))))))))

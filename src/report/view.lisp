@@ -1,0 +1,343 @@
+;;;; src/report/view.lisp -- what a report for people shows, presented once for every format.
+;;;;
+;;;; HISTORY-VIEW turns a simulation history into plists of phrases (see phrases.lisp) and
+;;;; presented formulas, with numbers beside them under parameter values: the text, LaTeX and
+;;;; HTML reports only lay them out. Fixed bodies are listed once, at the top; each state
+;;;; lists its contacts, forces, and per moving body its acceleration and trajectory (a
+;;;; polynomial in tau written x0 + v0 tau + (1/2) a_x tau^2 when its tau^2 coefficient is
+;;;; half the acceleration shown above it), its end and what holds then. Notes the view does
+;;;; not know are kept, as (LABEL . PHRASE), for the renderers to print generically.
+
+(in-package #:ames.report)
+
+(defun acceleration-symbol (axis)
+  "The quantity term standing for the acceleration component AXIS (:X or :Y) of the body
+a report block is about; printed a_x, a_y."
+  (list 'acceleration axis))
+
+(defun datum-text (datum)
+  "Any datum as text without package prefixes: symbols by their lower-case names,
+keywords with their colon, numbers as NUMBER-TEXT writes them, lists in parentheses
+(an improper list with its dot: \"(a . :true)\")."
+  (cond ((null datum) "()")
+        ((keywordp datum) (format nil ":~(~A~)" (symbol-name datum)))
+        ((symbolp datum) (name-text datum))
+        ((stringp datum) datum)
+        ((realp datum) (number-text datum))
+        ((consp datum)
+         (let ((tail (cdr (last datum))))
+           (format nil "(~{~A~^ ~}~@[ . ~A~])"
+                   (loop for cell on datum while (consp cell) collect (datum-text (car cell)))
+                   (and tail (datum-text tail)))))
+        (t (princ-to-string datum))))
+
+(defun parameter-phrases (presenter)
+  "One phrase per parameter saying what is assumed of it: \"mp > 0\", \"0 < a < pi/2\"."
+  (loop for parameter in (scenario-parameters (presenter-scenario presenter))
+        for name = (scenario-parameter-name parameter)
+        for relations = (mapcar (lambda (a) (case a (:positive `(> ,name 0)) (:nonnegative `(>= ,name 0)) (t a)))
+                                (scenario-parameter-assumptions parameter))
+        for lower = (find-if (lambda (r) (and (member (first r) '(> >=)) (eq (second r) name))) relations)
+        for upper = (find-if (lambda (r) (and (member (first r) '(< <=)) (eq (second r) name))) relations)
+        collect (if (and lower upper)
+                    (phrase (list :math (present presenter (third lower)))
+                            (format nil " ~(~A~) " (if (eq (first lower) '>) '< '<=))
+                            (list :math name)
+                            (format nil " ~(~A~) " (first upper))
+                            (list :math (present presenter (third upper))))
+                    (if relations
+                        (loop for relation in relations
+                              for first = t then nil
+                              unless first collect ", "
+                              collect (list :math (present-relation presenter relation)))
+                        (list (list :math name) " (no assumption)")))))
+
+(defun numbers-of (presenter expression)
+  "EXPRESSION's numbers under the presenter's values: a number, a numeric polynomial in
+tau, or NIL."
+  (if (keywordp expression) nil (numeric-polynomial presenter expression)))
+
+(defun arc-range-numbers (presenter expression state)
+  "For an EXPRESSION of the arc length s in STATE: (:FROM A :TO B), its numbers where the
+state starts and ends along the curve, when known; else NIL."
+  (let* ((notes (state-notes state))
+         (from (getf (getf notes :path-coordinates) :arc-length-from))
+         (to (getf notes :end-arc-length)))
+    (when (and (presenter-values presenter) from)
+      (flet ((at (s) (and s (numeric presenter (substitute-expressions (list (cons +arc-length+ s)) expression)))))
+        (let ((a (at from)) (b (at to)))
+          (and a (list :from a :to b)))))))
+
+(defun quantity-numbers (presenter expression state)
+  "The numbers shown beside EXPRESSION in STATE (see NUMBERS-OF and ARC-RANGE-NUMBERS)."
+  (cond ((or (realp expression) (not (valid-expression-p expression :kind :arithmetic))) nil)
+        ((not (free-of-p +arc-length+ expression)) (arc-range-numbers presenter expression state))
+        (t (numbers-of presenter expression))))
+
+(defun force-view (presenter entry state)
+  "The plist a report shows for the force ENTRY of STATE: :LABEL :SYMBOL :VALUE
+:VECTOR-P :NUMBERS :OPTIONS."
+  (multiple-value-bind (label symbol value options) (force-entry entry)
+    (list :label label :symbol symbol
+          :value (if (vector-value-p value)
+                     (mapcar (lambda (c) (present presenter c)) value)
+                     (and value (present presenter value)))
+          :vector-p (vector-value-p value)
+          :numbers (if (vector-value-p value)
+                       (let ((numbers (mapcar (lambda (c) (if (realp c) c (quantity-numbers presenter c state)))
+                                              value)))
+                         (and (every #'identity numbers) (notevery #'realp value) numbers))
+                       (and value (quantity-numbers presenter value state)))
+          :options (loop for (key datum) on options by #'cddr
+                         collect (format nil "~A ~A" (keyword-words key)
+                                         (if (keywordp datum) (keyword-words datum) (datum-text datum)))))))
+
+(defun half-acceleration-p (presenter coefficient acceleration)
+  "True when COEFFICIENT is proven to be ACCELERATION / 2."
+  (and (not (eql acceleration 0))
+       (handler-case (ames.maxima:equivalent-p (presenter-bridge presenter)
+                                               (list '* 2 coefficient) acceleration)
+         (ames.maxima:maxima-condition () nil))))
+
+(defun coordinate-view (presenter position acceleration axis)
+  "The presented POSITION of one axis: x0 + v0 tau + (1/2) a_x tau^2 when its tau^2
+coefficient is ACCELERATION / 2, else the presented polynomial."
+  (let ((coefficients (and (valid-expression-p position :kind :arithmetic)
+                           (handler-case (ames.maxima:polynomial-coefficients
+                                          (presenter-bridge presenter) position 'tau)
+                             (ames.maxima:maxima-condition () nil)))))
+    (if (and coefficients (= 3 (length coefficients)) (valid-expression-p acceleration :kind :arithmetic)
+             (half-acceleration-p presenter (third coefficients) acceleration))
+        (let ((lower (polynomial-form presenter (subseq coefficients 0 2) 'tau))
+              (half `(* 1/2 ,(acceleration-symbol axis) (expt tau 2))))
+          (if (eql lower 0) half (list '+ lower half)))
+        (present presenter position))))
+
+(defun body-view (presenter state body)
+  "What STATE shows of the moving BODY: acceleration, trajectory, and their numbers."
+  (let ((acceleration (body-entry (state-accelerations state) body))
+        (position (body-entry (state-positions state) body)))
+    (list :name body
+          :acceleration (mapcar (lambda (c) (present presenter c)) acceleration)
+          :acceleration-numbers (mapcar (lambda (c) (quantity-numbers presenter c state)) acceleration)
+          :position
+          (cond ((equal position '(:no-closed-form)) :no-closed-form)
+                ((and (consp position) (eq (first position) :on-path))
+                 (list :on-path (mapcar (lambda (c) (present presenter c)) (second position))))
+                ((vector-value-p position)
+                 (loop for c in position for a in acceleration for axis in '(:x :y)
+                       collect (coordinate-view presenter c a axis)))
+                (t position))
+          :position-numbers
+          (cond ((and (consp position) (eq (first position) :on-path))
+                 (mapcar (lambda (c) (quantity-numbers presenter c state)) (second position)))
+                ((vector-value-p position)
+                 (mapcar (lambda (c) (quantity-numbers presenter c state)) position))))))
+
+(defun time-phrase (presenter time)
+  "A phrase for a state's start or duration."
+  (cond ((eq time :forever) (list "forever"))
+        ((eq time :undecided) (list "undecided"))
+        ((and (consp time) (eq (first time) :no-closed-form) (getf (rest time) :after-state))
+         (list (format nil "the end of state ~D (no closed form in time)" (getf (rest time) :after-state))))
+        ((and (consp time) (eq (first time) :no-closed-form) (getf (rest time) :needs))
+         (list "not found: no closed form in time, and no numbers to integrate with"))
+        ((and (consp time) (eq (first time) :no-closed-form))
+         (let ((s (arc-length-symbol presenter))
+               (speed (cdr (assoc +arc-speed+ (presenter-renamings presenter)))))
+           (phrase "no closed form in time: the time to travel from "
+                   (list '= s (present presenter (getf (rest time) :from-arc-length))) " to "
+                   (list '= s (present presenter (getf (rest time) :to-arc-length)))
+                   " along the contact, with "
+                   (list '= (list 'expt speed 2) (present presenter (getf (rest time) :speed-squared))))))
+        ((valid-expression-p time :kind :arithmetic) (phrase (present presenter time)))
+        (t (list (datum-text time)))))
+
+(defun path-note (presenter value)
+  "The phrases of a :PATH-COORDINATES note."
+  (let ((s (arc-length-symbol presenter))
+        (speed (cdr (assoc +arc-speed+ (presenter-renamings presenter))))
+        (energy (getf value :energy-integral)))
+    (remove nil
+            (list (phrase (format nil "~A is the arc length along the contact of ~{~A~^ with ~}; it starts at "
+                                  (name-text s) (mapcar #'name-text (getf value :contact)))
+                          (list '= s (present presenter (getf value :arc-length-from))))
+                  (and (getf value :tangential-acceleration)
+                       (phrase "tangential acceleration "
+                               (list '= (make-symbol (format nil "~A''" (symbol-name s)))
+                                     (present presenter (getf value :tangential-acceleration)))))
+                  (and energy
+                       (phrase "energy integral "
+                               (if (and (consp energy) (eq (first energy) '=))
+                                   (list '= (list 'expt speed 2) (present presenter (third energy)))
+                                   (present presenter energy))
+                               (if (eq (getf value :ode) :closed-form)
+                                   " (the motion also has a closed form in time)"
+                                   " (no closed form in time)")))))))
+
+(defun note-views (presenter state)
+  "The notes of STATE as (LABEL . PHRASES), those the view shows elsewhere left out."
+  (loop for (key value) on (state-notes state) by #'cddr
+        append (case key
+                 ((:numeric :numeric-duration :events))
+                 (:numeric-trajectory
+                  (list (cons "integrated numerically"
+                              (list (list (format nil "~D sample~:P of the motion" 
+                                                  (reduce #'+ (mapcar (lambda (g) (length (getf g :samples))) value))))))))
+                 (:undecided (list (cons "undecided" (list (list (datum-text value))))))
+                 (:end-arc-length (list (cons "ends on the curve"
+                                              (list (phrase "at " (list '= (arc-length-symbol presenter)
+                                                                        (present presenter value)))))))
+                 (:path-coordinates (list (cons "on the curve" (path-note presenter value))))
+                 (:impact
+                  (list (cons "the impact"
+                              (append
+                               (loop for (body after) in (getf value :velocities-after)
+                                     for before = (body-entry (getf value :velocities-before) body)
+                                     unless (and (equal before '(0 0)) (equal after '(0 0)))
+                                       collect (phrase (format nil "~A: velocity (" (name-text body))
+                                                       (present presenter (first before)) ", "
+                                                       (present presenter (second before)) ") just before, ("
+                                                       (present presenter (first after)) ", "
+                                                       (present presenter (second after)) ") just after"))
+                               (loop for entry in (getf value :impulses)
+                                     unless (eql (fourth entry) 0)
+                                       collect (phrase (format nil "impulse of ~A on ~A: " (name-text (third entry))
+                                                               (name-text (second entry)))
+                                                       (present presenter (fourth entry))))
+                               (list (phrase "kinetic energy lost: " (present presenter (getf value :energy-lost))))))))
+                 (:accumulation
+                  (list (cons "the impacts repeat"
+                              (list (phrase "each cycle " (present presenter (getf value :factor))
+                                            " times the one before (the first lasted "
+                                            (present presenter (getf value :cycle))
+                                            "): they accumulate at "
+                                            (list '= 't (present presenter (getf value :time)))
+                                            ", and the run goes on from there at rest")))))
+                 (:missing-fact
+                  (list (cons "the run branches on" (list (phrase (present-relation presenter value))))))
+                 (:initial-velocities
+                  (list (cons "velocities just after the impact"
+                              (loop for (body velocity) in value
+                                    collect (phrase (format nil "~A: (" (name-text body))
+                                                    (present presenter (first velocity)) ", "
+                                                    (present presenter (second velocity)) ")")))))
+                 (t (list (cons (keyword-words key)
+                                (list (if (valid-expression-p value :kind :arithmetic)
+                                          (phrase (present presenter value))
+                                          (list (datum-text value))))))))))
+
+(defun moving-p (presenter body)
+  "True unless the scenario body named BODY is fixed."
+  (let ((object (find-scenario-body body (presenter-scenario presenter))))
+    (not (and object (scenario-body-fixed-p object)))))
+
+(defun state-view (presenter state)
+  "The plist a report shows for STATE (see the file header)."
+  (let* ((numeric (getf (state-notes state) :numeric))
+         (events (getf (state-notes state) :events)))
+    (list :index (state-index state)
+          :start (time-phrase presenter (state-start state))
+          :start-number (let ((n (getf numeric :start)))
+                          (and (realp n) (not (realp (state-start state))) n))
+          :duration (time-phrase presenter (state-duration state))
+          :duration-number (let ((n (or (getf (state-notes state) :numeric-duration) (getf numeric :duration))))
+                             (and (realp n) n))
+          :contacts (mapcar (lambda (c) (contact-phrase presenter c)) (state-contacts state))
+          :forces (mapcar (lambda (f) (force-view presenter f state)) (state-forces state))
+          :bodies (loop for (body) in (state-positions state)
+                        when (moving-p presenter body) collect (body-view presenter state body))
+          :end (event-phrase presenter (state-end-event state) state)
+          :events (mapcar (lambda (e) (event-phrase presenter e state)) events)
+          :final (loop for (body position) in (state-final-positions state)
+                       for velocity = (body-entry (state-final-velocities state) body)
+                       when (moving-p presenter body)
+                         collect (list :name body
+                                       :position (mapcar (lambda (c) (present presenter c)) position)
+                                       :position-numbers (and (notevery #'realp position)
+                                                              (second (assoc body (getf numeric :final-positions))))
+                                       :velocity (mapcar (lambda (c) (present presenter c)) velocity)
+                                       :velocity-numbers (and (notevery #'realp velocity)
+                                                              (second (assoc body (getf numeric :final-velocities))))))
+          :notes (note-views presenter state)
+          :branches (loop for branch in (state-branches state)
+                          collect (list :assume (phrase (present-relation presenter (getf branch :assume)))
+                                        :selected (getf branch :selected)
+                                        :outcome (getf branch :outcome)
+                                        :states (mapcar (lambda (s) (state-view presenter s))
+                                                        (getf branch :states)))))))
+
+(defun answer-views (presenter history)
+  "The answers to HISTORY's queries as phrases: (NAME PHRASE)."
+  (loop for entry in (history-answers history)
+        collect (destructuring-bind (name value &rest options) entry
+                  (list name
+                        (append
+                         (cond ((eq value :unanswered)
+                                (list (format nil "not answered: ~A" (getf options :reason))))
+                               ((and (consp value) (member (first value) '(:true :false :unknown)))
+                                (list (format nil "~(~A~) (~A)" (first value) (second value))))
+                               ((and (consp value) (member (first value) '(:never :always)))
+                                (list (format nil "~(~A~): ~A" (first value) (second value))))
+                               ((and (consp value) (eq (first value) :when))
+                                (cons "when "
+                                      (loop for conditions in (rest value)
+                                            for first = t then nil
+                                            unless first collect " or "
+                                            append (loop for c in conditions
+                                                         for f = t then nil
+                                                         unless f collect " and "
+                                                         collect (list :math (present-relation presenter c))))))
+                               ((vector-value-p value)
+                                (phrase "(" (present presenter (first value)) ", " (present presenter (second value)) ")"))
+                               ((valid-expression-p value :kind :arithmetic) (phrase (present presenter value)))
+                               (t (list (datum-text value))))
+                         (let ((number (getf options :numeric)))
+                           (and number (list (format nil " (~A)" (if (listp number)
+                                                                     (format nil "~{~A~^, ~}" (mapcar #'number-text number))
+                                                                     (number-text number))))))
+                         (let ((facts (getf options :assume)))
+                           (and facts (cons ", assuming "
+                                            (loop for fact in facts
+                                                  for first = t then nil
+                                                  unless first collect " and "
+                                                  collect (list :math (present-relation presenter fact)))))))))))
+
+(defun history-view (presenter history)
+  "The plist a report shows for HISTORY: :NAME :DESCRIPTION :PARAMETERS :VALUES :FIXED
+:STATES :OUTCOME :ASSUMED :AMBIGUITY :STOPPED."
+  (let* ((scenario (history-scenario history))
+         (stopped (getf (history-notes history) :stopped-by)))
+    (list :name (scenario-name scenario)
+          :description (scenario-description scenario)
+          :parameters (parameter-phrases presenter)
+          :values (mapcar (lambda (entry)
+                            (cons (car entry) (if (integerp (cdr entry)) (cdr entry) (float (cdr entry) 1d0))))
+                          (history-parameter-values history))
+          :fixed (loop for body in (scenario-fixed-bodies scenario)
+                       for position = (scenario-body-position body)
+                       collect (if (and position (not (every (lambda (c) (eql c 0)) position)))
+                                   (phrase (format nil "~A at (" (name-text (scenario-body-name body)))
+                                           (present presenter (first position)) ", "
+                                           (present presenter (second position)) ")")
+                                   (list (name-text (scenario-body-name body)))))
+          :states (mapcar (lambda (s) (state-view presenter s)) (history-states history))
+          :outcome (history-outcome history)
+          :answers (answer-views presenter history)
+          :assumed (loop for assumed in (reverse (getf (history-notes history) :assumed))
+                         collect (phrase (if (getf assumed :state)
+                                             (format nil "at state ~D: " (getf assumed :state))
+                                             "while checking the geometry: ")
+                                         (present-relation presenter (getf assumed :fact))))
+          :ambiguity
+          (when (typep stopped 'ambiguous-transition)
+            (list :missing-fact (phrase (present-relation presenter (ambiguous-transition-missing-fact stopped)))
+                  :candidates
+                  (loop for (event time . more) in (ambiguous-transition-candidates stopped)
+                        collect (append (event-phrase presenter event)
+                                        (if (eq time :undecided)
+                                            (phrase ", at a time not decided: "
+                                                    (present-relation presenter (first more)))
+                                            (cons ", at t = " (time-phrase presenter time)))))))
+          :stopped (and stopped (not (typep stopped 'ambiguous-transition))
+                        (list (remove #\Newline (princ-to-string stopped)))))))

@@ -1,0 +1,125 @@
+;;;; src/scenario/queries.lisp -- validating (query NAME QUESTION) clauses (thesis 3.2.4,
+;;;; "Problem Solving Extensions": analysis, parameter selection, proofs).
+;;;;
+;;;; A validated query is a list (NAME QUESTION) in a canonical form the simulator answers:
+;;;;   (:value QUANTITY :at WHEN)          (:time EVENT)
+;;;;   (:parameter P :such-that CONDITION) (:prove CONDITION :during WHEN-or-NIL)
+;;;;   (:maximum QUANTITY :during WHEN)    (:minimum QUANTITY :during WHEN)
+;;;; where a QUANTITY is an arithmetic expression of the algebra whose atoms may also be
+;;;; quantity forms (:x B) (:y B) (:position B) (:velocity B) (:speed B) (:acceleration B)
+;;;; (:normal-force A B) (:friction A B) (:tension ROPE) (:kinetic-energy B) (:momentum B)
+;;;; (:energy); a WHEN is (:start N), (:end N), (:event PATTERN) with PATTERN a list
+;;;; (:KIND NAME...) as an event is printed, or (:time EXPR); a CONDITION is a relation
+;;;; over quantities and parameters, (:outcome PATTERN) or (:not (:outcome PATTERN)).
+;;;; Words are recognised by name; every body, rope or parameter a query names must be
+;;;; declared (an unknown name is an UNDECLARED-SYMBOL-ERROR naming it).
+
+(in-package #:ames.scenario)
+
+(defparameter +quantity-words+
+  '(("X" . 1) ("Y" . 1) ("POSITION" . 1) ("VELOCITY" . 1) ("SPEED" . 1) ("ACCELERATION" . 1)
+    ("NORMAL-FORCE" . 2) ("FRICTION" . 2) ("TENSION" . 1) ("KINETIC-ENERGY" . 1)
+    ("MOMENTUM" . 1) ("ENERGY" . 0))
+  "The quantities a query may ask for, with how many names each takes.")
+
+(defun query-reject (validation datum control &rest arguments)
+  "Signal SCENARIO-SYNTAX-ERROR about a query."
+  (apply #'reject validation 'scenario-syntax-error datum control arguments))
+
+(defun query-name-of (validation x what)
+  "The declared symbol of the name X of a WHAT (\"body\", \"rope\"...). Signals
+UNDECLARED-SYMBOL-ERROR naming X when nothing of that name is declared."
+  (let ((declaration (declared validation x)))
+    (unless declaration
+      (reject validation 'undeclared-symbol-error x
+              "~A is not a declared ~A" (show x) what))
+    (cdr declaration)))
+
+(defun quantity-form-p (x)
+  "True when X is a list headed by a quantity word."
+  (and (consp x) (symbolp (car x)) (not (keywordp (car x)))
+       (assoc (symbol-name (car x)) +quantity-words+ :test #'string=)))
+
+(defun checked-quantity (validation x)
+  "X as a canonical QUANTITY (see the file header)."
+  (cond ((quantity-form-p x)
+         (destructuring-bind (word . count) (assoc (symbol-name (car x)) +quantity-words+ :test #'string=)
+           (unless (and (proper-list-p x) (= (length (rest x)) count))
+             (query-reject validation x "~A takes ~D name~:P" (string-downcase word) count))
+           (cons (intern word :keyword)
+                 (mapcar (lambda (name) (query-name-of validation name "body or rope")) (rest x)))))
+        ((atom x) (canonical-atom validation x))
+        ((not (proper-list-p x)) (query-reject validation x "~A is not a proper list" (show x)))
+        (t (let ((operator (algebra-operator-named (car x))))
+             (unless (and operator (arithmetic-operator-p operator))
+               (query-reject validation x "~A is neither a quantity nor an arithmetic operator"
+                             (show (car x))))
+             (cons operator (mapcar (lambda (y) (checked-quantity validation y)) (rest x)))))))
+
+(defun checked-pattern (validation x)
+  "The event pattern X, (:KIND NAME...), with its names declared."
+  (unless (and (consp x) (proper-list-p x) (keywordp (car x)))
+    (query-reject validation x "an event is written as it is printed, (:KIND BODY ...), not ~A" (show x)))
+  (cons (car x) (mapcar (lambda (name)
+                          (if (keywordp name) name (query-name-of validation name "body or rope")))
+                        (rest x))))
+
+(defun checked-when (validation x)
+  "X as a canonical WHEN."
+  (cond ((and (consp x) (proper-list-p x) (= (length x) 2)
+              (member (and (symbolp (car x)) (symbol-name (car x))) '("START" "END") :test #'equal))
+         (unless (and (integerp (second x)) (>= (second x) 0))
+           (query-reject validation x "a state is named by its index, 0, 1, ..."))
+         (list (intern (symbol-name (car x)) :keyword) (second x)))
+        ((and (consp x) (keywordp (car x))) (list :event (checked-pattern validation x)))
+        (t (list :time (checked-expression validation x)))))
+
+(defun checked-condition (validation x)
+  "X as a canonical CONDITION."
+  (cond ((and (consp x) (keywordp (car x))) (list :outcome (checked-pattern validation x)))
+        ((and (consp x) (named-p (car x) "NOT") (proper-list-p x) (= 2 (length x))
+              (consp (second x)) (keywordp (car (second x))))
+         (list :not (list :outcome (checked-pattern validation (second x)))))
+        ((and (consp x) (proper-list-p x) (= 3 (length x)) (symbolp (car x))
+              (member (symbol-name (car x)) '("<" ">" "<=" ">=" "=") :test #'string=))
+         (list (algebra-operator-named (car x))
+               (checked-quantity validation (second x)) (checked-quantity validation (third x))))
+        (t (query-reject validation x "a condition is a relation such as (> (speed b) v), an outcome such as (:lift-off b s), or (not OUTCOME), not ~A" (show x)))))
+
+(defun checked-query (validation clause)
+  "The canonical query (NAME QUESTION) of the clause (query NAME QUESTION)."
+  (enter validation "clause QUERY" clause)
+  (unless (and (proper-list-p clause) (= 3 (length clause)) (symbolp (second clause))
+               (second clause) (not (keywordp (second clause))))
+    (query-reject validation clause "a query is (query NAME QUESTION)"))
+  (let* ((question (third clause))
+         (word (and (consp question) (symbolp (car question)) (symbol-name (car question))))
+         (arguments (and (consp question) (proper-list-p question) (rest question))))
+    (flet ((option (key)
+             (let ((tail (member key arguments)))
+               (and tail (second tail)))))
+      (list (second clause)
+            (cond ((equal word "VALUE")
+                   (unless (option :at) (query-reject validation question "(value QUANTITY :at WHEN)"))
+                   (list :value (checked-quantity validation (first arguments))
+                         :at (checked-when validation (option :at))))
+                  ((equal word "TIME")
+                   (list :time (checked-pattern validation (first arguments))))
+                  ((equal word "PARAMETER")
+                   (unless (option :such-that)
+                     (query-reject validation question "(parameter P :such-that CONDITION)"))
+                   (let ((declaration (declared validation (first arguments))))
+                     (unless (eq (car declaration) :parameter)
+                       (reject validation 'undeclared-symbol-error (first arguments)
+                               "~A is not a declared parameter" (show (first arguments))))
+                     (list :parameter (cdr declaration)
+                           :such-that (checked-condition validation (option :such-that)))))
+                  ((equal word "PROVE")
+                   (list :prove (checked-condition validation (first arguments))
+                         :during (and (option :during) (checked-when validation (option :during)))))
+                  ((member word '("MAXIMUM" "MINIMUM") :test #'equal)
+                   (list (intern word :keyword) (checked-quantity validation (first arguments))
+                         :during (and (option :during) (checked-when validation (option :during)))))
+                  (t (query-reject validation question
+                                   "a question is (value ...), (time ...), (parameter ...), (prove ...), (maximum ...) or (minimum ...), not ~A"
+                                   (show question))))))))

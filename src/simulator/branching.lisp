@@ -1,0 +1,188 @@
+;;;; src/simulator/branching.lisp -- branching on ambiguity (thesis 3.2.4, "Simulation Scope
+;;;; Extensions"): where the assumptions do not decide which event ends a state, or which
+;;;; contacts and modes hold, the run splits into branches, one per outcome, each under the
+;;;; fact that selects it; the result is a tree (an envisionment).
+;;;;
+;;;; The fork is a state of zero duration whose end event is (:BRANCH) and which holds the
+;;;; branches. For a missing fact X > 0 (in factored core form) the branches assume X > 0,
+;;;; X < 0, and the boundary X = 0, where the system behaves differently again: for the
+;;;; boundary, a parameter the equation determines is replaced by its value throughout the
+;;;; scenario (an equation among the assumptions simplifies nothing in Maxima; a
+;;;; substituted parameter does), its own assumptions becoming facts on that value. Each
+;;;; branch is simulated anew from the start under its fact (the states before the fork
+;;;; come out the same, and are not repeated), so that nothing of one branch leaks into
+;;;; another. Parameter values (--set) select one branch, marked :SELECTED; every branch is
+;;;; still listed. The tree is bounded: *BRANCH-LIMIT* branches and *BRANCH-DEPTH-LIMIT*
+;;;; nested forks; a branch beyond the bound stops at its ambiguity, and the history says so.
+
+(in-package #:ames.simulator)
+
+(defparameter *branch-limit* 24
+  "The most branches one run's tree may hold.")
+
+(defparameter *branch-depth-limit* 4
+  "The most forks on one path from the root of a run's tree.")
+
+(defun branch-room-p ()
+  "True when the current tree may still fork."
+  (let ((count (getf *branching* :count 0)) (depth (getf *branching* :depth 0)))
+    (and (< depth *branch-depth-limit*) (< (+ count 3) *branch-limit*))))
+
+(defun negated-fact (fact)
+  "The strict opposite of the inequality FACT (X > Y gives X < Y): the boundary is a
+branch of its own."
+  (list (ecase (first fact) ((> >=) '<) ((< <=) '>)) (relation-lhs fact) (relation-rhs fact)))
+
+(defun boundary-substitution (run fact)
+  "For the inequality FACT, (values PARAMETER VALUE) with the equation LHS = RHS solved
+for a parameter of the scenario (the last declared one it determines uniquely, free of
+itself), or NIL."
+  (let ((equation `(= ,(relation-lhs fact) ,(relation-rhs fact))))
+    (dolist (parameter (reverse (scenario-parameters (run-scenario run))))
+      (let ((name (scenario-parameter-name parameter)))
+        (unless (free-of-p name equation)
+          (let ((solutions (handler-case (ames.maxima:solve-equations (run-bridge run)
+                                                                      (list equation) (list name))
+                             (ames.maxima:solve-failed () nil))))
+            (when (and solutions (null (rest solutions)))
+              (let ((value (tidy run (cdr (first (first solutions))) :full)))
+                (when (free-of-p name value)
+                  (return (values name value)))))))))))
+
+(defun substituted-form (form parameter value)
+  "The scenario FORM with PARAMETER replaced by VALUE everywhere but in its own
+declaration, which is dropped."
+  (labels ((walk (x)
+             (cond ((and (symbolp x) (string= (symbol-name x) (symbol-name parameter))) value)
+                   ((atom x) x)
+                   (t (cons (walk (car x)) (walk (cdr x)))))))
+    (mapcar (lambda (clause)
+              (if (and (consp clause) (symbolp (first clause))
+                       (string= (symbol-name (first clause)) "PARAMETERS"))
+                  (cons (first clause)
+                        (remove-if (lambda (spec)
+                                     (let ((name (if (consp spec) (first spec) spec)))
+                                       (and (symbolp name) (string= (symbol-name name)
+                                                                    (symbol-name parameter)))))
+                                   (rest clause)))
+                  (walk clause)))
+            form)))
+
+(defun parameter-facts (scenario parameter value)
+  "The assumptions SCENARIO declares on PARAMETER, with VALUE put for it."
+  (loop for relation in (scenario-assumption-relations scenario)
+        unless (free-of-p parameter relation)
+          collect (substitute-expressions (list (cons parameter value)) relation)))
+
+(defun fork-alternatives (run fact)
+  "The branches of the missing FACT: plists (:ASSUME RELATION :FACTS FACTS :SCENARIO S)
+with FACTS the assumptions the branch adds and S its scenario (the boundary's has a
+parameter substituted). Alternatives the assumptions already exclude are left out."
+  (let ((scenario (run-scenario run))
+        (alternatives '()))
+    (dolist (side (list fact (negated-fact fact)))
+      (unless (eq (decide run side) :false)
+        (push (list :assume side :facts (list side) :scenario scenario) alternatives)))
+    (multiple-value-bind (parameter value) (boundary-substitution run fact)
+      (when parameter
+        (let ((facts (parameter-facts scenario parameter value)))
+          (unless (some (lambda (f) (eq (decide run f) :false)) facts)
+            (let ((form (substituted-form (scenario-form scenario) parameter value)))
+              (handler-case
+                  (push (list :assume `(= ,(relation-lhs fact) ,(relation-rhs fact))
+                              :facts facts
+                              :scenario (parse-scenario form :source (scenario-source scenario))
+                              :substitution (list parameter value))
+                        alternatives)
+                (scenario-error () nil)))))))
+    (nreverse alternatives)))
+
+(defun branchable-fact-p (fact)
+  "True when FACT is an inequality over the parameters (not a description)."
+  (and (consp fact) (member (first fact) '(< > <= >=))
+       (notany #'keywordp (alexandria:flatten fact))))
+
+(defun selected-alternative (run alternatives values)
+  "The alternative of ALTERNATIVES whose fact the parameter VALUES satisfy, or NIL."
+  (when values
+    (find-if (lambda (alternative)
+               (let ((relation (getf alternative :assume)))
+                 (let ((difference (numeric-or-nil (run-bridge run)
+                                                   `(- ,(relation-lhs relation) ,(relation-rhs relation))
+                                                   values)))
+                   (and difference
+                        (ecase (first relation)
+                          (> (> difference 1d-12))
+                          (< (< difference -1d-12))
+                          (= (<= (abs difference) 1d-12)))))))
+             alternatives)))
+
+(defun fork (run history index condition check-incremental)
+  "Split the run at state INDEX on the ambiguity CONDITION: append to HISTORY a fork
+state (zero duration, end event (:BRANCH)) holding each branch's states and outcome.
+Returns true, or NIL when CONDITION cannot be branched on (its missing fact is no
+inequality over the parameters, or the tree is full)."
+  (let ((fact (core-fact run (ambiguous-transition-missing-fact condition))))
+    (when (and (branchable-fact-p fact) (branch-room-p))
+      (let* ((alternatives (fork-alternatives run fact))
+             (values (history-parameter-values history))
+             (selected (selected-alternative run alternatives values))
+             (partial (ambiguous-transition-state condition))
+             (fork (make-instance 'qualitative-state
+                                  :index index :start (run-time run) :duration 0
+                                  :initial-velocities (run-velocities run)
+                                  :contacts (and partial (state-contacts partial))
+                                  :accelerations (and partial (state-accelerations partial))
+                                  :positions (mapcar (lambda (entry) (list (first entry) (second entry)))
+                                                     (run-positions run))
+                                  :velocities (run-velocities run)
+                                  :end-event '(:branch)
+                                  :final-positions (run-positions run)
+                                  :final-velocities (run-velocities run)
+                                  :notes (list :missing-fact fact))))
+        (when (rest alternatives)
+          (setf (state-branches fork)
+                (let ((*branching* (list :count (+ (getf *branching* :count 0) (length alternatives))
+                                         :depth (1+ (getf *branching* :depth 0))
+                                         :extra-facts (getf *branching* :extra-facts))))
+                  (mapcar (lambda (alternative)
+                            (grow-branch run alternative index check-incremental
+                                         (eq alternative selected)))
+                          alternatives)))
+          (setf (history-states history) (append (history-states history) (list fork))
+                (history-outcome history) :branched)
+          t)))))
+
+(defun grow-branch (run alternative index check-incremental selected)
+  "Simulate the branch ALTERNATIVE from the start under its facts; its states from the
+fork on, renumbered after the fork, as (:ASSUME FACT :STATES ... :OUTCOME ...
+[:SELECTED T] [:SUBSTITUTION (P V)])."
+  (let* ((facts (append (getf *branching* :extra-facts) (getf alternative :facts)))
+         (history (let ((*branching* (list* :extra-facts facts *branching*)))
+                    (simulate-branch (getf alternative :scenario) (run-bridge run)
+                                     (run-values run) check-incremental facts)))
+         (states (remove-if (lambda (state) (< (state-index state) index))
+                            (history-states history))))
+    (dolist (state states) (renumber-state state 1))
+    (append (list :assume (getf alternative :assume)
+                  :states states
+                  :outcome (history-outcome history))
+            (and selected (list :selected t))
+            (and (getf alternative :substitution)
+                 (list :substitution (getf alternative :substitution))))))
+
+(defun renumber-state (state offset)
+  "Shift STATE's index, and its branches' states', by OFFSET."
+  (setf (slot-value state 'index) (+ (state-index state) offset))
+  (dolist (branch (state-branches state))
+    (dolist (inner (getf branch :states)) (renumber-state inner offset))))
+
+(defun simulate-branch (scenario bridge values check-incremental facts)
+  "SCENARIO simulated from the start with FACTS assumed besides its own assumptions:
+its SIMULATION-HISTORY. VALUES are the run's parameter values (an alist by symbol)."
+  (simulate-checked scenario bridge
+                    (mapcar (lambda (entry) (cons (symbol-name (car entry)) (cdr entry)))
+                            (remove-if-not (lambda (entry)
+                                             (find-scenario-parameter (car entry) scenario))
+                                           values))
+                    check-incremental :extra-facts facts))

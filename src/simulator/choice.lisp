@@ -1,0 +1,352 @@
+;;;; src/simulator/choice.lisp -- which contacts and modes hold at the start of a state, chosen
+;;;; by consistency (thesis section 3.2.3, "Deductions About the Next State").
+;;;;
+;;;; The state's initial values leave some decisions open: a contact touching with no
+;;;; normal velocity may hold or not, a moded component may start in several modes. The
+;;;; engine lists them (AMES.ENGINE:MODEL-CHOICE-POINTS). An assignment of them is
+;;;; CONSISTENT when the state it gives lasts: no termination condition of an active
+;;;; instance fires at once (a normal force would not be attractive, the observer does
+;;;; not leave a contact past its end, a mode's exit condition does not hold), and no
+;;;; inactive touching contact is penetrated at once. Contacts at a corner that is not
+;;;; concave are alternatives: at most one of them holds.
+;;;;
+;;;; The search: every combination of the alternatives' and the modes' options (few),
+;;;; and for each, the lone contacts by principal pivoting from all active, flipping the
+;;;; violated one of least index (Murty's rule, which ends for the frictionless contact
+;;;; problem). Among the consistent assignments one is taken when it is the only one that
+;;;; is not DEGENERATE (an active contact whose normal force vanishes identically, or an
+;;;; inactive one grazed all along); several that differ physically are an ambiguity.
+;;;; Modes are a component's: it lists them in its order of preference, and of consistent
+;;;; assignments that differ in their modes, one whose modes another's are preferred to
+;;;; is dropped (a rough contact that can stick does not start sliding).
+
+(in-package #:ames.simulator)
+
+(defparameter *combination-limit* 64
+  "The most combinations of alternatives and modes the choice search tries.")
+
+(defstruct (trial (:constructor make-trial (assignment solved verdict facts degenerate notes)))
+  "One assignment of the choice points tried: ASSIGNMENT an alist instance key -> option,
+SOLVED its SOLVED-MODEL (when it could be solved), VERDICT :CONSISTENT, :INCONSISTENT
+or :UNDECIDED, FACTS the undecided relations, DEGENERATE how many degeneracies it has,
+NOTES the reasons, for explanations."
+  assignment solved verdict facts (degenerate 0) notes)
+
+(defun point-contact (point)
+  "The contact entity whose touching the activation choice POINT is about, or NIL."
+  (and (eq (ames.engine:choice-point-kind point) :activation)
+       (some #'gap-relation-contact (ames.engine:choice-point-relations point))))
+
+(defun point-groups (run points)
+  "POINTS split into the lone activation points and the groups of activation points at
+one corner (alternatives), and the mode points: three values."
+  (let ((activation (remove :mode points :key #'ames.engine:choice-point-kind))
+        (modes (remove :activation points :key #'ames.engine:choice-point-kind))
+        (groups '()))
+    (dolist (point activation)
+      (let* ((contact (point-contact point))
+             (partners (and contact (touching-alternatives run contact)))
+             (group (find-if (lambda (g)
+                               (some (lambda (p) (member (point-contact p) partners)) g))
+                             groups)))
+        (if group
+            (push point (cdr (last group)))
+            (push (list point) groups))))
+    (let ((lone (loop for g in groups unless (rest g) collect (first g)))
+          (cornered (remove-if-not #'rest groups)))
+      (values (reverse lone) (reverse cornered) modes))))
+
+(defun group-options (group)
+  "The assignments of a corner GROUP: none active, or exactly one."
+  (cons (mapcar (lambda (p) (cons (ames.engine:choice-point-instance p) :false)) group)
+        (loop for chosen in group
+              collect (mapcar (lambda (p) (cons (ames.engine:choice-point-instance p)
+                                                (if (eq p chosen) :true :false)))
+                              group))))
+
+(defun mode-options (point)
+  "The assignments of a mode choice POINT."
+  (mapcar (lambda (mode) (list (cons (ames.engine:choice-point-instance point) mode)))
+          (ames.engine:choice-point-options point)))
+
+(defun combinations (option-lists)
+  "Every way of taking one option (an alist) from each of OPTION-LISTS, appended."
+  (if (null option-lists)
+      (list '())
+      (loop for option in (first option-lists)
+            append (mapcar (lambda (rest) (append option rest))
+                           (combinations (rest option-lists))))))
+
+(defun apply-assignment (run points assignment)
+  "Bring the model's choices to ASSIGNMENT (alist key -> option over POINTS' instances):
+the activations first, then the modes of the instances active after them (an instance
+that is not active has no mode to choose; its option is then NIL)."
+  (dolist (kind '(:activation :mode))
+    (let ((changes (loop for point in points
+                         for key = (ames.engine:choice-point-instance point)
+                         for entry = (assoc key assignment :test #'equal)
+                         for change = (and entry (cdr entry)
+                                           (eq kind (ames.engine:choice-point-kind point))
+                                           (or (eq kind :activation) (instance-active-p run key))
+                                           (ames.engine:choice-change (run-model run) point
+                                                                      (cdr entry)))
+                         when change collect change)))
+      (when changes
+        (ames.engine:apply-transition (run-model run) changes :decider (run-decider run))))))
+
+(defun active-contacts (run)
+  "The contact entities whose CONTACT instance is active in the current model: those
+named by a believed (in-contact A B :along K)."
+  (loop for belief in (ames.engine:model-beliefs (run-model run))
+        when (eq (first belief) 'ames.kb:in-contact)
+          collect (getf (cdddr belief) :along)))
+
+(defun instance-active-p (run key)
+  "True when the instance KEY is active in the current model."
+  (let ((instance (ames.engine:find-instance (run-model run) key)))
+    (and instance (ames.engine:instance-active-p instance))))
+
+(defun immediate-violations (run solved points)
+  "What fires at once in the current model (solved as SOLVED): a list of entries
+(KEY VERDICT FACT WHAT), KEY the instance, VERDICT :TRUE or :UNKNOWN, WHAT the
+condition. Inactive touching contacts among POINTS count when they are penetrated."
+  (let ((violations '())
+        (active (active-contacts run)))
+    (dolist (condition (ames.engine:model-termination-conditions (run-model run)))
+      (unless (eq (ames.engine:termination-condition-kind condition) :activation)
+        (multiple-value-bind (verdict fact)
+            (fires-at-once run solved (ames.engine:termination-condition-relation condition))
+          (unless (eq verdict :false)
+            (push (list (ames.engine:termination-condition-instance condition) verdict fact
+                        (or (ames.engine:termination-condition-event condition)
+                            (ames.engine:termination-condition-change condition)))
+                  violations)))))
+    (dolist (point points)
+      (let ((contact (point-contact point))
+            (key (ames.engine:choice-point-instance point)))
+        (when (and (eq (ames.engine:choice-point-kind point) :activation)
+                   (not (instance-active-p run key)))
+          (multiple-value-bind (verdict fact)
+              (if contact
+                  (penetrates-at-once run solved contact active)
+                  (fires-at-once run solved
+                                 (let ((relations (ames.engine:choice-point-relations point)))
+                                   (if (rest relations) (cons 'and relations) (first relations)))))
+            (unless (eq verdict :false)
+              (push (list key verdict fact (list :penetrates contact)) violations))))))
+    (nreverse violations)))
+
+(defun degeneracies (run solved points)
+  "How degenerate the current assignment is: the active touching contacts whose every
+termination relation's function vanishes identically (a normal force of zero all
+along) plus the inactive touching contacts grazed all along (gap identically zero)."
+  (let ((count 0))
+    (dolist (point points count)
+      (let ((contact (point-contact point))
+            (key (ames.engine:choice-point-instance point)))
+        (when contact
+          (if (instance-active-p run key)
+              (when (some (lambda (condition)
+                            (and (equal (ames.engine:termination-condition-instance condition) key)
+                                 (eq (ames.engine:termination-condition-kind condition) :deactivation)
+                                 (member (first (ames.engine:termination-condition-relation condition))
+                                         '(< > <= >=))
+                                 (vanishes-identically-p
+                                  run solved (violation-function
+                                              (ames.engine:termination-condition-relation condition)))))
+                          (ames.engine:model-termination-conditions (run-model run)))
+                (incf count))
+              (when (vanishes-identically-p run solved `(ames.kb:contact-gap ,contact))
+                (incf count))))))))
+
+(defun current-assignment (run points)
+  "The current options of POINTS' instances: an alist key -> option."
+  (mapcar (lambda (point)
+            (let* ((key (ames.engine:choice-point-instance point))
+                   (instance (ames.engine:find-instance (run-model run) key)))
+              (cons key (if (eq (ames.engine:choice-point-kind point) :mode)
+                            (ames.engine:instance-mode instance)
+                            (if (ames.engine:instance-active-p instance) :true :false)))))
+          points))
+
+(defun pivot (run points lone)
+  "From the current model, flip the LONE activation points by Murty's least-index rule
+until the assignment is consistent, or shown inconsistent or undecided. Returns a
+TRIAL."
+  (let ((notes '()))
+    (loop repeat (+ 4 (* 2 (length lone)))
+          do (let* ((solved (handler-case (solve-model run (run-model run))
+                              ((or unsolvable-model ames.maxima:maxima-error) (condition)
+                                ;; no unique solution: redundant or contradictory
+                                ;; constraints, settled by trying every subset
+                                (return-from pivot
+                                  (make-trial (current-assignment run points) nil
+                                              (if lone :singular :inconsistent)
+                                              '() 0 (cons (list :unsolvable (ames-error-detail condition))
+                                                          notes))))))
+                    (violations (handler-case (immediate-violations run solved points)
+                                  (ames.maxima:maxima-error (condition)
+                                    ;; the solution is singular at this state: redundant
+                                    ;; constraints (two contacts pushing along one normal)
+                                    (return-from pivot
+                                      (make-trial (current-assignment run points) nil :singular
+                                                  '() 0 (cons (list :singular (ames-error-detail condition))
+                                                              notes))))))
+                    (sure (remove :unknown violations :key #'second))
+                    (sure-keys (remove-duplicates (mapcar #'first sure) :test #'equal))
+                    (flippable (loop for point in lone
+                                     when (member (ames.engine:choice-point-instance point) sure-keys
+                                                  :test #'equal)
+                                       collect point)))
+               (cond ((null violations)
+                      (return-from pivot
+                        (make-trial (current-assignment run points) solved :consistent '()
+                                    (degeneracies run solved points) (reverse notes))))
+                     ((and sure (= (length sure-keys) (length flippable)))
+                      (let* ((point (first flippable))
+                             (key (ames.engine:choice-point-instance point))
+                             (option (if (instance-active-p run key) :false :true)))
+                        (push (list :flip key option :because (fourth (find key sure :key #'first :test #'equal)))
+                              notes)
+                        (apply-assignment run points (list (cons key option)))))
+                     (sure
+                      (return-from pivot
+                        (make-trial (current-assignment run points) solved :inconsistent '() 0
+                                    (reverse (cons (list :violates (mapcar #'fourth sure)) notes)))))
+                     (t
+                      (return-from pivot
+                        (make-trial (current-assignment run points) solved :undecided
+                                    (mapcar #'third violations) 0 (reverse notes)))))))
+    (make-trial (current-assignment run points) nil :inconsistent '() 0
+                (reverse (cons '(:no-convergence) notes)))))
+
+(defun same-motion-p (run a b)
+  "True when the trials A and B give the same motion: every body's acceleration at the
+start of a state (or velocity after an impact) is the same."
+  (let ((terms (remove-if-not (lambda (term) (member (first term) '(ames.kb:acc ames.kb:vel-after)))
+                              (mapcar #'car (solved-model-values (trial-solved a))))))
+    (every (lambda (term)
+             (flet ((value (trial)
+                      (substitute-expressions (solved-model-initial (trial-solved trial))
+                                              (quantity-value (trial-solved trial) term))))
+               (ames.maxima:equivalent-p (run-bridge run) (value a) (value b))))
+           terms)))
+
+(defun mode-ranks (points trial)
+  "TRIAL's option at each mode choice point of POINTS as its place among the point's
+options, which are in the order its component lists its modes; NIL where the
+instance has no mode in TRIAL (it is not active there)."
+  (loop for point in points
+        when (eq (ames.engine:choice-point-kind point) :mode)
+          collect (position (cdr (assoc (ames.engine:choice-point-instance point)
+                                        (trial-assignment trial) :test #'equal))
+                            (ames.engine:choice-point-options point))))
+
+(defun preferred-over-p (points a b)
+  "True when the modes of trial A are preferred to those of trial B: a component lists
+its modes in its order of preference, and at every mode choice point of POINTS where
+both have a mode, A's comes no later than B's, and at one at least earlier."
+  (let ((earlier nil))
+    (loop for rank-a in (mode-ranks points a)
+          for rank-b in (mode-ranks points b)
+          when (and rank-a rank-b)
+            do (cond ((> rank-a rank-b) (return-from preferred-over-p nil))
+                     ((< rank-a rank-b) (setf earlier t))))
+    earlier))
+
+(defun choose-trial (run trials &optional points)
+  "The trial to take among TRIALS, the assignments of the choice POINTS tried (see
+the file header). Among consistent assignments whose modes differ, those whose modes
+another one's are preferred to are dropped (a component lists its modes in its order
+of preference: where a friction contact can stick, it does not start sliding); an
+undecided assignment preferred to the rest leaves the choice undecided. Signals
+AMBIGUOUS-TRANSITION or UNSOLVABLE-MODEL."
+  (let* ((consistent (remove :consistent trials :key #'trial-verdict :test-not #'eq))
+         (best (and consistent (reduce #'min consistent :key #'trial-degenerate)))
+         (preferred (remove best consistent :key #'trial-degenerate :test-not #'eql))
+         (undecided (remove :undecided trials :key #'trial-verdict :test-not #'eq))
+         (preferred (remove-if (lambda (trial)
+                                 (some (lambda (other) (preferred-over-p points other trial))
+                                       preferred))
+                               preferred))
+         (blocking (and preferred
+                        (remove-if-not (lambda (trial)
+                                         (some (lambda (other) (preferred-over-p points trial other))
+                                               preferred))
+                                       undecided)))
+         (preferred (if blocking '() preferred))
+         (undecided (or blocking undecided)))
+    (cond ((and preferred
+                (every (lambda (trial) (same-motion-p run (first preferred) trial)) (rest preferred)))
+           ;; equal motions: the one with the fewest active contacts, the least arbitrary force
+           (first (sort (copy-list preferred) #'<
+                        :key (lambda (trial) (count :true (trial-assignment trial) :key #'cdr)))))
+          (preferred
+           (error 'ambiguous-transition
+                  :datum (mapcar #'trial-assignment preferred)
+                  :missing-fact (list :which-contacts-and-modes-hold)
+                  :candidates (mapcar #'trial-assignment preferred)
+                  :detail "start of a state (several consistent contact and mode sets)"))
+          (undecided
+           (let ((fact (first (trial-facts (first undecided)))))
+             (error 'ambiguous-transition
+                    :datum fact :missing-fact fact
+                    :candidates (mapcar #'trial-assignment undecided)
+                    :detail "start of a state (which contacts and modes hold)")))
+          (t (error 'unsolvable-model
+                    :datum (mapcar #'trial-assignment trials)
+                    :detail "No set of contacts and modes is consistent at the start of the state.")))))
+
+(defparameter *subset-limit* 6
+  "The most lone contacts whose every subset the choice search tries when pivoting
+meets a singular assignment.")
+
+(defun lone-subsets (lone)
+  "Every assignment of the LONE activation points (all active first). Signals
+UNSUPPORTED-SITUATION beyond *SUBSET-LIMIT* points."
+  (when (> (length lone) *subset-limit*)
+    (error 'unsupported-situation
+           :datum (mapcar #'ames.engine:choice-point-instance lone)
+           :detail "Redundant contacts (a singular model) among more lone contacts than the choice search enumerates."))
+  (combinations (mapcar (lambda (point)
+                          (list (list (cons (ames.engine:choice-point-instance point) :true))
+                                (list (cons (ames.engine:choice-point-instance point) :false))))
+                        lone)))
+
+(defun settle-choices (run)
+  "Choose by consistency the contacts and modes that hold at the start of the current
+state, leave the model in that assignment and return its TRIAL, with the others tried
+as its notes. Signals AMBIGUOUS-TRANSITION or UNSOLVABLE-MODEL (see CHOOSE-TRIAL)."
+  (let ((points (ames.engine:model-choice-points (run-model run) :decider (run-decider run))))
+    (multiple-value-bind (lone groups modes) (point-groups run points)
+      (let* ((option-lists (append (mapcar #'group-options groups) (mapcar #'mode-options modes)))
+             (combos (combinations option-lists))
+             (base (mapcar (lambda (p) (cons (ames.engine:choice-point-instance p) :true)) lone))
+             (trials '()))
+        (when (> (length combos) *combination-limit*)
+          (error 'unsupported-situation
+                 :datum (mapcar #'ames.engine:choice-point-instance points)
+                 :detail (format nil "~D combinations of corner contacts and modes to try: more than ~D."
+                                 (length combos) *combination-limit*)))
+        (dolist (combo combos)
+          (apply-assignment run points (append combo base))
+          (let ((trial (pivot run points lone)))
+            (if (eq (trial-verdict trial) :singular)
+                ;; pivoting cannot go through a singular assignment: try every subset
+                (dolist (subset (lone-subsets lone))
+                  (apply-assignment run points (append combo subset))
+                  (push (pivot run points '()) trials))
+                (push trial trials))))
+        (setf trials (nreverse trials))
+        (let ((chosen (choose-trial run trials points)))
+          (apply-assignment run points (trial-assignment chosen))
+          (setf (trial-notes chosen)
+                (list :points (mapcar #'ames.engine:choice-point-instance points)
+                      :chosen (trial-assignment chosen)
+                      :tried (mapcar (lambda (trial)
+                                       (list :assignment (trial-assignment trial)
+                                             :verdict (trial-verdict trial)
+                                             :degenerate (trial-degenerate trial)
+                                             :why (trial-notes trial)))
+                                     trials)))
+          chosen)))))

@@ -1,0 +1,159 @@
+;;;; src/simulator/impacts.lisp -- resolving an impact: the instantaneous model of the knowledge
+;;;; base's impact components, its contacts chosen by consistency, the velocities just after.
+;;;;
+;;;; A state ends in an impact when a contact is reached with a velocity (its component names
+;;;; that event, e.g. (:collision A B)). The positions carry over; the velocities jump. The
+;;;; impact's model is built from AMES.KB:IMPACT-KNOWLEDGE-BASE over every contact that touches
+;;;; at that moment (several at once are solved together: a block landing on two supports, a
+;;;; particle reaching the corner of a slope and the ground, a chain of touching blocks), and
+;;;; which of them push is settled by the same consistency search as a state's contacts: no
+;;;; impulse pulls, no contact is left approaching. Then the next state starts with the
+;;;; velocities just after.
+
+(in-package #:ames.simulator)
+
+(defun touching-contacts (run)
+  "The contact entities whose observer lies on their locus now."
+  (loop for (name) in (run-contacts run)
+        when (touching-on-locus-p run name) collect name))
+
+(defun impact-entities (run contacts)
+  "The situation of an impact (see src/kb/impacts.lisp): the bodies with their
+velocities just before, and each of CONTACTS with its outward normal there."
+  (let ((scenario (run-scenario run)))
+    (append
+     (mapcar (lambda (body)
+               (list 'ames.kb:body (scenario-body-name body)
+                     :fixed (and (scenario-body-fixed-p body) t)
+                     :mass (scenario-body-mass body)
+                     :velocity (body-velocity run (scenario-body-name body))))
+             (scenario-bodies scenario))
+     (mapcar (lambda (contact)
+               (let ((geometry (contact-geometry run contact)))
+                 (destructuring-bind (observer obstacle) (contact-bodies run contact)
+                   (list 'ames.kb:touching-contact contact
+                         :observer observer :obstacle obstacle
+                         :normal (mapcar (lambda (x) (tidy run x))
+                                         (ames.geometry:contact-outward-normal
+                                          geometry (initial-arc-length run contact)))
+                         :restitution (scenario-restitution scenario observer obstacle)))))
+             contacts))))
+
+(defun impact-decider (run)
+  "The decider of an impact's model: whether a touching contact pushes is always a
+choice (settled by consistency); everything else goes to Maxima."
+  (lambda (relation)
+    (if (and (consp relation) (consp (second relation))
+             (eq (first (second relation)) 'ames.kb:separation-after))
+        :choice
+        (decide run relation))))
+
+(defun call-with-model (run model decider thunk)
+  "Call THUNK with RUN working on MODEL and DECIDER (an impact's), then restore the
+state's."
+  (let ((saved (run-model run)))
+    (setf (run-model run) model (run-decider-override run) decider)
+    (unwind-protect (funcall thunk)
+      (setf (run-model run) saved (run-decider-override run) nil))))
+
+(defun resolve-impact (run)
+  "Resolve the impact at the run's current positions and velocities (those just before):
+returns the velocities just after (an alist body -> (VX VY)) and a plist describing the
+impact (:CONTACTS, :IMPULSES, :ENERGY-LOST, :VELOCITIES-BEFORE, :VELOCITIES-AFTER,
+:CHOICES). Signals what the consistency search signals."
+  (let* ((contacts (touching-contacts run))
+         (decider (impact-decider run))
+         (situation (ames.engine:make-situation (impact-entities run contacts) :data run))
+         (model (ames.engine:build-model (ames.engine:make-engine (ames.kb:impact-knowledge-base))
+                                         situation :decider decider)))
+    (call-with-model
+     run model decider
+     (lambda ()
+       (let* ((trial (settle-choices run))
+              (solved (trial-solved trial))
+              (after (mapcar (lambda (body)
+                               (list body
+                                     (mapcar (lambda (axis)
+                                               (quantity-value solved `(ames.kb:vel-after ,body ,axis)))
+                                             '(:x :y))))
+                             (body-names run)))
+              (report (loop for (section entry) in (model-reported model)
+                            collect (list section (value-entry solved entry)))))
+         (values after
+                 (list :contacts (contact-descriptions run (active-contact-instances run))
+                       :impulses (loop for (section entry) in report
+                                       when (eq section :impulses) collect entry)
+                       :energy-lost (loop for (section entry) in report
+                                          when (eq section :impact) return (second entry))
+                       :velocities-before (run-velocities run)
+                       :velocities-after after
+                       :choices (trial-notes trial))))))))
+
+(defun active-contact-instances (run)
+  "The touching contacts whose impulse instance is active in the impact's model."
+  (loop for belief in (ames.engine:model-beliefs (run-model run))
+        when (and (eq (first belief) 'ames.kb:impulse)
+                  (eq (first (second belief)) 'ames.kb:impulse))
+          collect (getf (cddr belief) :contact)))
+
+(defun value-entry (solved form)
+  "FORM, a report entry, with every quantity term replaced by its value in SOLVED."
+  (cond ((quantity-term-p form) (quantity-value solved form))
+        ((consp form) (mapcar (lambda (x) (value-entry solved x)) form))
+        (t form)))
+
+(defun impact-event (event impact)
+  "EVENT, an impact event (:KIND A B ...), with the impulse through the contacts between
+A and B and the kinetic energy lost, from the resolved IMPACT."
+  (let ((impulses (remove-if-not (lambda (entry)
+                                   (and (member (second entry) (rest event))
+                                        (member (third entry) (rest event))))
+                                 (getf impact :impulses))))
+    (append event
+            (list :impulse (if (rest impulses)
+                               (cons '+ (mapcar #'fourth impulses))
+                               (fourth (first impulses)))
+                  :energy-lost (getf impact :energy-lost)))))
+
+;;; Zeno: impacts whose times form a geometric series
+
+(defun scaling-factor (run before after)
+  "The number LAMBDA with AFTER = LAMBDA * BEFORE for the velocity alists BEFORE and
+AFTER (every body, both axes), when there is one; else NIL."
+  (let ((factor nil))
+    (loop for (body v) in after
+          for u = (second (assoc body before))
+          do (loop for a in v for b in u
+                   do (cond ((holds run `(= ,b 0))
+                             (unless (holds run `(= ,a 0)) (return-from scaling-factor nil)))
+                            (t (let ((ratio (tidy run `(/ ,a ,b) :full)))
+                                 (cond ((null factor) (setf factor ratio))
+                                       ((not (ames.maxima:equivalent-p (run-bridge run) ratio factor))
+                                        (return-from scaling-factor nil))))))))
+    factor))
+
+(defun same-positions-p (run a b)
+  "True when the position alists A and B are proven equal."
+  (every (lambda (entry)
+           (let ((other (second (assoc (first entry) b))))
+             (and other (every (lambda (x y) (ames.maxima:equivalent-p (run-bridge run) x y))
+                               (second entry) other))))
+         a))
+
+(defun zeno-accumulation (run previous current)
+  "When the impact records PREVIOUS and CURRENT (plists :TIME :POSITIONS :AFTER
+:CONTACTS) repeat one another, the same contacts at the same positions with every
+velocity after scaled by one factor 0 < LAMBDA < 1, the impacts go on forever at times
+in a geometric series: returns the plist (:FACTOR LAMBDA :CYCLE D :TIME T) with D the
+time between the two impacts and T their accumulation point, CURRENT's time plus
+LAMBDA D / (1 - LAMBDA). Else NIL."
+  (when (and previous
+             (equal (getf previous :contacts) (getf current :contacts))
+             (closed-form-time-p (getf previous :time))
+             (closed-form-time-p (getf current :time))
+             (same-positions-p run (getf current :positions) (getf previous :positions)))
+    (let ((factor (scaling-factor run (getf previous :after) (getf current :after))))
+      (when (and factor (holds run `(> ,factor 0)) (holds run `(< ,factor 1)))
+        (let ((cycle (tidy run `(- ,(getf current :time) ,(getf previous :time)) :full)))
+          (list :factor factor :cycle cycle
+                :time (tidy run `(+ ,(getf current :time) (/ (* ,factor ,cycle) (- 1 ,factor))) :full)))))))

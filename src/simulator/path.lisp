@@ -1,0 +1,156 @@
+;;;; src/simulator/path.lisp -- termination along a curved contact: where (in arc length) each
+;;;; condition fires ahead of the body, and how long the body takes to get there.
+;;;;
+;;;; On a curved contact the motion has one degree of freedom, the arc length s, and its
+;;;; energy integral w^2 = E(s) (thesis section 2.6.3). A condition is a function of s;
+;;;; it fires at the nearest root ahead of the start (in the direction of motion) where
+;;;; it turns true. The time to travel from s0 to s1 is the integral of ds / |w|: a closed
+;;;; form where the bridge finds one, else :NO-CLOSED-FORM with a number when parameter
+;;;; values are given.
+
+(in-package #:ames.simulator)
+
+(defun ahead-p (run group s)
+  "Whether the arc length S lies strictly ahead of GROUP's start in its direction of
+motion: :TRUE, :FALSE or :UNKNOWN. On a circle, a turn of less than a quarter has the
+sign of its sine, which Maxima can expand where inverse trigonometric terms defeat
+sign()."
+  (let* ((s0 (group-s0 group)) (direction (group-direction group))
+         (answer (decide run `(> (* ,direction (- ,s ,s0)) 0)))
+         (radius (ames.geometry:contact-radius (contact-geometry run (group-contact group)))))
+    (if (and (eq answer :unknown) radius)
+        (let ((turn (tidy run `(/ (- ,s ,s0) ,radius))))
+          (if (holds run `(> ,(tidy run `(cos ,turn) :trigexpand) 0))
+              (decide run `(> (* ,direction ,(tidy run `(sin ,turn) :trigexpand)) 0))
+              :unknown))
+        answer)))
+
+(defun nearer-p (run group a b)
+  "Whether the arc length A comes before B in GROUP's direction: :TRUE, :FALSE or :UNKNOWN."
+  (let ((answer (decide run `(< (* ,(group-direction group) (- ,a ,b)) 0))))
+    (if (and (eq answer :unknown) (ames.geometry:contact-radius (contact-geometry run (group-contact group))))
+        (ahead-p run (let ((copy (copy-group group))) (setf (group-s0 copy) a) copy) b)
+        answer)))
+
+(defun roots-in-arc (run expression)
+  "The roots in +ARC-LENGTH+ of EXPRESSION = 0 that Maxima's solve() finds, simplified."
+  (handler-case
+      (loop for solution in (ames.maxima:solve-equations (run-bridge run) (list `(= ,expression 0))
+                                                         (list +arc-length+))
+            collect (tidy run (cdr (first solution))))
+    (ames.maxima:solve-failed () :failed)))
+
+(defun crossing-ahead (run group function)
+  "The nearest arc length ahead of GROUP's start where FUNCTION (of the arc length)
+reaches zero going negative: (values :AT S), (values :NEVER) or (values :UNKNOWN FACT)."
+  (let ((function (tidy run function :full)))
+    (when (free-of-p +arc-length+ function)
+      (return-from crossing-ahead (values :never)))
+    (let ((roots (roots-in-arc run function)) (best nil))
+      (when (eq roots :failed)
+        (return-from crossing-ahead (values :unknown `(:roots-of (= ,function 0)))))
+      (dolist (root roots)
+        (case (ahead-p run group root)
+          (:true
+           (let ((slope (tidy run `(* ,(group-direction group)
+                                      ,(ames.geometry:differentiate function +arc-length+)))))
+             (case (decide run `(<= ,(at-arc slope root) 0))
+               (:true (if (or (null best) (eq (nearer-p run group root best) :true))
+                          (setf best root)
+                          (unless (eq (nearer-p run group best root) :true)
+                            (return-from crossing-ahead (values :unknown `(< ,root ,best))))))
+               (:unknown (return-from crossing-ahead (values :unknown `(< ,(at-arc slope root) 0)))))))
+          (:unknown (return-from crossing-ahead
+                      (values :unknown `(> (* ,(group-direction group) (- ,root ,(group-s0 group))) 0))))))
+      (if best (values :at best) (values :never)))))
+
+(defun relation-arc (run group relation over-arc)
+  "Where RELATION first holds ahead: (values :AT S), (values :NEVER) or (values
+:UNKNOWN FACT). OVER-ARC turns an expression into a function of the arc length."
+  (if (eq (first relation) 'or)
+      (let ((best nil) (unknown nil))
+        (dolist (part (rest relation))
+          (multiple-value-bind (status s) (relation-arc run group part over-arc)
+            (case status
+              (:at (if (or (null best) (eq (nearer-p run group s best) :true))
+                       (setf best s)
+                       (unless (eq (nearer-p run group best s) :true) (setf unknown `(< ,s ,best)))))
+              (:unknown (setf unknown s)))))
+        (cond (unknown (values :unknown unknown)) (best (values :at best)) (t (values :never))))
+      (crossing-ahead run group (funcall over-arc (violation-function relation)))))
+
+(defun meeting-arc (run group meeting over-arc)
+  "Where the body moving along GROUP's curve first meets a contact from its exterior:
+(values :AT S RATE) with RATE the gap's rate in time there, (values :NEVER) or (values
+:UNKNOWN FACT)."
+  (let* ((gap (tidy run (funcall over-arc (ames.geometry:meeting-gap meeting))))
+         (extent (mapcar (lambda (r) (funcall over-arc r)) (ames.geometry:meeting-extent meeting)))
+         (speed (cdr (assoc `(ames.kb:path-speed ,(group-contact group)) (group-motion group)
+                            :test #'equal))))
+    (multiple-value-bind (status s) (crossing-ahead run group gap)
+      (if (not (eq status :at))
+          (values status s)
+          (let* ((rate (tidy run `(* ,(at-arc (ames.geometry:differentiate gap +arc-length+) s)
+                                     ,(at-arc speed s))))
+                 (answers (mapcar (lambda (r) (decide run (at-arc r s))) extent)))
+            (cond ((every (lambda (a) (eq a :true)) answers) (values :at s rate))
+                  ((member :unknown answers) (values :unknown (at-arc (nth (position :unknown answers) extent) s)))
+                  (t (values :unknown `(:meets-beyond-the-first-root ,s)))))))))
+
+(defun path-candidate (run solved group condition)
+  "When CONDITION, over GROUP's motion along its curve, fires: a CANDIDATE (its TIME
+the travel time, its AT-ARC the arc length), :NEVER, or (values :UNKNOWN FACT)."
+  (let* ((relation (ames.engine:termination-condition-relation condition))
+         (contact (gap-relation-contact relation))
+         (over-arc (lambda (x) (motion-value (list group) (over-state-terms run solved x)))))
+    (multiple-value-bind (status s rate)
+        (if contact
+            (meeting-arc run group (contact-meeting-terms run solved contact) over-arc)
+            (relation-arc run group relation over-arc))
+      (case status
+        (:at (make-candidate condition
+                             (condition-event condition (and rate (holds run `(< ,rate 0)) rate))
+                             (arc-travel-time run group s)
+                             :at-arc s :group group :rate rate))
+        (:never :never)
+        (t (values :unknown s))))))
+
+(defun turning-point (run group)
+  "The nearest arc length ahead where the speed vanishes (the body turns back), or NIL."
+  (multiple-value-bind (status s) (crossing-ahead run group (group-speed-squared group))
+    (and (eq status :at) s)))
+
+;;; Travel time along the curve
+
+(defun arc-travel-time (run group s1)
+  "The time GROUP's body takes from its start to the arc length S1: the bridge's closed
+form of the travel-time integral when it has one (AMES.MAXIMA:TRAVEL-TIME; an elliptic
+integral on a circle under a constant force), else (:NO-CLOSED-FORM :FROM-ARC-LENGTH S0
+:TO-ARC-LENGTH S1 :SPEED-SQUARED E), whose number NUMERIC-TRAVEL-TIME gives."
+  (let ((s0 (group-s0 group)) (energy (group-speed-squared group)))
+    (if (holds run `(= ,s1 ,s0))
+        0
+        (multiple-value-bind (time kind)
+            (ames.maxima:travel-time (run-bridge run) energy +arc-length+ s0 s1
+                                     :direction (group-direction group))
+          (if (eq kind :closed-form)
+              time
+              (list :no-closed-form :from-arc-length s0 :to-arc-length s1
+                                    :speed-squared energy))))))
+
+(defun numeric-travel-time (bridge energy s0 s1 values)
+  "The time to travel from arc length S0 to S1 when the speed squared is ENERGY (in
++ARC-LENGTH+), under the parameter VALUES; NIL when it has no value there."
+  (handler-case (ames.maxima:numeric-travel-time bridge energy +arc-length+ s0 s1
+                                                 (mapcar (lambda (entry)
+                                                           (cons (car entry) (cdr entry)))
+                                                         values))
+    (ames.maxima:numeric-evaluation-failed () nil)))
+
+(defun numeric-or-nil (bridge expression values)
+  "The number EXPRESSION takes under VALUES, or NIL when it has none (a symbol left over,
+or not a real)."
+  (and (not (keywordp expression))
+       (not (and (consp expression) (keywordp (first expression))))
+       (handler-case (ames.maxima:numeric-value bridge expression values)
+         (ames.maxima:numeric-evaluation-failed () nil))))

@@ -1,0 +1,348 @@
+;;;; src/simulator/queries.lisp -- answering a scenario's queries from its history (thesis 3.2.4,
+;;;; "Problem Solving Extensions"): analysis (the value of a quantity at an event, a state's
+;;;; start or end, or a time), the time of an event, proofs over a state or the whole run,
+;;;; extrema over a state, and parameter selection (the conditions on a parameter under
+;;;; which an outcome happens, read off the branches of the run's tree).
+;;;;
+;;;; A run that branched is answered branch by branch: each path from the root to a leaf of
+;;;; the tree, with the facts assumed along it. An answer is (NAME VALUE [:ASSUME FACTS]
+;;;; [:NUMERIC N]) or (NAME :UNANSWERED :REASON TEXT [:ASSUME FACTS]).
+
+(in-package #:ames.simulator)
+
+(defun history-paths (history)
+  "The paths of HISTORY's tree, each (FACTS OUTCOME . STATES): the facts assumed along it,
+how its last branch ended, and its states in order (a fork's branches continue after
+the fork state)."
+  (labels ((paths (states facts outcome)
+             (let ((fork (find-if #'state-branches states)))
+               (if (null fork)
+                   (list (list* facts outcome states))
+                   (let ((before (ldiff states (member fork states))))
+                     (loop for branch in (state-branches fork)
+                           append (mapcar (lambda (path)
+                                            (list* (first path) (second path)
+                                                   (append before (list fork) (cddr path))))
+                                          (paths (getf branch :states)
+                                                 (append facts (list (getf branch :assume)))
+                                                 (getf branch :outcome)))))))))
+    (paths (history-states history) '() (history-outcome history))))
+
+(defun event-matches-p (pattern event)
+  "True when the printed EVENT begins with PATTERN, names compared by name."
+  (and (consp event) (<= (length pattern) (length event))
+       (every (lambda (p e) (or (eql p e) (and (symbolp p) (symbolp e) (string= (symbol-name p) (symbol-name e)))))
+              pattern event)))
+
+(defun state-events (state)
+  "Every event that ends STATE."
+  (let ((event (state-end-event state)))
+    (remove-duplicates (append (and (consp event) (list event)) (getf (state-notes state) :events))
+                       :test #'equal)))
+
+(defun event-state (states pattern)
+  "The first of STATES that ends with an event matching PATTERN, or NIL."
+  (find-if (lambda (state) (some (lambda (event) (event-matches-p pattern event)) (state-events state)))
+           states))
+
+(define-condition unanswerable (simulation-error) ()
+  (:documentation "A query cannot be answered from the history; DETAIL says why."))
+
+(defun unanswerable (control &rest arguments)
+  "Signal UNANSWERABLE with the reason CONTROL and ARGUMENTS."
+  (error 'unanswerable :detail (apply #'format nil control arguments)))
+
+(defun body-data (alist body)
+  "The entry of BODY in a state's per-body ALIST, or NIL."
+  (second (find body alist :key #'first :test (lambda (a b) (string= (symbol-name a) (symbol-name b))))))
+
+(defun at-point (expression state at)
+  "EXPRESSION of STATE evaluated AT :START, :END or a local time: TAU put to 0, the
+duration or the time; on a curve, the arc length put to its start or end."
+  (let ((path (getf (state-notes state) :path-coordinates))
+        (end-arc (getf (state-notes state) :end-arc-length)))
+    (cond ((and path (not (free-of-p +arc-length+ expression)))
+           (substitute-expressions
+            (list (cons +arc-length+
+                        (case at
+                          (:start (getf path :arc-length-from))
+                          (:end (or end-arc (unanswerable "the state on the curve never ends")))
+                          (t (unanswerable "on a curve a time inside the state has no closed form")))))
+            expression))
+          (t (substitute-expressions
+              (list (cons 'tau (case at
+                                 (:start 0)
+                                 (:end (let ((d (state-duration state)))
+                                         (if (or (keywordp d) (and (consp d) (keywordp (first d))))
+                                             (unanswerable "state ~D has no closed-form end" (state-index state))
+                                             d)))
+                                 (t at))))
+              expression)))))
+
+(defun vector-of (entry)
+  "A per-body vector entry, the :ON-PATH form reduced to its point."
+  (cond ((and (consp entry) (eq (first entry) :on-path)) (second entry))
+        ((equal entry '(:no-closed-form)) (unanswerable "the motion has no closed form in time"))
+        (t entry)))
+
+(defun quantity-expression (scenario state form)
+  "The quantity FORM (see src/scenario/queries.lisp) in STATE, over its local time."
+  (flet ((body (name) (or (find-scenario-body name scenario) (unanswerable "~A is no body" name)))
+         (place (b) (vector-of (body-data (state-positions state) b)))
+         (velocity (b) (vector-of (body-data (state-velocities state) b)))
+         (force (kind a b)
+           (let ((entry (find-if (lambda (f)
+                                   (and (eq (first f) kind)
+                                        (or (and (string= (symbol-name (second f)) (symbol-name a))
+                                                 (string= (symbol-name (third f)) (symbol-name b)))
+                                            (and (string= (symbol-name (second f)) (symbol-name b))
+                                                 (string= (symbol-name (third f)) (symbol-name a))))))
+                                 (state-forces state))))
+             (if entry (fourth entry) 0))))
+    (ecase (first form)
+      (:x (first (place (second form))))
+      (:y (second (place (second form))))
+      (:position (place (second form)))
+      (:velocity (velocity (second form)))
+      (:acceleration (vector-of (body-data (state-accelerations state) (second form))))
+      (:speed (let ((v (velocity (second form)))) `(sqrt (+ (expt ,(first v) 2) (expt ,(second v) 2)))))
+      (:normal-force (force :normal (second form) (third form)))
+      (:friction (force :friction (second form) (third form)))
+      (:tension (let ((entry (find-if (lambda (f) (and (eq (first f) :tension)
+                                                       (string= (symbol-name (second f)) (symbol-name (second form)))))
+                                      (state-forces state))))
+                  (if entry (third entry) 0)))
+      (:kinetic-energy (let ((v (velocity (second form))) (m (scenario-body-mass (body (second form)))))
+                         `(* 1/2 ,m (+ (expt ,(first v) 2) (expt ,(second v) 2)))))
+      (:momentum (let ((v (velocity (second form))) (m (scenario-body-mass (body (second form)))))
+                   (list `(* ,m ,(first v)) `(* ,m ,(second v)))))
+      (:energy (system-energy scenario state)))))
+
+(defun system-energy (scenario state)
+  "The kinetic energy of every free body plus its gravitational potential energy (the
+knowledge base's reported :ENERGY entries when the state has any other kind)."
+  (let ((reported (getf (state-notes state) :energy)))
+    (when (and (null reported) (or (scenario-forces scenario)))
+      (unanswerable "the energy of the external forces is not known"))
+    (cons '+ (loop for body in (scenario-moving-bodies scenario)
+                   for name = (scenario-body-name body)
+                   for v = (vector-of (body-data (state-velocities state) name))
+                   for y = (second (vector-of (body-data (state-positions state) name)))
+                   collect `(* 1/2 ,(scenario-body-mass body) (+ (expt ,(first v) 2) (expt ,(second v) 2)))
+                   when (scenario-gravity scenario)
+                     collect `(* ,(scenario-body-mass body) ,(scenario-gravity scenario) ,y)))))
+
+(defun quantity-in (scenario state form)
+  "FORM, a query's quantity (an expression over quantity forms), in STATE over TAU."
+  (cond ((and (consp form) (keywordp (first form))) (quantity-expression scenario state form))
+        ((consp form) (let ((parts (mapcar (lambda (x) (quantity-in scenario state x)) (rest form))))
+                        (when (some #'vector-p* parts)
+                          (unanswerable "arithmetic on a vector quantity"))
+                        (cons (first form) parts)))
+        (t form)))
+
+(defun vector-p* (x)
+  "True when X is a two-element vector of expressions (a vector quantity's value)."
+  (and (consp x) (= (length x) 2) (not (symbolp (first x)))))
+
+(defun resolve-when (bridge states when)
+  "The STATE and point (:START, :END or a local time) WHEN names among STATES."
+  (flet ((indexed (n) (or (find n states :key #'state-index) (unanswerable "there is no state ~D" n))))
+    (ecase (first when)
+      (:start (values (indexed (second when)) :start))
+      (:end (values (indexed (second when)) :end))
+      (:event (values (or (event-state states (second when))
+                          (unanswerable "~(~S~) does not happen in this run" (second when)))
+                      :end))
+      (:time (state-at-time bridge states (second when))))))
+
+(defun closed-form-p (x)
+  "True when X is an expression (not :FOREVER, :UNDECIDED or a (:NO-CLOSED-FORM ...))."
+  (not (or (keywordp x) (and (consp x) (keywordp (first x))))))
+
+(defun state-at-time (bridge states time)
+  "The state of STATES in which the global TIME falls, and the local time there, as
+decided under the assumptions in BRIDGE; signals UNANSWERABLE when it is not decided."
+  (dolist (state states (unanswerable "the run does not reach t = ~A" time))
+    (let ((start (state-start state)) (duration (state-duration state)))
+      (unless (closed-form-p start) (unanswerable "a state's start has no closed form"))
+      (when (eq (ames.maxima:decide bridge `(>= ,time ,start)) :true)
+        (cond ((eq duration :forever) (return (values state `(- ,time ,start))))
+              ((not (closed-form-p duration)) (unanswerable "state ~D has no closed-form end" (state-index state)))
+              (t (case (ames.maxima:decide bridge `(< ,time (+ ,start ,duration)))
+                   (:true (return (values state `(- ,time ,start))))
+                   (:unknown (unanswerable "whether t = ~A falls in state ~D is not decided" time (state-index state))))))))))
+
+(defun value-at (bridge scenario states quantity when)
+  "QUANTITY (a query's) at WHEN among STATES, simplified."
+  (multiple-value-bind (state at) (resolve-when bridge states when)
+    (let ((value (quantity-in scenario state quantity)))
+      (simplified bridge (if (vector-p* value)
+                             (mapcar (lambda (x) (at-point x state at)) value)
+                             (at-point value state at))))))
+
+(defun event-time (bridge states pattern)
+  "The global time at which the event PATTERN first happens among STATES."
+  (let ((state (or (event-state states pattern) (unanswerable "~(~S~) does not happen in this run" pattern))))
+    (unless (and (closed-form-p (state-start state)) (closed-form-p (state-duration state)))
+      (unanswerable "the time of ~(~S~) has no closed form" pattern))
+    (ames.maxima:simplify bridge `(+ ,(state-start state) ,(state-duration state)) :strategy :full)))
+
+(defun relation-holds-over (bridge scenario state relation)
+  "Whether RELATION (over query quantities) holds throughout STATE: :TRUE, :FALSE or
+:UNKNOWN, and the reason."
+  (let* ((lhs (quantity-in scenario state (second relation)))
+         (rhs (quantity-in scenario state (third relation)))
+         (difference (ames.maxima:simplify bridge `(- ,lhs ,rhs) :strategy :full))
+         (duration (state-duration state)))
+    (when (or (vector-p* lhs) (vector-p* rhs)) (unanswerable "a relation between vectors"))
+    (when (not (free-of-p +arc-length+ difference))
+      (return-from relation-holds-over
+        (let ((verdict (ames.maxima:decide bridge (list (first relation) difference 0))))
+          (values verdict "on the curve, decided for every arc length at once"))))
+    (flet ((at (time) (substitute-expressions (list (cons 'tau time)) difference)))
+      (let ((start (ames.maxima:decide bridge (list (first relation) (at 0) 0))))
+        (cond ((eq start :false) (values :false (format nil "it fails at the start of state ~D" (state-index state))))
+              ((free-of-p 'tau difference)
+               (values start (format nil "in state ~D it is a constant relation~:[, not decided~;~]"
+                                     (state-index state) (not (eq start :unknown)))))
+              ((eq start :unknown) (values :unknown (format nil "not decided at the start of state ~D" (state-index state))))
+              (t (let ((root (ames.maxima:earliest-root bridge difference 'tau :after 0 :strictly t :candidates nil)))
+                   (cond ((eq root :none) (values :true (format nil "it holds at the start of state ~D and never changes sign" (state-index state))))
+                         ((eq root :unknown) (values :unknown (format nil "where it changes sign in state ~D is not decided" (state-index state))))
+                         ((eq duration :forever) (values :false (format nil "it changes sign at tau = ~S in state ~D" root (state-index state))))
+                         ((not (closed-form-p duration)) (values :unknown "the state's end has no closed form"))
+                         (t (case (ames.maxima:decide bridge `(>= ,root ,duration))
+                              (:true (values :true (format nil "it holds from the start of state ~D to its end" (state-index state))))
+                              (:false (values :false (format nil "it changes sign inside state ~D" (state-index state))))
+                              (t (values :unknown "whether it changes sign before the state ends is not decided"))))))))))))
+
+(defun prove-on-path (bridge scenario states outcome condition during)
+  "CONDITION's verdict on the path STATES whose run ended with OUTCOME: :TRUE, :FALSE or
+:UNKNOWN, and the reason."
+  (case (first condition)
+    (:outcome (cond ((event-state states (second condition)) (values :true "it happens"))
+                    ((member outcome '(:complete :time-limit :state-limit))
+                     (values :false (format nil "it does not happen (the run ~(~A~))" outcome)))
+                    (t (values :unknown (format nil "the run ~(~A~) before it could be told" outcome)))))
+    (:not (multiple-value-bind (verdict reason) (prove-on-path bridge scenario states outcome (second condition) during)
+            (values (case verdict (:true :false) (:false :true) (t :unknown)) reason)))
+    (t (let ((chosen (if during
+                         (list (resolve-when bridge states during))
+                         (remove-if (lambda (s) (eql 0 (state-duration s))) states)))
+             (reasons '()))
+         (dolist (state chosen (values :true (format nil "~{~A~^; ~}" (reverse reasons))))
+           (multiple-value-bind (verdict reason) (relation-holds-over bridge scenario state condition)
+             (push reason reasons)
+             (unless (eq verdict :true) (return (values verdict reason)))))))))
+
+(defun extremum-in (bridge scenario states quantity during maximum)
+  "The largest (MAXIMUM) or smallest value of QUANTITY over the state DURING names."
+  (let* ((state (resolve-when bridge states during))
+         (q (quantity-in scenario state quantity))
+         (duration (state-duration state))
+         (slope (ames.geometry:differentiate q 'tau))
+         (points (list 0)))
+    (when (vector-p* q) (unanswerable "the extremum of a vector"))
+    (unless (closed-form-p duration) (unanswerable "the state's end has no closed form"))
+    (push duration points)
+    (let ((critical (ames.maxima:earliest-root bridge slope 'tau :after 0 :strictly t :candidates nil)))
+      (cond ((eq critical :unknown) (unanswerable "where its derivative vanishes is not decided"))
+            ((not (eq critical :none))
+             (when (eq (ames.maxima:decide bridge `(< ,critical ,duration)) :true) (push critical points)))))
+    (let* ((values (mapcar (lambda (p) (ames.maxima:simplify bridge (substitute-expressions (list (cons 'tau p)) q)
+                                                             :strategy :full))
+                           points))
+           (best (find-if (lambda (v)
+                            (every (lambda (w) (or (eq v w)
+                                                   (eq :true (ames.maxima:decide bridge (list (if maximum '>= '<=) v w)))))
+                                   values))
+                          values)))
+      (or best (unanswerable "which of ~{~A~^, ~} is the ~:[smallest~;largest~] is not decided"
+                             values maximum)))))
+
+(defun parameter-conditions (bridge parameter fact)
+  "The inequality FACT as a condition on PARAMETER alone, (OP PARAMETER VALUE), when it
+is linear in it with a coefficient of decided sign; else FACT."
+  (let* ((x `(- ,(relation-lhs fact) ,(relation-rhs fact)))
+         (coefficient (ames.maxima:simplify bridge (ames.geometry:differentiate x parameter) :strategy :full)))
+    (if (or (not (free-of-p parameter coefficient)) (free-of-p parameter x))
+        fact
+        (let ((sign (cond ((ames.maxima:holds-p bridge `(> ,coefficient 0)) 1)
+                          ((ames.maxima:holds-p bridge `(< ,coefficient 0)) -1))))
+          (if (null sign)
+              fact
+              (let ((value (ames.maxima:simplify bridge `(- ,parameter (/ ,x ,coefficient)) :strategy :full))
+                    (operator (first fact)))
+                (list (if (= sign 1) operator
+                          (ecase operator (> '<) (< '>) (>= '<=) (<= '>=) (= '=)))
+                      parameter value)))))))
+
+(defun simplified (bridge expression)
+  "EXPRESSION in its simplest form through BRIDGE (each component of a vector)."
+  (if (vector-p* expression)
+      (mapcar (lambda (x) (ames.maxima:simplify bridge x :strategy :full)) expression)
+      (ames.maxima:simplify bridge expression :strategy :full)))
+
+(defun answer-question (bridge scenario question facts outcome states paths)
+  "QUESTION's answer on one path (its FACTS, OUTCOME and STATES); PATHS are all the
+run's paths (for parameter selection). Returns the answer's value; signals UNANSWERABLE."
+  (declare (ignore facts))
+  (ecase (first question)
+    (:value (value-at bridge scenario states (second question) (getf (cddr question) :at)))
+    (:time (event-time bridge states (second question)))
+    (:prove (multiple-value-bind (verdict reason)
+                (prove-on-path bridge scenario states outcome (second question)
+                               (getf (cddr question) :during))
+              (list verdict reason)))
+    ((:maximum :minimum)
+     (extremum-in bridge scenario states (second question)
+                  (or (getf (cddr question) :during) (unanswerable "say over which state (:during (start N))"))
+                  (eq (first question) :maximum)))
+    (:parameter
+     (let* ((parameter (second question))
+            (condition (getf (cddr question) :such-that))
+            (holding (loop for (path-facts path-outcome . path-states) in paths
+                           when (eq :true (prove-on-path bridge scenario path-states path-outcome condition nil))
+                             collect path-facts)))
+       (cond ((null holding) (list :never "on no branch of the run"))
+             ((= (length holding) (length paths)) (list :always "on every branch of the run"))
+             (t (cons :when (mapcar (lambda (path-facts)
+                                      (mapcar (lambda (fact) (parameter-conditions bridge parameter fact))
+                                              path-facts))
+                                    holding))))))))
+
+(defun numeric-answer (bridge value values)
+  "VALUE's number under the parameter VALUES, when it has one."
+  (and values (not (keywordp value))
+       (if (vector-p* value)
+           (let ((numbers (mapcar (lambda (x) (numeric-or-nil bridge x values)) value)))
+             (and (every #'realp numbers) numbers))
+           (and (not (and (consp value) (keywordp (first value))))
+                (numeric-or-nil bridge value values)))))
+
+(defun answer-queries (history bridge)
+  "The answers to the queries of HISTORY's scenario, each (NAME VALUE [:ASSUME FACTS]
+[:NUMERIC N]) or (NAME :UNANSWERED :REASON TEXT [:ASSUME FACTS]); one per path of the
+run's tree when it branched (a parameter selection once, from every path). Call under
+the scenario's assumptions."
+  (let* ((scenario (history-scenario history))
+         (paths (history-paths history))
+         (values (history-parameter-values history))
+         (branched (rest paths)))
+    (loop for (name question) in (scenario-queries scenario)
+          append (loop for (facts outcome . states) in (if (eq (first question) :parameter)
+                                                             (list (first paths))
+                                                             paths)
+                       collect (let ((assume (and branched (not (eq (first question) :parameter))
+                                                  (list :assume facts))))
+                                 (handler-case
+                                     (ames.maxima:with-assumptions (bridge facts)
+                                       (let ((value (answer-question bridge scenario question facts
+                                                                     outcome states paths)))
+                                         (append (list name value) assume
+                                                 (let ((number (numeric-answer bridge value values)))
+                                                   (and number (list :numeric number))))))
+                                   (unanswerable (condition)
+                                     (append (list name :unanswered :reason (ames-error-detail condition))
+                                             assume))))))))

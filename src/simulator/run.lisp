@@ -1,0 +1,306 @@
+;;;; src/simulator/run.lisp -- one simulation's working context: the scenario's bodies and
+;;;; contacts, the situation the knowledge base reads, and the decider of a state's
+;;;; initial conditions.
+;;;;
+;;;; The simulator speaks the knowledge base's kinematic vocabulary (positions,
+;;;; velocities, accelerations, the path coordinates and gap of a contact: see
+;;;; src/kb/mechanics.lisp) and the geometry's; it knows no force, event or mode by name.
+
+(in-package #:ames.simulator)
+
+(defvar *branching* nil
+  "The current run's tree while it grows (see branching.lisp): a plist (:COUNT branches
+so far :DEPTH forks on the current path :EXTRA-FACTS facts of the current branch), or
+NIL at the root.")
+
+(defclass run ()
+  ((scenario :initarg :scenario :reader run-scenario)
+   (bridge :initarg :bridge :reader run-bridge)
+   (shapes :initarg :shapes :reader run-shapes
+           :documentation "Alist body name -> ames.geometry shape.")
+   (contacts :initarg :contacts :reader run-contacts
+             :documentation "Alist contact entity name -> ames.geometry simple contact.")
+   (alternatives :initarg :alternatives :initform '() :reader run-alternatives
+                 :documentation "Alist contact name -> the contacts that meet it at a convex
+or smooth corner of the configuration-space obstacle: where the observer sits on both,
+they are alternatives (it must stay outside one of them), never both active.")
+   (model :initform nil :accessor run-model)
+   (decider :initform nil :accessor run-decider-override
+            :documentation "While an impact is resolved, the decider of its model (see
+RUN-DECIDER); NIL otherwise.")
+   (positions :initarg :positions :accessor run-positions
+              :documentation "Alist body -> (X Y) at the start of the current state.")
+   (velocities :initarg :velocities :accessor run-velocities
+               :documentation "Alist body -> (VX VY) at the start of the current state.")
+   (time :initform 0 :accessor run-time
+         :documentation "Global time at which the current state starts: an expression.")
+   (values :initarg :values :initform '() :reader run-values
+           :documentation "Alist parameter -> number given for this run (--set), or NIL.")
+   (assumed :initform '() :accessor run-assumed
+            :documentation "Facts assumed because the parameter values decide them: a list
+of (:state N :fact RELATION).")
+   (impacts :initform '() :accessor run-impacts
+            :documentation "The impacts so far, newest first: plists (:TIME :POSITIONS
+:AFTER :CONTACTS), to recognise a repeating sequence (see ZENO-ACCUMULATION).")
+   (rederived :initform '() :accessor run-rederived
+              :documentation "Instances re-derived at each transition (for benchmarks).")
+   (statistics :initform (list :equations-before 0 :equations-after 0 :solves 0)
+               :accessor run-statistics
+               :documentation "Model sizes before and after elimination (for benchmarks)."))
+  (:documentation "The working context of one simulation."))
+
+;;; The algebra, through the bridge (the only place these are written)
+
+(defun tidy (run expression &optional (strategy :ratsimp))
+  "EXPRESSION simplified by Maxima (rational canonical form unless STRATEGY says)."
+  (ames.maxima:simplify (run-bridge run) expression :strategy strategy))
+
+(defun decide (run relation)
+  "RELATION decided under the scenario's assumptions: :TRUE, :FALSE or :UNKNOWN."
+  (ames.maxima:decide (run-bridge run) relation))
+
+(defun holds (run relation)
+  "True when RELATION is decided :TRUE under the scenario's assumptions."
+  (ames.maxima:holds-p (run-bridge run) relation))
+
+(defun sign-of (run x)
+  "The sign of X under the assumptions: 1, -1, 0, or :UNKNOWN."
+  (cond ((and (realp x) (plusp x)) 1)
+        ((and (realp x) (minusp x)) -1)
+        ((eql x 0) 0)
+        ((holds run `(> ,x 0)) 1)
+        ((holds run `(< ,x 0)) -1)
+        ((and (not (ames.maxima:sign-varies-p (run-bridge run) x))
+              (holds run `(= ,x 0)))
+         0)
+        (t :unknown)))
+
+(defun vec+ (a b) (list `(+ ,(first a) ,(first b)) `(+ ,(second a) ,(second b))))
+(defun vec- (a b) (list `(- ,(first a) ,(first b)) `(- ,(second a) ,(second b))))
+(defun vec-scale (k a) (list `(* ,k ,(first a)) `(* ,k ,(second a))))
+(defun vec-dot (a b) `(+ (* ,(first a) ,(first b)) (* ,(second a) ,(second b))))
+(defun vec-cross (a b) `(- (* ,(first a) ,(second b)) (* ,(second a) ,(first b))))
+
+(defun at-time (expression time)
+  "EXPRESSION with TAU replaced by TIME."
+  (substitute-expressions (list (cons 'tau time)) expression))
+
+;;; Bodies and contacts
+
+(defun run-body (run name)
+  "The scenario body called NAME."
+  (find-scenario-body name (run-scenario run)))
+
+(defun body-fixed-p (run name)
+  "True when body NAME is glued to the fixed frame."
+  (scenario-body-fixed-p (run-body run name)))
+
+(defun body-names (run)
+  "The names of the scenario's bodies, in order."
+  (mapcar #'scenario-body-name (scenario-bodies (run-scenario run))))
+
+(defun free-body-names (run)
+  "The names of the scenario's free (not fixed) bodies, in order."
+  (mapcar #'scenario-body-name (scenario-moving-bodies (run-scenario run))))
+
+(defun contact-geometry (run contact)
+  "The ames.geometry simple contact behind the contact entity CONTACT."
+  (cdr (assoc contact (run-contacts run))))
+
+(defun contact-bodies (run contact)
+  "The observer and obstacle names of CONTACT, as a list."
+  (let ((geometry (contact-geometry run contact)))
+    (list (ames.geometry:contact-observer geometry) (ames.geometry:contact-obstacle geometry))))
+
+(defun curved-contact-p (run contact)
+  "True when CONTACT's locus is an arc or a circle."
+  (member (ames.geometry:contact-kind (contact-geometry run contact)) '(:arc :circle)))
+
+(defun body-position (run body) (second (assoc body (run-positions run))))
+(defun body-velocity (run body) (second (assoc body (run-velocities run))))
+
+(defun relative-initial-state (run contact)
+  "The observer's position and velocity relative to the obstacle at the state's start."
+  (destructuring-bind (observer obstacle) (contact-bodies run contact)
+    (values (vec- (body-position run observer) (body-position run obstacle))
+            (vec- (body-velocity run observer) (body-velocity run obstacle)))))
+
+;;; Setting a run up
+
+(defun contact-entity-name (index)
+  "The symbol naming the INDEXth simple contact in the engine's situation."
+  (intern (format nil "CONTACT-~D" index) '#:ames.simulator))
+
+(defun body-shapes (scenario bridge)
+  "Alist body name -> geometry shape for every body of SCENARIO."
+  (mapcar (lambda (body)
+            (cons (scenario-body-name body)
+                  (ames.geometry:parse-shape (scenario-body-shape body) :bridge bridge)))
+          (scenario-bodies scenario)))
+
+(defun all-simple-contacts (scenario shapes bridge)
+  "Alist contact name -> geometry contact for every pair of bodies not both fixed."
+  (let ((contacts '()) (index 0))
+    (loop for (body-1 . rest) on (scenario-bodies scenario)
+          do (dolist (body-2 rest)
+               (unless (and (scenario-body-fixed-p body-1) (scenario-body-fixed-p body-2))
+                 (let* ((name-1 (scenario-body-name body-1))
+                        (name-2 (scenario-body-name body-2))
+                        (pair (ames.geometry:make-contact-pair
+                               name-1 (cdr (assoc name-1 shapes))
+                               name-2 (cdr (assoc name-2 shapes))
+                               :bridge bridge
+                               :fixed (mapcar #'scenario-body-name
+                                              (scenario-fixed-bodies scenario)))))
+                   (dolist (contact (ames.geometry:pair-contacts pair))
+                     (push (cons (contact-entity-name index) contact) contacts)
+                     (incf index))))))
+    (nreverse contacts)))
+
+(defun corner-alternatives (bridge contacts)
+  "For CONTACTS (alist name -> geometry contact), the alist name -> names of the
+contacts that continue it past one of its ends at a corner that is not concave (the
+turn from its tangent to the next one's is to the left or none): an observer at such
+a corner is outside the obstacle when it is outside either face, so the two contacts
+are alternatives. At a concave corner both faces can push at once."
+  (let ((by-geometry (mapcar (lambda (entry) (cons (cdr entry) (car entry))) contacts))
+        (alternatives '()))
+    (loop for (name . geometry) in contacts
+          do (loop for (end . neighbour) in (ames.geometry:contact-neighbours geometry)
+                   for other = (cdr (assoc neighbour by-geometry))
+                   when (and other (eq end :end))
+                     do (let* ((length (ames.geometry:contact-length geometry))
+                               (turn (vec-cross (ames.geometry:contact-unit-tangent geometry length)
+                                                (ames.geometry:contact-unit-tangent neighbour 0))))
+                          (when (ames.maxima:holds-p bridge `(>= ,turn 0))
+                            (push other (cdr (or (assoc name alternatives)
+                                                 (car (push (list name) alternatives)))))
+                            (push name (cdr (or (assoc other alternatives)
+                                                (car (push (list other) alternatives)))))))))
+    alternatives))
+
+(defun situation-entities (run)
+  "The entities the mechanics knowledge base reads (see src/kb/mechanics.lisp)."
+  (let ((scenario (run-scenario run)))
+    (append
+     (mapcar (lambda (body)
+               (list 'ames.kb:body (scenario-body-name body)
+                     :fixed (and (scenario-body-fixed-p body) t)
+                     :mass (scenario-body-mass body)))
+             (scenario-bodies scenario))
+     (when (scenario-gravity scenario)
+       (list (list 'ames.kb:gravity-field 'earth :strength (scenario-gravity scenario))))
+     (mapcar (lambda (force)
+               (list 'ames.kb:external-force (scenario-force-name force)
+                     :on (scenario-force-body force)
+                     :fx (first (scenario-force-value force))
+                     :fy (second (scenario-force-value force))))
+             (scenario-forces scenario))
+     (mapcar (lambda (entry)
+               (let ((contact (cdr entry)))
+                 (list 'ames.kb:simple-contact (car entry)
+                       :observer (ames.geometry:contact-observer contact)
+                       :obstacle (ames.geometry:contact-obstacle contact)
+                       :geometry contact)))
+             (run-contacts run))
+     (loop for friction in (scenario-frictions scenario)
+           for index from 0
+           collect (list 'ames.kb:friction-coefficients
+                         (intern (format nil "FRICTION-~D" index) '#:ames.simulator)
+                         :between (scenario-friction-bodies friction)
+                         :static (scenario-friction-static friction)
+                         :kinetic (scenario-friction-kinetic friction))))))
+
+;;; Which contacts touch at the start of a state
+
+(defun touching-on-locus-p (run contact)
+  "True when the observer's relative position lies on CONTACT's locus now."
+  (ames.geometry:position-on-contact-p (contact-geometry run contact)
+                                       (relative-initial-state run contact)))
+
+(defun normal-approach (run contact)
+  "The relative velocity's component along CONTACT's outward normal now (the observer
+on its locus): positive when separating, negative when approaching."
+  (let ((geometry (contact-geometry run contact)))
+    (multiple-value-bind (q v) (relative-initial-state run contact)
+      (tidy run (vec-dot v (ames.geometry:contact-outward-normal
+                            geometry (ames.geometry:contact-parameter geometry q)))))))
+
+(defun touching-alternatives (run contact)
+  "The alternatives of CONTACT (see CORNER-ALTERNATIVES) on whose locus the observer
+also lies now."
+  (remove-if-not (lambda (other) (touching-on-locus-p run other))
+                 (cdr (assoc contact (run-alternatives run)))))
+
+(defun approaching-now-p (run contact)
+  "True when the observer lies on CONTACT's locus and moves into it (its normal velocity
+is negative) while not excused by a corner: not staying outside another face there.
+Such a contact is reached with a velocity: an impact at the start of the state."
+  (and (touching-on-locus-p run contact)
+       (eql (sign-of run (normal-approach run contact)) -1)
+       (notany (lambda (other) (member (sign-of run (normal-approach run other)) '(0 1)))
+               (touching-alternatives run contact))))
+
+(defun touching-verdict (run contact)
+  "Whether CONTACT holds at the start of the state, as the decider answers: :FALSE
+when the observer is off its locus, moving away from it, or moving into it (an impact:
+see APPROACHING-NOW-P; the contact is not a constraint of the state, which ends at once
+in that impact); :CHOICE when it is on the locus with no normal velocity (active or
+not is settled by consistency); :UNKNOWN when the sign of the normal velocity is not
+decided."
+  (if (not (touching-on-locus-p run contact))
+      :false
+      (case (sign-of run (normal-approach run contact))
+        (0 :choice)
+        (:unknown :unknown)
+        (t :false))))
+
+(defun gap-relation-contact (relation)
+  "The contact K when RELATION is the touching relation (= (contact-gap K) 0), else NIL."
+  (and (consp relation) (eq (first relation) '=)
+       (consp (second relation)) (eq (first (second relation)) 'ames.kb:contact-gap)
+       (second (second relation))))
+
+(defun state-quantity-p (term)
+  "True when TERM is a kinematic quantity whose value at the start of the state the run
+knows: a body's position or velocity, the arc length along a contact or its rate."
+  (and (quantity-term-p term)
+       (member (first term) '(ames.kb:pos ames.kb:vel ames.kb:path-position ames.kb:path-speed))))
+
+(defun kinematic-verdict (run relation)
+  "RELATION decided on the state's initial values: its kinematic quantities (see
+STATE-QUANTITY-P) replaced by their values at the start, then Maxima's verdict. A
+relation whose two sides are equal at the start while one mentions a velocity (a
+body's, or the rate of an arc length) is :CHOICE: which side the state moves to
+depends on the accelerations, which only the solved model gives, so the consistency
+search settles it (a contact's sliding at rest, say). A relation over no kinematic
+quantity is decided as it is."
+  (let ((values (loop for term in (expression-variables relation)
+                      when (state-quantity-p term)
+                        collect (cons term (initial-state-value run term)))))
+    (if (null values)
+        (decide run relation)
+        (let ((relation (substitute-expressions values relation)))
+          (if (and (relation-operator-p (first relation))
+                   (some (lambda (entry) (member (first (car entry))
+                                                 '(ames.kb:vel ames.kb:path-speed)))
+                         values)
+                   (eq :true (decide run `(= ,(relation-lhs relation) ,(relation-rhs relation)))))
+              :choice
+              (decide run relation))))))
+
+(defun run-decider (run)
+  "The decider of the model the run works on: the impact's while one is resolved, else
+the state's (STATE-DECIDER)."
+  (or (run-decider-override run) (state-decider run)))
+
+(defun state-decider (run)
+  "The decider of the current state's activation and mode entry conditions: touching
+relations go to the geometry (see TOUCHING-VERDICT), relations over kinematic
+quantities are decided on their values at the start (see KINEMATIC-VERDICT),
+everything else goes to Maxima."
+  (lambda (relation)
+    (let ((contact (gap-relation-contact relation)))
+      (if contact
+          (touching-verdict run contact)
+          (kinematic-verdict run relation)))))

@@ -1,0 +1,292 @@
+;;;; src/simulator/simulate.lisp -- the qualitative-state loop (thesis sections 2.5.8 and 3.2.3):
+;;;; SIMULATE, the transitions between states, and the numbers beside the formulas.
+;;;;
+;;;; For each state: choose the contacts and modes by consistency, solve and integrate its
+;;;; model, prove which termination condition fires first, then carry the positions and
+;;;; velocities over and apply to the model, incrementally, only the changes the fired
+;;;; conditions stand for (checked against a rebuild from scratch).
+
+(in-package #:ames.simulator)
+
+(defvar *bridge* nil
+  "The current Maxima bridge of the REPL and the command line, made on first use.")
+
+(defun current-bridge ()
+  "The current Maxima bridge, made on first use."
+  (or *bridge* (setf *bridge* (ames.maxima:make-bridge))))
+
+(defparameter *default-state-limit* 12
+  "How many states a scenario runs when its (simulate ...) clause sets no :states.")
+
+(defun initial-motion-state (scenario)
+  "The alists body -> position and body -> velocity at the start of SCENARIO."
+  (values (mapcar (lambda (body) (list (scenario-body-name body) (scenario-body-position body)))
+                  (scenario-bodies scenario))
+          (mapcar (lambda (body) (list (scenario-body-name body)
+                                       (or (scenario-body-velocity body) '(0 0))))
+                  (scenario-bodies scenario))))
+
+(defun time-after (run start state)
+  "The global time at which STATE, started at START, ends: an expression, or
+(:NO-CLOSED-FORM :AFTER-STATE N) when a duration so far has no closed form."
+  (let ((duration (state-duration state)))
+    (if (and (closed-form-time-p start) (closed-form-time-p duration))
+        (tidy run `(+ ,start ,duration))
+        (list :no-closed-form :after-state (state-index state)))))
+
+(defun impulsive-p (candidate)
+  "True when CANDIDATE is reached at a non-zero rate: an impact."
+  (let ((rate (candidate-rate candidate)))
+    (and rate (not (eql rate 0)) (candidate-condition candidate)
+         (ames.engine:termination-condition-impact (candidate-condition candidate))
+         (equal (candidate-event candidate)
+                (ames.engine:termination-condition-impact (candidate-condition candidate))))))
+
+(defun enter-next-state (run state fired &key (check-incremental t))
+  "Carry STATE's final positions and velocities over, resolve the impact when FIRED
+holds an impulsive candidate (the velocities then jump: see impacts.lisp; the state's
+end event gets the impulse and the energy lost), and apply to the model, incrementally,
+the changes the other FIRED candidates stand for, and after an impact the activations
+the new velocities decide. Checked against a rebuild from scratch when
+CHECK-INCREMENTAL."
+  (setf (run-positions run) (state-final-positions state)
+        (run-velocities run) (state-final-velocities state)
+        (run-time run) (time-after run (run-time run) state))
+  (let* ((impulsive (remove-if-not #'impulsive-p fired))
+         (changes (remove nil (remove-duplicates
+                               (mapcar #'candidate-change (set-difference fired impulsive))
+                               :test #'equal))))
+    (when impulsive
+      (multiple-value-bind (after impact) (resolve-impact run)
+        (setf (run-velocities run) after
+              (getf (state-notes state) :impact) impact
+              (state-end-event state) (impact-event (state-end-event state) impact))
+        (let ((events (getf (state-notes state) :events)))
+          (when events
+            (setf (getf (state-notes state) :events)
+                  (mapcar (lambda (event)
+                            (if (find event impulsive :key #'candidate-event :test #'equal)
+                                (impact-event event impact)
+                                event))
+                          events))))))
+    (multiple-value-bind (model report)
+        (ames.engine:apply-transition (run-model run) changes :decider (state-decider run))
+      (declare (ignore model))
+      (push (ames.engine:transition-report-rederived-count report) (run-rederived run)))
+    (when impulsive
+      (let ((stale (ames.engine:stale-activation-changes (run-model run) :decider (state-decider run))))
+        (when stale
+          (ames.engine:apply-transition (run-model run) stale :decider (state-decider run))))
+      (sum-zeno-sequence run state))
+    (when check-incremental
+      (ames.engine:check-incremental (run-model run)))))
+
+(defun sum-zeno-sequence (run state)
+  "Record the impact that ended STATE; when it repeats the previous one scaled (see
+ZENO-ACCUMULATION), jump to the accumulation point: the run goes on from there with the
+velocities' limit, zero, and STATE's notes say so (:ACCUMULATION)."
+  (let* ((impact (getf (state-notes state) :impact))
+         (record (list :time (run-time run) :positions (run-positions run)
+                       :after (run-velocities run)
+                       :contacts (mapcar (lambda (c) (subseq c 0 2)) (getf impact :contacts))))
+         (accumulation (zeno-accumulation run (first (run-impacts run)) record)))
+    (push record (run-impacts run))
+    (when accumulation
+      (setf (getf (state-notes state) :accumulation) accumulation
+            (run-time run) (getf accumulation :time)
+            (run-velocities run) (mapcar (lambda (entry) (list (first entry) (list 0 0)))
+                                         (run-velocities run))
+            (run-impacts run) '()))))
+
+(defun fact-from-values (run fact values)
+  "FACT, or its negation, as the parameter VALUES decide it numerically; when the values
+make its two sides equal (exactly, in rational arithmetic), the equation (= LHS RHS) of
+that boundary case. NIL when they do not decide it (no values, a value missing). When
+the two sides differ under the values the negation is the strict one: (< X Y) false
+means (> X Y)."
+  (when (and values (consp fact) (member (first fact) '(< > <= >=))
+             (notany #'keywordp (alexandria:flatten fact)))
+    (let* ((difference-form `(- ,(relation-lhs fact) ,(relation-rhs fact)))
+           (exact (expression-value (substitute-expressions values difference-form)))
+           (difference (if (rationalp exact)
+                           exact
+                           (numeric-or-nil (run-bridge run) difference-form values))))
+      (cond ((null difference) nil)
+            ((and (rationalp difference) (zerop difference))
+             (list '= (relation-lhs fact) (relation-rhs fact)))
+            ((zerop difference) nil)
+            ((ecase (first fact) ((> >=) (plusp difference)) ((< <=) (minusp difference)))
+             fact)
+            (t (list (ecase (first fact) ((> >=) '<) ((< <=) '>))
+                     (relation-lhs fact) (relation-rhs fact)))))))
+
+(defun run-states (run history index limit check-incremental)
+  "Analyse the states of RUN from INDEX on, appending them to HISTORY, until nothing
+more changes, an impact, or LIMIT states. When the assumptions leave a state ambiguous
+but the history's parameter values decide the missing fact, that fact is assumed (and
+noted in the history) for the rest of the run."
+  (loop for index from index
+        do (when (>= index limit)
+             (setf (history-outcome history) :state-limit)
+             (return))
+           (multiple-value-bind (state fired)
+               (handler-case (analyse-state run index)
+                 (ambiguous-transition (condition)
+                   (when (and (scenario-branch (run-scenario run))
+                              (fork run history index condition check-incremental))
+                     (return-from run-states))
+                   (let ((fact (fact-from-values run (core-fact run (ambiguous-transition-missing-fact condition))
+                                                 (history-parameter-values history))))
+                     (when (or (null fact)
+                               (member fact (getf (history-notes history) :assumed)
+                                       :key (lambda (entry) (getf entry :fact)) :test #'equal)
+                               (> (length (getf (history-notes history) :assumed)) 24))
+                       (error condition))
+                     (push (list :state index :fact fact) (getf (history-notes history) :assumed))
+                     (return-from run-states
+                       (ames.maxima:with-assumptions ((run-bridge run) (list fact))
+                         (run-states run history index limit check-incremental))))))
+             (setf (history-states history) (append (history-states history) (list state)))
+             (cond ((null fired)
+                    (setf (history-outcome history) :complete)
+                    (return))
+                   ((eq fired :undecided)
+                    (setf (history-outcome history) :undecided)
+                    (return))
+                   ((find :time-limit fired :key (lambda (c) (first (candidate-event c))))
+                    (setf (history-outcome history) :time-limit)
+                    (return))
+                   ((not (closed-form-time-p (state-duration state)))
+                    ;; the next state starts at a time without closed form: fine, its
+                    ;; start is reported as such
+                    (enter-next-state run state fired :check-incremental check-incremental))
+                   (t (enter-next-state run state fired :check-incremental check-incremental))))))
+
+(defun simulate (scenario &key (bridge (current-bridge)) parameter-values
+                            (check-incremental t))
+  "Simulate SCENARIO (a SCENARIO object, or a scenario form as in a file) and return its
+SIMULATION-HISTORY. BRIDGE is the Maxima bridge (by default the current one).
+PARAMETER-VALUES, an alist (PARAMETER-NAME . NUMBER) matched by name, adds numeric
+values to the report and decides what the assumptions leave open. CHECK-INCREMENTAL
+compares every incrementally updated model with a rebuild from scratch.
+Signals SCENARIO-ERROR for a defective scenario, AMBIGUOUS-TRANSITION (restart
+STOP-SIMULATION, which returns the history so far) when the assumptions do not decide
+which contacts hold or which event ends a state, UNSOLVABLE-MODEL and
+UNSUPPORTED-SITUATION, and the Maxima bridge's conditions."
+  (let ((scenario (if (scenario-p scenario) scenario (parse-scenario scenario))))
+    (handler-bind ((arithmetic-error
+                     ;; numbers beyond floating point in the geometry's or our own arithmetic
+                     (lambda (condition)
+                       (error 'simulation-error
+                              :datum (scenario-name scenario)
+                              :detail (format nil "Arithmetic on the scenario's numbers failed (~A); use exact numbers or smaller magnitudes."
+                                              (type-of condition))))))
+      (simulate-checked scenario bridge parameter-values check-incremental))))
+
+(defun undecided-to-ambiguity (condition)
+  "An engine's UNDECIDED-RELATION (a touching contact whose normal velocity's sign the
+assumptions do not decide) as an AMBIGUOUS-TRANSITION."
+  (error 'ambiguous-transition
+         :datum (ames.engine:undecided-relation-relation condition)
+         :missing-fact (ames.engine:undecided-relation-relation condition)
+         :detail "start of a state (an activation condition)"))
+
+(defun make-run (scenario bridge &optional parameter-values)
+  "The RUN of the validated SCENARIO at its start, its first model built (call under
+the scenario's assumptions in BRIDGE). PARAMETER-VALUES as SIMULATE takes them."
+  (multiple-value-bind (positions velocities) (initial-motion-state scenario)
+    (let* ((shapes (body-shapes scenario bridge))
+           (contacts (all-simple-contacts scenario shapes bridge))
+           (run (make-instance 'run :scenario scenario :bridge bridge :shapes shapes
+                                    :contacts contacts
+                                    :alternatives (corner-alternatives bridge contacts)
+                                    :positions positions :velocities velocities
+                                    :values (resolve-parameter-values scenario parameter-values)))
+           (situation (ames.engine:make-situation (situation-entities run) :data run)))
+      (handler-bind ((ames.engine:undecided-relation #'undecided-to-ambiguity))
+        (setf (run-model run)
+              (ames.engine:build-model (ames.engine:make-engine (ames.kb:mechanics-knowledge-base))
+                                       situation :decider (state-decider run))))
+      run)))
+
+(defun simulate-checked (scenario bridge parameter-values check-incremental &key extra-facts)
+  "SIMULATE's work on the validated SCENARIO, with EXTRA-FACTS (relations) assumed
+besides the scenario's own assumptions (a branch's)."
+  (check-scenario scenario bridge)
+  (ames.maxima:with-assumptions (bridge (append (scenario-assumption-relations scenario) extra-facts))
+    (let ((history (make-instance 'simulation-history
+                                  :scenario scenario
+                                  :parameter-values (resolve-parameter-values scenario parameter-values)))
+          (limit (or (scenario-states scenario) *default-state-limit*))
+          (run nil))
+      (restart-case
+          (handler-bind ((ames.engine:undecided-relation #'undecided-to-ambiguity))
+            (setf run (make-run scenario bridge parameter-values))
+            (run-states run history 0 limit check-incremental))
+        (stop-simulation (&optional condition)
+          :report "Stop the simulation here and return the states so far."
+          (setf (history-outcome history) (if (typep condition 'ambiguous-transition)
+                                              :ambiguous
+                                              :stopped))
+          (when (and (typep condition 'ambiguous-transition)
+                     (ambiguous-transition-state condition))
+            (setf (history-states history)
+                  (append (history-states history)
+                          (list (ambiguous-transition-state condition)))))
+          (setf (getf (history-notes history) :stopped-by) condition)))
+      (when run
+        (when (run-assumed run)
+          (setf (getf (history-notes history) :decided-by-values) (reverse (run-assumed run))))
+        (setf (getf (history-notes history) :model-sizes) (run-statistics run))
+        (setf (history-rederived history) (reverse (run-rederived run))))
+      (add-numeric-values history bridge)
+      (when (and (scenario-queries scenario) (null *branching*))
+        (setf (history-answers history) (answer-queries history bridge)))
+      history)))
+
+;;; Numbers beside the formulas
+
+(defun resolve-parameter-values (scenario settings)
+  "The alist (PARAMETER . NUMBER) for SETTINGS, an alist whose keys are parameter
+symbols or names (strings), matched by name. Signals SCENARIO-ERROR naming a setting
+that is not a parameter of SCENARIO."
+  (mapcar (lambda (setting)
+            (let ((parameter (find (string (car setting)) (scenario-parameters scenario)
+                                   :key (lambda (p) (symbol-name (scenario-parameter-name p)))
+                                   :test #'string-equal)))
+              (unless parameter
+                (error 'undeclared-symbol-error
+                       :scenario (scenario-name scenario) :datum (car setting)
+                       :detail (format nil "~A is not a parameter of this scenario" (car setting))))
+              (cons (scenario-parameter-name parameter) (cdr setting))))
+          settings))
+
+(defun numeric-duration (bridge state values)
+  "STATE's duration as a number under VALUES, or NIL."
+  (let ((duration (state-duration state)))
+    (cond ((keywordp duration) nil)
+          ((closed-form-time-p duration) (numeric-or-nil bridge duration values))
+          ((eq (first duration) :no-closed-form)
+           (numeric-travel-time bridge (getf (rest duration) :speed-squared)
+                                (getf (rest duration) :from-arc-length)
+                                (getf (rest duration) :to-arc-length) values)))))
+
+(defun add-numeric-values (history bridge)
+  "When HISTORY has parameter values, record in each state's notes (:NUMERIC plist) the
+numeric start, duration and final positions and velocities."
+  (let ((values (history-parameter-values history))
+        (clock 0))
+    (when values
+      (dolist (state (history-states history))
+        (flet ((numbers-of (alist)
+                 (mapcar (lambda (entry)
+                           (list (first entry)
+                                 (mapcar (lambda (x) (numeric-or-nil bridge x values)) (second entry))))
+                         alist)))
+          (let ((duration (numeric-duration bridge state values)))
+            (setf (getf (state-notes state) :numeric)
+                  (list :start clock
+                        :duration (or duration (state-duration state))
+                        :final-positions (numbers-of (state-final-positions state))
+                        :final-velocities (numbers-of (state-final-velocities state))))
+            (setf clock (and clock (realp duration) (+ clock duration)))))))))

@@ -1,0 +1,265 @@
+;;;; src/simulator/states.lisp -- one qualitative state analysed: its contacts and modes chosen,
+;;;; its model solved and integrated, its end found, and the record a history keeps.
+;;;;
+;;;; Everything reported comes from the model: the forces are the knowledge base's
+;;;; REPORTED beliefs with their quantities' values, the events those its components
+;;;; name for the conditions that fired.
+
+(in-package #:ames.simulator)
+
+(defun body-group (groups body)
+  "The GROUP among GROUPS that BODY belongs to, or NIL (a fixed body)."
+  (find body groups :key #'group-bodies :test #'member))
+
+(defun body-motion (run groups body what)
+  "BODY's position (WHAT :POS) or velocity (:VEL) over its group's variable: a list
+(X Y) of expressions; a fixed body's position, or (0 0) for its velocity; for a body
+integrated numerically, the list (:NO-CLOSED-FORM)."
+  (let ((group (body-group groups body)))
+    (cond ((body-fixed-p run body)
+           (if (eq what :pos) (body-position run body) (list 0 0)))
+          ((eq (group-kind group) :numeric) (list :no-closed-form))
+          (t (let ((head (if (eq what :pos) 'ames.kb:pos 'ames.kb:vel)))
+               (mapcar (lambda (axis)
+                         (cdr (assoc (list head body axis) (group-motion group) :test #'equal)))
+                       '(:x :y)))))))
+
+(defun over-motion (run solved groups expression)
+  "EXPRESSION (over quantity terms) over the state's motion, simplified: a function of
+TAU, or of the arc length for a body on a curve."
+  (tidy run (motion-value groups (over-state-terms run solved expression)) :full))
+
+(defun reported-entries (run solved groups section)
+  "The entries the knowledge base reports in SECTION (:FORCES), their quantity terms
+replaced by their values over the state's motion."
+  (loop for (name entry) in (model-reported (run-model run))
+        when (eq name section)
+          collect (report-entry run solved groups entry)))
+
+(defun report-entry (run solved groups form)
+  "FORM, a report entry, with every quantity term in it replaced by its value."
+  (cond ((quantity-term-p form) (over-motion run solved groups form))
+        ((consp form) (mapcar (lambda (x) (report-entry run solved groups x)) form))
+        (t form)))
+
+(defun contact-descriptions (run contacts)
+  "Each contact as (BODY1 BODY2 :FEATURE F :OBSERVER-FEATURE G)."
+  (mapcar (lambda (contact)
+            (let ((geometry (contact-geometry run contact)))
+              (append (contact-bodies run contact)
+                      (list :feature (ames.geometry:contact-obstacle-feature geometry)
+                            :observer-feature (ames.geometry:contact-observer-feature geometry)))))
+          contacts))
+
+(defun end-event-of (events)
+  "The one event a state reports as its end: an impact first, else the first."
+  (or (find :collision events :key (lambda (e) (and (consp e) (first e)))) (first events)))
+
+(defun group-at-end (run groups group fired)
+  "GROUP's end value: the arc length where FIRED ends it when it moves along a curve
+(one of the fired candidates is on it), else the end time. Signals
+UNSUPPORTED-SITUATION for a curved motion ended by another group's event (its place
+then has no closed form)."
+  (if (eq (group-kind group) :path)
+      (let ((own (find group fired :key #'candidate-group)))
+        (unless own
+          (error 'unsupported-situation
+                 :datum (group-bodies group)
+                 :detail "Another body's event ends the state while this body moves along a curve: where it is then has no closed form."))
+        (candidate-at-arc own))
+      (progn run groups (candidate-time (first fired)))))
+
+(defun final-values (run groups fired what)
+  "Every body's position (WHAT :POS) or velocity (:VEL) when the state ends at FIRED."
+  (mapcar (lambda (body)
+            (list body
+                  (cond
+                    ((body-fixed-p run body) (body-motion run groups body what))
+                    ((eq (group-kind (body-group groups body)) :numeric)
+                     (numeric-final-value run (body-group groups body) body what))
+                    (t
+                      (let* ((group (body-group groups body))
+                             (at (group-at-end run groups group fired)))
+                        (mapcar (lambda (x)
+                                  (tidy run (substitute-expressions
+                                             (list (cons (group-variable group) at)) x)
+                                        :full))
+                                (body-motion run groups body what)))))))
+          (body-names run)))
+
+(defun numeric-final-value (run group body what)
+  "BODY's position (WHAT :POS) or velocity (:VEL) at the end of a numeric GROUP's state.
+A body moving along a curved contact is put on it exactly: its obstacle's end value plus
+the contact's point (or velocity) at the end arc length and speed, so that the next
+state finds it on the contact's locus."
+  (let* ((end (group-end-state group))
+         (contact (find-if (lambda (k) (eq body (first (contact-bodies run k))))
+                           (loop for term in (group-terms group)
+                                 when (eq (first term) 'ames.kb:path-position) collect (second term))))
+         (head (if (eq what :pos) 'ames.kb:pos 'ames.kb:vel)))
+    (flet ((own (b axis) (rational-of (cdr (assoc (list head b axis) end :test #'equal))))
+           (path (term) (rational-of (cdr (assoc (list term contact) end :test #'equal)))))
+      (if (null contact)
+          (list (own body :x) (own body :y))
+          (let* ((obstacle (second (contact-bodies run contact)))
+                 (base (if (body-fixed-p run obstacle)
+                           (if (eq what :pos) (body-position run obstacle) '(0 0))
+                           (list (own obstacle :x) (own obstacle :y))))
+                 (geometry (contact-geometry run contact))
+                 (s (path 'ames.kb:path-position)))
+            (mapcar (lambda (x) (tidy run x))
+                    (vec+ base (if (eq what :pos)
+                                   (ames.geometry:contact-point geometry s)
+                                   (vec-scale (path 'ames.kb:path-speed)
+                                              (ames.geometry:contact-unit-tangent geometry s))))))))))
+
+(defun rational-of (x)
+  "The double X as the exact rational it is (a numeric state's end value carried into
+the next state's exact arithmetic), rounded to 15 significant digits."
+  (rationalize (coerce (float x 1d0) 'double-float)))
+
+(defun path-notes (run solved groups)
+  "The notes of the state's curved motions: for each, its arc length's start, the
+tangential acceleration, the energy integral and the normal forces over the arc."
+  (loop for group in groups
+        when (eq (group-kind group) :path)
+          collect (let ((contact (group-contact group)))
+                    (list :contact (contact-bodies run contact)
+                          :arc-length-from (group-s0 group)
+                          :direction (group-direction group)
+                          :tangential-acceleration
+                          (over-motion run solved groups
+                                       `(ames.kb:path-acc ,contact :tangential))
+                          :energy-integral `(= (expt arc-speed 2) ,(group-speed-squared group))
+                          :ode (group-ode-kind group)))))
+
+(defun reported-motion (run groups what)
+  "Every body's position or velocity over the state, as the history reports it: for a
+body on a curve, (:ON-PATH (X Y) :ARC-LENGTH S) over the arc length."
+  (mapcar (lambda (body)
+            (let ((group (find body groups :key #'group-bodies :test #'member))
+                  (motion (body-motion run groups body what)))
+              (list body (if (and group (eq (group-kind group) :path))
+                             (list :on-path (mapcar (lambda (x) (tidy run x)) motion)
+                                   :arc-length +arc-length+)
+                             motion))))
+          (body-names run)))
+
+(defun time-limit-candidate (run)
+  "The (simulate :until T) end as a CANDIDATE, when the scenario sets one and the
+state's start time is an expression."
+  (let ((until (scenario-until (run-scenario run))))
+    (when (and until (closed-form-time-p (run-time run)))
+      (make-candidate nil (list :time-limit until) (tidy run `(- ,until ,(run-time run)))))))
+
+(defun impacts-at-once (run)
+  "The activation conditions of the contacts reached with a velocity at the start of the
+state (see APPROACHING-NOW-P), as CANDIDATEs at time 0 with their impact events."
+  (loop for condition in (ames.engine:model-termination-conditions (run-model run))
+        for contact = (and (eq (ames.engine:termination-condition-kind condition) :activation)
+                           (gap-relation-contact (ames.engine:termination-condition-relation condition)))
+        when (and contact (approaching-now-p run contact))
+          collect (let ((rate (normal-approach run contact)))
+                    (make-candidate condition (condition-event condition rate) 0 :rate rate))))
+
+(defun contact-names (run)
+  "An alist contact entity -> a phrase naming it by its bodies and features, for
+explanations."
+  (mapcar (lambda (entry)
+            (let ((geometry (cdr entry)))
+              (cons (car entry)
+                    (format nil "~(~A~) on ~(~A~)"
+                            (ames.geometry:contact-observer geometry)
+                            (ames.geometry:contact-obstacle geometry)))))
+          (run-contacts run)))
+
+(defun equation-sources (model)
+  "Each equation of MODEL with where it comes from: (EQUATION COMPONENT INSTANCE-KEY),
+COMPONENT the informant of its justification in the JTMS (the component that asserted
+it) and INSTANCE-KEY the instance."
+  (loop for equation in (ames.engine:model-equations model)
+        collect (let* ((node (ames.engine:find-node model equation))
+                       (support (and node (ames.tms:node-support node))))
+                  (if (ames.tms:justification-p support)
+                      (list equation (ames.tms:justification-informant support)
+                            (let ((instance (find-if (lambda (antecedent)
+                                                       (let ((datum (ames.tms:node-datum antecedent)))
+                                                         (and (consp datum) (eq (first datum) :instance))))
+                                                     (ames.tms:justification-antecedents support))))
+                              (and instance (second (ames.tms:node-datum instance)))))
+                      (list equation nil nil)))))
+
+(defun analyse-state (run index)
+  "Choose, build, solve, integrate and end the current state, numbered INDEX. Returns
+the QUALITATIVE-STATE and the fired CANDIDATEs (NIL when it lasts forever). When which
+event ends it is ambiguous, the AMBIGUOUS-TRANSITION carries the state as far as it is
+known."
+  (let* ((trial (settle-choices run))
+         (solved (trial-solved trial))
+         (groups (integrate-groups run solved))
+         (contacts (active-contacts run))
+         (state (make-instance
+                 'qualitative-state
+                 :index index :start (run-time run) :duration :undecided
+                 :initial-velocities (run-velocities run)
+                 :contacts (contact-descriptions run contacts)
+                 :accelerations
+                 (mapcar (lambda (body)
+                           (list body (if (body-fixed-p run body)
+                                          '(0 0)
+                                          (mapcar (lambda (axis)
+                                                    (over-motion run solved groups
+                                                                 `(ames.kb:acc ,body ,axis)))
+                                                  '(:x :y)))))
+                         (body-names run))
+                 :forces (reported-entries run solved groups :forces)
+                 :positions (reported-motion run groups :pos)
+                 :velocities (reported-motion run groups :vel)
+                 :end-event :undecided
+                 :analysis (list :equations (equation-sources (run-model run))
+                                 :contact-names (contact-names run)
+                                 :compact-equations (solved-model-equations solved)
+                                 :choices (trial-notes trial)
+                                 :integrators (mapcar (lambda (g) (list (group-bodies g) (group-kind g)))
+                                                      groups))
+                 :notes (let ((paths (path-notes run solved groups)))
+                          (when paths (list :path-coordinates (first paths)))))))
+    (multiple-value-bind (candidates unknown never)
+        (let ((impacts (impacts-at-once run)))
+          (if impacts
+              (values impacts '())
+              (handler-case (candidates-of run solved groups)
+                (no-closed-form (condition)
+                  ;; no closed form and no numbers: the state's end cannot be found
+                  (setf (state-duration state) (list :no-closed-form :needs :parameter-values)
+                        (state-end-event state) :undecided
+                        (getf (state-notes state) :undecided) (ames-error-detail condition))
+                  (return-from analyse-state (values state :undecided))))))
+      (let* ((limit (time-limit-candidate run))
+             (fired (handler-bind ((ambiguous-transition
+                                     (lambda (condition)
+                                       (setf (ambiguous-transition-state condition) state))))
+                      (earliest-candidates run (if limit (cons limit candidates) candidates)
+                                           unknown))))
+        (setf (getf (state-analysis state) :candidates)
+              (append (mapcar (lambda (c) (list (candidate-event c) :at (candidate-time c)
+                                                :fired (and (member c fired) t)))
+                              candidates)
+                      (mapcar (lambda (event) (list event :never)) never)))
+        (when fired
+          (let ((time (candidate-time (first fired))))
+            (setf (state-duration state) time
+                  (state-end-event state) (end-event-of (mapcar #'candidate-event fired))
+                  (state-final-positions state) (final-values run groups fired :pos)
+                  (state-final-velocities state) (final-values run groups fired :vel))
+            (when (rest fired)
+              (setf (getf (state-notes state) :events) (mapcar #'candidate-event fired)))
+            (let ((numeric (remove nil (mapcar #'group-samples groups))))
+              (when numeric
+                (setf (getf (state-notes state) :numeric-trajectory) numeric)))
+            (let ((arc (find-if #'candidate-at-arc fired)))
+              (when arc
+                (setf (getf (state-notes state) :end-arc-length) (candidate-at-arc arc))))))
+        (unless fired
+          (setf (state-duration state) :forever (state-end-event state) :none))
+        (values state fired)))))

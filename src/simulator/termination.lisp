@@ -1,0 +1,237 @@
+;;;; src/simulator/termination.lisp -- when each termination condition fires, and which fires
+;;;; first (thesis section 2.5.8), proven under the scenario's assumptions.
+;;;;
+;;;; A condition over bodies that move with constant acceleration is a function of TAU,
+;;;; and its first time comes from the bridge's proven earliest root. A condition over a
+;;;; body moving along a curved contact is a function of the arc length s; its place
+;;;; comes from the roots of that function ahead of the start in the direction of motion,
+;;;; and its time from the travel-time integral. The candidates of one curved motion are
+;;;; ordered by their arc length (the same order as their times, as long as the body
+;;;; does not turn back); candidates of different groups by their times.
+
+(in-package #:ames.simulator)
+
+(defstruct (candidate (:constructor make-candidate (condition event time &key at-arc group rate)))
+  "A termination CONDITION (an AMES.ENGINE:TERMINATION-CONDITION) that fires at TIME (an
+expression, or (:NO-CLOSED-FORM ...)): the EVENT to report; for a curved motion the
+arc length AT-ARC where it fires and its GROUP; RATE the rate at which a position-level
+condition is reached (an impact when not zero)."
+  condition event time at-arc group rate)
+
+(defun candidate-change (candidate)
+  "The model change CANDIDATE stands for (NIL for the scenario's own time limit)."
+  (and (candidate-condition candidate)
+       (ames.engine:termination-condition-change (candidate-condition candidate))))
+
+;;; Functions of TAU: constant accelerations
+
+(defun time-derivative (expression)
+  "d EXPRESSION / d TAU."
+  (ames.geometry:differentiate expression 'tau))
+
+(defun trigonometric-in-time-p (g)
+  "True when G has a sine or cosine of an expression in TAU (a spring's motion)."
+  (and (consp g)
+       (or (and (member (first g) '(sin cos)) (not (free-of-p 'tau (second g))))
+           (some #'trigonometric-in-time-p (rest g)))))
+
+(defun earliest-root-after (run g after)
+  "The earliest root of G (a function of TAU) strictly after AFTER, through the bridge:
+what AMES.MAXIMA:EARLIEST-ROOT returns, without the candidates of an undecided answer;
+for a trigonometric function of TAU, AMES.MAXIMA:EARLIEST-TRIGONOMETRIC-ROOT's."
+  (if (trigonometric-in-time-p g)
+      (multiple-value-bind (root status)
+          (ames.maxima:earliest-trigonometric-root (run-bridge run) g 'tau :after after :strictly t)
+        (if (eq root :unknown) (values :unknown nil) (values root status)))
+      (ames.maxima:earliest-root (run-bridge run) g 'tau :after after :strictly t :candidates nil)))
+
+(defun undecided-sign-fact (run g after)
+  "The relation whose truth would settle where the polynomial G in TAU first vanishes:
+the sign of a coefficient (from the highest degree down) or of the discriminant that the
+assumptions do not decide; else (:EARLIEST-ROOT-OF (= G 0) :CANDIDATES ...)."
+  (let* ((d1 (tidy run (time-derivative g)))
+         (d2 (tidy run (time-derivative d1)))
+         (c0 (tidy run (at-time g 0)))
+         (c1 (tidy run (at-time d1 0)))
+         (c2 (tidy run `(/ ,d2 2))))
+    (or (and (free-of-p 'tau d2)
+             (let ((discriminant (tidy run `(- (* ,c1 ,c1) (* 4 ,c2 ,c0)))))
+               (find :unknown
+                     (loop for c in (list c2 c1 c0 discriminant)
+                           collect `(> ,c 0) collect `(< ,c 0))
+                     :key (lambda (fact) (decide run fact)))))
+        `(:earliest-root-of (= ,g 0)
+          :candidates ,(nth-value 1 (ames.maxima:earliest-root (run-bridge run) g 'tau
+                                                               :after after :strictly t))))))
+
+(defun first-time-negative (run g)
+  "The earliest time TAU > 0 from which G(TAU) < 0 (G a polynomial in TAU or a constant,
+not negative just after 0). Returns (values :AT TIME), (values :NEVER) or (values
+:UNKNOWN FACT)."
+  (let ((g (tidy run g)))
+    (when (free-of-p 'tau g)
+      (return-from first-time-negative (values :never)))
+    ;; a root at the start itself is divided out: look strictly after it
+    (let ((root (earliest-root-after run g 0)))
+      (cond ((eq root :none) (values :never))
+            ((eq root :unknown) (values :unknown (undecided-sign-fact run g 0)))
+            (t
+             (let ((slope (tidy run (at-time (time-derivative g) root))))
+               (case (decide run `(< ,slope 0))
+                 (:true (values :at (tidy run root :full)))
+                 (:false
+                  ;; touches zero and turns back, or a double root: look beyond it
+                  (let ((next (earliest-root-after run g root)))
+                    (if (eq next :none) (values :never) (values :unknown `(< ,slope 0)))))
+                 (t (values :unknown `(< ,slope 0))))))))))
+
+(defun relation-time (run relation over-time)
+  "When RELATION (over quantity terms) first holds strictly after the start, with
+OVER-TIME turning an expression into a function of TAU: (values :AT TIME), (values
+:NEVER) or (values :UNKNOWN FACT)."
+  (case (first relation)
+    (or (let ((best nil) (unknown nil))
+          (dolist (part (rest relation))
+            (multiple-value-bind (status value) (relation-time run part over-time)
+              (case status
+                (:at (cond ((or (null best) (holds run `(< ,value ,best))) (setf best value))
+                           ((not (holds run `(<= ,best ,value))) (setf unknown `(< ,value ,best)))))
+                (:unknown (setf unknown value)))))
+          (cond (unknown (values :unknown unknown))
+                (best (values :at best))
+                (t (values :never)))))
+    (t (first-time-negative run (funcall over-time (violation-function relation))))))
+
+(defun stays-negative-p (run h)
+  "True when H, a polynomial of degree at most 2 in TAU, is proven negative for every
+TAU > 0: H(0) <= 0, H'(0) <= 0 and H'' <= 0, not all zero. A cheap, sound test that
+rules out a meeting without solving for it."
+  (when (ames.maxima:refuted-p (run-bridge run) `(< ,h 0) :assuming '((> tau 0)))
+    (return-from stays-negative-p nil))
+  (let* ((h (tidy run h))
+         (d1 (tidy run (time-derivative h)))
+         (d2 (tidy run (time-derivative d1)))
+         (d3 (tidy run (time-derivative d2))))
+    (and (eql d3 0)
+         (let ((h0 (at-time h 0)) (d10 (at-time d1 0)))
+           (and (holds run `(<= ,h0 0))
+                (holds run `(<= ,d10 0))
+                (holds run `(<= ,d2 0))
+                (or (holds run `(< ,h0 0)) (holds run `(< ,d10 0)) (holds run `(< ,d2 0))))))))
+
+(defun extent-margin (relation)
+  "For an extent RELATION (>= X Y) or (<= X Y), the expression that must be >= 0."
+  (ecase (first relation)
+    ((>= >) `(- ,(relation-lhs relation) ,(relation-rhs relation)))
+    ((<= <) `(- ,(relation-rhs relation) ,(relation-lhs relation)))))
+
+(defun meeting-time (run meeting over-time contact)
+  "When the relative motion first meets CONTACT from its exterior, strictly after the
+start: (values :AT TIME RATE), (values :NEVER) or (values :UNKNOWN FACT). MEETING is
+the geometry's meeting over state terms; OVER-TIME makes functions of TAU of them.
+RATE is the gap's rate then (negative: an impact)."
+  (let* ((gap (tidy run (funcall over-time (ames.geometry:meeting-gap meeting))))
+         (rate-of (lambda (time) (tidy run (at-time (time-derivative gap) time))))
+         (extent (mapcar (lambda (r) (funcall over-time r)) (ames.geometry:meeting-extent meeting))))
+    (when (some (lambda (h) (stays-negative-p run h))
+                (cons `(- ,gap) (loop for r in extent
+                                      unless (eq (first r) 'or) collect (extent-margin r))))
+      (return-from meeting-time (values :never)))
+    (when (eql gap 0)
+      (return-from meeting-time (values :never)))
+    (loop repeat 4
+          while (and (not (free-of-p 'tau gap)) (holds run `(= ,(tidy run (at-time gap 0)) 0)))
+          do (setf gap (tidy run `(/ ,gap tau))))
+    (let ((after 0))
+      (loop repeat 4
+            do (let ((root (earliest-root-after run gap after)))
+                 (cond ((eq root :none) (return-from meeting-time (values :never)))
+                       ((eq root :unknown)
+                        (return-from meeting-time
+                          (values :unknown (undecided-sign-fact run gap after))))
+                       (t
+                        (let* ((root (tidy run root :full))
+                               (rate (funcall rate-of root))
+                               (checks (cons `(<= ,rate 0) (mapcar (lambda (r) (at-time r root)) extent)))
+                               (answers (mapcar (lambda (r) (decide run r)) checks)))
+                          (cond ((every (lambda (a) (eq a :true)) answers)
+                                 (return-from meeting-time (values :at root rate)))
+                                ((member :unknown answers)
+                                 (return-from meeting-time
+                                   (values :unknown (nth (position :unknown answers) checks))))
+                                (t (setf after root))))))))
+      (values :unknown `(:meets ,@(contact-bodies run contact))))))
+
+;;; The candidates
+
+(defun condition-groups (run solved groups relation)
+  "The GROUPs whose motion a termination RELATION depends on."
+  (let ((expression (over-state-terms run solved (relation-as-expression relation))))
+    (remove-duplicates
+     (loop for term in (expression-variables expression)
+           for group = (and (quantity-term-p term) (group-of-term groups term))
+           when group collect group))))
+
+(defun relation-as-expression (relation)
+  "A list holding every operand of RELATION (for collecting its variables)."
+  (if (member (first relation) '(and or not))
+      (cons '+ (mapcar #'relation-as-expression (rest relation)))
+      (cons '+ (rest relation))))
+
+(defun condition-event (condition rate)
+  "The event CONDITION stands for, as its component names it (the impact event when it
+is reached at a non-zero RATE), or its model change when the component names none."
+  (or (and rate (ames.engine:termination-condition-impact condition))
+      (ames.engine:termination-condition-event condition)
+      (ames.engine:termination-condition-change condition)))
+
+(defun tau-candidate (run solved groups condition)
+  "When CONDITION fires over bodies moving with constant accelerations: a CANDIDATE,
+:NEVER, or (values :UNKNOWN FACT)."
+  (let* ((relation (ames.engine:termination-condition-relation condition))
+         (contact (gap-relation-contact relation))
+         (over-time (lambda (x) (motion-value groups (over-state-terms run solved x)))))
+    (multiple-value-bind (status time rate)
+        (if contact
+            (meeting-time run (contact-meeting-terms run solved contact) over-time contact)
+            (relation-time run relation over-time))
+      (case status
+        (:at (make-candidate condition
+                             (condition-event condition (and rate (holds run `(< ,rate 0)) rate))
+                             time :rate rate))
+        (:never :never)
+        (t (values :unknown time))))))
+
+(defun candidates-of (run solved groups)
+  "Every termination condition of the model that fires: (values CANDIDATES UNKNOWN
+NEVER), UNKNOWN a list of (FACT EVENT) for the conditions whose firing is not decided,
+NEVER the events of the conditions proven never to fire in this state. Conditions over
+a :NUMERIC group are watched by a numeric integration (under parameter values) up to
+the earliest of the others."
+  (let ((candidates '()) (unknown '()) (numeric '()) (never '()))
+    (dolist (condition (ames.engine:model-termination-conditions (run-model run)))
+      (let* ((relation (ames.engine:termination-condition-relation condition))
+             (involved (condition-groups run solved groups relation)))
+        (multiple-value-bind (result fact)
+            (cond ((null involved) :never)
+                  ((some (lambda (g) (eq (group-kind g) :numeric)) involved)
+                   (push condition numeric)
+                   :never)
+                  ((every (lambda (g) (eq (group-kind g) :constant)) involved)
+                   (tau-candidate run solved groups condition))
+                  ((and (null (rest involved)) (eq (group-kind (first involved)) :path))
+                   (path-candidate run solved (first involved) condition))
+                  (t (values :unknown `(:no-closed-form ,(condition-event condition nil)))))
+          (cond ((candidate-p result) (push result candidates))
+                ((eq result :unknown)
+                 (push (list fact (condition-event condition nil)) unknown))
+                ((not (member condition numeric))
+                 (push (condition-event condition nil) never))))))
+    (when (some (lambda (g) (eq (group-kind g) :numeric)) groups)
+      (let ((horizon (loop for c in candidates
+                           for time = (numeric-time run (candidate-time c))
+                           when time minimize time)))
+        (setf candidates (append (numeric-candidates run solved groups (reverse numeric)
+                                                     (and candidates horizon))
+                                 candidates))))
+    (values (nreverse candidates) (nreverse unknown) (nreverse never))))

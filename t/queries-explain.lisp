@@ -1,0 +1,91 @@
+;;;; t/queries-explain.lisp -- ask, branch and explain (thesis 3.2.4): queries answered from a
+;;;; run's history, the run's tree when it branches, and explanations from the justifications.
+
+(in-package #:ames.tests)
+
+(in-suite simulator)
+
+(defun with-queries (scenario-name &rest queries)
+  "The form of scenarios/SCENARIO-NAME.lisp with the (query ...) clauses QUERIES added,
+its symbols read into the scenario package."
+  (let ((form (first (ames:read-scenario-forms
+                      (uiop:read-file-string
+                       (find scenario-name (scenario-files) :key #'pathname-name :test #'string=))))))
+    (append form (first (ames:read-scenario-forms
+                         (format nil "(~{~A~^ ~})" queries))))))
+
+(defun answer (history name)
+  "The answers of HISTORY to the query NAME."
+  (remove-if-not (lambda (entry) (string= (symbol-name (first entry)) name))
+                 (ames:history-answers history)))
+
+(test wedge-queries-answered-in-closed-form
+  "The particle's speed when it leaves the wedge is sqrt(2 g h (mw + mp) ... ) as the
+energy and momentum give it; the landing time is the state's end; the wedge's normal
+force is proven positive during state 0; an unknown name is a scenario error naming it."
+  (with-fixture simulator-bridge ()
+    (let* ((form (with-queries "particle-on-wedge"
+                   "(query speed-leaving (value (speed particle) :at (:leaves particle wedge)))"
+                   "(query landing (time (:collision particle ground)))"
+                   "(query pushes (prove (> (normal-force particle wedge) 0) :during (start 0)))"
+                   "(query floating (value (speed particle) :at (:lift-off particle wedge)))"))
+           (scenario (ames:parse-scenario form))
+           (history (simulate-stopping-when-ambiguous scenario bridge)))
+      (flet ((x (e) (in-scenario-terms scenario e)))
+        (call-with-scenario-facts
+         bridge scenario
+         (lambda ()
+           ;; energy: mp g h/2 = (mp vp^2 + mw vw^2)/2 with mp vpx + mw vw = 0 and the slope's
+           ;; direction relative to the wedge: the particle's speed squared is
+           ;; g h (mw^2 + mp^2 sin^2 a + 2 mp mw sin^2 a) / ((mp + mw)(mw + mp sin^2 a))
+           (is-same bridge "speed leaving the wedge"
+                    `(expt ,(second (first (answer history "SPEED-LEAVING"))) 2)
+                    (x '(/ (* g h (+ (expt mw 2) (* (expt mp 2) (expt (sin a) 2)) (* 2 mp mw (expt (sin a) 2))))
+                           (* (+ mp mw) (+ mw (* mp (expt (sin a) 2)))))))
+           (is-same bridge "landing time" (second (first (answer history "LANDING")))
+                    (x '(sqrt (/ (* h (+ mw (* mp (expt (sin a) 2)))) (* (+ mp mw) g (expt (sin a) 2))))))
+           (is (eq :true (first (second (first (answer history "PUSHES"))))))
+           (is (eq :unanswered (second (first (answer history "FLOATING")))))))
+        (signals ames:undeclared-symbol-error
+          (ames:parse-scenario (with-queries "particle-on-wedge"
+                                 "(query bad (value (speed no-such-body) :at (end 0)))")))
+        (signals ames:scenario-error
+          (ames:parse-scenario (with-queries "particle-on-wedge" "(query bad (guess (speed particle)))")))))))
+
+(test projectile-landing-time-query
+  "A projectile off a table: the time it lands is d/v0 + sqrt(2 h / g), with a number
+beside it under the default values."
+  (with-fixture simulator-bridge ()
+    (let* ((scenario (ames:parse-scenario
+                      (with-queries "projectile-off-table" "(query lands (time (:collision particle floor)))")))
+           (history (simulate-stopping-when-ambiguous scenario bridge
+                                                      :parameter-values (ames:scenario-parameter-values scenario)))
+           (entry (first (answer history "LANDS"))))
+      (call-with-scenario-facts
+       bridge scenario
+       (lambda ()
+         (is-same bridge "landing time" (second entry)
+                  (in-scenario-terms scenario '(+ (/ d v0) (sqrt (/ (* 2 h) g)))))))
+      (is (< (abs (- (getf (cddr entry) :numeric) (+ 1/4 (sqrt (/ 2 9.81d0))))) 1d-9)))))
+
+(test explain-names-the-components-and-the-end
+  "EXPLAIN on the wedge names the contact, normal force, gravity, Newton and frame
+conversion components behind its equations, with the thesis's figures, and says why the
+state ends at the ground."
+  (with-fixture simulator-bridge ()
+    (let* ((history (simulate-stopping-when-ambiguous (scenario-named "particle-on-wedge") bridge))
+           (text (with-output-to-string (stream) (ames:explain history :state 0 :stream stream))))
+      (dolist (word '("normal-force" "terrestrial-gravitation" "newtons-second-law" "newtons-third-law"
+                      "reference-frame-conversion" "path-coordinate-conversion" "kinematic-restriction"
+                      "figure 2-8" "figure 2-7" "particle on wedge"
+                      "Why these contacts and modes" "Why the state ends then" "collision particle ground"))
+        (is (search word text) "the explanation does not mention ~S:~%~A" word text)))))
+
+(test under-plane-explains-the-dropped-contact
+  "Under the plane the contact is tried and dropped because its normal force would pull:
+the explanation says so."
+  (with-fixture simulator-bridge ()
+    (let* ((history (simulate-stopping-when-ambiguous (scenario-named "particle-under-plane") bridge))
+           (text (with-output-to-string (stream) (ames:explain history :stream stream))))
+      (is (search "turned contact (particle on ceiling) off because lift-off particle ceiling" text)
+          "~A" text))))
