@@ -169,9 +169,12 @@ numeric witnesses that no strategy can decide it (see RELATION-WITNESSES), then 
 signs of the difference of its sides, after clearing a square root, equivalence (for =
 and /=), what a physicist knows (truth.lisp) and the order substitution. A relation
 with a product of square roots of negative radicands, which Maxima's is() and sign()
-would take for real square roots, is left to truth.lisp alone."
+would take for real (or imaginary) square roots, is first decided in real terms by
+DECIDE-WITH-IMAGINARY-RADICANDS."
   (when (imaginary-radicands bridge relation)
-    (return-from decide-relation (decide-with-imaginary-radicands bridge relation)))
+    (let ((verdict (decide-with-imaginary-radicands bridge relation)))
+      (unless (eq verdict :fall-back)
+        (return-from decide-relation verdict))))
   (let* ((operator (expression-operator relation))
          (equation (member operator '(= /=)))
          (lhs (to-mx bridge (relation-lhs relation)))

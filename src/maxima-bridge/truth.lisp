@@ -351,9 +351,10 @@ relation complex, or a fact about it inconsistent."
 (defun decide-with-imaginary-radicands (bridge relation)
   "RELATION, which has products of square roots of negative radicands (see
 IMAGINARY-RADICANDS), decided in real terms: written with real roots where the products
-hold an even number of them (REALIFIED), and asked of DECIDE; else, without asking
-Maxima about those roots, from the signs of its parts (two imaginary factors make a
-negative real one) and through squares."
+hold an even number of them (REALIFIED), and asked of DECIDE. Where a product holds an
+odd number (an imaginary part, which only a sum such as Cardano's formula for a cubic's
+root can make real again), from the signs of its parts and through squares; :FALL-BACK
+when that decides nothing, for DECIDE-RELATION's usual strategies."
   (let* ((radicands (imaginary-radicands bridge relation))
          (real (realified relation radicands)))
     (if (and (not (equal real relation)) (null (product-root-radicands-among real radicands)))
@@ -362,10 +363,10 @@ negative real one) and through squares."
                (prover (prover-for bridge))
                (verdict (relation-verdict (expression-operator relation)
                                           (expression-signs prover (relation-difference relation) :top t))))
-          (if (eq verdict :unknown)
-              (handler-case (decide-by-squares prover relation)
-                ((or maxima-timeout maxima-error) () :unknown))
-              verdict)))))
+          (when (eq verdict :unknown)
+            (setf verdict (handler-case (decide-by-squares prover relation)
+                            ((or maxima-timeout maxima-error) () :unknown))))
+          (if (eq verdict :unknown) :fall-back verdict)))))
 
 (defun product-root-radicands-among (expression radicands)
   "The RADICANDS still under a square root in EXPRESSION."
