@@ -16,7 +16,7 @@ earliest roots of sinusoids.")
   "True when the reals X and Y agree within TOLERANCE, relatively (absolutely near 0)."
   (<= (abs (- x y)) (* tolerance (max 1 (abs x) (abs y)))))
 
-(defun same-values-p (b x y points &optional (tolerance 1d-9))
+(defun same-at-points-p (b x y points &optional (tolerance 1d-9))
   "True when the expressions X and Y have the same value (by Maxima's float) at every
 alist of POINTS."
   (every (lambda (point)
@@ -173,16 +173,16 @@ elliptic and Jacobi functions in Lisp)."
            (points '(((g . 981/100) (l . 2) (theta0 . 7/10)) ((g . 1) (l . 1) (theta0 . 3/2))
                      ((g . 3) (l . 1/5) (theta0 . 1/50)))))
        ;; a quarter period from rest at theta0 down to the bottom: K(sin^2(theta0/2)) sqrt(l/g)
-       (is (same-values-p b (travel b facts energy 'theta0 0) quarter points))
+       (is (same-at-points-p b (travel b facts energy 'theta0 0) quarter points))
        ;; the same swing one turn further round (the well centred on 2 pi), and back up
-       (is (same-values-p b (travel b facts energy '(+ (* 2 pi) theta0) '(* 2 pi)) quarter points))
-       (is (same-values-p b (travel b facts energy 0 '(- theta0)) quarter points))))))
+       (is (same-at-points-p b (travel b facts energy '(+ (* 2 pi) theta0) '(* 2 pi)) quarter points))
+       (is (same-at-points-p b (travel b facts energy 0 '(- theta0)) quarter points))))))
 
 (test travel-time-of-a-revolution-and-a-fall
   (call-with-bridge
    (lambda (b)
      ;; going over the top: half a revolution takes 2 K(4 g / (l w0^2)) / w0
-     (is (same-values-p b (travel b '((> g 0) (> l 0) (> w0 0) (> (* l (expt w0 2)) (* 4 g)))
+     (is (same-at-points-p b (travel b '((> g 0) (> l 0) (> w0 0) (> (* l (expt w0 2)) (* 4 g)))
                                   '(+ (expt w0 2) (* 2 (/ g l) (- (cos s) 1))) 0 'pi)
                         '(/ (* 2 (elliptic-k (/ (* 4 g) (* l (expt w0 2))))) w0)
                         '(((g . 981/100) (l . 2) (w0 . 5)) ((g . 1) (l . 1) (w0 . 21/10)))))
@@ -342,7 +342,7 @@ elliptic and Jacobi functions in Lisp)."
        (ames.maxima:with-assumptions (b '((< a (* 2 l))))
          (multiple-value-bind (root status) (trigonometric-root b '(- (- l (* l (cos (* w tau)))) a))
            (is (eq :found status))
-           (is (same-values-p b root '(/ (acos (/ (- l a) l)) w)
+           (is (same-at-points-p b root '(/ (acos (/ (- l a) l)) w)
                               '(((a . 1) (l . 3) (w . 2)) ((a . 59/10) (l . 3) (w . 1/2))))))))
      ;; two frequencies
      (is (eq :unknown (trigonometric-root b '(+ (cos (* w tau)) (cos (* 2 w tau))))))

@@ -213,4 +213,4 @@ text report prints it through its generic phrase."
       (let ((forces (getf (first (getf sexp :states)) :forces)))
         (is (find :friction forces :key #'first) "no friction in ~S" forces))
       (is (search "friction of floor on block (mode sliding)" text) "~A" text)
-      (is (search "friction of floor on block (mode static): 0" text) "~A" text))))
+      (is (search "friction of floor on block (mode static): F = 0" text) "~A" text))))

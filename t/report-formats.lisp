@@ -181,4 +181,4 @@ Chromium; skipped where it is not installed)."
                      (is (not (search "class=\"katex-error" dom)))
                      (is (= 2 (length (cl-ppcre:all-matches-as-strings "<svg[^>]*class=\"ames-picture\"" dom))))
                      (is (search "class=\"trajectory" dom))))
-              (delete-file page)))))))
+              (when (probe-file page) (delete-file page))))))))

@@ -110,3 +110,30 @@ choice is the caller's to settle)."
                    (push (list :deactivate (instance-key instance)) changes))
                   ((and (eq verdict :true) (not (instance-active-p instance)))
                    (push (list :activate (instance-key instance)) changes)))))))))
+
+(defun stale-mode-changes (model &key (decider (model-decider model)))
+  "The changes that move every active instance whose current mode's entry conditions
+DECIDER now answers :FALSE into the first mode whose entry conditions it answers :TRUE
+(else :CHOICE): after a transition that changed what the entry conditions read without
+firing a transition (an impact changes velocities at once). Instances whose current mode
+is still possible, or that have no possible mode, are left alone."
+  (let ((changes '()))
+    (dolist (instance (model-instances model) (nreverse changes))
+      (let ((component (instance-component instance))
+            (mode (instance-mode instance)))
+        (when (and mode (rest (component-modes component)) (instance-active-p instance))
+          (flet ((verdict (mode-name)
+                   (if (mode-valid-p instance mode-name)
+                       (conjunction-answer model
+                                           (mapcar (lambda (template)
+                                                     (expanded-relation model instance template))
+                                                   (mode-entry-relations (find-mode component mode-name)))
+                                           (make-hash-table :test #'equal) decider)
+                       :false)))
+            (when (eq (verdict mode) :false)
+              (let* ((verdicts (mapcar (lambda (m) (cons (mode-name m) (verdict (mode-name m))))
+                                       (component-modes component)))
+                     (next (or (car (find :true verdicts :key #'cdr))
+                               (car (find :choice verdicts :key #'cdr)))))
+                (when next
+                  (push (list :mode (instance-key instance) :from mode :to next) changes))))))))))

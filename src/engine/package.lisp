@@ -42,7 +42,7 @@ function, so the engine never talks to Maxima itself.")
    ;; choices left open at the start of a state
    #:choice-point #:choice-point-p #:choice-point-instance #:choice-point-kind
    #:choice-point-options #:choice-point-current #:choice-point-relations
-   #:model-choice-points #:choice-change #:stale-activation-changes
+   #:model-choice-points #:choice-change #:stale-activation-changes #:stale-mode-changes
    ;; transitions and the incremental check
    #:apply-transition #:transition-report #:transition-report-changes
    #:transition-report-rederived #:transition-report-rederived-count

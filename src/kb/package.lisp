@@ -3,7 +3,7 @@
 (defpackage #:ames.kb
   (:use #:cl #:ames.base)
   (:import-from #:ames.engine #:defcomponent #:make-knowledge-base #:register-template
-                #:find-entity #:entity-property #:situation-data)
+                #:find-entity #:entity-property #:entity-name #:situation-data)
   (:documentation "Mechanics as data: one DEFCOMPONENT per piece of the thesis's
 knowledge (contact, kinematic restriction, normal force, gravitation, external force,
 fixed body, Newton's second and third laws, the kinematics of a body, reference-frame
@@ -27,4 +27,11 @@ components share.")
    ;; the beliefs the simulator reads
    #:derivative #:reported #:force #:in-contact #:path-coordinates
    ;; names used in beliefs and force names
-   #:normal #:reaction #:gravity #:external #:environment))
+   #:normal #:reaction #:gravity #:external #:environment
+   ;; springs, ropes, universal gravitation, energy (spans.lisp, springs.lisp, ropes.lisp,
+   ;; gravitation.lisp, energy.lisp): the entity kinds the simulator describes, the
+   ;; quantities it provides (a free body's position at the state's start) and reads
+   #:spring #:bumper #:point-contact #:rope #:rope-segment #:gravitation-field #:body-pair
+   #:initial-pos #:span #:span-length #:span-direction #:span-acceleration #:tension
+   #:kinetic-energy #:momentum #:potential-energy #:pressing #:taut
+   #:unmodelled-situation))

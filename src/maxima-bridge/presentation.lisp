@@ -78,10 +78,7 @@ negations, the order of arguments as given."
                             (atan (if (rest arguments)
                                       (mform +atan2+ (first arguments) (second arguments))
                                       (mform +atan+ (first arguments))))
-                            (t (let ((head (or (cdr (assoc operator *function-heads*))
-                                               (cdr (assoc operator *relation-heads*))
-                                               (cdr (assoc operator *logical-heads*)))))
-                                 (apply #'mform head arguments)))))))))
+                            (t (apply #'mform (operator-head operator) arguments))))))))
       (out expression))))
 
 (defun presentation-latex (bridge expression &key (name-function #'latex-name))

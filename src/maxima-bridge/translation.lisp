@@ -59,6 +59,15 @@ argument order, parameter m as in AMES.BASE's special-functions.lisp).")
 (defparameter *logical-heads* `((and . ,+mand+) (or . ,+mor+) (not . ,+mnot+))
   "Connectives of the algebra and their Maxima heads.")
 
+(defun operator-head (operator)
+  "The Maxima head of OPERATOR, a function, relation or connective of the algebra with a
+head of its own (not + - * / expt exp atan, which translate into other forms)."
+  (or (cdr (assoc operator *function-heads*))
+      (cdr (assoc operator *special-function-heads*))
+      (cdr (assoc operator *relation-heads*))
+      (cdr (assoc operator *logical-heads*))
+      (error "No Maxima head for the operator ~S" operator)))
+
 ;;; Maxima forms: ((HEAD) ARG ...)
 
 (defun mform (head &rest arguments)
@@ -195,11 +204,7 @@ UNTRANSLATABLE-EXPRESSION for anything outside the algebra."
                           (atan (if (rest arguments)
                                     (mform +atan2+ (first arguments) (second arguments))
                                     (mform +atan+ (first arguments))))
-                          (t (let ((head (or (cdr (assoc operator *function-heads*))
-                                             (cdr (assoc operator *special-function-heads*))
-                                             (cdr (assoc operator *relation-heads*))
-                                             (cdr (assoc operator *logical-heads*)))))
-                               (apply #'mform head arguments)))))))))
+                          (t (apply #'mform (operator-head operator) arguments))))))))
     (out expression)))
 
 ;;; Back: Maxima -> prefix algebra

@@ -151,7 +151,8 @@ Numbers, and numeric forms such as 0.7483 + 1.692 tau, are written by NUMBER-TEX
     (dolist (body (getf view :bodies))
       (let ((mass (body-mass presenter (getf body :name)))
             (acceleration (getf body :acceleration)))
-        (when (and mass (every (lambda (a) (valid-expression-p a :kind :arithmetic)) acceleration))
+        (when (and mass acceleration
+                   (every (lambda (a) (valid-expression-p a :kind :arithmetic)) acceleration))
           (format stream "~A:~%\\[ ~A\\,\\ddot{x} = ~A, \\qquad ~A\\,\\ddot{y} = ~A \\]~%"
                   (latex-escape (name-text (getf body :name)))
                   (formula-latex presenter (present presenter mass))

@@ -222,8 +222,12 @@ generically, their options as \"key value\")."
             (positional (loop for x in (rest event) until (keywordp x) collect x))
             (options (nthcdr (length positional) (rest event)))
             (a (name-text (first positional))) (b (name-text (second positional)))
+            ;; an impact's impulse and energy lost have their own section ("the impact")
+            (shown-elsewhere (if (and state (getf (state-notes state) :impact))
+                                 '(:endpoint :impulse :energy-lost)
+                                 '(:endpoint)))
             (extra (loop for (key value) on options by #'cddr
-                         when (and key (not (eq key :endpoint)))
+                         when (and key (not (member key shown-elsewhere)))
                            append (list (format nil ", ~A " (keyword-words key))
                                         (if (valid-expression-p value :kind :arithmetic)
                                             (list :math (present presenter value))

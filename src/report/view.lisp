@@ -211,9 +211,11 @@ coefficient is ACCELERATION / 2, else the presented polynomial."
                               (list (phrase "each cycle " (present presenter (getf value :factor))
                                             " times the one before (the first lasted "
                                             (present presenter (getf value :cycle))
-                                            "): they accumulate at "
-                                            (list '= 't (present presenter (getf value :time)))
+                                            "): they accumulate at t = "
+                                            (present presenter (getf value :time))
                                             ", and the run goes on from there at rest")))))
+                 (:energy (list (cons "energy" (energy-phrases presenter value))))
+                 (:momentum (list (cons "momentum" (momentum-phrases presenter value))))
                  (:missing-fact
                   (list (cons "the run branches on" (list (phrase (present-relation presenter value))))))
                  (:initial-velocities
@@ -226,6 +228,24 @@ coefficient is ACCELERATION / 2, else the presented polynomial."
                                 (list (if (valid-expression-p value :kind :arithmetic)
                                           (phrase (present presenter value))
                                           (list (datum-text value))))))))))
+
+(defun energy-phrases (presenter entries)
+  "The kinetic, potential and total energy of a state's :ENERGY note ENTRIES ((:kinetic
+BODY E) and (:potential SOURCE E) ...), each sum presented: the total is constant where
+the forces are conservative and nothing is lost."
+  (let ((kinetic (loop for entry in entries when (eq (first entry) :kinetic) collect (third entry)))
+        (potential (loop for entry in entries when (eq (first entry) :potential) collect (third entry))))
+    (flet ((sum (terms) (present presenter (if (rest terms) (cons '+ terms) (or (first terms) 0)))))
+      (list (phrase "kinetic T = " (sum kinetic))
+            (phrase "potential V = " (sum potential))
+            (phrase "total T + V = " (sum (append kinetic potential)))))))
+
+(defun momentum-phrases (presenter entries)
+  "The total momentum of a state's :MOMENTUM note ENTRIES ((:momentum BODY (PX PY)) ...)."
+  (flet ((sum (axis)
+           (let ((terms (mapcar (lambda (entry) (funcall axis (third entry))) entries)))
+             (present presenter (if (rest terms) (cons '+ terms) (or (first terms) 0))))))
+    (list (phrase "total: (" (sum #'first) ", " (sum #'second) ")"))))
 
 (defun moving-p (presenter body)
   "True unless the scenario body named BODY is fixed."
@@ -245,8 +265,11 @@ coefficient is ACCELERATION / 2, else the presented polynomial."
                              (and (realp n) n))
           :contacts (mapcar (lambda (c) (contact-phrase presenter c)) (state-contacts state))
           :forces (mapcar (lambda (f) (force-view presenter f state)) (state-forces state))
+          ;; a body's motion where it is known (a fork's state has none of its own)
           :bodies (loop for (body) in (state-positions state)
-                        when (moving-p presenter body) collect (body-view presenter state body))
+                        when (and (moving-p presenter body)
+                                  (body-entry (state-accelerations state) body))
+                          collect (body-view presenter state body))
           :end (event-phrase presenter (state-end-event state) state)
           :events (mapcar (lambda (e) (event-phrase presenter e state)) events)
           :final (loop for (body position) in (state-final-positions state)
@@ -264,6 +287,7 @@ coefficient is ACCELERATION / 2, else the presented polynomial."
                           collect (list :assume (phrase (present-relation presenter (getf branch :assume)))
                                         :selected (getf branch :selected)
                                         :outcome (getf branch :outcome)
+                                        :failure (getf branch :failure)
                                         :states (mapcar (lambda (s) (state-view presenter s))
                                                         (getf branch :states)))))))
 

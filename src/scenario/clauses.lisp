@@ -187,7 +187,8 @@ order."
             ((not (clause-word clause))
              (reject validation 'unknown-clause-error clause
                      "~A is not a clause of the scenario language; the clauses are ~
-                      parameters, gravity, body, force, simulate, query, restitution and friction"
+                      parameters, gravity, body, force, simulate, query, restitution, ~
+                      friction, spring, pulley, rope and gravitation"
                      (show (car clause))))
             (t (push clause (cdr (assoc (clause-word clause) sorted))))))
     (dolist (entry sorted sorted)
@@ -204,7 +205,9 @@ order."
           (reject validation 'scenario-syntax-error spec "~A is not a proper list" (show spec)))
         (check-name validation name "parameter")
         (declare-name validation name :parameter))))
-  (loop for (word kind) in '((ames-scenario:body :body) (ames-scenario:force :force))
+  (loop for (word kind) in '((ames-scenario:body :body) (ames-scenario:force :force)
+                             (ames-scenario:spring :spring) (ames-scenario:pulley :pulley)
+                             (ames-scenario:rope :rope))
         do (dolist (clause (cdr (assoc word sorted)))
              (enter validation (format nil "clause ~A" word) clause)
              (when (null (rest clause))
@@ -273,4 +276,5 @@ CHECK-SCENARIO-GEOMETRY, which the caller runs when it has those layers."
                                                 (clauses 'ames-scenario:query))
                                :restitutions (checked-restitutions
                                               validation (clauses 'ames-scenario:restitution))
+                               :extensions (checked-extensions validation sorted bodies)
                                :source source :form form)))))))))

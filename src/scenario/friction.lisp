@@ -10,21 +10,6 @@
 
 (in-package #:ames.scenario)
 
-(defun checked-body-name (validation name what)
-  "The declared symbol of the body NAME, which WHAT (a string) names. Signals
-SCENARIO-SYNTAX-ERROR or UNDECLARED-SYMBOL-ERROR."
-  (let ((declaration (declared validation name)))
-    (cond ((not (and (symbolp name) name (not (keywordp name))))
-           (reject validation 'scenario-syntax-error name
-                   "~A takes the names of bodies, not ~A" what (show name)))
-          ((null declaration)
-           (reject validation 'undeclared-symbol-error name
-                   "~A is not a declared body" (show name)))
-          ((not (eq (car declaration) :body))
-           (reject validation 'undeclared-symbol-error name
-                   "~A names a ~(~A~), not a body" (show name) (car declaration)))
-          (t (cdr declaration)))))
-
 (defun check-coefficient (validation expression what)
   "Signal SCENARIO-EXPRESSION-ERROR when EXPRESSION, a friction coefficient named WHAT,
 is a negative constant."

@@ -94,6 +94,9 @@ of src/scenario/queries.lisp.")
    (restitutions :initarg :restitutions :initform '() :reader scenario-restitutions
                  :documentation "Newton's coefficients of restitution: a list of (BODY1 BODY2
 E) for a pair's impacts and (NIL NIL E) for every other impact (without one, E is 0).")
+   (extensions :initarg :extensions :initform '() :reader scenario-extensions
+               :documentation "The clauses of the extensions, as a plist (see
+src/scenario/extensions.lisp: :SPRINGS, :PULLEYS, :ROPES, :GRAVITATION).")
    (source :initarg :source :initform nil :reader scenario-source
            :documentation "Where the form came from (\"FILE, line N\"), or NIL.")
    (form :initarg :form :initform nil :reader scenario-form

@@ -17,6 +17,7 @@
    #:scenario #:parameters #:gravity #:body #:force #:simulate #:query
    #:restitution
    #:friction
+   #:spring #:pulley #:rope #:gravitation
    #:point #:circle #:polygon #:outline #:line #:arc #:segment #:half-plane)
   (:documentation "The package scenario files are read into (with *READ-EVAL* nil and
 a restricted readtable). It uses no package: it holds the user's names, and imports
@@ -49,6 +50,15 @@ and Maxima (assumptions, overlaps).")
    #:scenario-branch
    #:scenario-queries #:scenario-source #:scenario-form
    #:scenario-restitutions #:scenario-restitution
+   ;; springs, pulleys, ropes, universal gravitation (extensions.lisp)
+   #:scenario-extensions #:scenario-springs #:scenario-pulleys #:scenario-ropes
+   #:scenario-gravitation #:scenario-spring #:scenario-spring-name #:scenario-spring-from
+   #:scenario-spring-to #:scenario-spring-toward #:scenario-spring-stiffness
+   #:scenario-spring-rest-length #:scenario-spring-bumper-p
+   #:scenario-pulley #:scenario-pulley-name #:scenario-pulley-body #:scenario-pulley-point
+   #:find-scenario-pulley
+   #:scenario-rope #:scenario-rope-name #:scenario-rope-length #:scenario-rope-through
+   #:rope-point-position
    #:scenario-parameter #:scenario-parameter-name #:scenario-parameter-assumptions
    #:scenario-parameter-value
    #:scenario-body #:scenario-body-name #:scenario-body-shape #:scenario-body-mass

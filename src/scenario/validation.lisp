@@ -83,7 +83,8 @@ under the print settings REJECT-BECAUSE binds (short, in the form's package)."
   '(ames-scenario:parameters ames-scenario:gravity ames-scenario:body
     ames-scenario:force ames-scenario:simulate ames-scenario:query
     ames-scenario:restitution
-    ames-scenario:friction)
+    ames-scenario:friction
+    ames-scenario:spring ames-scenario:pulley ames-scenario:rope ames-scenario:gravitation)
   "The clauses of a scenario.")
 
 (defun check-name (validation name what)
@@ -363,3 +364,18 @@ violate one of their assumptions (decided where every parameter involved has one
                   (reject validation 'contradictory-assumptions-error assumption
                           "the default value ~A of ~A violates its assumption ~A"
                           lhs (show name) (show assumption)))))))))))
+
+(defun checked-body-name (validation name &optional (what "the clause"))
+  "The declared symbol of the body NAME, which WHAT (a string: the clause or part that
+names it) names. Signals SCENARIO-SYNTAX-ERROR or UNDECLARED-SYMBOL-ERROR."
+  (let ((declaration (declared validation name)))
+    (cond ((not (and (symbolp name) name (not (keywordp name))))
+           (reject validation 'scenario-syntax-error name
+                   "~A takes the names of bodies, not ~A" what (show name)))
+          ((null declaration)
+           (reject validation 'undeclared-symbol-error name
+                   "~A is not a declared body" (show name)))
+          ((not (eq (car declaration) :body))
+           (reject validation 'undeclared-symbol-error name
+                   "~A names a ~(~A~), not a body" (show name) (car declaration)))
+          (t (cdr declaration)))))

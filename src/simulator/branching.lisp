@@ -158,18 +158,37 @@ inequality over the parameters, or the tree is full)."
 fork on, renumbered after the fork, as (:ASSUME FACT :STATES ... :OUTCOME ...
 [:SELECTED T] [:SUBSTITUTION (P V)])."
   (let* ((facts (append (getf *branching* :extra-facts) (getf alternative :facts)))
+         (failure nil)
          (history (let ((*branching* (list* :extra-facts facts *branching*)))
-                    (simulate-branch (getf alternative :scenario) (run-bridge run)
-                                     (run-values run) check-incremental facts)))
-         (states (remove-if (lambda (state) (< (state-index state) index))
-                            (history-states history))))
+                    (handler-case
+                        (simulate-branch (getf alternative :scenario) (run-bridge run)
+                                         (run-values run) check-incremental facts)
+                      (simulation-error (condition)
+                        ;; one branch that cannot be simulated does not lose the others
+                        (setf failure (or (ames-error-detail condition)
+                                          (string-downcase (type-of condition))))
+                        nil))))
+         (states (and history
+                      (remove-if (lambda (state) (< (state-index state) index))
+                                 (history-states history)))))
     (dolist (state states) (renumber-state state 1))
     (append (list :assume (getf alternative :assume)
                   :states states
-                  :outcome (history-outcome history))
+                  :outcome (if history (history-outcome history) :failed))
+            (and failure (list :failure failure))
             (and selected (list :selected t))
             (and (getf alternative :substitution)
                  (list :substitution (getf alternative :substitution))))))
+
+(defun history-leaf-outcomes (history)
+  "The outcomes of HISTORY's paths: its own outcome, or, when it ends in a fork, every
+branch's leaf outcomes (:FAILED for a branch that could not be simulated)."
+  (labels ((leaves (outcome states)
+             (if (eq outcome :branched)
+                 (loop for branch in (state-branches (car (last states)))
+                       append (leaves (getf branch :outcome) (getf branch :states)))
+                 (list outcome))))
+    (leaves (history-outcome history) (history-states history))))
 
 (defun renumber-state (state offset)
   "Shift STATE's index, and its branches' states', by OFFSET."

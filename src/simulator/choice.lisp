@@ -108,8 +108,9 @@ named by a believed (in-contact A B :along K)."
 
 (defun immediate-violations (run solved points)
   "What fires at once in the current model (solved as SOLVED): a list of entries
-(KEY VERDICT FACT WHAT), KEY the instance, VERDICT :TRUE or :UNKNOWN, WHAT the
-condition. Inactive touching contacts among POINTS count when they are penetrated."
+(KEY VERDICT FACT WHAT [CONDITION]), KEY the instance, VERDICT :TRUE or :UNKNOWN, WHAT the
+condition's event or change, CONDITION the termination condition. Inactive touching
+contacts among POINTS count when they are penetrated."
   (let ((violations '())
         (active (active-contacts run)))
     (dolist (condition (ames.engine:model-termination-conditions (run-model run)))
@@ -119,7 +120,8 @@ condition. Inactive touching contacts among POINTS count when they are penetrate
           (unless (eq verdict :false)
             (push (list (ames.engine:termination-condition-instance condition) verdict fact
                         (or (ames.engine:termination-condition-event condition)
-                            (ames.engine:termination-condition-change condition)))
+                            (ames.engine:termination-condition-change condition))
+                        condition)
                   violations)))))
     (dolist (point points)
       (let ((contact (point-contact point))
@@ -169,12 +171,39 @@ along) plus the inactive touching contacts grazed all along (gap identically zer
                             (if (ames.engine:instance-active-p instance) :true :false)))))
           points))
 
+(defun forced-exit (points violations)
+  "Among VIOLATIONS (see IMMEDIATE-VIOLATIONS), a mode's exit that surely holds at once
+for an instance whose mode is no choice among POINTS: that instance leaves its mode at
+once (a stay of no duration), so the transition's change is applied before the state
+starts. Returns the change, or NIL."
+  (let ((modal (loop for point in points
+                     when (eq (ames.engine:choice-point-kind point) :mode)
+                       collect (ames.engine:choice-point-instance point))))
+    (loop for (key verdict nil nil condition) in violations
+          when (and (eq verdict :true) condition
+                    (eq (ames.engine:termination-condition-kind condition) :mode-transition)
+                    (not (member key modal :test #'equal)))
+            return (ames.engine:termination-condition-change condition))))
+
+(defun forced-changes (trial)
+  "The mode changes forced on TRIAL's model by exits that held at once (see FORCED-EXIT)."
+  (loop for note in (trial-notes trial)
+        when (and (consp note) (eq (first note) :leaves-mode)) collect (second note)))
+
+(defun undo-forced-changes (run trial)
+  "Put back the modes that TRIAL's forced exits changed."
+  (let ((undo (loop for (nil key nil from nil to) in (reverse (forced-changes trial))
+                    collect (list :mode key :from to :to from))))
+    (dolist (change undo)
+      (ames.engine:apply-transition (run-model run) (list change) :decider (run-decider run)))))
+
 (defun pivot (run points lone)
   "From the current model, flip the LONE activation points by Murty's least-index rule
-until the assignment is consistent, or shown inconsistent or undecided. Returns a
-TRIAL."
+until the assignment is consistent, or shown inconsistent or undecided; an instance whose
+mode's exit holds at once (and is no choice) leaves that mode first (see FORCED-EXIT,
+noted (:LEAVES-MODE CHANGE)). Returns a TRIAL."
   (let ((notes '()))
-    (loop repeat (+ 4 (* 2 (length lone)))
+    (loop repeat (+ 8 (* 2 (length lone)))
           do (let* ((solved (handler-case (solve-model run (run-model run))
                               ((or unsolvable-model ames.maxima:maxima-error) (condition)
                                 ;; no unique solution: redundant or contradictory
@@ -202,6 +231,11 @@ TRIAL."
                       (return-from pivot
                         (make-trial (current-assignment run points) solved :consistent '()
                                     (degeneracies run solved points) (reverse notes))))
+                     ((forced-exit points violations)
+                      (let ((change (forced-exit points violations)))
+                        (push (list :leaves-mode change) notes)
+                        (ames.engine:apply-transition (run-model run) (list change)
+                                                      :decider (run-decider run))))
                      ((and sure (= (length sure-keys) (length flippable)))
                       (let* ((point (first flippable))
                              (key (ames.engine:choice-point-instance point))
@@ -331,15 +365,20 @@ as its notes. Signals AMBIGUOUS-TRANSITION or UNSOLVABLE-MODEL (see CHOOSE-TRIAL
         (dolist (combo combos)
           (apply-assignment run points (append combo base))
           (let ((trial (pivot run points lone)))
+            (undo-forced-changes run trial)
             (if (eq (trial-verdict trial) :singular)
                 ;; pivoting cannot go through a singular assignment: try every subset
                 (dolist (subset (lone-subsets lone))
                   (apply-assignment run points (append combo subset))
-                  (push (pivot run points '()) trials))
+                  (let ((trial (pivot run points '())))
+                    (undo-forced-changes run trial)
+                    (push trial trials)))
                 (push trial trials))))
         (setf trials (nreverse trials))
         (let ((chosen (choose-trial run trials points)))
           (apply-assignment run points (trial-assignment chosen))
+          (dolist (change (forced-changes chosen))
+            (ames.engine:apply-transition (run-model run) (list change) :decider (run-decider run)))
           (setf (trial-notes chosen)
                 (list :points (mapcar #'ames.engine:choice-point-instance points)
                       :chosen (trial-assignment chosen)

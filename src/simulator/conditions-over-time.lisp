@@ -64,6 +64,7 @@ state terms."
          (straight-arc-speed-terms run solved (second term)))
         ((eq (first term) 'ames.kb:contact-gap)
          (ames.geometry:meeting-gap (contact-meeting-terms run solved (second term))))
+        ((eq (first term) 'ames.kb:initial-pos) (with-initial-positions run term))
         (t (quantity-value solved term))))
 
 (defun over-state-terms (run solved expression)
@@ -103,7 +104,7 @@ holds at once only when it is loose."
                  (:unknown (setf unknown fact)))))))
     (t (multiple-value-bind (function loose) (violation-function relation)
          (multiple-value-bind (sign coefficient)
-             (leading-sign run (local-series run solved (over-state-terms run solved function)))
+             (leading-sign-of run solved (over-state-terms run solved function))
            (case sign
              (-1 :true)
              (1 :false)
@@ -113,7 +114,7 @@ holds at once only when it is loose."
 (defun vanishes-identically-p (run solved expression)
   "True when EXPRESSION (over quantity terms) vanishes identically near the start, as
 far as its local series shows."
-  (eql 0 (leading-sign run (local-series run solved (over-state-terms run solved expression)))))
+  (eql 0 (leading-sign-of run solved (over-state-terms run solved expression))))
 
 (defun goes-negative-at-once (run solved expression)
   "Whether EXPRESSION (over quantity terms) is negative just after the start: :TRUE,

@@ -13,21 +13,26 @@
 (in-package #:ames.simulator)
 
 (defun touching-contacts (run)
-  "The contact entities whose observer lies on their locus now."
+  "The contacts of two bodies' shapes whose observer lies on their locus now (a probe's
+locus is no surface: nothing touches it)."
   (loop for (name) in (run-contacts run)
-        when (touching-on-locus-p run name) collect name))
+        when (and (shape-contact-p run name) (touching-on-locus-p run name)) collect name))
 
 (defun impact-entities (run contacts)
-  "The situation of an impact (see src/kb/impacts.lisp): the bodies with their
-velocities just before, and each of CONTACTS with its outward normal there."
+  "The situation of an impact (see src/kb/impacts.lisp): the bodies with their positions
+and velocities just before, each of CONTACTS with its outward normal there, and the ropes
+(see src/kb/ropes.lisp)."
   (let ((scenario (run-scenario run)))
     (append
      (mapcar (lambda (body)
-               (list 'ames.kb:body (scenario-body-name body)
-                     :fixed (and (scenario-body-fixed-p body) t)
-                     :mass (scenario-body-mass body)
-                     :velocity (body-velocity run (scenario-body-name body))))
+               (let ((name (scenario-body-name body)))
+                 (list 'ames.kb:body name
+                       :fixed (and (scenario-body-fixed-p body) t)
+                       :mass (scenario-body-mass body)
+                       :position (body-position run name)
+                       :velocity (body-velocity run name))))
              (scenario-bodies scenario))
+     (rope-entities scenario)
      (mapcar (lambda (contact)
                (let ((geometry (contact-geometry run contact)))
                  (destructuring-bind (observer obstacle) (contact-bodies run contact)
@@ -46,7 +51,7 @@ choice (settled by consistency); everything else goes to Maxima."
     (if (and (consp relation) (consp (second relation))
              (eq (first (second relation)) 'ames.kb:separation-after))
         :choice
-        (decide run relation))))
+        (decide run (constant-roots-taken run relation)))))
 
 (defun call-with-model (run model decider thunk)
   "Call THUNK with RUN working on MODEL and DECIDER (an impact's), then restore the
@@ -103,16 +108,17 @@ impact (:CONTACTS, :IMPULSES, :ENERGY-LOST, :VELOCITIES-BEFORE, :VELOCITIES-AFTE
         (t form)))
 
 (defun impact-event (event impact)
-  "EVENT, an impact event (:KIND A B ...), with the impulse through the contacts between
-A and B and the kinetic energy lost, from the resolved IMPACT."
-  (let ((impulses (remove-if-not (lambda (entry)
-                                   (and (member (second entry) (rest event))
-                                        (member (third entry) (rest event))))
-                                 (getf impact :impulses))))
+  "EVENT, an impact event (:KIND NAME ...), with the impulse of the IMPACT's entries that
+name only things EVENT names (an entry is (:KIND NAME... VALUE), such as (:impulse A B J)
+for the contacts between A and B or (:rope-impulse R J) for a rope), and the kinetic
+energy lost, from the resolved IMPACT."
+  (let* ((impulses (remove-if-not (lambda (entry)
+                                    (every (lambda (name) (member name (rest event)))
+                                           (butlast (rest entry))))
+                                  (getf impact :impulses)))
+         (values (mapcar (lambda (entry) (car (last entry))) impulses)))
     (append event
-            (list :impulse (if (rest impulses)
-                               (cons '+ (mapcar #'fourth impulses))
-                               (fourth (first impulses)))
+            (list :impulse (if (rest values) (cons '+ values) (first values))
                   :energy-lost (getf impact :energy-lost)))))
 
 ;;; Zeno: impacts whose times form a geometric series

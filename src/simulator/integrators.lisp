@@ -12,6 +12,9 @@
 ;;;;              (closed form where the bridge finds one, a number under --set);
 ;;;;   :LINEAR    accelerations linear in the positions and velocities with constant
 ;;;;              coefficients (springs): closed forms through the bridge;
+;;;;   :LINE      one degree of freedom along a fixed line of the configuration space
+;;;;              (two bodies falling together under gravitation): like :PATH, by its
+;;;;              energy integral (line.lisp); when the group is no such motion, :NUMERIC;
 ;;;;   :NUMERIC   anything else: no closed form (numbers only under --set).
 
 (in-package #:ames.simulator)
@@ -22,7 +25,7 @@ state term -> its value over the group's VARIABLE (TAU, or the arc length for :P
 for :PATH, the CONTACT, the initial arc length S0, the DIRECTION (+1 or -1) of motion,
 and SPEED-SQUARED, the energy integral E(s)."
   bodies (kind :constant) (variable 'tau) motion contact s0 direction speed-squared
-  ode-kind end-state samples terms)
+  ode-kind end-state samples terms speed line)
 
 (defconstant +arc-length+ 'arc-length
   "The variable standing for the arc length s along a curved contact.")
@@ -95,6 +98,7 @@ and the path coordinates of contacts whose observer is in it."
                  (setf (group-contact group) (first curved))
                  :path)
                 ((and (null curved) (linear-rates-p run solved group rates)) :linear)
+                ((null curved) :line)
                 (t :numeric)))))
 
 (defun linear-rates-p (run solved group rates)
@@ -175,7 +179,8 @@ of motion. Signals AMBIGUOUS-TRANSITION when the direction is not decided."
                 (cons `(ames.kb:vel ,observer :x) (tidy run `(* ,speed ,(first tangent))))
                 (cons `(ames.kb:vel ,observer :y) (tidy run `(* ,speed ,(second tangent))))
                 (cons s-term +arc-length+)
-                (cons w-term (tidy run speed))))
+                (cons w-term (tidy run speed)))
+          (group-speed group) (tidy run speed))
     group))
 
 (defun at-arc (expression s)
@@ -196,6 +201,8 @@ searched, under parameter values: see numeric.lisp)."
         (:path (integrate-path run solved group))
         (:linear (unless (integrate-linear run solved group)
                    (setf (group-kind group) :numeric)))
+        (:line (unless (integrate-line run solved group)
+                 (setf (group-kind group) :numeric)))
         (:numeric)))))
 
 (defun integrate-linear (run solved group)

@@ -162,7 +162,10 @@ the state variables. Returns a SOLVED-MODEL whose rates and initial values are f
 in. Signals UNSOLVABLE-MODEL."
   (let* ((derivatives (model-derivatives model))
          (state (mapcar #'car derivatives))
-         (equations (without-idle-path-terms (ames.engine:model-equations model) state))
+         (equations (without-idle-path-terms
+                     (mapcar (lambda (e) (with-initial-positions run e))
+                             (ames.engine:model-equations model))
+                     state))
          (unknowns (equation-unknowns equations state)))
     (multiple-value-bind (compact definitions) (eliminate-definitions equations unknowns)
       (let* ((compact (remove-if (lambda (equation) (identity-p run equation)) compact))
@@ -265,26 +268,43 @@ chain rule along the state's ODEs."
                             symbol))))
             (setf sum `(+ ,sum (* ,partial ,(cdr entry))))))))))
 
-(defun local-series (run solved expression)
-  "The Taylor coefficients (C0 C1 ... Cn), n = *SERIES-ORDER*, of EXPRESSION (a function
-of the parameters and SOLVED's state terms, or of TAU) at the start of the state: the
-k-th is the k-th time derivative there divided by k!, simplified. Memoized."
-  (or (gethash expression (solved-model-series solved))
-      (setf (gethash expression (solved-model-series solved))
-            (let ((coefficients '()) (derivative expression) (factorial 1))
-              (loop for k from 0 to *series-order*
-                    do (when (> k 0) (setf factorial (* factorial k)))
-                       (push (tidy run
-                                   (at-time (substitute-expressions (solved-model-initial solved)
+(defun series-coefficients (run solved expression count)
+  "The first COUNT Taylor coefficients (C0 C1 ...) of EXPRESSION (a function of the
+parameters and SOLVED's state terms, or of TAU) at the start of the state: the k-th is
+the k-th time derivative there divided by k!, simplified. Computed as far as asked, one
+derivative at a time, and memoized."
+  (let ((entry (or (gethash expression (solved-model-series solved))
+                   (setf (gethash expression (solved-model-series solved))
+                         (list '() expression 1)))))
+    (loop while (< (length (first entry)) count)
+          do (destructuring-bind (coefficients derivative factorial) entry
+               (let* ((k (length coefficients))
+                      (factorial (if (> k 0) (* factorial k) factorial))
+                      (c (tidy run (at-time (substitute-expressions (solved-model-initial solved)
                                                                     `(/ ,derivative ,factorial))
-                                            0))
-                             coefficients)
-                       (when (< k *series-order*)
-                         (setf derivative
-                               (let ((in-time (ames.geometry:differentiate derivative 'tau))
-                                     (along (time-derivative-in solved derivative)))
-                                 `(+ ,in-time ,along)))))
-              (nreverse coefficients)))))
+                                            0))))
+                 (setf (first entry) (append coefficients (list c))
+                       (third entry) factorial
+                       (second entry) (if (< k *series-order*)
+                                          `(+ ,(ames.geometry:differentiate derivative 'tau)
+                                              ,(time-derivative-in solved derivative))
+                                          derivative)))))
+    (subseq (first entry) 0 count)))
+
+(defun local-series (run solved expression)
+  "The Taylor coefficients (C0 C1 ... Cn), n = *SERIES-ORDER*, of EXPRESSION at the start
+of the state (see SERIES-COEFFICIENTS)."
+  (series-coefficients run solved expression (1+ *series-order*)))
+
+(defun leading-sign-of (run solved expression)
+  "LEADING-SIGN of EXPRESSION's local series, its coefficients computed only as far as
+needed (the first whose sign is not zero decides)."
+  (loop for k from 0 to *series-order*
+        for c = (car (last (series-coefficients run solved expression (1+ k))))
+        for sign = (sign-of run c)
+        unless (eql sign 0)
+          do (return (values sign c))
+        finally (return (values 0 0))))
 
 (defun series-polynomial (coefficients)
   "The polynomial in TAU with COEFFICIENTS (C0 C1 ...)."

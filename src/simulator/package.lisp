@@ -12,7 +12,7 @@ knowledge base's (package AMES.KB).")
    #:simulation-error #:ambiguous-transition #:ambiguous-transition-candidates
    #:ambiguous-transition-missing-fact #:ambiguous-transition-state
    #:unsolvable-model #:unsupported-situation
-   #:simulation-history #:history-scenario #:history-states #:history-outcome
+   #:simulation-history #:history-scenario #:history-states #:history-outcome #:history-leaf-outcomes
    #:history-notes #:history-rederived #:history-parameter-values #:history-answers
    #:unanswerable
    #:qualitative-state #:state-index #:state-start #:state-duration #:state-contacts

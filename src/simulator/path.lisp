@@ -17,7 +17,7 @@ sign of its sine, which Maxima can expand where inverse trigonometric terms defe
 sign()."
   (let* ((s0 (group-s0 group)) (direction (group-direction group))
          (answer (decide run `(> (* ,direction (- ,s ,s0)) 0)))
-         (radius (ames.geometry:contact-radius (contact-geometry run (group-contact group)))))
+         (radius (group-radius run group)))
     (if (and (eq answer :unknown) radius)
         (let ((turn (tidy run `(/ (- ,s ,s0) ,radius))))
           (if (holds run `(> ,(tidy run `(cos ,turn) :trigexpand) 0))
@@ -25,10 +25,15 @@ sign()."
               :unknown))
         answer)))
 
+(defun group-radius (run group)
+  "The radius of GROUP's curved contact, or NIL (a straight path, or a :LINE motion)."
+  (and (group-contact group)
+       (ames.geometry:contact-radius (contact-geometry run (group-contact group)))))
+
 (defun nearer-p (run group a b)
   "Whether the arc length A comes before B in GROUP's direction: :TRUE, :FALSE or :UNKNOWN."
   (let ((answer (decide run `(< (* ,(group-direction group) (- ,a ,b)) 0))))
-    (if (and (eq answer :unknown) (ames.geometry:contact-radius (contact-geometry run (group-contact group))))
+    (if (and (eq answer :unknown) (group-radius run group))
         (ahead-p run (let ((copy (copy-group group))) (setf (group-s0 copy) a) copy) b)
         answer)))
 
@@ -85,8 +90,7 @@ reaches zero going negative: (values :AT S), (values :NEVER) or (values :UNKNOWN
 :UNKNOWN FACT)."
   (let* ((gap (tidy run (funcall over-arc (ames.geometry:meeting-gap meeting))))
          (extent (mapcar (lambda (r) (funcall over-arc r)) (ames.geometry:meeting-extent meeting)))
-         (speed (cdr (assoc `(ames.kb:path-speed ,(group-contact group)) (group-motion group)
-                            :test #'equal))))
+         (speed (group-speed group)))
     (multiple-value-bind (status s) (crossing-ahead run group gap)
       (if (not (eq status :at))
           (values status s)

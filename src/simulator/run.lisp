@@ -20,6 +20,10 @@ NIL at the root.")
            :documentation "Alist body name -> ames.geometry shape.")
    (contacts :initarg :contacts :reader run-contacts
              :documentation "Alist contact entity name -> ames.geometry simple contact.")
+   (locus-kinds :initarg :locus-kinds :initform '() :reader run-locus-kinds
+                :documentation "Alist contact name -> (:KIND K :POINT P) for the loci of points
+attached to bodies (see src/simulator/attachments.lisp); the other contacts are loci of two
+bodies' shapes.")
    (alternatives :initarg :alternatives :initform '() :reader run-alternatives
                  :documentation "Alist contact name -> the contacts that meet it at a convex
 or smooth corner of the configuration-space obstacle: where the observer sits on both,
@@ -179,15 +183,20 @@ are alternatives. At a concave corner both faces can push at once."
                                                 (car (push (list other) alternatives)))))))))
     alternatives))
 
+(defun body-entity (body &rest properties)
+  "The entity of the scenario BODY, with PROPERTIES: a fixed body's carries its :position."
+  (list* 'ames.kb:body (scenario-body-name body)
+         :fixed (and (scenario-body-fixed-p body) t)
+         :mass (scenario-body-mass body)
+         (append (and (scenario-body-fixed-p body) (list :position (scenario-body-position body)))
+                 properties)))
+
 (defun situation-entities (run)
-  "The entities the mechanics knowledge base reads (see src/kb/mechanics.lisp)."
+  "The entities the mechanics knowledge base reads (see src/kb/mechanics.lisp and the
+files it names)."
   (let ((scenario (run-scenario run)))
     (append
-     (mapcar (lambda (body)
-               (list 'ames.kb:body (scenario-body-name body)
-                     :fixed (and (scenario-body-fixed-p body) t)
-                     :mass (scenario-body-mass body)))
-             (scenario-bodies scenario))
+     (mapcar #'body-entity (scenario-bodies scenario))
      (when (scenario-gravity scenario)
        (list (list 'ames.kb:gravity-field 'earth :strength (scenario-gravity scenario))))
      (mapcar (lambda (force)
@@ -196,12 +205,7 @@ are alternatives. At a concave corner both faces can push at once."
                      :fx (first (scenario-force-value force))
                      :fy (second (scenario-force-value force))))
              (scenario-forces scenario))
-     (mapcar (lambda (entry)
-               (let ((contact (cdr entry)))
-                 (list 'ames.kb:simple-contact (car entry)
-                       :observer (ames.geometry:contact-observer contact)
-                       :obstacle (ames.geometry:contact-obstacle contact)
-                       :geometry contact)))
+     (mapcar (lambda (entry) (contact-entity run (car entry) (cdr entry)))
              (run-contacts run))
      (loop for friction in (scenario-frictions scenario)
            for index from 0
@@ -209,7 +213,8 @@ are alternatives. At a concave corner both faces can push at once."
                          (intern (format nil "FRICTION-~D" index) '#:ames.simulator)
                          :between (scenario-friction-bodies friction)
                          :static (scenario-friction-static friction)
-                         :kinetic (scenario-friction-kinetic friction))))))
+                         :kinetic (scenario-friction-kinetic friction)))
+     (attachment-entities run))))
 
 ;;; Which contacts touch at the start of a state
 
@@ -256,8 +261,9 @@ decided."
         (t :false))))
 
 (defun gap-relation-contact (relation)
-  "The contact K when RELATION is the touching relation (= (contact-gap K) 0), else NIL."
-  (and (consp relation) (eq (first relation) '=)
+  "The contact K when RELATION is the touching relation (= (contact-gap K) 0), or a probe's
+reaching relation (<= (contact-gap K) 0), else NIL."
+  (and (consp relation) (member (first relation) '(= <=))
        (consp (second relation)) (eq (first (second relation)) 'ames.kb:contact-gap)
        (second (second relation))))
 
@@ -268,26 +274,54 @@ knows: a body's position or velocity, the arc length along a contact or its rate
        (member (first term) '(ames.kb:pos ames.kb:vel ames.kb:path-position ames.kb:path-speed))))
 
 (defun kinematic-verdict (run relation)
-  "RELATION decided on the state's initial values: its kinematic quantities (see
-STATE-QUANTITY-P) replaced by their values at the start, then Maxima's verdict. A
-relation whose two sides are equal at the start while one mentions a velocity (a
-body's, or the rate of an arc length) is :CHOICE: which side the state moves to
-depends on the accelerations, which only the solved model gives, so the consistency
-search settles it (a contact's sliding at rest, say). A relation over no kinematic
-quantity is decided as it is."
+  "RELATION decided on the state's starting values: its kinematic quantities (see
+STATE-QUANTITY-P, and the starting positions (initial-pos B :x)) replaced by their
+values at the start, square roots of constant squares taken (CONSTANT-ROOTS-TAKEN), then
+Maxima's verdict. :CHOICE when the state's first instant does not settle it: an
+equation or inequation over kinematic quantities whose sides are equal at the start (a
+rope at exactly its length may stay taut or go slack), or an inequality whose sides are
+equal at the start while it mentions a velocity (a body's, or the rate of an arc length)
+to the first power: which side the state moves to depends on the accelerations, as for
+a contact's sliding at rest. The consistency search settles a :CHOICE. A velocity under
+a power or root (a squared transverse rate) only measures how far the state is from the
+boundary: such a relation, like a non-strict one, is decided on the values, and an exit
+transition leaves the mode at once if the motion does (see the local series). A
+relation over no kinematic quantity is decided as it is."
   (let ((values (loop for term in (expression-variables relation)
                       when (state-quantity-p term)
-                        collect (cons term (initial-state-value run term)))))
+                        collect (cons term (initial-state-value run term))
+                      when (and (consp term) (eq (first term) 'ames.kb:initial-pos))
+                        collect (cons term (axis-of (body-position run (second term)) (third term))))))
     (if (null values)
         (decide run relation)
-        (let ((relation (substitute-expressions values relation)))
-          (if (and (relation-operator-p (first relation))
-                   (some (lambda (entry) (member (first (car entry))
-                                                 '(ames.kb:vel ames.kb:path-speed)))
-                         values)
-                   (eq :true (decide run `(= ,(relation-lhs relation) ,(relation-rhs relation)))))
-              :choice
-              (decide run relation))))))
+        (let* ((at-start (constant-roots-taken run (substitute-expressions values relation)))
+               (operator (first at-start)))
+          (flet ((equal-at-start ()
+                   (decide run `(= ,(relation-lhs at-start) ,(relation-rhs at-start)))))
+            (cond ((member operator '(= /=))
+                   (case (equal-at-start)
+                     (:true :choice)
+                     (:false (if (eq operator '=) :false :true))
+                     (t :unknown)))
+                  ((and (member operator '(< >))
+                        (some (lambda (entry) (velocity-term-p (car entry))) values)
+                        (not (velocity-under-power-p relation))
+                        (eq :true (equal-at-start)))
+                   :choice)
+                  (t (decide run at-start))))))))
+
+(defun velocity-term-p (term)
+  "True when TERM is a velocity: a body's, or the rate of an arc length."
+  (and (consp term) (member (first term) '(ames.kb:vel ames.kb:path-speed)) t))
+
+(defun velocity-under-power-p (expression)
+  "True when a velocity term occurs in EXPRESSION under a power other than 1 or a root."
+  (and (consp expression)
+       (not (quantity-term-p expression))
+       (if (or (eq (first expression) 'sqrt)
+               (and (eq (first expression) 'expt) (not (eql (third expression) 1))))
+           (some #'velocity-term-p (expression-variables expression))
+           (some #'velocity-under-power-p (rest expression)))))
 
 (defun run-decider (run)
   "The decider of the model the run works on: the impact's while one is resolved, else
@@ -296,11 +330,11 @@ the state's (STATE-DECIDER)."
 
 (defun state-decider (run)
   "The decider of the current state's activation and mode entry conditions: touching
-relations go to the geometry (see TOUCHING-VERDICT), relations over kinematic
-quantities are decided on their values at the start (see KINEMATIC-VERDICT),
+relations go to the geometry (see TOUCHING-VERDICT, PROBE-VERDICT), relations over
+kinematic quantities are decided on their values at the start (see KINEMATIC-VERDICT),
 everything else goes to Maxima."
   (lambda (relation)
     (let ((contact (gap-relation-contact relation)))
-      (if contact
-          (touching-verdict run contact)
-          (kinematic-verdict run relation)))))
+      (cond ((null contact) (kinematic-verdict run relation))
+            ((eq (first relation) '<=) (probe-verdict run contact))
+            (t (touching-verdict run contact))))))

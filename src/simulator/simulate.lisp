@@ -77,6 +77,9 @@ CHECK-INCREMENTAL."
       (let ((stale (ames.engine:stale-activation-changes (run-model run) :decider (state-decider run))))
         (when stale
           (ames.engine:apply-transition (run-model run) stale :decider (state-decider run))))
+      (let ((stale (ames.engine:stale-mode-changes (run-model run) :decider (state-decider run))))
+        (when stale
+          (ames.engine:apply-transition (run-model run) stale :decider (state-decider run))))
       (sum-zeno-sequence run state))
     (when check-incremental
       (ames.engine:check-incremental (run-model run)))))
@@ -197,11 +200,13 @@ the scenario's assumptions in BRIDGE). PARAMETER-VALUES as SIMULATE takes them."
   (multiple-value-bind (positions velocities) (initial-motion-state scenario)
     (let* ((shapes (body-shapes scenario bridge))
            (contacts (all-simple-contacts scenario shapes bridge))
-           (run (make-instance 'run :scenario scenario :bridge bridge :shapes shapes
-                                    :contacts contacts
+           (run (multiple-value-bind (loci kinds) (probe-loci scenario bridge (length contacts))
+                  (setf contacts (append contacts loci))
+                  (make-instance 'run :scenario scenario :bridge bridge :shapes shapes
+                                    :contacts contacts :locus-kinds kinds
                                     :alternatives (corner-alternatives bridge contacts)
                                     :positions positions :velocities velocities
-                                    :values (resolve-parameter-values scenario parameter-values)))
+                                    :values (resolve-parameter-values scenario parameter-values))))
            (situation (ames.engine:make-situation (situation-entities run) :data run)))
       (handler-bind ((ames.engine:undecided-relation #'undecided-to-ambiguity))
         (setf (run-model run)

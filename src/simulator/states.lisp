@@ -36,6 +36,13 @@ replaced by their values over the state's motion."
         when (eq name section)
           collect (report-entry run solved groups entry)))
 
+(defun reported-sections (run solved groups)
+  "A plist of every section the knowledge base reports but :FORCES (such as :ENERGY and
+:MOMENTUM), each with its entries' values over the state's motion."
+  (let ((sections (remove :forces (remove-duplicates (mapcar #'first (model-reported (run-model run)))))))
+    (loop for section in sections
+          append (list section (reported-entries run solved groups section)))))
+
 (defun report-entry (run solved groups form)
   "FORM, a report entry, with every quantity term in it replaced by its value."
   (cond ((quantity-term-p form) (over-motion run solved groups form))
@@ -60,7 +67,7 @@ replaced by their values over the state's motion."
 (one of the fired candidates is on it), else the end time. Signals
 UNSUPPORTED-SITUATION for a curved motion ended by another group's event (its place
 then has no closed form)."
-  (if (eq (group-kind group) :path)
+  (if (member (group-kind group) '(:path :line))
       (let ((own (find group fired :key #'candidate-group)))
         (unless own
           (error 'unsupported-situation
@@ -118,6 +125,18 @@ state finds it on the contact's locus."
 the next state's exact arithmetic), rounded to 15 significant digits."
   (rationalize (coerce (float x 1d0) 'double-float)))
 
+(defun line-notes (groups)
+  "The notes of the state's motions along a line of the configuration space (see
+line.lisp): the coordinate s, its start and direction, and the energy integral."
+  (loop for group in groups
+        when (eq (group-kind group) :line)
+          collect (list :bodies (group-bodies group)
+                        :coordinate (getf (group-line group) :coordinate)
+                        :from (group-s0 group)
+                        :direction (group-direction group)
+                        :energy-integral `(= (expt arc-speed 2) ,(group-speed-squared group))
+                        :ode (group-ode-kind group))))
+
 (defun path-notes (run solved groups)
   "The notes of the state's curved motions: for each, its arc length's start, the
 tangential acceleration, the energy integral and the normal forces over the arc."
@@ -139,7 +158,7 @@ body on a curve, (:ON-PATH (X Y) :ARC-LENGTH S) over the arc length."
   (mapcar (lambda (body)
             (let ((group (find body groups :key #'group-bodies :test #'member))
                   (motion (body-motion run groups body what)))
-              (list body (if (and group (eq (group-kind group) :path))
+              (list body (if (and group (member (group-kind group) '(:path :line)))
                              (list :on-path (mapcar (lambda (x) (tidy run x)) motion)
                                    :arc-length +arc-length+)
                              motion))))
@@ -222,8 +241,11 @@ known."
                                  :choices (trial-notes trial)
                                  :integrators (mapcar (lambda (g) (list (group-bodies g) (group-kind g)))
                                                       groups))
-                 :notes (let ((paths (path-notes run solved groups)))
-                          (when paths (list :path-coordinates (first paths)))))))
+                 :notes (let ((paths (path-notes run solved groups))
+                              (lines (line-notes groups)))
+                          (append (when paths (list :path-coordinates (first paths)))
+                                  (when lines (list :line-coordinates lines))
+                                  (reported-sections run solved groups))))))
     (multiple-value-bind (candidates unknown never)
         (let ((impacts (impacts-at-once run)))
           (if impacts

@@ -194,13 +194,27 @@ is reached at a non-zero RATE), or its model change when the component names non
     (multiple-value-bind (status time rate)
         (if contact
             (meeting-time run (contact-meeting-terms run solved contact) over-time contact)
-            (relation-time run relation over-time))
+            (relation-time-and-rate run condition relation over-time))
       (case status
         (:at (make-candidate condition
                              (condition-event condition (and rate (holds run `(< ,rate 0)) rate))
                              time :rate rate))
         (:never :never)
         (t (values :unknown time))))))
+
+(defun relation-time-and-rate (run condition relation over-time)
+  "RELATION-TIME's answer for RELATION, with a third value when it fires and CONDITION
+names an impact event: the rate at which RELATION's violation function (see
+VIOLATION-FUNCTION) crosses zero then (negative: the condition is reached with a
+velocity, an impulsive event)."
+  (multiple-value-bind (status time) (relation-time run relation over-time)
+    (if (and (eq status :at) (ames.engine:termination-condition-impact condition)
+             (not (eq (first relation) 'or)))
+        (values status time
+                (tidy run (at-time (time-derivative (funcall over-time (violation-function relation)))
+                                   time)
+                      :full))
+        (values status time))))
 
 (defun candidates-of (run solved groups)
   "Every termination condition of the model that fires: (values CANDIDATES UNKNOWN
@@ -217,9 +231,9 @@ the earliest of the others."
                   ((some (lambda (g) (eq (group-kind g) :numeric)) involved)
                    (push condition numeric)
                    :never)
-                  ((every (lambda (g) (eq (group-kind g) :constant)) involved)
+                  ((every (lambda (g) (member (group-kind g) '(:constant :linear))) involved)
                    (tau-candidate run solved groups condition))
-                  ((and (null (rest involved)) (eq (group-kind (first involved)) :path))
+                  ((and (null (rest involved)) (member (group-kind (first involved)) '(:path :line)))
                    (path-candidate run solved (first involved) condition))
                   (t (values :unknown `(:no-closed-form ,(condition-event condition nil)))))
           (cond ((candidate-p result) (push result candidates))
@@ -228,10 +242,13 @@ the earliest of the others."
                 ((not (member condition numeric))
                  (push (condition-event condition nil) never))))))
     (when (some (lambda (g) (eq (group-kind g) :numeric)) groups)
-      (let ((horizon (loop for c in candidates
-                           for time = (numeric-time run (candidate-time c))
-                           when time minimize time)))
+      ;; the scenario's time limit bounds the integration too
+      (let* ((bounds (append candidates (let ((limit (time-limit-candidate run)))
+                                          (and limit (list limit)))))
+             (horizon (loop for c in bounds
+                            for time = (numeric-time run (candidate-time c))
+                            when time minimize time)))
         (setf candidates (append (numeric-candidates run solved groups (reverse numeric)
-                                                     (and candidates horizon))
+                                                     (and bounds horizon))
                                  candidates))))
     (values (nreverse candidates) (nreverse unknown) (nreverse never))))

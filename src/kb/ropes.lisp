@@ -1,0 +1,182 @@
+;;;; src/kb/ropes.lisp -- ropes over pulleys (thesis 3.3.2, "Ropes"): massless, inextensible,
+;;;; the same tension all along; taut or slack; jerked tight at an impact.
+;;;;
+;;;; The simulator describes each rope, its pulleys resolved into points of bodies:
+;;;;   (rope R :length L :segments (S0 S1 ...))
+;;;;   (rope-segment Si :rope R :from (B (X Y)) :to (B' (X' Y')) [:within-one-body T])
+;;;;                                        the straight pieces, in order from the rope's
+;;;;                                        first end to its last; the pulls of a piece
+;;;;                                        between two points of one body cancel
+;;;; Each segment is a span (src/kb/spans.lisp). The rope has the thesis's two modes:
+;;;;   TAUT   its length, the sum of its spans', is L: at the acceleration level the sum of the
+;;;;          spans' length accelerations is zero, which the tension T (a compensating
+;;;;          force, like a normal force) makes true; each segment pulls the bodies at its
+;;;;          ends toward each other with T (so a pulley's body feels T toward both
+;;;;          neighbours). It ends when T would turn negative: (:slackens R).
+;;;;   SLACK  no tension. It ends when the length reaches L again: (:tightens R), an impulsive
+;;;;          event when reached with a velocity.
+;;;; A rope may be taut at the start of a state only when its length is L and not changing;
+;;;; whether it is, is settled by consistency (T >= 0 when taut, not stretched when slack).
+;;;; Reported in :forces as (:tension R T) (0 when slack).
+;;;;
+;;;; At an impact (src/kb/impacts.lisp) a rope at its full length takes part like a contact
+;;;; with e = 0 (a plastic jerk): an impulse J >= 0 along each segment, the same all along,
+;;;; with the rope's length not growing just after; it is consistent not to jerk only when the
+;;;; length does not grow. The impact situation describes the same rope and segment
+;;;; entities, and each body with its :position and :velocity just before.
+
+(in-package #:ames.kb)
+
+(defun rope-segments (situation rope)
+  "The segment entity names of ROPE, in order."
+  (entity-property (entity-named situation rope) :segments))
+
+(defun segment-points (situation segment)
+  "The two points (:FROM and :TO) of a rope SEGMENT."
+  (let ((entity (entity-named situation segment)))
+    (values (entity-property entity :from) (entity-property entity :to))))
+
+(defun sum-over-segments (situation rope function)
+  "The sum over ROPE's segments of FUNCTION's value (a function of the segment's name)."
+  (cons '+ (mapcar function (rope-segments situation rope))))
+
+(defun register-rope-templates (kb)
+  "Register in KB the template functions of ropes in a state."
+  (register-template kb 'rope-length
+                     (lambda (situation rope) (entity-property (entity-named situation rope) :length))
+                     :documentation "A rope's length L.")
+  (register-template kb 'rope-span-length
+                     (lambda (situation rope)
+                       (sum-over-segments situation rope (lambda (s) `(span-length ,s))))
+                     :documentation "The sum of a rope's spans' lengths.")
+  (register-template kb 'rope-span-acceleration
+                     (lambda (situation rope)
+                       (sum-over-segments situation rope (lambda (s) `(span-acceleration ,s))))
+                     :documentation "The second derivative of a rope's length.")
+  (register-template kb 'rope-slack-now
+                     (lambda (situation rope)
+                       `(- (rope-length ,rope)
+                           ,(sum-over-segments
+                             situation rope
+                             (lambda (s)
+                               (multiple-value-bind (a b) (segment-points situation s)
+                                 (norm-of (span-difference situation a b 'pos)))))))
+                     :documentation "L minus the rope's length, from the positions.")
+  (register-template kb 'rope-rate-now
+                     (lambda (situation rope)
+                       (sum-over-segments
+                        situation rope
+                        (lambda (s)
+                          (multiple-value-bind (a b) (segment-points situation s)
+                            (let ((d (span-difference situation a b 'pos)))
+                              `(/ ,(dot-of d (span-difference situation a b 'vel)) ,(norm-of d)))))))
+                     :documentation "The rate of the rope's length, from the positions and velocities."))
+
+(register-rope-templates *mechanics*)
+
+(defcomponent rope-segment-span (:knowledge-base *mechanics*)
+  "Each straight piece of a rope is a span."
+  (:arguments (?segment :entity rope-segment :where (:from ?a :to ?b)))
+  (:assert (span ?segment :from ?a :to ?b)))
+
+(defcomponent taut-or-slack-rope (:knowledge-base *mechanics*)
+  "A massless inextensible rope is taut (its length held at L by whatever tension that
+needs, never negative) or slack (no tension, shorter than L)."
+  (:arguments (?rope :entity rope))
+  (:mode :slack
+   (:entry :always)
+   (:assert (reported :forces (:tension ?rope 0)))
+   (:transition :to :taut :when (> (rope-span-length ?rope) (rope-length ?rope))
+                :event (:tightens ?rope) :impact (:tightens ?rope)))
+  (:mode :taut
+   (:entry (= (rope-slack-now ?rope) 0) (= (rope-rate-now ?rope) 0))
+   (:assert (taut ?rope)
+            (reported :forces (:tension ?rope (tension ?rope))))
+   (:equations (= (rope-span-acceleration ?rope) 0))
+   (:transition :to :slack :when (< (tension ?rope) 0) :event (:slackens ?rope))))
+
+(defcomponent rope-tension (:knowledge-base *mechanics*)
+  "A taut rope's segment pulls the bodies at its two ends toward each other with the
+rope's tension (the same all along a frictionless rope over massless pulleys); Newton's
+third law gives the pull at its far end."
+  (:arguments (?segment :entity rope-segment
+                        :where (:rope ?rope :from (?body1 ?_) :to (?body2 ?_) :within-one-body nil)))
+  (:activation (:believes (taut ?rope)))
+  (:assert (force (tension ?segment ?body1) :type tension :from ?body2 :on ?body1 :contact ?segment)
+           (force (tension ?segment ?body2) :type tension :from ?body1 :on ?body2 :contact ?segment))
+  (:equations (= (force-x (tension ?segment ?body1)) (* (tension ?rope) (span-direction ?segment :x)))
+              (= (force-y (tension ?segment ?body1)) (* (tension ?rope) (span-direction ?segment :y)))))
+
+;;; At an impact
+
+(defun impact-point (situation point)
+  "POINT's position just before the impact, from its body's :position."
+  (mapcar (lambda (p x) `(+ ,p ,x))
+          (entity-property (entity-named situation (point-body point)) :position)
+          (point-offset point)))
+
+(defun impact-segment-direction (situation segment)
+  "The unit vector along SEGMENT (from its :from point to its :to point) at the impact."
+  (multiple-value-bind (a b) (segment-points situation segment)
+    (let ((d (mapcar (lambda (q p) `(- ,q ,p)) (impact-point situation b) (impact-point situation a))))
+      (mapcar (lambda (x) `(/ ,x ,(norm-of d))) d))))
+
+(defun register-rope-impact-templates (kb)
+  "Register in KB the template functions of ropes at an impact."
+  (register-template kb 'rope-at-length
+                     (lambda (situation rope)
+                       `(>= ,(sum-over-segments
+                              situation rope
+                              (lambda (s)
+                                (multiple-value-bind (a b) (segment-points situation s)
+                                  (norm-of (mapcar (lambda (q p) `(- ,q ,p))
+                                                   (impact-point situation b)
+                                                   (impact-point situation a))))))
+                            ,(entity-property (entity-named situation rope) :length)))
+                     :documentation "The rope is at its full length at the impact.")
+  (register-template kb 'rope-shortening-after
+                     (lambda (situation rope)
+                       `(- ,(sum-over-segments
+                             situation rope
+                             (lambda (s)
+                               (multiple-value-bind (a b) (segment-points situation s)
+                                 (dot-of (impact-segment-direction situation s)
+                                         (mapcar (lambda (axis)
+                                                   `(- (vel-after ,(point-body b) ,axis)
+                                                       (vel-after ,(point-body a) ,axis)))
+                                                 '(:x :y))))))))
+                     :documentation "Minus the rate of the rope's length just after the impact.")
+  (register-template kb 'segment-direction
+                     (lambda (situation segment axis)
+                       (axis-component (impact-segment-direction situation segment) axis))
+                     :documentation "A component of a segment's unit vector at the impact."))
+
+(register-rope-impact-templates *impacts*)
+
+(defcomponent rope-kinematics-at-impact (:knowledge-base *impacts*)
+  "How fast a rope's length shrinks just after the impact (its separation: negative when
+it would stretch)."
+  (:arguments (?rope :entity rope))
+  (:equations (= (separation-after ?rope) (rope-shortening-after ?rope))))
+
+(defcomponent rope-jerk (:knowledge-base *impacts*)
+  "A rope at its full length may jerk: an impulse J >= 0 along it that leaves its length
+not changing just after (a plastic impact); without one its length must not grow."
+  (:arguments (?rope :entity rope))
+  (:activation (rope-at-length ?rope) (approaching-after ?rope)
+               (:event (:jerk ?rope)))
+  (:deactivation (:when (< (rope-impulse ?rope) 0) :event (:would-push ?rope)))
+  (:assert (jerked ?rope)
+           (reported :impulses (:rope-impulse ?rope (rope-impulse ?rope))))
+  (:equations (= (separation-after ?rope) 0)))
+
+(defcomponent rope-segment-jerk (:knowledge-base *impacts*)
+  "A jerked rope's segment pulls the bodies at its ends toward each other with the
+rope's impulse; Newton's third law gives the far end's."
+  (:arguments (?segment :entity rope-segment
+                        :where (:rope ?rope :from (?body1 ?_) :to (?body2 ?_) :within-one-body nil)))
+  (:activation (:believes (jerked ?rope)))
+  (:assert (impulse (rope-pull ?segment ?body1) :from ?body2 :on ?body1 :contact ?segment)
+           (impulse (rope-pull ?segment ?body2) :from ?body1 :on ?body2 :contact ?segment))
+  (:equations (= (impulse-x (rope-pull ?segment ?body1)) (* (rope-impulse ?rope) (segment-direction ?segment :x)))
+              (= (impulse-y (rope-pull ?segment ?body1)) (* (rope-impulse ?rope) (segment-direction ?segment :y)))))

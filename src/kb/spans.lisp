@@ -1,0 +1,142 @@
+;;;; src/kb/spans.lisp -- straight spans between points of bodies: the geometry springs, ropes and
+;;;; universal gravitation act along (thesis 3.3.2).
+;;;;
+;;;; A SPAN is the straight line from a point A of one body to a point B of another, each
+;;;; written (BODY (X Y)) with (X Y) in the body's own frame. Springs act along their span,
+;;;; each straight piece of a rope is a span, and gravitation acts along the span between
+;;;; two bodies' reference points. Components that need one assert the belief
+;;;;   (span NAME :from A :to B)
+;;;; and the STRAIGHT-SPAN component below then defines its quantities:
+;;;;   (span-length NAME)           |B - A|
+;;;;   (span-direction NAME :x)     the unit vector from A toward B
+;;;;   (span-acceleration NAME)     the second time derivative of the length
+;;;; in one of two modes. While the two points move along the span's line (their relative
+;;;; velocity and acceleration across it are zero), the direction is the one the state
+;;;; starts with, u0, and the length is the projection (B - A).u0: linear in the positions,
+;;;; so springs have closed forms in time and ropes constant accelerations (the thesis's
+;;;; "springs along fixed directions"). Otherwise the span turns: the length is the square
+;;;; root, the direction B - A over it, and the length's acceleration has its centripetal
+;;;; part. The fixed-direction mode is entered when the relative velocity across the span
+;;;; is zero at the start of a state; when the points leave the line at once (a relative
+;;;; acceleration across it), its exit fires at once and the span turns from the start (the
+;;;; simulator leaves a mode whose exit holds at once: src/simulator/choice.lisp). Both
+;;;; descriptions are exact where they hold; the turning one is always right, the fixed one
+;;;; is simpler.
+;;;;
+;;;; Quantity terms used here that the simulator provides: (pos B :x), (vel B :x), (acc B :x)
+;;;; and (initial-pos B :x), a free body's position at the start of the state. A fixed body's
+;;;; points are constants: its entity carries its :position.
+
+(in-package #:ames.kb)
+
+;;; Points of bodies, as the components see them
+
+(defun point-body (point) "The body of POINT, (BODY (X Y))." (first point))
+(defun point-offset (point) "The offset (X Y) of POINT in its body's frame." (second point))
+
+(defun fixed-body-p (situation body)
+  "True when BODY is glued to the fixed frame."
+  (entity-property (entity-named situation body) :fixed))
+
+(defun point-term (situation point axis head)
+  "The AXIS coordinate of POINT, a (BODY (X Y)), in the fixed frame: the body's state
+quantity HEAD (POS or INITIAL-POS) plus the offset; for a fixed body, a constant."
+  (let ((offset (axis-component (point-offset point) axis))
+        (body (point-body point)))
+    (if (fixed-body-p situation body)
+        `(+ ,(axis-component (entity-property (entity-named situation body) :position '(0 0)) axis)
+            ,offset)
+        `(+ (,head ,body ,axis) ,offset))))
+
+(defun point-rate (situation point axis head)
+  "The AXIS component of POINT's velocity (HEAD VEL) or acceleration (HEAD ACC)."
+  (if (fixed-body-p situation (point-body point))
+      0
+      (list head (point-body point) axis)))
+
+(defun span-difference (situation a b head)
+  "The vector from point A to point B, (DX DY), over the quantity HEAD: POS (now),
+INITIAL-POS (at the state's start), VEL or ACC (its rates)."
+  (mapcar (lambda (axis)
+            (if (member head '(pos initial-pos))
+                `(- ,(point-term situation b axis head) ,(point-term situation a axis head))
+                `(- ,(point-rate situation b axis head) ,(point-rate situation a axis head))))
+          '(:x :y)))
+
+(defun dot-of (u v)
+  "The expression of the dot product of the vectors U and V."
+  `(+ (* ,(first u) ,(first v)) (* ,(second u) ,(second v))))
+
+(defun cross-of (u v)
+  "The expression of the z component of the cross product of U and V."
+  `(- (* ,(first u) ,(second v)) (* ,(second u) ,(first v))))
+
+(defun norm-of (u)
+  "The expression of the length of the vector U."
+  `(sqrt ,(dot-of u u)))
+
+(defun initial-direction (situation a b)
+  "The unit vector from A to B at the start of the state."
+  (let* ((d0 (span-difference situation a b 'initial-pos))
+         (norm (norm-of d0)))
+    (mapcar (lambda (x) `(/ ,x ,norm)) d0)))
+
+(defun register-span-templates (kb)
+  "Register in KB the template functions of spans."
+  (flet ((reg (head function documentation)
+           (register-template kb head function :documentation documentation)))
+    (reg 'initial-span-direction
+         (lambda (situation a b axis) (axis-component (initial-direction situation a b) axis))
+         "A component of the unit vector from A to B at the start of the state.")
+    (reg 'aligned-span-length
+         (lambda (situation a b)
+           (dot-of (span-difference situation a b 'pos) (initial-direction situation a b)))
+         "The span's length while it keeps its starting direction: (B - A).u0.")
+    (reg 'aligned-span-acceleration
+         (lambda (situation a b)
+           (dot-of (span-difference situation a b 'acc) (initial-direction situation a b)))
+         "The second derivative of that length: (B'' - A'').u0.")
+    (reg 'span-transverse-rate
+         (lambda (situation a b)
+           (cross-of (span-difference situation a b 'initial-pos) (span-difference situation a b 'vel)))
+         "The relative velocity across the starting direction (times the starting length).")
+    (reg 'span-offset
+         (lambda (situation a b)
+           (cross-of (span-difference situation a b 'initial-pos) (span-difference situation a b 'pos)))
+         "How far B - A has turned off the starting direction (times the starting length).")
+    (reg 'current-span-length
+         (lambda (situation a b) (norm-of (span-difference situation a b 'pos)))
+         "The span's length, |B - A|.")
+    (reg 'span-vector
+         (lambda (situation a b axis) (axis-component (span-difference situation a b 'pos) axis))
+         "A component of B - A.")
+    (reg 'turning-span-acceleration
+         (lambda (situation a b span)
+           (let ((d (span-difference situation a b 'pos))
+                 (v (span-difference situation a b 'vel))
+                 (w (span-difference situation a b 'acc))
+                 (l `(span-length ,span)))
+             `(- (/ (+ ,(dot-of v v) ,(dot-of d w)) ,l)
+                 (/ (expt ,(dot-of d v) 2) (expt ,l 3)))))
+         "The second derivative of |B - A|: (|v|^2 + d.a)/l - (d.v)^2/l^3.")))
+
+(register-span-templates *mechanics*)
+
+(defcomponent straight-span (:knowledge-base *mechanics*)
+  "A straight span from point A to point B (see the file header): its length, unit
+direction and the length's second derivative, with the direction fixed at its starting
+value while the points move along the span's line, turning otherwise."
+  (:arguments (?span :belief (span ?span :from ?a :to ?b)))
+  (:mode :fixed-direction
+   (:entry (<= (expt (span-transverse-rate ?a ?b) 2) 0))
+   (:equations (= (span-length ?span) (aligned-span-length ?a ?b))
+               (= (span-direction ?span :x) (initial-span-direction ?a ?b :x))
+               (= (span-direction ?span :y) (initial-span-direction ?a ?b :y))
+               (= (span-acceleration ?span) (aligned-span-acceleration ?a ?b)))
+   (:transition :to :turning :when (> (expt (span-offset ?a ?b) 2) 0) :event (:turns ?span)))
+  (:mode :turning
+   (:entry (> (expt (span-transverse-rate ?a ?b) 2) 0))
+   (:equations (= (span-length ?span) (current-span-length ?a ?b))
+               (= (span-direction ?span :x) (/ (span-vector ?a ?b :x) (span-length ?span)))
+               (= (span-direction ?span :y) (/ (span-vector ?a ?b :y) (span-length ?span)))
+               (= (span-acceleration ?span) (turning-span-acceleration ?a ?b ?span)))))

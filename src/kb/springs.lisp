@@ -1,0 +1,116 @@
+;;;; src/kb/springs.lisp -- ideal springs (Hooke's law) and bumpers (thesis 3.3.2, "Springs").
+;;;;
+;;;; The simulator describes the scenario's springs with these entities:
+;;;;   (spring S :from (B1 (X1 Y1)) :to (B2 (X2 Y2)) :stiffness K :rest-length L0)
+;;;;   (bumper S :on B :at (X Y) :toward (DX DY) :stiffness K :rest-length L0)
+;;;;   (point-contact C :point S :observer B :obstacle B2 :geometry G)
+;;;; A point contact is a locus of the bumper's free end (the point at distance L0 from its
+;;;; attachment along (DX DY), a point of body B) against a face of another body B2: the
+;;;; geometry's simple contact G, B2's shape seen by that point. Unlike a body's own
+;;;; contacts it can be crossed: B2 pressing into the free end compresses the spring.
+;;;;
+;;;; An attached spring acts along its span (src/kb/spans.lisp): the force on B2 is
+;;;; -K (l - L0) u, u the unit vector from B1's point to B2's, and Newton's third law gives
+;;;; B1's. A bumper touched by B2 (the thesis's spring end in contact with the block) pushes
+;;;; it along (DX DY) with K times the compression, never pulls, and is left when the
+;;;; compression returns to zero. The compression is measured along the bumper's axis: the
+;;;; free end, pushed back along the axis, stays on B2's face (exact on a straight face;
+;;;; the face's ends are those of the free end's resting point). Reported in :forces as
+;;;; (:spring S BODY (FX FY)) for each body the spring acts on.
+
+(in-package #:ames.kb)
+
+(define-condition unmodelled-situation (ames-error) ()
+  (:documentation "A situation the knowledge base has no model for (a bumper against a
+curved face, ...). DATUM names the entity, DETAIL says what is missing."))
+
+(defun bumper-axis (situation bumper)
+  "The unit vector (UX UY) of BUMPER's axis, from its attachment toward its free end."
+  (let* ((toward (entity-property (entity-named situation bumper) :toward))
+         (norm (norm-of toward)))
+    (mapcar (lambda (x) `(/ ,x ,norm)) toward)))
+
+(defun point-contact-compression (situation contact)
+  "How far the bumper's free end is pushed back along its axis by the obstacle of the
+point CONTACT: the free end's resting point's depth behind the obstacle's face, measured
+along the axis. Only straight faces: signals UNMODELLED-SITUATION for a curved one."
+  (let* ((entity (entity-named situation contact))
+         (geometry (entity-property entity :geometry))
+         (bumper (entity-named situation (entity-property entity :point)))
+         (observer (entity-property entity :observer))
+         (obstacle (entity-property entity :obstacle)))
+    (unless (member (ames.geometry:contact-kind geometry) '(:segment :line))
+      (error 'unmodelled-situation
+             :datum contact
+             :detail (format nil "The bumper ~A meets a curved face of ~A: only straight faces are modelled."
+                             (entity-name bumper) obstacle)))
+    (let* ((relative (mapcar (lambda (axis)
+                               `(- ,(point-term situation (list observer '(0 0)) axis 'pos)
+                                   ,(point-term situation (list obstacle '(0 0)) axis 'pos)))
+                             '(:x :y)))
+           (start (ames.geometry:contact-point geometry 0))
+           (normal (ames.geometry:contact-outward-normal geometry 0))
+           (depth `(- ,(dot-of (mapcar (lambda (q p) `(- ,q ,p)) relative start) normal))))
+      ;; the free end pushed back by c along -u stays on the face: depth = c (-u.n)
+      `(/ ,depth (- ,(dot-of (bumper-axis situation (entity-name bumper)) normal))))))
+
+(defun register-spring-templates (kb)
+  "Register in KB the template functions of springs and bumpers."
+  (flet ((property (key)
+           (lambda (situation name) (entity-property (entity-named situation name) key))))
+    (register-template kb 'stiffness (property :stiffness)
+                       :documentation "A spring's stiffness K.")
+    (register-template kb 'rest-length (property :rest-length)
+                       :documentation "A spring's rest length L0.")
+    (register-template kb 'bumper-direction
+                       (lambda (situation bumper axis) (axis-component (bumper-axis situation bumper) axis))
+                       :documentation "A component of a bumper's unit axis.")
+    (register-template kb 'compression #'point-contact-compression
+                       :documentation "How far a point contact's obstacle pushes a bumper's free end back.")
+    (register-template kb 'pressed
+                       (lambda (situation contact)
+                         (declare (ignore situation))
+                         (list '<= (list 'contact-gap contact) 0))
+                       :documentation "The obstacle reaches or presses a point contact's point.")))
+
+(register-spring-templates *mechanics*)
+
+(defcomponent spring-along-span (:knowledge-base *mechanics*)
+  "An attached spring lies along the straight span between its attachment points."
+  (:arguments (?spring :entity spring :where (:from ?a :to ?b)))
+  (:assert (span ?spring :from ?a :to ?b)))
+
+(defcomponent hookes-law (:knowledge-base *mechanics*)
+  "An ideal spring pulls its second body back toward its first with K times its
+extension, along the span: -K (l - L0) u (Hooke's law); Newton's third law gives the
+first body's force."
+  (:arguments (?spring :entity spring :where (:from (?body1 ?_) :to (?body2 ?_))))
+  (:assert (force (spring ?spring ?body2) :type spring :from ?body1 :on ?body2 :contact ?spring)
+           (force (spring ?spring ?body1) :type spring :from ?body2 :on ?body1 :contact ?spring)
+           (reported :forces (:spring ?spring ?body1 ((fx spring ?spring ?body1) (fy spring ?spring ?body1))))
+           (reported :forces (:spring ?spring ?body2 ((fx spring ?spring ?body2) (fy spring ?spring ?body2)))))
+  (:equations (= (force-x (spring ?spring ?body2))
+                 (* -1 (stiffness ?spring) (- (span-length ?spring) (rest-length ?spring))
+                    (span-direction ?spring :x)))
+              (= (force-y (spring ?spring ?body2))
+                 (* -1 (stiffness ?spring) (- (span-length ?spring) (rest-length ?spring))
+                    (span-direction ?spring :y)))))
+
+(defcomponent bumper-contact (:knowledge-base *mechanics*)
+  "A body pressing a bumper's free end compresses it: the bumper pushes the body along
+its axis with K times the compression (and its mount back, Newton's third law). It is
+met when the body reaches the free end and left when the compression returns to zero
+(it never pulls)."
+  (:arguments (?contact :entity point-contact :where (:point ?spring :observer ?mount :obstacle ?body))
+              (?spring :entity bumper))
+  (:activation (pressed ?contact) (:event (:contact ?body ?spring)))
+  (:deactivation (:when (< (compression ?contact) 0) :event (:leaves ?body ?spring)))
+  (:assert (pressing ?body ?spring :along ?contact)
+           (force (bumper ?contact ?body) :type spring :from ?mount :on ?body :contact ?contact)
+           (force (bumper ?contact ?mount) :type spring :from ?body :on ?mount :contact ?contact)
+           (reported :forces (:spring ?spring ?mount ((fx bumper ?contact ?mount) (fy bumper ?contact ?mount))))
+           (reported :forces (:spring ?spring ?body ((fx bumper ?contact ?body) (fy bumper ?contact ?body)))))
+  (:equations (= (force-x (bumper ?contact ?body))
+                 (* (stiffness ?spring) (compression ?contact) (bumper-direction ?spring :x)))
+              (= (force-y (bumper ?contact ?body))
+                 (* (stiffness ?spring) (compression ?contact) (bumper-direction ?spring :y)))))

@@ -1,0 +1,280 @@
+;;;; src/simulator/attachments.lisp -- what the situation says of things attached to bodies
+;;;; (springs, pulleys, ropes, the pairs of bodies with mass), the loci of points attached to
+;;;; bodies, and how relations over the state variables are decided at a state's start.
+;;;;
+;;;; Nothing mechanical is computed here: the scenario's clauses are described as entities
+;;;; (the kb's components decide what they do), a bumper's free end is a point attached to
+;;;; a body whose loci against the other bodies the geometry gives, and a relation over the
+;;;; state variables is decided on their values at the start of the state.
+;;;;
+;;;; Generic rules this file adds (see STATE-RELATION-VERDICT and PROBE-VERDICT):
+;;;;   - (initial-pos B :x), a free body's coordinate at the start of the current state, is a
+;;;;     constant of the state: it is replaced by its value before the model is solved and
+;;;;     before a condition is examined;
+;;;;   - a relation over positions and velocities is decided on their values at the start; an
+;;;;     equation X = 0 (or X /= 0) that holds at the start may stop holding at once, as a
+;;;;     touching contact may: it is a :CHOICE, settled by consistency (src/simulator/choice.lisp);
+;;;;   - a point attached to a body (a probe) has loci on the other bodies' shapes that can be
+;;;;     crossed: (<= (contact-gap K) 0) holds while the obstacle reaches or covers the point.
+
+(in-package #:ames.simulator)
+
+;;; Entities
+
+(defun indexed-name (prefix index)
+  "The symbol PREFIX-INDEX naming an entity the simulator makes (not from user data)."
+  (intern (format nil "~A-~D" prefix index) '#:ames.simulator))
+
+(defun rope-segment-names (scenario)
+  "Alist rope name -> the names of its segments, numbered across the scenario's ropes."
+  (let ((index -1))
+    (mapcar (lambda (rope)
+              (cons (scenario-rope-name rope)
+                    (loop repeat (1- (length (scenario-rope-through rope)))
+                          collect (indexed-name "SEGMENT" (incf index)))))
+            (scenario-ropes scenario))))
+
+(defun rope-entities (scenario)
+  "The entities of SCENARIO's ropes (see src/kb/ropes.lisp): each rope and its straight
+segments between consecutive points, pulleys resolved into points of their bodies; a
+segment between two points of one body says so (:WITHIN-ONE-BODY T)."
+  (loop for rope in (scenario-ropes scenario)
+        for (nil . segments) in (rope-segment-names scenario)
+        for points = (mapcar (lambda (p) (rope-point-position scenario p)) (scenario-rope-through rope))
+        collect (list 'ames.kb:rope (scenario-rope-name rope)
+                      :length (scenario-rope-length rope) :segments segments)
+        append (loop for segment in segments
+                     for (from to) on points
+                     for index from 0
+                     collect (list* 'ames.kb:rope-segment segment :rope (scenario-rope-name rope)
+                                    :index index :from from :to to
+                                    (and (eq (first from) (first to)) (list :within-one-body t))))))
+
+(defun massive-body-pairs (scenario)
+  "Every two bodies of SCENARIO that have a mass and are not both fixed, as (B1 B2)."
+  (loop for (b1 . rest) on (remove nil (scenario-bodies scenario) :key #'scenario-body-mass)
+        append (loop for b2 in rest
+                     unless (and (scenario-body-fixed-p b1) (scenario-body-fixed-p b2))
+                       collect (list (scenario-body-name b1) (scenario-body-name b2)))))
+
+(defun attachment-entities (run)
+  "The entities of the scenario's springs, bumpers, ropes, universal gravitation and the
+pairs of bodies with mass (see src/kb/springs.lisp, ropes.lisp, gravitation.lisp)."
+  (let ((scenario (run-scenario run)))
+    (append
+     (mapcar (lambda (spring)
+               (if (scenario-spring-bumper-p spring)
+                   (list 'ames.kb:bumper (scenario-spring-name spring)
+                         :on (first (scenario-spring-from spring))
+                         :at (second (scenario-spring-from spring))
+                         :toward (scenario-spring-toward spring)
+                         :stiffness (scenario-spring-stiffness spring)
+                         :rest-length (scenario-spring-rest-length spring))
+                   (list 'ames.kb:spring (scenario-spring-name spring)
+                         :from (scenario-spring-from spring) :to (scenario-spring-to spring)
+                         :stiffness (scenario-spring-stiffness spring)
+                         :rest-length (scenario-spring-rest-length spring))))
+             (scenario-springs scenario))
+     (rope-entities scenario)
+     (when (scenario-gravitation scenario)
+       (list (list 'ames.kb:gravitation-field 'gravitation
+                   :constant (scenario-gravitation scenario))))
+     (loop for (b1 b2) in (massive-body-pairs scenario)
+           for index from 0
+           collect (list 'ames.kb:body-pair (indexed-name "PAIR" index) :first b1 :second b2)))))
+
+;;; Probes: points attached to bodies, and their loci on the other bodies
+
+(defun translated-shape (shape offset)
+  "The scenario SHAPE form moved by -OFFSET (its points minus OFFSET), or NIL for a point
+(a point has no locus for another point)."
+  (flet ((moved (p) (list `(- ,(first p) ,(first offset)) `(- ,(second p) ,(second offset))))
+         (arc-moved (form)
+           (let ((copy (copy-list form)))
+             (setf (getf (cdr copy) :center)
+                   (list `(- ,(first (getf (cdr form) :center)) ,(first offset))
+                         `(- ,(second (getf (cdr form) :center)) ,(second offset))))
+             copy)))
+    (ecase (shape-kind shape)
+      (:point nil)
+      (:circle `(ames-scenario:outline
+                 (ames-scenario:arc :center ,(moved '(0 0)) :radius ,(second shape)
+                                    :from 0 :to (* 2 pi))))
+      ((:polygon :segment :half-plane) (cons (first shape) (mapcar #'moved (rest shape))))
+      (:arc (arc-moved shape))
+      (:outline (cons (first shape)
+                      (mapcar (lambda (piece)
+                                (if (string= (symbol-name (first piece)) "LINE")
+                                    (cons (first piece) (mapcar #'moved (rest piece)))
+                                    (arc-moved piece)))
+                              (rest shape)))))))
+
+(defun bumper-axis-vector (spring)
+  "The unit vector along a bumper SPRING's axis, toward its free end."
+  (destructuring-bind (dx dy) (scenario-spring-toward spring)
+    (let ((norm `(sqrt (+ (expt ,dx 2) (expt ,dy 2)))))
+      (list `(/ ,dx ,norm) `(/ ,dy ,norm)))))
+
+(defun bumper-free-end (spring)
+  "The point of a bumper SPRING's body where its free end rests: (X Y) in its frame."
+  (destructuring-bind (x y) (second (scenario-spring-from spring))
+    (destructuring-bind (ux uy) (bumper-axis-vector spring)
+      (let ((l0 (scenario-spring-rest-length spring)))
+        (list `(+ ,x (* ,l0 ,ux)) `(+ ,y (* ,l0 ,uy)))))))
+
+(defun straight-contact-p (contact)
+  "True when the geometry CONTACT is a line or a segment."
+  (member (ames.geometry:contact-kind contact) '(:segment :line)))
+
+(defun facing-axis-p (bridge contact axis)
+  "True when the geometry CONTACT can be reached by a point retreating along AXIS: a
+curved one, or a straight one whose outward normal is against AXIS."
+  (or (not (straight-contact-p contact))
+      (ames.maxima:holds-p bridge (vec-dot-expression axis (ames.geometry:contact-outward-normal contact 0)
+                                                      '<))))
+
+(defun vec-dot-expression (u v relation)
+  "The relation (RELATION u.v 0)."
+  (list relation `(+ (* ,(first u) ,(first v)) (* ,(second u) ,(second v))) 0))
+
+(defun probe-loci (scenario bridge first-index)
+  "The loci of the scenario's probes (a bumper's free end, a point attached to a body
+that retreats along its axis when pressed) on every other body: (values CONTACTS KINDS),
+CONTACTS an alist name -> geometry contact (observer the probe's body, obstacle the other
+body, whose shape is moved so that the relative position of the two bodies is on the
+locus when the probe's point is on the other body's boundary; only the faces that can
+meet a point retreating along the axis), KINDS an alist name -> (:KIND POINT-CONTACT
+:POINT PROBE :AXIS (UX UY)). Names continue from FIRST-INDEX."
+  (let ((contacts '()) (kinds '()) (index first-index)
+        (point-shape (ames.geometry:parse-shape 'ames-scenario:point :bridge bridge)))
+    (dolist (spring (remove-if-not #'scenario-spring-bumper-p (scenario-springs scenario)))
+      (let* ((mount (find-scenario-body (first (scenario-spring-from spring)) scenario))
+             (end (mapcar (lambda (x) (ames.maxima:simplify bridge x)) (bumper-free-end spring)))
+             (axis (mapcar (lambda (x) (ames.maxima:simplify bridge x)) (bumper-axis-vector spring))))
+        (dolist (body (scenario-bodies scenario))
+          (let ((shape (translated-shape (scenario-body-shape body) end)))
+            (unless (or (eq body mount) (null shape)
+                        (and (scenario-body-fixed-p body) (scenario-body-fixed-p mount)))
+              (let ((pair (ames.geometry:make-contact-pair-with-observer
+                           (scenario-body-name mount) point-shape
+                           (scenario-body-name body) (ames.geometry:parse-shape shape :bridge bridge)
+                           :bridge bridge)))
+                (dolist (contact (ames.geometry:pair-contacts pair))
+                  (when (facing-axis-p bridge contact axis)
+                    (let ((name (contact-entity-name index)))
+                      (incf index)
+                      (push (cons name contact) contacts)
+                      (push (list name :kind 'ames.kb:point-contact
+                                       :point (scenario-spring-name spring) :axis axis)
+                            kinds))))))))))
+    (values (nreverse contacts) (nreverse kinds))))
+
+(defun locus-kind (run contact)
+  "The plist (:KIND K ...) of a probe's locus CONTACT, or NIL for a contact of two shapes."
+  (cdr (assoc contact (run-locus-kinds run))))
+
+(defun contact-entity (run name geometry)
+  "The situation's entity for the contact NAME: a SIMPLE-CONTACT between two shapes, or
+the kind its probe's locus has."
+  (let ((kind (locus-kind run name)))
+    (list* (if kind (getf kind :kind) 'ames.kb:simple-contact) name
+           :observer (ames.geometry:contact-observer geometry)
+           :obstacle (ames.geometry:contact-obstacle geometry)
+           :geometry geometry
+           (and kind (list :point (getf kind :point))))))
+
+(defun shape-contact-p (run contact)
+  "True when CONTACT is a locus of two bodies' shapes (not of a probe): one a body can touch."
+  (null (locus-kind run contact)))
+
+(defun holds-everywhere (run relations)
+  "True when every relation of RELATIONS (possibly OR forms) holds under the assumptions."
+  (every (lambda (r)
+           (if (eq (first r) 'or)
+               (some (lambda (part) (holds-everywhere run (list part))) (rest r))
+               (holds run r)))
+         relations))
+
+(defun probe-verdict (run contact)
+  "Whether the obstacle of the probe locus CONTACT reaches or presses the probe's point at
+the start of the state, as the decider answers (<= (contact-gap CONTACT) 0). The point
+pressed retreats along its axis and stays on the face: on a straight face it is pressed
+when its resting point lies behind the face's line and, moved back along the axis onto
+it, within the face's ends. :TRUE when pressed, or on the face with the obstacle moving
+in; :FALSE when in front of the face, past its ends, or on it moving away; :CHOICE on it
+with no normal velocity; :UNKNOWN when a sign is not decided. On a curved face only the
+touching case is recognised (a point behind it reads :FALSE)."
+  (let* ((geometry (contact-geometry run contact))
+         (q (relative-initial-state run contact))
+         (axis (getf (locus-kind run contact) :axis)))
+    (multiple-value-bind (gap end)
+        (if (straight-contact-p geometry)
+            (let* ((normal (ames.geometry:contact-outward-normal geometry 0))
+                   (start (ames.geometry:contact-point geometry 0))
+                   (gap (tidy run (vec-dot (vec- q start) normal)))
+                   (retreat (tidy run `(/ ,gap ,(vec-dot axis normal)))))
+              (values gap (mapcar (lambda (x) (tidy run x)) (vec- q (vec-scale retreat axis)))))
+            (values (tidy run (ames.geometry:meeting-gap (ames.geometry:contact-meeting geometry q))) q))
+      (cond ((not (holds-everywhere run (ames.geometry:meeting-extent
+                                         (ames.geometry:contact-meeting geometry end))))
+             :false)
+            (t (case (sign-of run gap)
+                 (-1 (if (straight-contact-p geometry) :true :false))
+                 (1 :false)
+                 (0 (case (sign-of run (normal-approach run contact))
+                      (-1 :true) (0 :choice) (1 :false) (t :unknown)))
+                 (t :unknown)))))))
+
+;;; The state's starting values in relations and equations
+
+(defun starting-values (run)
+  "Alist of the state terms' values at the start of the state: every free body's
+(initial-pos B :x/:y), (pos B :x/:y) and (vel B :x/:y)."
+  (loop for body in (free-body-names run)
+        for p = (body-position run body) for v = (body-velocity run body)
+        append (loop for axis in '(:x :y)
+                     collect (cons (list 'ames.kb:initial-pos body axis) (axis-of p axis))
+                     collect (cons (list 'ames.kb:pos body axis) (axis-of p axis))
+                     collect (cons (list 'ames.kb:vel body axis) (axis-of v axis)))))
+
+(defun with-initial-positions (run expression)
+  "EXPRESSION with every (initial-pos B :x) replaced by B's coordinate at the start of the
+state: a constant of the state; then square roots of the constants' perfect squares
+taken (see CONSTANT-ROOTS-TAKEN)."
+  (constant-roots-taken
+   run (if (some (lambda (term) (and (consp term) (eq (first term) 'ames.kb:initial-pos)))
+                 (expression-variables expression))
+           (substitute-expressions (remove 'ames.kb:initial-pos (starting-values run)
+                                           :key #'caar :test-not #'eq)
+                                   expression)
+           expression)))
+
+(defun constant-roots-taken (run expression)
+  "EXPRESSION with each square root of a constant (no quantity term in it) whose radicand
+is the square of an expression X of decided sign replaced by X or -X (see
+TAKE-CONSTANT-ROOTS)."
+  (if (find-sqrt expression) (take-constant-roots run expression) expression))
+
+(defun find-sqrt (expression)
+  "True when EXPRESSION has a square root."
+  (and (consp expression)
+       (or (eq (first expression) 'sqrt) (some #'find-sqrt (rest expression)))))
+
+(defun take-constant-roots (run expression)
+  "EXPRESSION with each square root of a constant (no quantity term in it) whose radicand
+is the square of an expression X of decided sign replaced by X or -X: the length of a
+span along an axis, sqrt((top - h)^2) = top - h when top > h, which Maxima alone leaves
+when its sign needs the order of the parameters."
+  (cond ((atom expression) expression)
+        ((quantity-term-p expression) expression)
+        ((and (eq (first expression) 'sqrt)
+              (notany #'quantity-term-p (expression-variables (second expression))))
+         (let ((radicand (tidy run (second expression) :full)))
+           (if (and (consp radicand) (eq (first radicand) 'expt) (eql (third radicand) 2))
+               (case (sign-of run (second radicand))
+                 (1 (second radicand))
+                 (-1 `(- ,(second radicand)))
+                 (t expression))
+               expression)))
+        (t (cons (first expression)
+                 (mapcar (lambda (x) (take-constant-roots run x)) (rest expression))))))
