@@ -24,7 +24,7 @@
     (loop repeat count
           collect (mapcar (lambda (n) (cons n (+ 0.1d0 (random 2d0 state)))) names))))
 
-(defun same-values-p (a b &key (points 6) (seed 7))
+(defun same-values-at-points-p (a b &key (points 6) (seed 7))
   "True when A and B evaluate alike (relative 1e-9) wherever both are defined, at
 POINTS random positive points, and are both defined at two of them at least."
   (let ((compared 0))
@@ -54,7 +54,7 @@ POINTS random positive points, and are both defined at two of them at least."
   (dolist (form *forms-to-arrange*)
     (let ((arranged (ames.report:arrange form (plain-arrangement))))
       (is (ames.base:valid-expression-p arranged :kind :arithmetic) "~S arranged to ~S" form arranged)
-      (is (same-values-p form arranged) "~S arranged to ~S, of another value" form arranged))))
+      (is (same-values-at-points-p form arranged) "~S arranged to ~S, of another value" form arranged))))
 
 (test arranging-merges-roots-and-tangents
   "sqrt(2) sqrt(g) sqrt(h) is one root; cos/sin is 1/tan; a polynomial in tau starts with its constant."

@@ -19,6 +19,7 @@
   '((+ 1 nil) (- 1 nil) (* 1 nil) (/ 1 nil) (expt 2 2)
     (sqrt 1 1) (exp 1 1) (log 1 1)
     (sin 1 1) (cos 1 1) (tan 1 1) (asin 1 1) (acos 1 1) (atan 1 2)
+    (abs 1 1)
     ;; hyperbolic functions, and their inverses
     (sinh 1 1) (cosh 1 1) (tanh 1 1) (asinh 1 1) (acosh 1 1) (atanh 1 1)
     ;; elliptic integrals (amplitude, parameter m) and Jacobi's functions (u, m), see

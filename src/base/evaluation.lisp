@@ -116,6 +116,7 @@ a real. May signal ARITHMETIC-ERROR on overflow."
       (sqrt (cond ((minusp (argument)) nil)
                   ((rational-root (argument) 2))
                   (t (approximate #'sqrt (argument)))))
+      (abs (abs (argument)))
       (exp (approximate #'exp (argument)))
       (log (and (plusp (argument)) (approximate #'log (argument))))
       (sin (approximate #'sin (argument)))

@@ -275,8 +275,10 @@ position(obstacle)."
 
 (defun penetrates-p (pair q)
   "True when, at the relative position Q, the observer's interior overlaps the
-obstacle's: an impossible configuration (for instance an invalid start)."
-  (funcall (pair-inside-test pair) (pair-decider pair) (mapcar #'normalize-expression q)))
+obstacle's: an impossible configuration (for instance an invalid start). Asks only the
+facts that change the answer (see CALL-DECIDING-WHAT-MATTERS)."
+  (deciding-what-matters ((pair-decider pair))
+    (funcall (pair-inside-test pair) (pair-decider pair) (mapcar #'normalize-expression q))))
 
 (defun check-separation (pair q)
   "Signal BODIES-OVERLAP when the relative position Q penetrates (see PENETRATES-P);

@@ -105,7 +105,13 @@ arc PIECE."
 ;;; Where a point lies relative to a piece.
 
 (defun point-on-piece-p (decider q piece)
-  "True when the point Q lies on PIECE (endpoints included)."
+  "True when the point Q lies on PIECE (endpoints included). Asks only the facts that
+change the answer (see CALL-DECIDING-WHAT-MATTERS)."
+  (deciding-what-matters (decider)
+    (point-on-piece-p-deciding-all decider q piece)))
+
+(defun point-on-piece-p-deciding-all (decider q piece)
+  "POINT-ON-PIECE-P's test, each fact asked as it comes."
   (etypecase piece
     (line-piece
      (let* ((p (line-piece-start piece)) (d (line-direction piece)) (w (v- q p)))

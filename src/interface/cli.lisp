@@ -1,6 +1,22 @@
-;;;; src/interface/cli.lisp -- the command line: bin/ames run|explain FILE... [--format F] [--svg FILE] [--set p=v ...] [--time-limit S] [--maxima-timeout S] [--verbose]
+;;;; src/interface/cli.lisp -- the command line: bin/ames run|explain FILE... [--format F] [--svg FILE] [--numeric] [--set p=v ...] [--time-limit S] [--maxima-timeout S] [--verbose]
+;;;;
+;;;; Exit codes, so that a script can tell a finished run from one that stopped:
+;;;;   0  every scenario ran to its end (a run that branched ran every branch to its end);
+;;;;   1  a scenario error (a defective scenario or file, values that break an assumption,
+;;;;      a failure of the simulation); the other scenarios of the files still run;
+;;;;   2  a usage error (nothing is run);
+;;;;   3  every scenario was valid, but a run (or a branch of it) ended ambiguous or
+;;;;      undecided: the assumptions (and the values, if any) did not decide what comes next.
+;;;; When a run has both an error and an undecided scenario, the status is 1.
+;;;;   141  the reader of the standard output went away (bin/ames run x | head).
 
 (in-package #:ames)
+
+(defconstant +exit-complete+ 0 "Exit status: every scenario ran to its end.")
+(defconstant +exit-scenario-error+ 1 "Exit status: a scenario (or file) had an error.")
+(defconstant +exit-usage+ 2 "Exit status: the command line is malformed.")
+(defconstant +exit-undecided+ 3
+  "Exit status: a run ended ambiguous or undecided (and no scenario had an error).")
 
 (define-condition usage-error (ames-error) ()
   (:documentation "The command line is malformed. DATUM is the offending argument.")
@@ -9,9 +25,10 @@
                      (ames-error-datum condition)))))
 
 (defparameter *usage*
-  "Usage: ames run FILE... [--format text|sexp|latex|json|html] [--svg OUT.svg] [--set PARAM=VALUE ...]
-                 [--time-limit SECONDS] [--maxima-timeout SECONDS] [--verbose]
-       ames explain FILE... [--state N] [--set PARAM=VALUE ...]
+  "Usage: ames run FILE... [--format text|sexp|latex|json|html] [--svg OUT.svg] [--numeric]
+                 [--set PARAM=VALUE ...] [--time-limit SECONDS] [--maxima-timeout SECONDS]
+                 [--verbose] [--jobs N]
+       ames explain FILE... [--state N] [--numeric] [--set PARAM=VALUE ...]
   Simulate every scenario in each FILE and print a report.
   --format text   a report for people, state by state (the default)
   --format sexp   one readable s-expression per scenario (see the scenario language page)
@@ -19,14 +36,18 @@
   --format json   the s-expression's content as JSON, one line per scenario
   --format html   one self-contained page: pictures, timelines, typeset formulas
   --svg OUT.svg   also draw each scenario (OUT-NAME.svg when the run has several)
-  --set p=v ...   give parameter p the number v (an integer, ratio or decimal); numeric
-                  values are then printed beside the closed forms
+  --numeric       use the scenario's (:value N) defaults as parameter values
+  --set p=v ...   give parameter p the number v (an integer, ratio or decimal), over its
+                  default; numeric values are then printed beside the closed forms, and
+                  a fact the assumptions leave open but the values decide is used and
+                  reported. Values that break a declared assumption are an error.
   --time-limit S  the wall time one scenario may take, in seconds (default 300)
   --maxima-timeout S  the time one Maxima request may take, in seconds (default 20)
   --verbose       print error messages in full (long ones are otherwise cut short)
   explain         why each state's contacts and modes hold, where its equations
                   come from, and why it ends when it does (or only state N)
-Exit codes: 0 success, 1 a scenario error, 2 usage."
+Exit codes: 0 complete, 1 a scenario error, 2 usage, 3 a run (or a branch) that ended
+ambiguous or undecided (1 wins when both happen)."
   "The text printed for `ames help` and after a usage error.")
 
 (defun parse-decimal (text)
@@ -75,10 +96,10 @@ signal USAGE-ERROR naming TEXT when it is not one."
 
 (defun parse-command-line (arguments)
   "Parse ARGUMENTS (strings, without the program name) into a plist (:COMMAND :FILES
-:FORMAT :SETTINGS :SVG :STATE :TIME-LIMIT :MAXIMA-TIMEOUT :VERBOSE); the two limits are
-NIL when not given. Signals USAGE-ERROR on anything malformed."
+:FORMAT :SETTINGS :SVG :STATE :NUMERIC :TIME-LIMIT :MAXIMA-TIMEOUT :VERBOSE); the two
+limits are NIL when not given. Signals USAGE-ERROR on anything malformed."
   (let ((command (first arguments)) (files '()) (format :text) (settings '()) (svg nil)
-        (state nil) (time-limit nil) (maxima-timeout nil) (verbose nil))
+        (state nil) (numeric nil) (time-limit nil) (maxima-timeout nil) (verbose nil))
     (cond ((null command) (error 'usage-error :detail "no command given"))
           ((member command '("help" "--help" "-h") :test #'string=)
            (return-from parse-command-line (list :command :help)))
@@ -97,6 +118,8 @@ NIL when not given. Signals USAGE-ERROR on anything malformed."
                       (setf svg (pop rest))
                       (when (or (null svg) (eql 0 (search "--" svg)))
                         (error 'usage-error :datum argument :detail "--svg takes the picture's file name")))
+                     ((string= argument "--numeric")
+                      (setf numeric t))
                      ((string= argument "--set")
                       (unless (and rest (find #\= (first rest)))
                         (error 'usage-error :datum argument :detail "--set takes PARAM=VALUE"))
@@ -119,7 +142,7 @@ NIL when not given. Signals USAGE-ERROR on anything malformed."
     (when (null files) (error 'usage-error :detail "run needs at least one scenario file"))
     (list :command (if (string= command "explain") :explain :run)
           :files (nreverse files) :format format
-          :settings (nreverse settings) :svg svg :state state
+          :settings (nreverse settings) :svg svg :state state :numeric numeric
           :time-limit time-limit :maxima-timeout maxima-timeout :verbose verbose)))
 
 (defun command-line-limits (options)
@@ -138,28 +161,30 @@ a process ended by SIGPIPE).")
 
 (defun main (arguments)
   "The entry point of bin/ames: run the command in ARGUMENTS (a list of strings) and quit
-with 0 on success, 1 when any scenario had an error, 2 on a usage error. When the
-standard output is a pipe whose reader went away (bin/ames run x | head), stop quietly
+with the status RUN-FILES returns (0 complete, 1 a scenario error, 3 a run ended
+ambiguous or undecided), or 2 on a usage error. When the standard output is a pipe whose reader went away (bin/ames run x | head), stop quietly
 with status +BROKEN-PIPE-STATUS+."
   (let ((status
           (handler-case
               (let ((options (parse-command-line arguments)))
                 (case (getf options :command)
-                  (:help (write-string *usage*) (terpri) 0)
+                  (:help (write-string *usage*) (terpri) +exit-complete+)
                   (:explain (explain-files (getf options :files) :state (getf options :state)
                                            :settings (getf options :settings)
+                                           :numeric (getf options :numeric)
                                            :limits (command-line-limits options)))
                   (:run (let ((*package* (find-package '#:ames-scenario)))
                           (run-files (getf options :files)
                                      :format (getf options :format)
                                      :settings (getf options :settings)
+                                     :numeric (getf options :numeric)
                                      :svg (getf options :svg)
                                      :limits (command-line-limits options)
                                      :verbose (getf options :verbose)
                                      :stream *standard-output*)))))
             (usage-error (condition)
               (format *error-output* "ames: ~A~%~A~%" condition *usage*)
-              2)
+              +exit-usage+)
             (sb-int:broken-pipe ()
               (sb-ext:exit :code +broken-pipe-status+ :abort t)))))
     (handler-case (progn (finish-output *standard-output*)
@@ -168,35 +193,59 @@ with status +BROKEN-PIPE-STATUS+."
         (sb-ext:exit :code +broken-pipe-status+ :abort t)))
     (uiop:quit status)))
 
-(defun explain-files (files &key state settings (stream *standard-output*) (limits *limits*))
+(defun explain-files (files &key state settings numeric (stream *standard-output*)
+                               (limits *limits*))
   "Explain every scenario of each of FILES (see EXPLAIN), or only the state STATE, each
-run within a budget of LIMITS. Returns the exit status: 0, or 1 when a scenario could
-not be explained."
+run within a budget of LIMITS. SETTINGS and NUMERIC give parameter values as for
+RUN-FILES. Returns the exit status: 0, or 1 when a scenario could not be explained."
   (let ((status 0))
     (dolist (file files status)
       (handler-case
-          (dolist (history (run-file file :settings settings :limits limits))
+          (dolist (history (run-file file :settings settings :numeric numeric :limits limits))
             (explain history :state state :stream stream))
         (ames-error (condition)
           (setf status 1)
           (format *error-output* "~&ames: ~A~%" condition))))))
 
-(defun run-files (files &key (format :text) settings (stream *standard-output*) svg
+(defun undecided-history-p (history)
+  "True when HISTORY, or a branch of one of its forks, ended without deciding what
+comes next: its outcome is :AMBIGUOUS or :UNDECIDED. At a fork whose branch the run's
+values select (:SELECTED T), only that branch counts."
+  (labels ((undecided-outcome-p (outcome) (member outcome '(:ambiguous :undecided)))
+           (counted-branches (branches)
+             (let ((selected (find-if (lambda (branch) (getf branch :selected)) branches)))
+               (if selected (list selected) branches)))
+           (undecided-states-p (states)
+             (some (lambda (state)
+                     (some (lambda (branch)
+                             (or (undecided-outcome-p (getf branch :outcome))
+                                 (undecided-states-p (getf branch :states))))
+                           (counted-branches (state-branches state))))
+                   states)))
+    (and (or (undecided-outcome-p (history-outcome history))
+             (undecided-states-p (history-states history)))
+         t)))
+
+(defun run-files (files &key (format :text) settings numeric (stream *standard-output*) svg
                           (bridge (current-bridge)) (limits *limits*) verbose)
   "Simulate every scenario of each of FILES, each by RUN-SCENARIO (a fresh bridge state,
 a budget of LIMITS, by default *LIMITS*), and print each history on STREAM in FORMAT
 (:TEXT, :SEXP, :LATEX, :JSON or :HTML, one page at the end), and, when SVG (a file
 name) is given, draw each to it (see AMES.REPORT:FINISH-REPORT). SETTINGS is an alist
-(PARAMETER-NAME . NUMBER). A defective scenario or file, and a run that fails, are
-reported on *ERROR-OUTPUT*, naming the file, the scenario and the line; the others still
-run (a Lisp error that is no AMES-ERROR, a defect of AMES, is reported as an
-INTERNAL-ERROR). Long messages are cut short unless VERBOSE. Returns the exit status: 0
-when every scenario ran, 1 when any had an error."
-  (let ((status 0)
+(PARAMETER-NAME . NUMBER); with NUMERIC, the scenarios' (:value N) defaults are used
+too, SETTINGS overriding them; the values are checked against every assumption (see
+RUN-PARAMETER-VALUES). A defective scenario or file, and a run that fails, are reported
+on *ERROR-OUTPUT*, naming the file, the scenario and the line; the others still run (a
+Lisp error that is no AMES-ERROR, a defect of AMES, is reported as an INTERNAL-ERROR).
+Long messages are cut short unless VERBOSE. Returns the exit status: +EXIT-COMPLETE+
+(0) when every scenario ran to its end, +EXIT-SCENARIO-ERROR+ (1) when any had an
+error, else +EXIT-UNDECIDED+ (3) when any (or a branch of one) ended ambiguous or
+undecided."
+  (let ((error-seen nil) (undecided-seen nil)
         (*full-reports* (or verbose *full-reports*))
         (output (make-report-output format stream :svg svg :bridge bridge)))
     (flet ((report-error (condition)
-             (setf status 1)
+             (setf error-seen t)
              (format *error-output* "~&ames: ~A~%" condition)
              (finish-output *error-output*)))
       (dolist (file files)
@@ -205,7 +254,9 @@ when every scenario ran, 1 when any had an error."
           (dolist (scenario scenarios)
             (handler-case
                 (let ((history (run-scenario scenario :bridge bridge :settings settings
-                                                      :limits limits)))
+                                                      :numeric numeric :limits limits)))
+                  (when (undecided-history-p history)
+                    (setf undecided-seen t))
                   (report-history output history)
                   (finish-output stream))
               (ames-error (condition) (report-error condition))
@@ -219,20 +270,23 @@ when every scenario ran, 1 when any had an error."
                   (report-error internal)))))))
       (handler-case (finish-report output)
         (ames-error (condition) (report-error condition))))
-    status))
+    (cond (error-seen +exit-scenario-error+)
+          (undecided-seen +exit-undecided+)
+          (t +exit-complete+))))
 
-(defun run-file (pathname &key settings (bridge (current-bridge)) (limits *limits*))
+(defun run-file (pathname &key settings numeric (bridge (current-bridge)) (limits *limits*))
   "Simulate every scenario of the file PATHNAME, each by RUN-SCENARIO (a fresh bridge
 state, a budget of LIMITS, by default *LIMITS*), and return their SIMULATION-HISTORYs.
-SETTINGS is an alist (PARAMETER-NAME . NUMBER). A scenario that ends ambiguously stops
-there (its history says so). Signals SCENARIO-ERROR for a defective scenario, and the
+SETTINGS and NUMERIC give parameter values as for RUN-FILES, checked against every
+assumption. A scenario that ends ambiguously stops there (its history says so). Signals SCENARIO-ERROR for a defective scenario, and the
 errors of a run (named by their context: file, scenario, line), with the restart
 SKIP-SCENARIO; BUDGET-EXCEEDED when a run goes over its budget; PARAMETER-VALUES-ERROR
 for SETTINGS that are not an alist of names and numbers."
   (let ((histories '()))
     (dolist (scenario (read-scenario-file pathname) (nreverse histories))
       (restart-case
-          (push (run-scenario scenario :bridge bridge :settings settings :limits limits)
+          (push (run-scenario scenario :bridge bridge :settings settings :numeric numeric
+                                         :limits limits)
                 histories)
         (skip-scenario ()
           :report "Skip this scenario and go on with the next one."

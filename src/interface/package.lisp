@@ -66,4 +66,8 @@ re-exported from the layers below) and the command line of bin/ames.")
    #:history-json #:print-history-json #:json-to-sexp
    ;; the checks through Maxima (src/scenario/semantics.lisp)
    #:check-scenario #:check-scenario-assumptions #:check-scenario-geometry
-   #:missing-assumption-error #:missing-assumption-fact))
+   #:missing-assumption-error #:missing-assumption-fact
+   ;; the numbers of a run (src/scenario/values.lisp)
+   #:parameter-value-error #:parameter-value-error-parameter #:parameter-value-error-assumption
+   #:check-parameter-values #:run-parameter-values
+   #:+exit-complete+ #:+exit-scenario-error+ #:+exit-usage+ #:+exit-undecided+))

@@ -84,15 +84,19 @@ values."
                              (run-error-context scenario condition))))))
     (funcall thunk)))
 
-(defun run-scenario (scenario &key (bridge (current-bridge)) settings (limits *limits*))
+(defun run-scenario (scenario &key (bridge (current-bridge)) settings numeric (limits *limits*))
   "Simulate SCENARIO (a SCENARIO) as one run of RUN-FILES or RUN-FILE and return its
 SIMULATION-HISTORY (see this file's header): BRIDGE reset first, a budget of LIMITS,
-SETTINGS (an alist (PARAMETER-NAME . NUMBER)) checked, an AMBIGUOUS-TRANSITION stopping
-the run, and errors given the scenario's context.
-Signals PARAMETER-VALUES-ERROR or UNDECLARED-SYMBOL-ERROR for bad SETTINGS,
-INVALID-LIMIT for bad LIMITS, BUDGET-EXCEEDED when the run goes over its budget, and
-whatever SIMULATE signals."
-  (let ((values (check-parameter-values settings scenario))
+SETTINGS (an alist (PARAMETER-NAME . NUMBER)) checked, with NUMERIC the scenario's
+(:value N) defaults under them (RUN-PARAMETER-VALUES: every assumption is checked), an
+AMBIGUOUS-TRANSITION that cannot be branched on stopping the run, and errors given the
+scenario's context. The facts the values decided outside the simulator's own transitions
+(geometric checks) are added to the history's notes as :ASSUMED, with :STATE NIL.
+Signals PARAMETER-VALUES-ERROR or UNDECLARED-SYMBOL-ERROR for malformed SETTINGS,
+PARAMETER-VALUE-ERROR for values that break an assumption, INVALID-LIMIT for bad LIMITS,
+BUDGET-EXCEEDED when the run goes over its budget, and whatever SIMULATE signals."
+  (check-parameter-values settings scenario)
+  (let ((values (run-parameter-values scenario :settings settings :numeric numeric))
         (out-of-time nil))
     (ames.maxima:reset-bridge bridge)
     (unwind-protect
@@ -105,8 +109,15 @@ whatever SIMULATE signals."
                                  (setf out-of-time t)))))
               (call-with-budget
                (lambda ()
-                 (handler-bind ((ambiguous-transition #'stop-simulation))
-                   (simulate scenario :bridge bridge :parameter-values values)))
+                 (ames.maxima:with-parameter-values (values)
+                   (let ((history (handler-bind ((ambiguous-transition #'stop-simulation))
+                                    (simulate scenario :bridge bridge :parameter-values values))))
+                     (dolist (fact (ames.maxima:facts-from-values))
+                       (unless (member fact (getf (history-notes history) :assumed)
+                                       :key (lambda (entry) (getf entry :fact)) :test #'equal)
+                         (push (list :state nil :fact fact)
+                               (getf (history-notes history) :assumed))))
+                     history)))
                :limits limits :subject (scenario-name scenario)))))
       (when out-of-time
         (ames.maxima:reset-bridge bridge :restart t)))))

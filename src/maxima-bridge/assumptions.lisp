@@ -4,7 +4,7 @@
 ;;;; killcontext, so facts never leak out of their scope. Maxima does not use the range of
 ;;;; an angle to find the sign of its sine or cosine (with 0 < a < pi/2, is(cos(a) > 0) is
 ;;;; unknown), so the bridge derives those facts itself from the numeric bounds of each
-;;;; variable and assumes them too. The frames are kept in the bridge, so a restarted
+;;;; variable (exactly, see angles.lisp) and assumes them too. The frames are kept in the bridge, so a restarted
 ;;;; Maxima process gets them replayed.
 
 (in-package #:ames.maxima)
@@ -60,6 +60,7 @@ equal() and notequal())."
                    (* (apply #'* arguments)) (/ (apply #'/ arguments))
                    (expt (expt (first arguments) (second arguments)))
                    (sqrt (sqrt (first arguments))) (exp (exp (first arguments)))
+                   (abs (abs (first arguments)))
                    (log (log (first arguments)))
                    (sin (sin (first arguments))) (cos (cos (first arguments)))
                    (tan (tan (first arguments))) (asin (asin (first arguments)))
@@ -117,46 +118,11 @@ equal() and notequal())."
             (when (member side '(:upper :both))
               (setf (cddr entry) (tighter-bound (cddr entry) bound :upper)))))))))
 
-(defparameter *trigonometric-sign-patterns*
-  ;; (function sign start end period start-is-pole end-is-pole): FUNCTION has SIGN on the
-  ;; open interval (START, END) and on its shifts by PERIOD, and vanishes (or has a pole)
-  ;; at the ends.
-  `((sin > 0 ,pi ,(* 2 pi) nil nil)
-    (sin < ,pi ,(* 2 pi) ,(* 2 pi) nil nil)
-    (cos > ,(- (/ pi 2)) ,(/ pi 2) ,(* 2 pi) nil nil)
-    (cos < ,(/ pi 2) ,(* 3 (/ pi 2)) ,(* 2 pi) nil nil)
-    (tan > 0 ,(/ pi 2) ,pi nil t)
-    (tan < ,(- (/ pi 2)) 0 ,pi t nil))
-  "Where sin, cos and tan are positive or negative.")
-
-(defun close-enough-p (x y)
-  (<= (abs (- x y)) (* 1d-12 (max 1d0 (abs x) (abs y)))))
-
-(defun interval-sign-fact (subject lower upper pattern)
-  "The sign fact PATTERN gives SUBJECT in [LOWER, UPPER], or NIL."
-  (destructuring-bind (function sign start end period start-pole end-pole) pattern
-    (let* ((low (bound-value lower)) (high (bound-value upper))
-           (shift (* period (floor (+ (/ (- low start) period) 1d-9))))
-           (from (+ start shift)) (to (+ end shift))
-           (touch-low (close-enough-p low from)) (touch-high (close-enough-p high to)))
-      (when (and (<= low high)
-                 (or touch-low (> low from)) (or touch-high (< high to))
-                 ;; a closed end on a pole leaves the function undefined there
-                 (not (and touch-low start-pole (not (bound-open lower))))
-                 (not (and touch-high end-pole (not (bound-open upper)))))
-        (let ((strict (and (or (not touch-low) (bound-open lower))
-                           (or (not touch-high) (bound-open upper)))))
-          (list (if strict sign (ecase sign (> '>=) (< '<=)))
-                (list function subject) 0))))))
-
 (defun derived-sign-facts (facts)
   "The sign facts about sin, cos and tan of each subject that follow from the numeric
-bounds in FACTS (0 < a < pi/2 gives sin a > 0, cos a > 0 and tan a > 0)."
-  (loop for (subject lower . upper) in (subject-intervals facts)
-        when (and lower upper)
-          append (loop for pattern in *trigonometric-sign-patterns*
-                       for fact = (interval-sign-fact subject lower upper pattern)
-                       when fact collect fact)))
+bounds in FACTS (0 < a < pi/2 gives sin a > 0, cos a > 0 and tan a > 0), read off the
+exact ranges of angles.lisp."
+  (angle-sign-facts (flatten-facts facts)))
 
 ;;; Scopes
 
@@ -201,7 +167,8 @@ the process is discarded: a new one is built from the remaining frames."
 ((> mp 0) (> a 0) (< a (/ pi 2)))) assumed in BRIDGE's Maxima, in a scope of their own
 that ends when THUNK returns or exits; scopes nest. Adds the sign facts of sin, cos and
 tan that follow from numeric bounds (0 < a < pi/2 gives sin a > 0, cos a > 0, tan a > 0).
-Returns THUNK's values.
+A fact with a product of square roots of negative radicands is told to Maxima with
+real roots (sqrt(A) sqrt(B) = -sqrt(-A) sqrt(-B) for A, B < 0). Returns THUNK's values.
 Signals UNTRANSLATABLE-EXPRESSION for a fact outside the algebra, MAXIMA-ERROR when
 Maxima cannot assume a fact (a disjunction, say), and INCONSISTENT-ASSUMPTIONS naming
 the fact that contradicts the facts in force; its restart RETRACT-ASSUMPTION calls THUNK
@@ -218,9 +185,16 @@ under the other facts."
          (flat (flatten-facts facts))
          ;; Derived facts go first, so that a contradiction is laid at a given fact.
          (sources (append derived flat))
+         ;; Maxima is told facts with real square roots only (see REALIFIED-RELATION)
+         (assumed (append derived
+                          (mapcar (lambda (fact)
+                                    (if (product-root-radicands fact)
+                                        (realified-relation bridge fact)
+                                        fact))
+                                  flat)))
          (frame (make-assumption-frame (fresh-context-name table) facts
                                        (mapcar (lambda (fact) (fact-to-maxima table fact))
-                                               sources)))
+                                               assumed)))
          (answer (let ((opened nil))
                    (unwind-protect
                         (prog1 (maxima-request bridge (frame-setup-form frame)

@@ -52,7 +52,7 @@
 (defvar *ames-allowed-heads*
   '(;; the algebra
     mplus mtimes mexpt mquotient mminus rat mlist
-    %sin %cos %tan %asin %acos %atan %sqrt %log $atan2 %derivative
+    %sin %cos %tan %asin %acos %atan %sqrt %log mabs $atan2 %derivative
     %sinh %cosh %tanh %asinh %acosh %atanh
     %elliptic_f %elliptic_kc %elliptic_e %jacobi_sn %jacobi_cn %jacobi_dn %jacobi_am %gamma
     mequal mnotequal mlessp mgreaterp mleqp mgeqp mand mor mnot $equal $notequal
@@ -60,7 +60,7 @@
     $ratsimp $trigsimp $trigreduce $trigexpand $radcan $expand $factor $factorsum $fullratsimp
     $solve $is $sign $assume $supcontext $killcontext $float $tex
     $ode2 $ic2 $integrate $diff $substitute $ratsubst $hipow $ratcoef $freeof $num $denom
-    $realroots $rhs $lhs
+    $realroots $nroots $rhs $lhs
     $ilt
     ;; helpers defined in this file
     $ames_pop_context $ames_polynomial_coefficients $ames_expression_size

@@ -15,6 +15,10 @@ only by this package's own translation (see translation.lisp and maxima-server.l
    ;; operations
    #:simplify #:solve-equations #:decide #:holds-p #:equivalent-p #:sign-varies-p #:refuted-p
    #:call-with-assumptions #:with-assumptions #:current-assumptions
+   ;; numbers before proofs (values.lisp)
+   #:call-with-parameter-values #:with-parameter-values #:current-parameter-values
+   #:value-truth #:decide-by-values #:facts-from-values
+   #:undecided-witnesses #:explain-undecided
    #:earliest-root
    #:solve-autonomous-ode #:ode-solution #:ode-solution-kind #:ode-solution-position
    #:ode-solution-velocity #:ode-solution-speed-squared

@@ -1,7 +1,8 @@
 ;;;; src/maxima-bridge/translation.lisp -- prefix algebra <-> Maxima's internal form, through mangled names.
 ;;;;
 ;;;; Going out, every variable and quantity term becomes a fresh Maxima symbol $AMESV<letters>
-;;;; recorded in a NAME-TABLE, so that no user name (t, %pi, system, gamma ...) can ever meet
+;;;; recorded in a NAME-TABLE (the letters sort in the order the names were made, see
+;;;; LETTERS-FOR-INDEX), so that no user name (t, %pi, system, gamma ...) can ever meet
 ;;;; a Maxima name; PI becomes %pi and each operator its Maxima head. Anything outside the
 ;;;; grammar of AMES.BASE:CHECK-EXPRESSION is refused with UNTRANSLATABLE-EXPRESSION before a
 ;;;; single character is written. Coming back, Maxima's simplified form is turned into a
@@ -35,7 +36,7 @@
 
 (defparameter *function-heads*
   `((sin . ,+sin+) (cos . ,+cos+) (tan . ,+tan+) (asin . ,+asin+) (acos . ,+acos+)
-    (sqrt . ,+sqrt+) (log . ,+log+))
+    (sqrt . ,+sqrt+) (log . ,+log+) (abs . ,+abs+))
   "One-argument functions of the algebra and their Maxima heads.")
 
 (defparameter *special-function-heads*
@@ -112,12 +113,26 @@ terms, does not depend on how many assumption scopes or auxiliary names came bef
 that stand for them. Kept by one bridge for its lifetime."))
 
 (defun letters-for-index (index)
-  "The bijective base-26 numeral of INDEX in letters: 0 -> A, 25 -> Z, 26 -> AA."
-  (let ((letters '()))
-    (loop (multiple-value-bind (quotient remainder) (floor index 26)
-            (push (code-char (+ (char-code #\A) remainder)) letters)
-            (if (zerop quotient) (return) (setf index (1- quotient)))))
-    (coerce letters 'string)))
+  "The letters of the INDEX-th name (from 0), chosen so that names sort as their indices
+do, however many there are: 0 -> A ... 24 -> Y, then ZAA ... ZYZ, then ZZAAA ... ZZYZZ,
+and so on (K letters Z, one letter A-Y, K letters A-Z). Maxima orders variables by
+their names, and what is() proves about a chain of inequalities can depend on that
+order, so a name must never sort before one made earlier: with plain base-26 letters
+AA sorts before B, and 26 names would already change Maxima's answers."
+  (let ((class 0) (size 25))
+    (loop while (>= index size)
+          do (decf index size)
+             (incf class)
+             (setf size (* size 26)))
+    (let ((digits '()))
+      (dotimes (i class)
+        (multiple-value-bind (quotient remainder) (floor index 26)
+          (push (code-char (+ (char-code #\A) remainder)) digits)
+          (setf index quotient)))
+      (concatenate 'string
+                   (make-string class :initial-element #\Z)
+                   (string (code-char (+ (char-code #\A) index)))
+                   (coerce digits 'string)))))
 
 (defun fresh-wire-name (prefix table)
   "A wire symbol PREFIX followed by fresh letters, counted in TABLE for each PREFIX."
@@ -226,7 +241,6 @@ TABLE. Signals UNTRANSLATABLE-RESULT for anything outside the algebra."
                ((or (eq head +atan2+) (eq head +atan2-noun+))
                 (list 'atan (back (first arguments)) (back (second arguments))))
                ((eq head +atan+) (list 'atan (back (first arguments))))
-               ((eq head +abs+) (list 'sqrt (list 'expt (back (first arguments)) 2)))
                ((rassoc head *function-heads*)
                 (list (car (rassoc head *function-heads*)) (back (first arguments))))
                ((rassoc head *special-function-heads*)

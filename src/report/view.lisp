@@ -349,7 +349,9 @@ the forces are conservative and nothing is lost."
           :outcome (history-outcome history)
           :answers (answer-views presenter history)
           :assumed (loop for assumed in (reverse (getf (history-notes history) :assumed))
-                         collect (phrase (format nil "at state ~D: " (getf assumed :state))
+                         collect (phrase (if (getf assumed :state)
+                                             (format nil "at state ~D: " (getf assumed :state))
+                                             "while checking the geometry: ")
                                          (present-relation presenter (getf assumed :fact))))
           :ambiguity
           (when (typep stopped 'ambiguous-transition)

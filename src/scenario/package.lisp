@@ -7,7 +7,7 @@
                 ;; the prefix algebra's operators, so that a file read here and a form
                 ;; typed at the REPL (in CL-USER) hold the very same operator symbols
                 #:+ #:- #:* #:/ #:expt #:sqrt #:exp #:log
-                #:sin #:cos #:tan #:asin #:acos #:atan
+                #:sin #:cos #:tan #:asin #:acos #:atan #:abs
                 #:= #:/= #:< #:> #:<= #:>= #:and #:or #:not
                 #:pi #:t #:nil)
   (:import-from #:ames.base #:tau)
@@ -77,4 +77,7 @@ and Maxima (assumptions, overlaps).")
    #:source-text #:source-text-p #:source-text-file #:form-line #:decode-utf-8
    ;; the checks through Maxima and the geometry
    #:check-scenario #:check-scenario-assumptions #:check-scenario-geometry
-   #:missing-assumption-error #:missing-assumption-fact))
+   #:missing-assumption-error #:missing-assumption-fact
+   ;; the numbers of a run (values.lisp)
+   #:parameter-value-error #:parameter-value-error-parameter #:parameter-value-error-assumption
+   #:check-parameter-values #:run-parameter-values))

@@ -247,7 +247,7 @@ their declared symbols. Signals SCENARIO-EXPRESSION-ERROR or UNDECLARED-SYMBOL-E
                         (cond ((null operator)
                                (reject validation 'scenario-expression-error y
                                        "~A is not an operator of the algebra (+ - * / ~
-                                        expt sqrt exp log sin cos tan asin acos atan)"
+                                        expt sqrt exp log sin cos tan asin acos atan abs)"
                                        (show (car y))))
                               ((not (arithmetic-operator-p operator))
                                (reject validation 'scenario-expression-error y

@@ -1,0 +1,403 @@
+;;;; src/maxima-bridge/deciding.lisp -- DECIDE: the truth of a relation under the facts in force, three-valued and cached.
+;;;;
+;;;; The strategies, cheapest first: Maxima's is(); numeric witnesses that no strategy can
+;;;; decide it (witnesses.lisp); sign() of the difference of the sides in several forms;
+;;;; clearing one square root; equivalence for = and /=; what a physicist knows
+;;;; (truth.lisp: trigonometric signs from the angles' ranges, monotonicity, squares,
+;;;; signed factors); and, last, the orderings of the parameters substituted. Each is
+;;;; sound, so the first that decides gives the verdict; :UNKNOWN is never a guess.
+;;;;
+;;;; Speed: sign() requests are asked one at a time until the relation is decided, and
+;;;; DECIDE caches its verdicts.
+
+(in-package #:ames.maxima)
+
+;;; Deciding relations
+
+(defvar *substituting-orders* nil
+  "True while DECIDE-BY-ORDER-SUBSTITUTION works, so that it does not recurse.")
+
+(defvar *sides-differ* nil
+  "True while DECIDE-RELATION works on an equation (or, in DECIDE-BY-ORDER-SUBSTITUTION,
+on its rewriting) whose sides were seen to differ both ways at admissible points.")
+
+(defparameter *sign-sets*
+  '(("$POS" :positive) ("$NEG" :negative) ("$ZERO" :zero) ("$PZ" :positive :zero)
+    ("$NZ" :negative :zero) ("$PN" :positive :negative) ("$PNZ" :positive :negative :zero))
+  "Maxima's sign answers and the signs each allows.")
+
+(defun sign-set (answer)
+  "The list of signs (:POSITIVE :NEGATIVE :ZERO) Maxima's sign ANSWER allows."
+  (or (rest (assoc (symbol-name answer) *sign-sets* :test #'string=))
+      (list :positive :negative :zero)))
+
+(defun sign-requests (form)
+  "The sign() requests whose answers together bound the sign of the Maxima FORM,
+cheapest first: FORM itself, factor(ratsimp(FORM)), factorsum(FORM) (which groups
+terms, e.g. 2 acc l - 2 acc x0 into 2 acc (l - x0)) and trigsimp(FORM) (ratsimp(FORM)
+when FORM has no sin, cos or tan, for which trigsimp gives the same form, slower)."
+  (list (mcall "$SIGN" form)
+        (mcall "$SIGN" (mcall "$FACTOR" (mcall "$RATSIMP" form)))
+        (mcall "$SIGN" (mcall "$FACTORSUM" form))
+        (mcall "$SIGN" (if (trigonometric-form-p form)
+                           (mcall "$AMES_TRIGSIMP" form)
+                           (mcall "$RATSIMP" form)))))
+
+(defun narrowed-signs (signs answer)
+  "SIGNS (a list of :POSITIVE :NEGATIVE :ZERO) narrowed by Maxima's sign ANSWER."
+  (if (symbolp answer) (intersection signs (sign-set answer)) signs))
+
+(defun forms-signs (bridge forms &key datum)
+  "For each of the real Maxima FORMS, the signs (:POSITIVE :NEGATIVE :ZERO) it may have
+under the current assumptions: the intersection of what sign() says of its forms (see
+SIGN-REQUESTS). One round trip."
+  (let* ((count (length (sign-requests 0)))
+         (answers (request-list bridge (mapcan #'sign-requests forms) :datum datum)))
+    (loop for rest on answers by (lambda (list) (nthcdr count list))
+          collect (reduce #'narrowed-signs (subseq rest 0 count)
+                          :initial-value (list :positive :negative :zero)))))
+
+(defun form-signs (bridge form &key datum (enough (constantly nil)))
+  "The signs the real Maxima FORM may have under the current assumptions: what the
+answers to SIGN-REQUESTS allow together. They are asked one at a time, cheapest first
+(each answer cached on its own), and the asking stops once at most one sign is left or
+ENOUGH, a predicate on the signs found so far, is true; further answers could only
+narrow the signs (an empty intersection would mean contradictory answers)."
+  (let ((signs (list :positive :negative :zero)))
+    (dolist (request (sign-requests form) signs)
+      (setf signs (narrowed-signs signs (maxima-request bridge request :datum datum)))
+      (when (or (null (rest signs)) (funcall enough signs))
+        (return signs)))))
+
+(defun square-root-kernel (form)
+  "Some subform sqrt(A) = ((MEXPT) A 1/2) of the Maxima FORM, or NIL."
+  (cond ((atom form) nil)
+        ((and (mform-p form +mexpt+) (mform-p (third form) +rat+)
+              (eql (second (third form)) 1) (eql (third (third form)) 2))
+         form)
+        (t (some #'square-root-kernel (cdr form)))))
+
+(defun sign-product (a b)
+  "The signs a product may have when its factors may have the signs A and B."
+  (remove-duplicates
+   (loop for x in a
+         append (loop for y in b
+                      collect (cond ((or (eq x :zero) (eq y :zero)) :zero)
+                                    ((eq x y) :positive)
+                                    (t :negative))))))
+
+(defun radical-signs (bridge difference &key datum)
+  "The signs of DIFFERENCE (a Maxima form) found by clearing one square root: written
+as (a + b sqrt(A)) / c, its numerator has the sign of a when b = 0 and, when a and b
+have opposite signs, the sign of b^2 A - a^2 times that of b. NIL when no square root
+is there or the form is not linear in it."
+  (destructuring-bind (numerator denominator)
+      (request-list bridge (list (mcall "$NUM" (mcall "$RATSIMP" difference))
+                                 (mcall "$DENOM" (mcall "$RATSIMP" difference)))
+                    :datum datum)
+    (let ((kernel (square-root-kernel numerator)))
+      (when (and kernel (eql 1 (maxima-request bridge (mcall "$HIPOW" (mcall "$EXPAND" numerator) kernel)
+                                              :datum datum)))
+        (destructuring-bind (a b)
+            (request-list bridge (list (mcall "$RATCOEF" (mcall "$EXPAND" numerator) kernel 0)
+                                       (mcall "$RATCOEF" (mcall "$EXPAND" numerator) kernel 1))
+                          :datum datum)
+          (let* ((radicand (second kernel))
+                 (gap (mdifference (mform +mtimes+ (mform +mexpt+ b 2) radicand)
+                                   (mform +mexpt+ a 2))))
+            (destructuring-bind (a-signs b-signs gap-signs radicand-signs denominator-signs)
+                (forms-signs bridge (list a b gap radicand denominator) :datum datum)
+              (flet ((only (signs &rest allowed) (and signs (subsetp signs allowed))))
+                (let* ((real (only radicand-signs :positive :zero))
+                       (numerator-signs
+                        (cond ((or (null a-signs) (null b-signs)) nil)
+                              ;; b sqrt(A) against a: the larger in size wins. When
+                              ;; b^2 A > a^2 >= 0, A > 0 follows, so sqrt(A) is real.
+                              ((and (only a-signs :negative :zero) (only b-signs :positive))
+                               (cond ((only gap-signs :positive) '(:positive))
+                                     (real gap-signs)))
+                              ((and (only a-signs :positive :zero) (only b-signs :negative))
+                               (cond ((only gap-signs :positive) '(:negative))
+                                     (real (sign-product gap-signs '(:negative)))))
+                              ((not real) nil)
+                              ;; a and b sqrt(A) of one sign
+                              ((and (only a-signs :positive :zero) (only b-signs :positive :zero))
+                               (if (or (only a-signs :positive)
+                                       (and (only b-signs :positive) (only radicand-signs :positive)))
+                                   '(:positive) '(:positive :zero)))
+                              ((and (only a-signs :negative :zero) (only b-signs :negative :zero))
+                               (if (or (only a-signs :negative)
+                                       (and (only b-signs :negative) (only radicand-signs :positive)))
+                                   '(:negative) '(:negative :zero)))
+                              (t nil))))
+                  (and numerator-signs (only denominator-signs :positive :negative)
+                       (sign-product numerator-signs denominator-signs)))))))))))
+
+(defun relation-verdict (operator signs)
+  "The truth of (OPERATOR d 0) when d may have only SIGNS."
+  (flet ((only (&rest allowed) (and signs (subsetp signs allowed)))
+         (none (&rest excluded) (and signs (null (intersection signs excluded)))))
+    (cond ((null signs) :unknown)
+          (t (ecase operator
+               (> (cond ((only :positive) :true) ((none :positive) :false) (t :unknown)))
+               (>= (cond ((only :positive :zero) :true) ((only :negative) :false) (t :unknown)))
+               (< (cond ((only :negative) :true) ((none :negative) :false) (t :unknown)))
+               (<= (cond ((only :negative :zero) :true) ((only :positive) :false) (t :unknown)))
+               (= (cond ((only :zero) :true) ((none :zero) :false) (t :unknown)))
+               (/= (cond ((none :zero) :true) ((only :zero) :false) (t :unknown))))))))
+
+(defun opposite-truth (bridge relation lhs rhs)
+  "The truth of RELATION that is() gives through the opposite relation (X <= 0 for
+X > 0, equal for notequal ...): :FALSE when is() proves the opposite, :TRUE when it
+refutes it, else :UNKNOWN. LHS and RHS are RELATION's sides in Maxima form."
+  (let* ((operator (expression-operator relation))
+         (question (ecase operator
+                     (= (mform +notequal+ lhs rhs))
+                     (/= (mform +equal+ lhs rhs))
+                     (< (mform +mgeqp+ lhs rhs))
+                     (> (mform +mleqp+ lhs rhs))
+                     (<= (mform +mgreaterp+ lhs rhs))
+                     (>= (mform +mlessp+ lhs rhs)))))
+    (ecase (maxima-truth (maxima-request bridge (mcall "$IS" question) :datum relation))
+      (:true :false)
+      (:false :true)
+      (:unknown :unknown))))
+
+(defun decide-relation (bridge relation)
+  "The truth of one RELATION (= /= < > <= >=) under the current assumptions: is(), then
+numeric witnesses that no strategy can decide it (see RELATION-WITNESSES), then the
+signs of the difference of its sides, after clearing a square root, equivalence (for =
+and /=), what a physicist knows (truth.lisp) and the order substitution. A relation
+with a product of square roots of negative radicands, which Maxima's is() and sign()
+would take for real (or imaginary) square roots, is first decided in real terms by
+DECIDE-WITH-IMAGINARY-RADICANDS."
+  (when (imaginary-radicands bridge relation)
+    (let ((verdict (decide-with-imaginary-radicands bridge relation)))
+      (unless (eq verdict :fall-back)
+        (return-from decide-relation verdict))))
+  (let* ((operator (expression-operator relation))
+         (equation (member operator '(= /=)))
+         (lhs (to-mx bridge (relation-lhs relation)))
+         (rhs (to-mx bridge (relation-rhs relation)))
+         (question (case operator
+                     (= (mform +equal+ lhs rhs))
+                     (/= (mform +notequal+ lhs rhs))
+                     (t (mform (cdr (assoc operator *relation-heads*)) lhs rhs))))
+         (verdict (maxima-truth (maxima-request bridge (mcall "$IS" question) :datum relation))))
+    (unless (eq verdict :unknown)
+      (return-from decide-relation verdict))
+    ;; an inequality seen to hold at one admissible point and to fail at another, or an
+    ;; equation whose sides cross between two such points, is decided by no strategy
+    (multiple-value-bind (holds fails facts)
+        (and (not *substituting-orders*)
+             (relation-witnesses bridge (if equation
+                                            (list '> (relation-lhs relation) (relation-rhs relation))
+                                            relation)))
+      (when (and holds
+                 (or (not equation)
+                     (continuous-and-admissible-between-p
+                      (list '- (relation-lhs relation) (relation-rhs relation)) facts holds fails)))
+        (return-from decide-relation :unknown))
+      ;; is() proves X <= 0 from the fact X <= 0 but not that X > 0 fails: ask the
+      ;; opposite relation too
+      (setf verdict (opposite-truth bridge relation lhs rhs))
+      (unless (eq verdict :unknown)
+        (return-from decide-relation verdict))
+      ;; the signs are asked for only until they decide the relation
+      (setf verdict (relation-verdict operator
+                                      (form-signs bridge (mdifference lhs rhs)
+                                                  :datum relation
+                                                  :enough (lambda (signs)
+                                                            (not (eq (relation-verdict operator signs)
+                                                                     :unknown))))))
+      (when (eq verdict :unknown)
+        (let ((signs (radical-signs bridge (mdifference lhs rhs) :datum relation)))
+          (when signs (setf verdict (relation-verdict operator signs)))))
+      ;; sides seen to differ both ways are not equal: equivalence cannot be proven,
+      ;; here nor after the order substitution
+      (let ((*sides-differ* (or *sides-differ* (and equation holds t))))
+        (when (and (eq verdict :unknown) equation (not *sides-differ*)
+                   (equivalent-p bridge (relation-lhs relation) (relation-rhs relation)))
+          (setf verdict (if (eq operator '=) :true :false)))
+        (when (eq verdict :unknown)
+          (setf verdict (decide-by-reasoning bridge relation)))
+        (when (eq verdict :unknown)
+          (setf verdict (decide-by-order-substitution bridge relation))))
+      verdict)))
+
+(defun order-facts (bridge relation)
+  "The facts in force that order a variable V of RELATION against an expression E free of
+V and not a number (V > E, V < E, E > V ...), as lists (V E SIGN WEAK): V is E + SIGN * D
+for some D > 0 (D >= 0 when WEAK). These are the orderings Maxima's sign() does not use
+inside sums."
+  (loop for fact in (current-assumptions bridge)
+        for operator = (expression-operator fact)
+        for lhs = (relation-lhs fact)
+        for rhs = (relation-rhs fact)
+        for weak = (and (member operator '(>= <=)) t)
+        for above = (member operator '(> >=))          ; lhs above rhs
+        for order = (cond ((not (member operator '(> >= < <=))) nil)
+                          ((variable-symbol-p lhs) (list lhs rhs (if above 1 -1) weak))
+                          ((variable-symbol-p rhs) (list rhs lhs (if above -1 1) weak)))
+        when (and order
+                  (free-of-p (first order) (second order))
+                  (not (numberp (second order)))
+                  (not (free-of-p (first order) relation)))
+          collect order))
+
+(defun decide-by-order-substitution (bridge relation)
+  "Decide RELATION once more after writing each ordered variable V (a fact V > E or V < E
+in force, E not a number) as E + D or E - D with D > 0 fresh: sums such as
+mb g (l1 - l2)^2 + f (l1 - l2) then show their sign term by term. Sound: every admissible
+V is some E +/- D. :UNKNOWN when there is no such fact."
+  (let ((orders (and (not *substituting-orders*) (order-facts bridge relation))))
+    (cond ((null orders) :unknown)
+          ((null (rest orders)) (decide-with-orders bridge relation orders))
+          ;; all the orderings at once, else each alone (writing V = E - D forgets V > 0)
+          (t (let ((verdict (decide-with-orders bridge relation orders)))
+               (if (eq verdict :unknown)
+                   (loop for order in orders
+                         for single = (decide-with-orders bridge relation (list order))
+                         unless (eq single :unknown) return single
+                         finally (return :unknown))
+                   verdict))))))
+
+(defun order-excess-name (bridge variable)
+  "The fresh variable D standing for the excess of VARIABLE over its bound (V = E + D or
+E - D) in DECIDE-BY-ORDER-SUBSTITUTION: an uninterned symbol, so no user name can be
+it, and the same one each time for a VARIABLE of BRIDGE, so that the rewritten requests
+are answered from the cache when they come again."
+  (let ((table (bridge-excess-names bridge)))
+    (or (gethash variable table)
+        (let ((excess (make-symbol (format nil "~A-EXCESS" variable))))
+          ;; named apart from the algebra's variables ($AMESX...), so that it takes none
+          ;; of their letters
+          (maxima-name (bridge-names bridge) excess "$AMESX")
+          (setf (gethash (copy-tree variable) table) excess)))))
+
+(defun decide-with-orders (bridge relation orders)
+  "DECIDE-BY-ORDER-SUBSTITUTION's work for the given ORDERS (see ORDER-FACTS)."
+  (let* ((*substituting-orders* t)
+         (deltas (loop for order in orders
+                       collect (order-excess-name bridge (first order))))
+         (bindings (loop for (variable base sign) in orders
+                         for delta in deltas
+                         collect (cons variable (list '+ base (list '* sign delta)))))
+         (facts (loop for (nil nil nil weak) in orders
+                      for delta in deltas
+                      collect (list (if weak '>= '>) delta 0))))
+    ;; substitute one ordering after another, and again, so that a bound written with
+    ;; another ordered variable (f > mb g (l1 - l2) / l3 with l1 > l2) is rewritten too
+    (let ((rewritten relation))
+      (loop repeat 3
+            do (dolist (binding bindings)
+                 (setf rewritten (substitute-expressions (list binding) rewritten))))
+      ;; a rewriting that leaves the reals (a square root of a negative quantity)
+      ;; proves nothing: Maxima's complaint then means :UNKNOWN
+      (handler-case (call-with-assumptions bridge facts
+                                           (lambda () (decide bridge rewritten)))
+        (maxima-error () :unknown)))))
+
+(defvar *deciding* '()
+  "The verdict keys (see VERDICT-KEY) of the DECIDE calls under way, innermost first.")
+
+(defvar *cut-short* '()
+  "The verdict keys of questions that DECIDE answered :UNKNOWN without trying, because
+they were already under way (or :DEPTH, because the questions nested too deep), while
+deciding the innermost question under way.")
+
+(defparameter *deepest-decision* 8
+  "How many DECIDE calls may be under way at once (the reasoning of truth.lisp and the
+order substitution ask DECIDE about rewritten relations).")
+
+(defun decide (bridge relation)
+  "Decide RELATION (a relation of the algebra, or AND / OR / NOT of relations) under the
+current assumptions: :TRUE, :FALSE or :UNKNOWN. Uses Maxima's is(), then the sign of the
+difference of the two sides in several simplified forms, then the same after clearing a
+square root (so that roots of quadratics can be compared), then what a physicist knows
+(truth.lisp), then the orderings of the parameters; connectives are combined in
+three-valued logic. Verdicts are cached under the facts in force, like requests. A
+question asked again while it is being decided (by the reasoning about a rewritten
+relation) is answered :UNKNOWN there, and so is one nested too deep; an :UNKNOWN that
+owes something to such a cut is not cached.
+Signals UNTRANSLATABLE-EXPRESSION, MAXIMA-ERROR, MAXIMA-TIMEOUT."
+  (check-translatable relation :condition)
+  (let* ((cache (bridge-cache bridge))
+         (key (verdict-key bridge relation))
+         (record (bridge-statistics-record bridge)))
+    (multiple-value-bind (verdict found) (gethash key cache)
+      (incf (statistics-calls record))
+      (cond (found (incf (statistics-cache-hits record)) verdict)
+            ((member key *deciding* :test #'equal)
+             (push key *cut-short*)
+             :unknown)
+            ((>= (length *deciding*) *deepest-decision*)
+             (push :depth *cut-short*)
+             :unknown)
+            (t (let* ((outermost (null *deciding*))
+                      (cuts '())
+                      (verdict (let ((*deciding* (cons key *deciding*))
+                                     (*cut-short* '()))
+                                 (prog1 (decide-uncached bridge relation)
+                                   (setf cuts (remove key *cut-short* :test #'equal))
+                                   (when outermost (setf cuts (remove :depth cuts)))))))
+                 (when (or (not (eq verdict :unknown)) (null cuts))
+                   (when (>= (hash-table-count cache) *cache-limit*) (clrhash cache))
+                   (setf (gethash (copy-tree key) cache) verdict))
+                 (setf *cut-short* (append cuts *cut-short*))
+                 verdict))))))
+
+(defun verdict-key (bridge relation)
+  "The key of DECIDE's verdict on RELATION in BRIDGE's cache, under the facts in force."
+  (list* :decide *substituting-orders* relation (assumption-key bridge)))
+
+(defun decide-uncached (bridge relation)
+  "DECIDE's work, without its cache of verdicts."
+  (labels ((verdict (condition)
+             (case (expression-operator condition)
+               (not (ecase (verdict (second condition))
+                      (:true :false) (:false :true) (:unknown :unknown)))
+               (and (let ((result :true))
+                      (dolist (part (expression-arguments condition) result)
+                        (ecase (verdict part)
+                          (:false (return :false))
+                          (:unknown (setf result :unknown))
+                          (:true)))))
+               (or (let ((result :false))
+                     (dolist (part (expression-arguments condition) result)
+                       (ecase (verdict part)
+                         (:true (return :true))
+                         (:unknown (setf result :unknown))
+                         (:false)))))
+               (t (decide-relation bridge condition)))))
+    (verdict relation)))
+
+(defun holds-p (bridge relation)
+  "True when DECIDE answers :TRUE for RELATION (a relation or a logical form), found
+faster where it does not: a point that surely satisfies the facts in force and surely
+violates RELATION settles it without asking Maxima, since no sound strategy proves a
+relation that fails somewhere (see RELATION-REFUTED-P). For callers that act only on
+:TRUE. Signals what DECIDE signals."
+  (check-translatable relation :condition)
+  (multiple-value-bind (verdict found) (gethash (verdict-key bridge relation) (bridge-cache bridge))
+    (cond (found (eq verdict :true))
+          ((relation-refuted-p bridge relation) nil)
+          (t (eq (decide bridge relation) :true)))))
+
+(defun refuted-p (bridge relation &key assuming)
+  "True when RELATION (a relation or a logical form of the algebra) is seen to fail at a
+point that satisfies the facts in force and the facts ASSUMING (e.g. ((> tau 0))): then
+it does not follow from them, and no sound proof of it exists. NIL proves nothing. Asks
+Maxima nothing. Signals UNTRANSLATABLE-EXPRESSION for a RELATION or fact outside the
+algebra."
+  (check-translatable relation :condition)
+  (dolist (fact assuming) (check-translatable fact :condition))
+  (relation-refuted-p bridge relation assuming))
+
+(defun sign-varies-p (bridge expression)
+  "True when the arithmetic EXPRESSION is seen to be positive at one point that satisfies
+the facts in force and negative at another: then no relation of EXPRESSION with 0 is
+decided, and EXPRESSION is not identically 0. NIL proves nothing. Asks Maxima nothing.
+Signals UNTRANSLATABLE-EXPRESSION for an EXPRESSION outside the algebra."
+  (check-translatable expression :arithmetic)
+  (witnessed-both-ways-p bridge (list '> expression 0)))

@@ -1,0 +1,91 @@
+;;;; src/scenario/values.lisp -- the numbers of a run: --set values and (:value N) defaults, checked against every assumption.
+;;;;
+;;;; A run given numbers (bin/ames --set p=v, or --numeric for the (:value N) defaults,
+;;;; --set overriding them) must not break what the scenario declares: m = -2 against
+;;;; m :positive, d = 1 against (> d b) with b = 2. Such numbers would silently vanish
+;;;; from a report, or print wrong-signed positions; they are a PARAMETER-VALUE-ERROR
+;;;; naming the parameter and the assumption instead. An assumption is checked when every
+;;;; parameter it names has a value: exactly where its sides are rational, else with
+;;;; intervals that enclose the exact values (AMES.MAXIMA:VALUE-TRUTH); a value too close
+;;;; to a bound to tell which side it lies on is refused too.
+
+(in-package #:ames.scenario)
+
+(define-condition parameter-value-error (scenario-error)
+  ((parameter :initarg :parameter :initform nil :reader parameter-value-error-parameter
+              :documentation "The parameter whose assumption the values break.")
+   (assumption :initarg :assumption :initform nil :reader parameter-value-error-assumption
+               :documentation "The assumption, as declared (:POSITIVE, (> D B) ...)."))
+  (:documentation "A run's parameter values (given with --set, or (:value N) defaults)
+break a declared assumption, or name no parameter. DATUM is the assumption's relation,
+or the setting."))
+
+(defun parameter-named (scenario name)
+  "The SCENARIO-PARAMETER of SCENARIO whose name is NAME (a string or symbol), or NIL."
+  (find (string name) (scenario-parameters scenario)
+        :key (lambda (p) (symbol-name (scenario-parameter-name p)))
+        :test #'string-equal))
+
+(defun value-reject (scenario parameter datum control &rest arguments)
+  "Signal PARAMETER-VALUE-ERROR about PARAMETER (a SCENARIO-PARAMETER or NIL) of SCENARIO."
+  (error 'parameter-value-error
+         :scenario (scenario-name scenario)
+         :location (if parameter
+                       (format nil "parameter ~A" (symbol-name (scenario-parameter-name parameter)))
+                       "the parameter values")
+         :source (scenario-source scenario)
+         :datum datum
+         :parameter (and parameter (scenario-parameter-name parameter))
+         :detail (apply #'scenario-detail scenario control arguments)))
+
+(defun resolved-settings (scenario settings)
+  "SETTINGS, an alist (NAME . NUMBER) with NAME a string or symbol matched by name, as an
+alist (PARAMETER-SYMBOL . NUMBER). Signals PARAMETER-VALUE-ERROR for a name that is no
+parameter of SCENARIO or a value that is not a finite real."
+  (loop for (name . value) in settings
+        for parameter = (parameter-named scenario name)
+        do (unless parameter
+             (value-reject scenario nil name "~A is not a parameter of this scenario" name))
+           (unless (and (realp value) (finite-real-p value))
+             (value-reject scenario parameter value "the value of ~A must be a finite real number, not ~A"
+                           (scenario-parameter-name parameter) value))
+        collect (cons (scenario-parameter-name parameter) value)))
+
+(defun check-values-against-assumptions (scenario values)
+  "Check the alist VALUES ((PARAMETER-SYMBOL . NUMBER) ...) against every assumption of
+SCENARIO's parameters whose parameters all have a value. Returns VALUES. Signals
+PARAMETER-VALUE-ERROR naming the parameter and the assumption the values break, or that
+they come too close to for the check to tell."
+  (dolist (parameter (scenario-parameters scenario) values)
+    (let ((name (scenario-parameter-name parameter)))
+      (dolist (assumption (scenario-parameter-assumptions parameter))
+        (let ((relation (assumption-relation name assumption)))
+          (when (every (lambda (variable) (assoc variable values))
+                       (expression-variables relation))
+            (case (ames.maxima:value-truth relation values)
+              (:true)
+              (:false
+               (value-reject scenario parameter relation
+                             "the value ~A of ~A breaks its assumption ~S~@[ (with ~{~A = ~A~^, ~})~]"
+                             (cdr (assoc name values)) name assumption
+                             (loop for (other . value) in values
+                                   when (and (not (eq other name))
+                                             (member other (expression-variables relation)))
+                                     append (list other value))))
+              (t
+               (value-reject scenario parameter relation
+                             "the value ~A of ~A is too close to the bound of its assumption ~S to check"
+                             (cdr (assoc name values)) name assumption)))))))))
+
+(defun run-parameter-values (scenario &key settings numeric)
+  "The parameter values of a run of SCENARIO: its (:value N) defaults when NUMERIC is
+true, overridden by SETTINGS (an alist (NAME . NUMBER), names matched by name), as an
+alist (PARAMETER-SYMBOL . NUMBER) in declaration order, checked against every
+assumption (see CHECK-VALUES-AGAINST-ASSUMPTIONS). Signals PARAMETER-VALUE-ERROR."
+  (let* ((given (resolved-settings scenario settings))
+         (defaults (and numeric (scenario-parameter-values scenario)))
+         (values (loop for parameter in (scenario-parameters scenario)
+                       for name = (scenario-parameter-name parameter)
+                       for entry = (or (assoc name given) (assoc name defaults))
+                       when entry collect entry)))
+    (check-values-against-assumptions scenario values)))
