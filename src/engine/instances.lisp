@@ -120,6 +120,7 @@ base's components in a situation, with its beliefs in a JTMS."
   (by-component (make-hash-table :test #'eq))        ; name -> instances, newest first
   (belief-table (make-hash-table :test #'equal))     ; belief -> node
   (beliefs-by-head (make-hash-table :test #'eq))     ; head -> ((belief . node) ...)
+  (belief-index (make-hash-table :test #'equal))     ; (head place value) -> ((belief . node) ...)
   (equation-table (make-hash-table :test #'equal))   ; equation -> node
   (entity-nodes (make-hash-table :test #'eq))        ; entity name -> premise node
   (dependents (make-hash-table :test #'eq))          ; node -> instances reading it
