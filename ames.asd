@@ -141,6 +141,7 @@ frictionless translating rigid bodies evolve (after Leon Wong's 1994 MIT thesis)
     :depends-on ("report")
     :components ((:file "package")
                  (:file "cli")
+                 (:file "jobs")
                  (:file "explain"))))
   :in-order-to ((test-op (test-op "ames/tests"))))
 

@@ -10,6 +10,7 @@
 
 (defparameter *usage*
   "Usage: ames run FILE... [--format text|sexp|latex|json|html] [--svg OUT.svg] [--set PARAM=VALUE ...]
+                [--jobs N]
        ames explain FILE... [--state N] [--set PARAM=VALUE ...]
   Simulate every scenario in each FILE and print a report.
   --format text   a report for people, state by state (the default)
@@ -20,6 +21,8 @@
   --svg OUT.svg   also draw each scenario (OUT-NAME.svg when the run has several)
   --set p=v ...   give parameter p the number v (an integer, ratio or decimal); numeric
                   values are then printed beside the closed forms
+  --jobs N        run the files in N processes at once (each with its own Maxima);
+                  reports in the files' order, the exit code the worst of them
   explain         why each state's contacts and modes hold, where its equations
                   come from, and why it ends when it does (or only state N)
 Exit codes: 0 success, 1 a scenario error, 2 usage."
@@ -107,17 +110,20 @@ USAGE-ERROR naming TEXT when it is malformed."
 with 0 on success, 1 when any scenario had an error, 2 on a usage error."
   (let ((status
           (handler-case
-              (let ((options (parse-command-line arguments)))
-                (case (getf options :command)
-                  (:help (write-string *usage*) (terpri) 0)
-                  (:explain (explain-files (getf options :files) :state (getf options :state)
-                                           :settings (getf options :settings)))
-                  (:run (let ((*package* (find-package '#:ames-scenario)))
-                          (run-files (getf options :files)
-                                     :format (getf options :format)
-                                     :settings (getf options :settings)
-                                     :svg (getf options :svg)
-                                     :stream *standard-output*)))))
+              (multiple-value-bind (jobs arguments) (jobs-option arguments)
+                (let ((options (parse-command-line arguments)))
+                  (case (getf options :command)
+                    (:help (write-string *usage*) (terpri) 0)
+                    (:explain (explain-files (getf options :files) :state (getf options :state)
+                                             :settings (getf options :settings)))
+                    (:run (if jobs
+                              (run-jobs jobs options)
+                              (let ((*package* (find-package '#:ames-scenario)))
+                                (run-files (getf options :files)
+                                           :format (getf options :format)
+                                           :settings (getf options :settings)
+                                           :svg (getf options :svg)
+                                           :stream *standard-output*)))))))
             (usage-error (condition)
               (format *error-output* "ames: ~A~%~A~%" condition *usage*)
               2))))
