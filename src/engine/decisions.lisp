@@ -241,21 +241,19 @@ VALUE) for each of its properties, where that element or value is an atom (a nam
                     collect (list head key value)))))
 
 (defun index-belief (model belief node)
-  "Enter the new BELIEF (with its NODE) in MODEL's belief index."
-  (dolist (key (belief-index-keys belief))
-    (push (cons belief node) (gethash key (model-belief-index model)))))
+  "Enter the new BELIEF (with its NODE) in MODEL's belief index, whose entries are
+(COUNT . PAIRS), newest first."
+  (dolist (key (cons (list (pattern-head belief)) (belief-index-keys belief)))
+    (let ((entry (or (gethash key (model-belief-index model))
+                     (setf (gethash key (model-belief-index model)) (cons 0 '())))))
+      (incf (car entry))
+      (push (cons belief node) (cdr entry)))))
 
 (defun ground-p (form)
   "True when FORM holds no pattern variable."
   (cond ((pattern-variable-p form) nil)
         ((consp form) (and (ground-p (car form)) (ground-p (cdr form))))
         (t t)))
-
-(defun shorter-p (a b)
-  "True when the list A is shorter than the list B (in time proportional to the shorter)."
-  (loop (cond ((null b) (return nil))
-              ((null a) (return t)))
-        (setf a (cdr a) b (cdr b))))
 
 (defun candidate-beliefs (model pattern bindings)
   "The (belief . node) pairs of MODEL that may match PATTERN under BINDINGS, oldest
@@ -264,18 +262,18 @@ BELIEFS-WITH-HEAD. Narrowed by the index on the parts of PATTERN that BINDINGS m
 ground, the shortest list winning."
   (let* ((pattern (substitute-bindings bindings pattern))
          (head (pattern-head pattern))
-         (best (gethash head (model-beliefs-by-head model)))
+         (best (or (gethash (list head) (model-belief-index model)) (cons 0 '())))
          (positional (positional-part pattern)))
     (flet ((narrow (key)
-             (let ((entries (gethash key (model-belief-index model))))
-               (when (shorter-p entries best)
-                 (setf best entries)))))
+             (let ((entry (gethash key (model-belief-index model) '(0))))
+               (when (< (car entry) (car best))
+                 (setf best entry)))))
       (when (and positional (atom (first positional)) (ground-p (first positional)))
         (narrow (list head 0 (first positional))))
       (loop for (key value) on (property-part pattern) by #'cddr
             when (and (atom value) (ground-p value))
               do (narrow (list head key value))))
-    (reverse best)))
+    (reverse (cdr best))))
 
 (defun enumerate-bindings (model component)
   "Every binding of COMPONENT's entity and belief arguments (whether or not the
