@@ -138,8 +138,8 @@ the last exit code."
                 (or (ignore-errors (parse-integer (uiop:run-program '("nproc") :output :string)
                                                   :junk-allowed t)) "?"))))))
 
-(let ((directory (uiop:ensure-directory-pathname
-                  (uiop:tmpize-pathname (merge-pathnames "ames-scale" (uiop:temporary-directory)))))
+(let ((directory (merge-pathnames (format nil "ames-scale-~36R/" (random (expt 36 8) (make-random-state t)))
+                                  (uiop:temporary-directory)))
       (results '()))
   (dolist (family +families+)
     (push (cons family (bench-family family *sizes*)) results))
