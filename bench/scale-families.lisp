@@ -58,26 +58,24 @@
      (force push :on b1 :value (f 0))
      (simulate :states 2)))
 
-(defun stack (n)
-  "N blocks stacked on the floor, at rest."
-  `(scenario ,(name "stack-~D" n)
-     "A stack of blocks at rest on a floor."
-     (parameters ,@(mass-parameters n) (g :positive))
+(defun stack-scenario (name description n &key pulled)
+  "N blocks stacked on the floor; when PULLED, the top block is pulled sideways by f."
+  `(scenario ,name ,description
+     (parameters ,@(mass-parameters n) (g :positive) ,@(and pulled '((f :positive))))
      (gravity g)
      ,(floor-clause)
      ,@(loop for k from 1 to n collect (block-clause k 0 (1- k)))
-     (simulate :states 2)))
+     ,@(and pulled `((force pull :on ,(name "b~D" n) :value (f 0))))
+     (simulate :states ,(if pulled 4 2))))
+
+(defun stack (n)
+  "N blocks stacked on the floor, at rest."
+  (stack-scenario (name "stack-~D" n) "A stack of blocks at rest on a floor." n))
 
 (defun pull (n)
   "A stack of N whose top block is pulled sideways by f."
-  `(scenario ,(name "pull-~D" n)
-     "A stack of blocks whose top block is pulled off sideways."
-     (parameters ,@(mass-parameters n) (g :positive) (f :positive))
-     (gravity g)
-     ,(floor-clause)
-     ,@(loop for k from 1 to n collect (block-clause k 0 (1- k)))
-     (force pull :on ,(name "b~D" n) :value (f 0))
-     (simulate :states 4)))
+  (stack-scenario (name "pull-~D" n) "A stack of blocks whose top block is pulled off sideways." n
+                  :pulled t))
 
 (defun drops (n)
   "N blocks side by side released at heights 2, 4, ..., 2 N above the floor."
