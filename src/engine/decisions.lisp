@@ -211,6 +211,7 @@ for a belief, through a collection whose pattern it matches."
   (or (gethash belief (model-belief-table model))
       (let ((node (ames.tms:make-node (model-jtms model) belief)))
         (push (cons belief node) (gethash (pattern-head belief) (model-beliefs-by-head model)))
+        (index-belief model belief node)
         (setf (gethash belief (model-belief-table model)) node))))
 
 (defun equation-node (model equation)
@@ -222,6 +223,57 @@ for a belief, through a collection whose pattern it matches."
 (defun beliefs-with-head (model head)
   "Every (belief . node) of MODEL whose head is HEAD, oldest first."
   (reverse (gethash head (model-beliefs-by-head model))))
+
+;;; An index of the beliefs by their first positional element and by each property's
+;;; value, so that a pattern whose arguments are partly bound (the forces :ON one body)
+;;; is matched against the few beliefs that can match it, not against every belief of
+;;; its head: model building is then near linear in the number of beliefs.
+
+(defun belief-index-keys (belief)
+  "The keys under which BELIEF is indexed: (HEAD 0 FIRST-POSITIONAL) and (HEAD KEY
+VALUE) for each of its properties, where that element or value is an atom (a name)."
+  (let ((head (pattern-head belief))
+        (positional (positional-part belief)))
+    (append (and positional (atom (first positional))
+                 (list (list head 0 (first positional))))
+            (loop for (key value) on (property-part belief) by #'cddr
+                  when (atom value)
+                    collect (list head key value)))))
+
+(defun index-belief (model belief node)
+  "Enter the new BELIEF (with its NODE) in MODEL's belief index, whose entries are
+(COUNT . PAIRS), newest first."
+  (dolist (key (cons (list (pattern-head belief)) (belief-index-keys belief)))
+    (let ((entry (or (gethash key (model-belief-index model))
+                     (setf (gethash key (model-belief-index model)) (cons 0 '())))))
+      (incf (car entry))
+      (push (cons belief node) (cdr entry)))))
+
+(defun ground-p (form)
+  "True when FORM holds no pattern variable."
+  (cond ((pattern-variable-p form) nil)
+        ((consp form) (and (ground-p (car form)) (ground-p (cdr form))))
+        (t t)))
+
+(defun candidate-beliefs (model pattern bindings)
+  "The (belief . node) pairs of MODEL that may match PATTERN under BINDINGS, oldest
+first: a superset of the matches (MATCH-PATTERN decides), in the order of
+BELIEFS-WITH-HEAD. Narrowed by the index on the parts of PATTERN that BINDINGS make
+ground, the shortest list winning."
+  (let* ((pattern (substitute-bindings bindings pattern))
+         (head (pattern-head pattern))
+         (best (or (gethash (list head) (model-belief-index model)) (cons 0 '())))
+         (positional (positional-part pattern)))
+    (flet ((narrow (key)
+             (let ((entry (gethash key (model-belief-index model) '(0))))
+               (when (< (car entry) (car best))
+                 (setf best entry)))))
+      (when (and positional (atom (first positional)) (ground-p (first positional)))
+        (narrow (list head 0 (first positional))))
+      (loop for (key value) on (property-part pattern) by #'cddr
+            when (and (atom value) (ground-p value))
+              do (narrow (list head key value))))
+    (reverse (cdr best))))
 
 (defun enumerate-bindings (model component)
   "Every binding of COMPONENT's entity and belief arguments (whether or not the
@@ -255,7 +307,7 @@ and belief nodes the binding rests on."
                                extended)))))))
               (:belief
                (let ((pattern (argument-pattern argument)))
-                 (loop for (belief . node) in (beliefs-with-head model (pattern-head pattern))
+                 (loop for (belief . node) in (candidate-beliefs model pattern bindings)
                        do (multiple-value-bind (bindings ok) (match-pattern pattern belief bindings)
                             (when ok (push (cons bindings (cons node nodes)) extended))))))
               (:collection (push partial extended)))))
@@ -269,7 +321,7 @@ joined across them) under BINDINGS: a list of node lists. NIL when there is none
     (dolist (pattern patterns)
       (setf partials
             (loop for (bindings . nodes) in partials
-                  append (loop for (belief . node) in (beliefs-with-head model (pattern-head pattern))
+                  append (loop for (belief . node) in (candidate-beliefs model pattern bindings)
                                for (extended ok) = (multiple-value-list
                                                     (match-pattern pattern belief bindings))
                                when ok collect (cons extended (cons node nodes))))))

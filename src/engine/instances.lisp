@@ -115,16 +115,17 @@ base's components in a situation, with its beliefs in a JTMS."
   (situation nil :type situation)
   (jtms nil)
   (decider nil :type (or null function))
-  (instance-table (make-hash-table :test #'equal))   ; key -> instance
+  (instance-table (make-datum-table))                ; key -> instance
   (instance-list '() :type list)                     ; newest first
   (by-component (make-hash-table :test #'eq))        ; name -> instances, newest first
-  (belief-table (make-hash-table :test #'equal))     ; belief -> node
+  (belief-table (make-datum-table))                  ; belief -> node
   (beliefs-by-head (make-hash-table :test #'eq))     ; head -> ((belief . node) ...)
-  (equation-table (make-hash-table :test #'equal))   ; equation -> node
+  (belief-index (make-datum-table))                  ; (head place value) -> ((belief . node) ...)
+  (equation-table (make-datum-table))                ; equation -> node
   (entity-nodes (make-hash-table :test #'eq))        ; entity name -> premise node
   (dependents (make-hash-table :test #'eq))          ; node -> instances reading it
   (collectors (make-hash-table :test #'eq))          ; belief head -> collecting components
-  (given (make-hash-table :test #'equal))            ; decisions to use while building
+  (given (make-datum-table))                         ; decisions to use while building
   (basis-decisions '() :type list)
   (dirty nil)                                        ; during a transition: rank -> instances
   (pending (make-hash-table :test #'eq))

@@ -205,3 +205,27 @@ strings, NIL, other symbols (by package, then name), conses (lexicographically).
 (defun canonical-sort (data)
   "A fresh list of DATA in the canonical order."
   (sort (copy-list data) #'datum<))
+
+;;; Hash tables of data: SXHASH looks only a few conses deep, so beliefs that differ
+;;; deep inside ((derivative (path-speed contact-27) ...)) would share a hash; a model of
+;;; thousands of beliefs then spends its time comparing them.
+
+(defconstant +datum-hash-atoms+ 48
+  "How many atoms of a datum, depth first, DATUM-HASH mixes.")
+
+(defun datum-hash (datum)
+  "A hash of DATUM consistent with EQUAL that mixes its first +DATUM-HASH-ATOMS+ atoms
+depth first, however deep they are, and the shape around them."
+  (let ((hash 17) (budget +datum-hash-atoms+))
+    (labels ((mix (value)
+               (setf hash (logand (+ (* hash 31) value) most-positive-fixnum)))
+             (walk (x)
+               (when (plusp budget)
+                 (cond ((consp x) (mix 7) (walk (car x)) (mix 11) (walk (cdr x)))
+                       (t (decf budget) (mix (sxhash x)))))))
+      (walk datum))
+    hash))
+
+(defun make-datum-table ()
+  "An EQUAL hash table keyed by data, hashed with DATUM-HASH."
+  (make-hash-table :test 'equal :hash-function #'datum-hash))

@@ -62,7 +62,7 @@ the alist (?VAR . canonically sorted values), the nodes the beliefs that matched
   (let ((collections '()) (nodes '()))
     (dolist (argument (component-collection-arguments (instance-component instance)))
       (let ((values '()) (pattern (argument-pattern argument)))
-        (loop for (belief . node) in (beliefs-with-head model (pattern-head pattern))
+        (loop for (belief . node) in (candidate-beliefs model pattern (instance-bindings instance))
               when (ames.tms:node-in-p node)
                 do (multiple-value-bind (bindings ok)
                        (match-pattern pattern belief (instance-bindings instance))

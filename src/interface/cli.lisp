@@ -44,6 +44,8 @@
   --time-limit S  the wall time one scenario may take, in seconds (default 300)
   --maxima-timeout S  the time one Maxima request may take, in seconds (default 20)
   --verbose       print error messages in full (long ones are otherwise cut short)
+  --jobs N        run the files in N processes at once (each with its own Maxima);
+                  reports in the files' order, the exit code the worst of them
   explain         why each state's contacts and modes hold, where its equations
                   come from, and why it ends when it does (or only state N)
 Exit codes: 0 complete, 1 a scenario error, 2 usage, 3 a run (or a branch) that ended
@@ -162,26 +164,30 @@ a process ended by SIGPIPE).")
 (defun main (arguments)
   "The entry point of bin/ames: run the command in ARGUMENTS (a list of strings) and quit
 with the status RUN-FILES returns (0 complete, 1 a scenario error, 3 a run ended
-ambiguous or undecided), or 2 on a usage error. When the standard output is a pipe whose reader went away (bin/ames run x | head), stop quietly
-with status +BROKEN-PIPE-STATUS+."
+ambiguous or undecided), or 2 on a usage error; with --jobs N, the worst status of the
+child processes (RUN-JOBS). When the standard output is a pipe whose reader went away
+(bin/ames run x | head), stop quietly with status +BROKEN-PIPE-STATUS+."
   (let ((status
           (handler-case
-              (let ((options (parse-command-line arguments)))
-                (case (getf options :command)
-                  (:help (write-string *usage*) (terpri) +exit-complete+)
-                  (:explain (explain-files (getf options :files) :state (getf options :state)
+              (multiple-value-bind (jobs arguments) (jobs-option arguments)
+                (let ((options (parse-command-line arguments)))
+                  (case (getf options :command)
+                    (:help (write-string *usage*) (terpri) +exit-complete+)
+                    (:explain (explain-files (getf options :files) :state (getf options :state)
+                                             :settings (getf options :settings)
+                                             :numeric (getf options :numeric)
+                                             :limits (command-line-limits options)))
+                    (:run (if jobs
+                              (run-jobs jobs options)
+                              (let ((*package* (find-package '#:ames-scenario)))
+                                (run-files (getf options :files)
+                                           :format (getf options :format)
                                            :settings (getf options :settings)
                                            :numeric (getf options :numeric)
-                                           :limits (command-line-limits options)))
-                  (:run (let ((*package* (find-package '#:ames-scenario)))
-                          (run-files (getf options :files)
-                                     :format (getf options :format)
-                                     :settings (getf options :settings)
-                                     :numeric (getf options :numeric)
-                                     :svg (getf options :svg)
-                                     :limits (command-line-limits options)
-                                     :verbose (getf options :verbose)
-                                     :stream *standard-output*)))))
+                                           :svg (getf options :svg)
+                                           :limits (command-line-limits options)
+                                           :verbose (getf options :verbose)
+                                           :stream *standard-output*)))))))
             (usage-error (condition)
               (format *error-output* "ames: ~A~%~A~%" condition *usage*)
               +exit-usage+)

@@ -142,21 +142,23 @@ contacts among POINTS count when they are penetrated."
   "How degenerate the current assignment is: the active touching contacts whose every
 termination relation's function vanishes identically (a normal force of zero all
 along) plus the inactive touching contacts grazed all along (gap identically zero)."
-  (let ((count 0))
+  (let ((count 0)
+        (conditions (make-hash-table :test #'equal)))
+    (dolist (condition (ames.engine:model-termination-conditions (run-model run)))
+      (push condition (gethash (ames.engine:termination-condition-instance condition) conditions)))
     (dolist (point points count)
       (let ((contact (point-contact point))
             (key (ames.engine:choice-point-instance point)))
         (when contact
           (if (instance-active-p run key)
               (when (some (lambda (condition)
-                            (and (equal (ames.engine:termination-condition-instance condition) key)
-                                 (eq (ames.engine:termination-condition-kind condition) :deactivation)
+                            (and (eq (ames.engine:termination-condition-kind condition) :deactivation)
                                  (member (first (ames.engine:termination-condition-relation condition))
                                          '(< > <= >=))
                                  (vanishes-identically-p
                                   run solved (violation-function
                                               (ames.engine:termination-condition-relation condition)))))
-                          (ames.engine:model-termination-conditions (run-model run)))
+                          (reverse (gethash key conditions)))
                 (incf count))
               (when (vanishes-identically-p run solved `(ames.kb:contact-gap ,contact))
                 (incf count))))))))

@@ -56,32 +56,50 @@ table) not occurring in EXPR, (values TERM EXPR); else NIL."
   "Eliminate from EQUATIONS every unknown that one of them defines outright (see
 DEFINITION-OF): returns the remaining equations (with the definitions substituted) and
 the definitions, an alist term -> expression in the order they were eliminated (an
-expression may mention terms eliminated later, never earlier)."
-  (let ((table (make-hash-table :test #'equal))
-        (remaining (copy-list equations))
-        (definitions '()))
+expression may mention terms eliminated later, never earlier). The first equation (in
+order) that is a definition is eliminated first; an index of which equations mention
+which unknown keeps each substitution to the equations it concerns."
+  (let* ((table (make-hash-table :test #'equal))
+         (remaining (coerce equations 'vector))
+         (count (length remaining))
+         (gone (make-array count :element-type 'bit :initial-element 0))
+         (pending (make-array count :element-type 'bit :initial-element 1))
+         (mentions (make-hash-table :test #'equal))
+         (definitions '())
+         (next 0))
     (dolist (unknown unknowns) (setf (gethash unknown table) t))
-    (loop
-      (let ((found nil))
-        (dolist (equation remaining)
-          (multiple-value-bind (term expression) (definition-of equation table)
-            (when term
-              (setf found (list equation term expression))
-              (return))))
-        (unless found (return))
-        (destructuring-bind (equation term expression) found
-          (remhash term table)
-          (push (cons term expression) definitions)
-          (let ((binding (list (cons term expression))))
-            (setf remaining
-                  (loop for other in remaining
-                        unless (eq other equation)
-                          collect (if (free-of-p term other)
-                                      other
-                                      (substitute-expressions binding other))))))))
+    (flet ((note-mentions (index expression)
+             (dolist (term (expression-variables expression))
+               (when (gethash term table) (pushnew index (gethash term mentions))))))
+      (dotimes (index count) (note-mentions index (aref remaining index)))
+      ;; only an equation changed by a substitution can become a definition: look at
+      ;; each pending one in order, from the earliest
+      (loop while (< next count)
+            do (if (zerop (aref pending next))
+                   (incf next)
+                   (progn
+                     (setf (aref pending next) 0)
+                     (multiple-value-bind (term expression) (definition-of (aref remaining next) table)
+                       (when term
+                         (remhash term table)
+                         (setf (aref gone next) 1)
+                         (push (cons term expression) definitions)
+                         (let ((binding (list (cons term expression)))
+                               (earliest next))
+                           (dolist (index (gethash term mentions))
+                             (when (and (zerop (aref gone index))
+                                        (not (free-of-p term (aref remaining index))))
+                               (setf (aref remaining index)
+                                     (substitute-expressions binding (aref remaining index))
+                                     (aref pending index) 1
+                                     earliest (min earliest index))
+                               (note-mentions index expression)))
+                           (setf next earliest))))))))
     (values (remove-if (lambda (equation)
                          (equal (relation-lhs equation) (relation-rhs equation)))
-                       (mapcar #'fold-zeros remaining))
+                       (loop for index below count
+                             when (zerop (aref gone index))
+                               collect (fold-zeros (aref remaining index))))
             (nreverse definitions))))
 
 (defun fold-zeros (expression)
@@ -135,6 +153,13 @@ terms) set to 0: there they only appear multiplied by the contact's zero curvatu
 
 (defun solve-compact (run equations unknowns)
   "Solve the compact EQUATIONS for UNKNOWNS through Maxima: the alist of the unique
+solution, block by block where the structure allows (see structure.lisp). Signals
+UNSOLVABLE-MODEL when there is none or several."
+  (or (solve-by-blocks run equations unknowns)
+      (solve-whole run equations unknowns)))
+
+(defun solve-whole (run equations unknowns)
+  "Solve the compact EQUATIONS for UNKNOWNS in one request: the alist of the unique
 solution. Signals UNSOLVABLE-MODEL when there is none or several."
   (let ((solutions (handler-case (ames.maxima:solve-equations (run-bridge run) equations unknowns)
                      (ames.maxima:solve-failed (condition)

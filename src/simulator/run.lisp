@@ -20,6 +20,11 @@ NIL at the root.")
            :documentation "Alist body name -> ames.geometry shape.")
    (contacts :initarg :contacts :reader run-contacts
              :documentation "Alist contact entity name -> ames.geometry simple contact.")
+   (contact-table :initform nil :accessor run-contact-table
+                  :documentation "The contacts as a hash table, made on first use.")
+   (parameter-signs :initform :unset :accessor run-parameter-signs-cache
+                    :documentation "The parameters' declared signs (see PARAMETER-SIGNS),
+made on first use.")
    (locus-kinds :initarg :locus-kinds :initform '() :reader run-locus-kinds
                 :documentation "Alist contact name -> (:KIND K :POINT P) for the loci of points
 attached to bodies (see src/simulator/attachments.lisp); the other contacts are loci of two
@@ -67,11 +72,21 @@ of (:state N :fact RELATION).")
   "True when RELATION is decided :TRUE under the scenario's assumptions."
   (ames.maxima:holds-p (run-bridge run) relation))
 
+(defun run-parameter-signs (run)
+  "The alist parameter -> declared sign of RUN's scenario (see PARAMETER-SIGNS)."
+  (let ((signs (run-parameter-signs-cache run)))
+    (if (eq signs :unset)
+        (setf (run-parameter-signs-cache run) (parameter-signs (run-scenario run)))
+        signs)))
+
 (defun sign-of (run x)
-  "The sign of X under the assumptions: 1, -1, 0, or :UNKNOWN."
+  "The sign of X under the assumptions: 1, -1, 0, or :UNKNOWN. The rules of signs over
+the parameters' declared signs (SIGN-ALGEBRA) answer first; Maxima where they do not."
   (cond ((and (realp x) (plusp x)) 1)
         ((and (realp x) (minusp x)) -1)
         ((eql x 0) 0)
+        ((member (sign-algebra (run-parameter-signs run) x) '(1 -1 0))
+         (sign-algebra (run-parameter-signs run) x))
         ((holds run `(> ,x 0)) 1)
         ((holds run `(< ,x 0)) -1)
         ((and (not (ames.maxima:sign-varies-p (run-bridge run) x))
@@ -109,7 +124,12 @@ of (:state N :fact RELATION).")
 
 (defun contact-geometry (run contact)
   "The ames.geometry simple contact behind the contact entity CONTACT."
-  (cdr (assoc contact (run-contacts run))))
+  (let ((table (or (run-contact-table run)
+                   (let ((table (make-hash-table :test #'eq)))
+                     (loop for (name . geometry) in (run-contacts run)
+                           do (setf (gethash name table) geometry))
+                     (setf (run-contact-table run) table)))))
+    (values (gethash contact table))))
 
 (defun contact-bodies (run contact)
   "The observer and obstacle names of CONTACT, as a list."
@@ -167,11 +187,13 @@ contacts that continue it past one of its ends at a corner that is not concave (
 turn from its tangent to the next one's is to the left or none): an observer at such
 a corner is outside the obstacle when it is outside either face, so the two contacts
 are alternatives. At a concave corner both faces can push at once."
-  (let ((by-geometry (mapcar (lambda (entry) (cons (cdr entry) (car entry))) contacts))
+  (let ((by-geometry (make-hash-table :test #'eq))
         (alternatives '()))
     (loop for (name . geometry) in contacts
+          do (setf (gethash geometry by-geometry) name))
+    (loop for (name . geometry) in contacts
           do (loop for (end . neighbour) in (ames.geometry:contact-neighbours geometry)
-                   for other = (cdr (assoc neighbour by-geometry))
+                   for other = (gethash neighbour by-geometry)
                    when (and other (eq end :end))
                      do (let* ((length (ames.geometry:contact-length geometry))
                                (turn (vec-cross (ames.geometry:contact-unit-tangent geometry length)

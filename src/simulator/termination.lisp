@@ -221,11 +221,15 @@ velocity, an impulsive event)."
 NEVER), UNKNOWN a list of (FACT EVENT) for the conditions whose firing is not decided,
 NEVER the events of the conditions proven never to fire in this state. Conditions over
 a :NUMERIC group are watched by a numeric integration (under parameter values) up to
-the earliest of the others."
-  (let ((candidates '()) (unknown '()) (numeric '()) (never '()))
+the earliest of the others. A contact the broad phase proves out of reach (see
+broad-phase.lisp) never fires."
+  (let ((candidates '()) (unknown '()) (numeric '()) (never '())
+        (reach (make-reach run solved groups)))
     (dolist (condition (ames.engine:model-termination-conditions (run-model run)))
       (let* ((relation (ames.engine:termination-condition-relation condition))
-             (involved (condition-groups run solved groups relation)))
+             (contact (gap-relation-contact relation))
+             (involved (and (not (and contact (cannot-meet-p reach contact)))
+                            (condition-groups run solved groups relation))))
         (multiple-value-bind (result fact)
             (cond ((null involved) :never)
                   ((some (lambda (g) (eq (group-kind g) :numeric)) involved)

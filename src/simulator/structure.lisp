@@ -1,0 +1,111 @@
+;;;; src/simulator/structure.lisp -- solving a compact model by its structure: the block
+;;;; triangular decomposition of its equations.
+;;;;
+;;;; Each equation mentions a few unknowns. A perfect matching of equations to unknowns
+;;;; (each equation paired with an unknown it mentions, every unknown used once) orders the
+;;;; system: equation E needs the equation matched to each other unknown E mentions to be
+;;;; solved first. The strongly connected components of that graph are the blocks (a
+;;;; group of bodies that do not touch the others is one block or several; a chain of
+;;;; pushes is a string of one-equation blocks), and Tarjan's algorithm yields them with
+;;;; every block after those it needs. Solving block by block, each with the values found
+;;;; so far substituted, gives the whole system's solutions: when every block has exactly
+;;;; one, so has the whole system (for a linear one its determinant is the product of the
+;;;; blocks'). Maxima then solves many small systems in place of one large one, and a
+;;;; block whose equations did not change since an earlier state is answered from the
+;;;; bridge's cache. Where the structure does not help (no perfect matching: a singular or
+;;;; redundant model) or a block has no unique solution, the whole system is solved at
+;;;; once, as before, so that the verdicts (none, several) are the whole system's.
+
+(in-package #:ames.simulator)
+
+(defun equation-unknown-indices (equations unknowns)
+  "For each of EQUATIONS, the indices (in UNKNOWNS) of the unknowns it mentions: a vector
+of lists."
+  (let ((index (make-hash-table :test #'equal)))
+    (loop for unknown in unknowns for i from 0 do (setf (gethash unknown index) i))
+    (map 'vector (lambda (equation)
+                   (remove-duplicates
+                    (loop for term in (expression-variables equation)
+                          for i = (gethash term index)
+                          when i collect i)))
+         equations)))
+
+(defun perfect-matching (occurrences unknown-count)
+  "A perfect matching of the equations (OCCURRENCES, as EQUATION-UNKNOWN-INDICES gives
+them) to UNKNOWN-COUNT unknowns by augmenting paths: a vector unknown index -> equation
+index, or NIL when there is none (the counts differ, or the model is structurally
+singular)."
+  (let* ((count (length occurrences))
+         (owner (make-array unknown-count :initial-element nil)))
+    (unless (= count unknown-count)
+      (return-from perfect-matching nil))
+    (dotimes (equation count owner)
+      (let ((seen (make-array unknown-count :initial-element nil)))
+        (labels ((augment (e)
+                   (dolist (u (aref occurrences e) nil)
+                     (unless (aref seen u)
+                       (setf (aref seen u) t)
+                       (when (or (null (aref owner u)) (augment (aref owner u)))
+                         (setf (aref owner u) e)
+                         (return t))))))
+          (unless (augment equation)
+            (return-from perfect-matching nil)))))))
+
+(defun equation-blocks (occurrences owner)
+  "The strongly connected components of the equations' dependency graph (equation E
+needs the equation OWNER matches to each unknown E mentions), by Tarjan's algorithm:
+a list of lists of equation indices, every block after the blocks it needs."
+  (let* ((count (length occurrences))
+         (numbers (make-array count :initial-element nil))
+         (low (make-array count :initial-element 0))
+         (on-stack (make-array count :initial-element nil))
+         (stack '()) (next 0) (blocks '()))
+    (labels ((visit (e)
+               (setf (aref numbers e) next (aref low e) next)
+               (incf next)
+               (push e stack)
+               (setf (aref on-stack e) t)
+               (dolist (u (aref occurrences e))
+                 (let ((needed (aref owner u)))
+                   (cond ((null (aref numbers needed))
+                          (visit needed)
+                          (setf (aref low e) (min (aref low e) (aref low needed))))
+                         ((aref on-stack needed)
+                          (setf (aref low e) (min (aref low e) (aref numbers needed)))))))
+               (when (= (aref low e) (aref numbers e))
+                 (let ((block '()))
+                   (loop for member = (pop stack)
+                         do (setf (aref on-stack member) nil)
+                            (push member block)
+                         until (= member e))
+                   (push (sort block #'<) blocks)))))
+      (dotimes (e count)
+        (unless (aref numbers e) (visit e))))
+    (nreverse blocks)))
+
+(defun solve-by-blocks (run equations unknowns)
+  "Solve EQUATIONS for UNKNOWNS block by block (see the file header): the alist of the
+unique solution, or NIL when the structure does not settle it (the caller then solves
+the whole system). Also returns the number of blocks."
+  (let* ((occurrences (equation-unknown-indices equations unknowns))
+         (owner (perfect-matching occurrences (length unknowns))))
+    (when owner
+      (let ((blocks (equation-blocks occurrences owner))
+            (unknown-vector (coerce unknowns 'vector))
+            (equation-vector (coerce equations 'vector))
+            (values '()))
+        (dolist (block blocks (values (loop for unknown in unknowns
+                                            collect (assoc unknown values :test #'equal))
+                                      (length blocks)))
+          (let* ((block-unknowns (loop for u from 0 below (length owner)
+                                       when (member (aref owner u) block)
+                                         collect (aref unknown-vector u)))
+                 (block-equations (mapcar (lambda (e)
+                                            (substitute-expressions values (aref equation-vector e)))
+                                          block))
+                 (solutions (handler-case (ames.maxima:solve-equations (run-bridge run)
+                                                                       block-equations block-unknowns)
+                              (ames.maxima:solve-failed () :failed))))
+            (unless (and (consp solutions) (null (rest solutions)))
+              (return-from solve-by-blocks nil))
+            (setf values (append values (first solutions)))))))))
