@@ -259,3 +259,28 @@ undecided fact about the height is not asked."
        (let ((decider (ames.geometry::ensure-decider b))
              (piece (ames.geometry::make-line-piece '(l3 (- l2)) '((* 2 l3) (- l1)))))
          (is (not (ames.geometry::point-on-piece-p decider '((- (/ l3 2)) 0) piece))))))))
+
+(test polynomials-in-one-bounded-quantity-are-decided-by-their-roots
+  "A polynomial in one quantity bounded on both sides (a parameter, or sin or cos of an
+angle with a range) has one sign where Sturm's count finds no root in the interval; a
+root inside, or a root at a closed end, leaves the strict relation open. The verdicts
+hold at sample points."
+  (call-with-bridge
+   (lambda (b)
+     (let ((angle '((> th 0) (< th (/ pi 2))))
+           (bounded '((> x 1) (< x 3))))
+       ;; met landing from the sphere: 32 c^4 - 96 c^3 + 108 c - 81 < 0 on c = cos th in (0, 1)
+       (is (eq :true (decided b angle '(< (- (+ (* 32 (expt (cos th) 4)) (* 108 (cos th)))
+                                            81 (* 96 (expt (cos th) 3)))
+                                         0))))
+       (is (eq :false (decided b angle '(> (- (* 2 (expt (sin th) 2)) 3) 0))))
+       ;; x^2 - 4 x + 5 = (x - 2)^2 + 1 > 0; (x - 2)^2 > 0 fails at x = 2, inside (1, 3)
+       (is (eq :true (decided b bounded '(> (- (expt x 2) (* 4 x)) -5))))
+       (is (eq :unknown (decided b bounded '(> (- (expt x 2) (* 4 x)) -4))))
+       ;; (x - 1)(3 - x) > 0 on the open interval, its roots at the open ends
+       (is (eq :true (decided b bounded '(> (* (- x 1) (- 3 x)) 0))))
+       ;; and not on a closed one
+       (is (eq :unknown (decided b '((>= x 1) (<= x 3)) '(> (* (- x 1) (- 3 x)) 0))))
+       ;; soundness at sample points
+       (dolist (c '(1/100 1/4 1/2 3/4 99/100))
+         (is (minusp (+ (* 32 (expt c 4)) (* 108 c) -81 (* -96 (expt c 3))))))))))

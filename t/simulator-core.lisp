@@ -174,3 +174,38 @@ freely and never meets the sphere again."
                  (is-same bridge "speed squared at lift-off"
                           `(+ (expt ,(first v) 2) (expt ,(second v) 2))
                           (x '(* 2/3 g r (cos theta0)))))))))))))
+
+(test sphere-on-floor-slide-lift-off-flight-landing
+  "The thesis's third example run to its end (section 2.6.3): the particle slides on the
+sphere that stands on the floor, lifts off where cos theta = (2/3) cos theta0, flies
+clear of the sphere, lands on the floor with v^2 = 2 g r (1 + cos theta0) (energy from
+the height r (1 + cos theta0)), keeps the horizontal velocity sqrt(8 g r cos^3 theta0 / 27)
+of lift-off (a plastic impact), and slides on the floor forever with N = m g."
+  (with-fixture simulator-bridge ()
+    (let* ((scenario (scenario-named "particle-on-sphere-on-floor"))
+           (history (simulate-stopping-when-ambiguous scenario bridge))
+           (states (ames::history-states history)))
+      (flet ((x (form) (in-scenario-terms scenario form)))
+        (is (eq :complete (ames::history-outcome history)))
+        (is (= 3 (length states)))
+        (destructuring-bind (&optional slide flight floor) states
+          (when (and slide flight floor)
+            (is (equal '(:lift-off "PARTICLE" "SPHERE") (event-names (ames::state-end-event slide))))
+            (is (eq :collision (first (ames::state-end-event flight))))
+            (is (eq :forever (ames::state-duration floor)))
+            (call-with-scenario-facts
+             bridge scenario
+             (lambda ()
+               (is-same-vector bridge "lift-off point (the sphere's centre at (0, r))"
+                               (per-body (ames::state-final-positions slide) "PARTICLE")
+                               (x '((* r (sqrt (- 1 (* 4/9 (expt (cos theta0) 2)))))
+                                    (+ r (* 2/3 r (cos theta0))))))
+               (let ((v (per-body (ames::state-final-velocities flight) "PARTICLE")))
+                 (is-same bridge "speed squared just before landing"
+                          `(+ (expt ,(first v) 2) (expt ,(second v) 2))
+                          (x '(* 2 g r (+ 1 (cos theta0))))))
+               (is-same-vector bridge "velocity after the plastic landing"
+                               (per-body (ames::state-initial-velocities floor) "PARTICLE")
+                               (x '((sqrt (* 8/27 g r (expt (cos theta0) 3))) 0)))
+               (is-same bridge "N on the floor" (normal-force-between floor "PARTICLE" "FLOOR")
+                        (x '(* m g)))))))))))
