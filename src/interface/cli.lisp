@@ -215,9 +215,10 @@ RUN-FILES. Returns the exit status: 0, or 1 when a scenario could not be explain
 
 (defun undecided-history-p (history)
   "True when HISTORY, or a branch of one of its forks, ended without deciding what
-comes next: its outcome is :AMBIGUOUS or :UNDECIDED. At a fork whose branch the run's
-values select (:SELECTED T), only that branch counts."
-  (labels ((undecided-outcome-p (outcome) (member outcome '(:ambiguous :undecided)))
+comes next: its outcome is :AMBIGUOUS or :UNDECIDED, or :FAILED (a branch that could
+not be simulated). At a fork whose branch the run's values select (:SELECTED T), only
+that branch counts."
+  (labels ((undecided-outcome-p (outcome) (member outcome '(:ambiguous :undecided :failed)))
            (counted-branches (branches)
              (let ((selected (find-if (lambda (branch) (getf branch :selected)) branches)))
                (if selected (list selected) branches)))

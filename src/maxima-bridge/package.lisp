@@ -13,7 +13,7 @@ only by this package's own translation (see translation.lisp and maxima-server.l
    #:bridge-in-scope-p
    #:*reply-limit*
    ;; operations
-   #:simplify #:solve-equations #:decide #:holds-p #:equivalent-p #:sign-varies-p #:refuted-p
+   #:simplify #:expression-size #:solve-equations #:decide #:holds-p #:equivalent-p #:sign-varies-p #:refuted-p
    #:call-with-assumptions #:with-assumptions #:current-assumptions
    ;; numbers before proofs (values.lisp)
    #:call-with-parameter-values #:with-parameter-values #:current-parameter-values

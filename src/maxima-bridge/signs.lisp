@@ -257,8 +257,9 @@ DECIDE-WITH-IMAGINARY-RADICANDS: Maxima is not asked about an expression holding
 (defun leaf-signs (prover x)
   "The signs of X found as a whole: by exact arithmetic when X is a constant, from
 Maxima's sign() of its forms and is() of its sign facts, then from DECIDE about X > 0
-and X < 0 when X is a short compound expression, then by counting the roots of a
-polynomial in one bounded quantity (POLYNOMIAL-INTERVAL-SIGNS). NIL when Maxima finds X
+and X < 0 when X is a short compound expression, then as a multiple of what a fact in
+force bounds (COMPOUND-FACT-MULTIPLE-SIGNS), then by counting the roots of a polynomial in
+one bounded quantity (POLYNOMIAL-INTERVAL-SIGNS). NIL when Maxima finds X
 outside the reals."
   (let ((bridge (prover-bridge prover)))
     (cond
@@ -286,6 +287,11 @@ outside the reals."
               (rule-out :positive (list '> x 0))
               (when (rest signs)
                 (rule-out :negative (list '< x 0)))))
+          (when (and signs (rest signs))
+            ;; a multiple of what a fact in force (a branch's) bounds
+            (let ((assumed (and *compound-fact-signs* (compound-fact-multiple-signs bridge x))))
+              (when assumed
+                (setf signs (or (intersection signs assumed) signs)))))
           (when (and signs (rest signs))
             ;; a polynomial in one bounded quantity: its roots counted (sturm.lisp)
             (let ((counted (polynomial-interval-signs prover x)))

@@ -1,4 +1,4 @@
-;;;; src/maxima-bridge/sturm.lisp -- the sign of a polynomial in one bounded quantity, by counting its roots (Sturm).
+;;;; src/maxima-bridge/sturm.lisp -- signs a physicist reads off that sign() misses: a polynomial in one bounded quantity (Sturm), a multiple of what a fact bounds.
 ;;;;
 ;;;; A physicist reads off that 32 c^4 - 96 c^3 + 108 c - 81 < 0 for c = cos theta0 with
 ;;;; 0 < theta0 < pi/2 by looking at it on [0, 1]; Maxima's sign() cannot. When an
@@ -9,6 +9,10 @@
 ;;;; by exact arithmetic; a root at a closed end adds zero. The interval may be wider
 ;;;; than the kernel's true range (ends that are not exact are widened outward): that
 ;;;; only ever loses a conclusion, never makes a wrong one.
+;;;;
+;;;; A branch assumes a fact about a compound expression (f l3 - mb g (l1 - l2) < 0);
+;;;; sign() uses it only for that very form. A factor that is a constant multiple of it
+;;;; (ratsimp of the ratio is a number) has its sign from the fact.
 
 (in-package #:ames.maxima)
 
@@ -136,3 +140,38 @@ NIL when that does not apply or the roots are inside the interval."
                           (and (zerop at-high) (not high-open)))
                   (push :zero signs))
                 signs))))))))
+
+;;; Facts about compound expressions
+
+(defvar *compound-fact-signs* t
+  "True when LEAF-SIGNS looks for a factor that is a multiple of what a fact in force
+bounds (COMPOUND-FACT-MULTIPLE-SIGNS).")
+
+(defun compound-fact-signs (bridge)
+  "For each fact in force that bounds a compound expression (a branch's X > 0, with X
+a sum such as f l3 - mb g (l1 - l2)), (DIFFERENCE . SIGNS): LHS - RHS and the signs the
+fact gives it. Facts between plain subjects and constants are left out: sign() and
+DECIDE's orders already use them."
+  (loop for fact in (flatten-facts (current-assumptions bridge))
+        for operator = (and (consp fact) (expression-operator fact))
+        when (and (member operator '(< > <= >=))
+                  (not (and (or (subject-p (relation-lhs fact))
+                                (null (expression-variables (relation-lhs fact))))
+                            (or (subject-p (relation-rhs fact))
+                                (null (expression-variables (relation-rhs fact)))))))
+          collect (cons (relation-difference fact)
+                        (ecase operator
+                          (> '(:positive)) (>= '(:positive :zero))
+                          (< '(:negative)) (<= '(:negative :zero))))))
+
+(defun compound-fact-multiple-signs (bridge x)
+  "The signs of X when X is a constant multiple of the expression a fact in force bounds
+(see COMPOUND-FACT-SIGNS), by Maxima's ratsimp of their ratio; NIL otherwise."
+  (let ((variables (expression-variables x)))
+    (loop for (difference . signs) in (compound-fact-signs bridge)
+          when (subsetp (expression-variables difference) variables :test #'equal)
+            do (let ((ratio (handler-case (simplify bridge (list '/ x difference))
+                              (maxima-error () nil)
+                              (untranslatable-result () nil))))
+                 (when (and (rationalp ratio) (/= ratio 0))
+                   (return (if (plusp ratio) signs (negated-signs signs))))))))

@@ -20,8 +20,15 @@
 (defparameter *branch-limit* 24
   "The most branches one run's tree may hold.")
 
-(defparameter *branch-depth-limit* 4
-  "The most forks on one path from the root of a run's tree.")
+(defparameter *branch-depth-limit* 2
+  "The most forks on one path from the root of a run's tree. Each branch is simulated
+anew from the start, so a deeper tree costs a run per branch; a fork nested in a fork is
+mostly on a fact the outer one should have decided.")
+
+(defparameter *largest-boundary-fact* 40
+  "The boundary branch (X = 0, a parameter solved for and substituted) is tried only for
+a missing fact of at most this many atoms and operators: solving a long polynomial for
+each parameter costs much, and its boundary is no textbook case.")
 
 (defun branch-room-p ()
   "True when the current tree may still fork."
@@ -83,7 +90,9 @@ parameter substituted). Alternatives the assumptions already exclude are left ou
     (dolist (side (list fact (negated-fact fact)))
       (unless (eq (decide run side) :false)
         (push (list :assume side :facts (list side) :scenario scenario) alternatives)))
-    (multiple-value-bind (parameter value) (boundary-substitution run fact)
+    (multiple-value-bind (parameter value)
+        (and (<= (ames.maxima:expression-size fact) *largest-boundary-fact*)
+             (boundary-substitution run fact))
       (when parameter
         (let ((facts (parameter-facts scenario parameter value)))
           (unless (some (lambda (f) (eq (decide run f) :false)) facts)
@@ -117,13 +126,26 @@ parameter substituted). Alternatives the assumptions already exclude are left ou
                           (= (<= (abs difference) 1d-12)))))))
              alternatives)))
 
+(defun assumed-on-this-path-p (fact)
+  "True when FACT, its opposite or its boundary is already assumed by a fork on the path
+from the root to the branch being simulated: the assumption did not decide it, and
+forking on it again would only repeat the same branches one level deeper."
+  (let ((assumed (getf *branching* :extra-facts))
+        (lhs (relation-lhs fact)) (rhs (relation-rhs fact)))
+    (some (lambda (other)
+            (and (consp other) (member (first other) '(< > <= >= =))
+                 (or (and (equal (relation-lhs other) lhs) (equal (relation-rhs other) rhs))
+                     (and (equal (relation-lhs other) rhs) (equal (relation-rhs other) lhs)))))
+          assumed)))
+
 (defun fork (run history index condition check-incremental)
   "Split the run at state INDEX on the ambiguity CONDITION: append to HISTORY a fork
 state (zero duration, end event (:BRANCH)) holding each branch's states and outcome.
 Returns true, or NIL when CONDITION cannot be branched on (its missing fact is no
-inequality over the parameters, or the tree is full)."
+inequality over the parameters, the tree is full, or a fork on this path already assumed
+that fact: see ASSUMED-ON-THIS-PATH-P)."
   (let ((fact (core-fact run (ambiguous-transition-missing-fact condition))))
-    (when (and (branchable-fact-p fact) (branch-room-p))
+    (when (and (branchable-fact-p fact) (branch-room-p) (not (assumed-on-this-path-p fact)))
       (let* ((alternatives (fork-alternatives run fact))
              (values (history-parameter-values history))
              (selected (selected-alternative run alternatives values))
@@ -159,12 +181,29 @@ fork on, renumbered after the fork, as (:ASSUME FACT :STATES ... :OUTCOME ...
 [:SELECTED T] [:SUBSTITUTION (P V)])."
   (let* ((facts (append (getf *branching* :extra-facts) (getf alternative :facts)))
          (failure nil)
+         (outcome :failed)
          (history (let ((*branching* (list* :extra-facts facts *branching*)))
                     (handler-case
                         (simulate-branch (getf alternative :scenario) (run-bridge run)
                                          (run-values run) check-incremental facts)
-                      (simulation-error (condition)
-                        ;; one branch that cannot be simulated does not lose the others
+                      ;; the run's budget is the whole tree's: it is not one branch's failure
+                      (budget-exceeded (condition) (error condition))
+                      ;; an ambiguity the tree may not fork on (its bound, or a fact
+                      ;; already assumed on this path): the branch ends ambiguous
+                      (ambiguous-transition (condition)
+                        (setf outcome :ambiguous
+                              failure (format nil "~A; the missing fact: ~A"
+                                              (if (branch-room-p)
+                                                  "a fact this path already assumed does not decide it"
+                                                  "the tree's bound is reached")
+                                              (let ((*print-pretty* nil) (*print-case* :downcase))
+                                                (princ-to-string
+                                                 (ambiguous-transition-missing-fact condition)))))
+                        nil)
+                      (ames-error (condition)
+                        ;; one branch that cannot be simulated (or whose scenario, with a
+                        ;; parameter substituted at a boundary, cannot be checked) does not
+                        ;; lose the others
                         (setf failure (or (ames-error-detail condition)
                                           (string-downcase (type-of condition))))
                         nil))))
@@ -174,7 +213,7 @@ fork on, renumbered after the fork, as (:ASSUME FACT :STATES ... :OUTCOME ...
     (dolist (state states) (renumber-state state 1))
     (append (list :assume (getf alternative :assume)
                   :states states
-                  :outcome (if history (history-outcome history) :failed))
+                  :outcome (if history (history-outcome history) outcome))
             (and failure (list :failure failure))
             (and selected (list :selected t))
             (and (getf alternative :substitution)

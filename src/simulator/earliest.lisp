@@ -19,7 +19,8 @@ POWER-SIGN -1 for a denominator."
 (defun core-fact (run fact)
   "FACT, a relation (> X 0), (< X 0) ... with X factored and every factor whose sign the
 assumptions decide divided out: (> (* (- l1 l2) (- f k)) 0) with l1 > l2 becomes
-(> (- f k) 0). FACT itself when nothing can be divided out or it is no such relation."
+(> (- f k) 0); a square root left alone stands for its radicand. FACT itself when
+nothing can be divided out or it is no such relation."
   (if (not (and (consp fact) (member (first fact) '(< > <= >=))
                 (notany #'keywordp (alexandria:flatten fact))))
       fact
@@ -34,10 +35,21 @@ assumptions decide divided out: (> (* (- l1 l2) (- f k)) 0) with l1 > l2 becomes
                   (t (push f kept)))))
         (if (or (null kept) (rest kept))
             fact
-            (list (if (= sign 1)
-                      (first fact)
-                      (ecase (first fact) (> '<) (< '>) (>= '<=) (<= '>=)))
-                  (first kept) 0)))))
+            (let ((operator (if (= sign 1)
+                                (first fact)
+                                (ecase (first fact) (> '<) (< '>) (>= '<=) (<= '>=))))
+                  (kept (first kept)))
+              (if (square-root-argument kept)
+                  ;; a real square root has the sign of its radicand (zero with it); a
+                  ;; negative radicand is no real time at all: the fact is about it
+                  (core-fact run (list operator (square-root-argument kept) 0))
+                  (list operator kept 0)))))))
+
+(defun square-root-argument (x)
+  "Y when X is sqrt(Y) or Y^(1/2), else NIL."
+  (and (consp x)
+       (cond ((and (eq (first x) 'sqrt) (= (length x) 2)) (second x))
+             ((and (eq (first x) 'expt) (eql (third x) 1/2)) (second x)))))
 
 (defun simplest-missing-fact (run facts)
   "Of FACTS (the relations undecided for several candidates), the one whose core form
