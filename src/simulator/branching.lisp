@@ -122,7 +122,9 @@ parameter substituted). Alternatives the assumptions already exclude are left ou
                    (and difference
                         (ecase (first relation)
                           (> (> difference 1d-12))
+                          (>= (>= difference -1d-12))
                           (< (< difference -1d-12))
+                          (<= (<= difference 1d-12))
                           (= (<= (abs difference) 1d-12)))))))
              alternatives)))
 
