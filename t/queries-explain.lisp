@@ -89,3 +89,59 @@ the explanation says so."
            (text (with-output-to-string (stream) (ames:explain history :stream stream))))
       (is (search "turned contact (particle on ceiling) off because lift-off particle ceiling" text)
           "~A" text))))
+
+(test corner-branches-on-the-sign-of-the-push
+  "The corner without values (issue 13): the run forks at the start on the push against
+mb g (l1 - l2)/l3: B rises (f above it: a_Ax > 0, B's corner reaches the upper end of A's
+face at t1 = sqrt(l3 / a_Ax)), B falls (f below: t1 = sqrt(-l3 / a_Ax)), and at the
+boundary both stay at rest forever. Each branch's fact selects the right side of the
+threshold (checked at sample values), and its first state's results are Maxima-checked."
+  (with-fixture simulator-bridge ()
+    (let* ((scenario (scenario-named "two-blocks-in-corner"))
+           (history (ames:simulate scenario :bridge bridge))
+           (fork (first (ames::history-states history)))
+           (branches (and fork (ames::state-branches fork))))
+      (flet ((x (form) (in-scenario-terms scenario form))
+             (side (branch)
+               ;; the branch's fact at two sample points, one on each side of the threshold
+               (let ((relation (getf branch :assume)))
+                 (flet ((holds-at (f)
+                          (let* ((values (in-scenario-terms
+                                          scenario `((ma . 1) (mb . 1) (g . 10) (l1 . 2) (l2 . 1)
+                                                     (l3 . 1) (f . ,f))))
+                                 (difference (expression-value
+                                              `(- ,(second relation) ,(third relation)) values)))
+                            (ecase (first relation)
+                              ((> >=) (> difference 0)) ((< <=) (< difference 0))
+                              (= (< (abs difference) 1d-9))))))
+                   (cond ((eq (first relation) '=) :boundary)
+                         ((and (holds-at 15) (not (holds-at 5))) :rises)
+                         ((and (holds-at 5) (not (holds-at 15))) :falls))))))
+        (is (eq :branched (ames::history-outcome history)))
+        (is (equal '(:branch) (and fork (ames::state-end-event fork))))
+        (is (= 3 (length branches)))
+        (is (set-equal-p '(:rises :falls :boundary) (mapcar #'side branches)))
+        (dolist (branch branches)
+          (let ((state (first (getf branch :states)))
+                (a-ax (x '(/ (* l3 (- (* f l3) (* mb g (- l1 l2))))
+                           (+ (* ma (expt l3 2)) (* mb (expt (- l1 l2) 2)))))))
+            (is (not (null state)))
+            (when state
+              (call-with-scenario-facts
+               bridge scenario
+               (lambda ()
+                 (ames.maxima:with-assumptions
+                     (bridge (if (getf branch :substitution) '() (list (getf branch :assume))))
+                   (case (side branch)
+                     (:rises
+                      (is-same bridge "a_Ax, rising" (first (per-body (ames::state-accelerations state) "BLOCK-A")) a-ax)
+                      (is-same bridge "t1, rising" (ames::state-duration state) `(sqrt (/ ,(x 'l3) ,a-ax))))
+                     (:falls
+                      (is-same bridge "a_Ax, falling" (first (per-body (ames::state-accelerations state) "BLOCK-A")) a-ax)
+                      ;; compared through the squares: Maxima does not merge the quotient of
+                      ;; roots of two negatives into one root
+                      (is-same bridge "t1^2, falling" `(expt ,(ames::state-duration state) 2)
+                               `(- (/ ,(x 'l3) ,a-ax))))
+                     (:boundary
+                      (is (eq :forever (ames::state-duration state)))
+                      (is (equal '(0 0) (per-body (ames::state-accelerations state) "BLOCK-A")))))))))))))))
