@@ -145,3 +145,33 @@ threshold (checked at sample values), and its first state's results are Maxima-c
                      (:boundary
                       (is (eq :forever (ames::state-duration state)))
                       (is (equal '(0 0) (per-body (ames::state-accelerations state) "BLOCK-A")))))))))))))))
+
+(test largest-pull-for-which-the-block-stays-on-the-cart
+  "A parameter selection (issue 13): the block stays on the pulled cart (never leaves it)
+exactly while f < mu g (m + mc), the threshold of static friction; the answer is a
+condition on f, checked on both sides of the threshold."
+  (with-fixture simulator-bridge ()
+    (let* ((scenario (ames:parse-scenario
+                      (with-queries "block-on-cart-pulled"
+                        "(query largest-pull (parameter f :such-that (not (:leaves block cart))))")))
+           (history (ames:simulate scenario :bridge bridge))
+           (value (second (first (answer history "LARGEST-PULL")))))
+      (is (eq :when (first value)) "answer ~S" value)
+      (when (eq :when (first value))
+        (flet ((holds-at (f)
+                 ;; some branch's conditions all hold at these values (threshold 2.5)
+                 (let ((values (in-scenario-terms scenario `((m . 1) (mc . 4) (g . 10) (mu . 1/20)
+                                                             (l . 2) (c . 1/2) (b . 1/2) (f . ,f)))))
+                   (some (lambda (conditions)
+                           (every (lambda (relation)
+                                    (let ((difference (expression-value
+                                                       `(- ,(second relation) ,(third relation)) values)))
+                                      (ecase (first relation)
+                                        (< (< difference 0)) (<= (<= difference 0))
+                                        (> (> difference 0)) (>= (>= difference 0)))))
+                                  conditions))
+                         (rest value)))))
+          (is-true (holds-at 2))
+          (is-true (holds-at 49/20))
+          (is-false (holds-at 51/20))
+          (is-false (holds-at 5)))))))

@@ -29,10 +29,18 @@ the fork state)."
     (paths (history-states history) '() (history-outcome history))))
 
 (defun event-matches-p (pattern event)
-  "True when the printed EVENT begins with PATTERN, names compared by name."
-  (and (consp event) (<= (length pattern) (length event))
-       (every (lambda (p e) (or (eql p e) (and (symbolp p) (symbolp e) (string= (symbol-name p) (symbol-name e)))))
-              pattern event)))
+  "True when the printed EVENT begins with PATTERN, names compared by name. An event
+between two bodies matches with the bodies in either order: (:leaves block cart) is the
+event printed (:leaves cart block :endpoint) when the cart is the observer."
+  (flet ((begins-with-p (pattern)
+           (and (consp event) (<= (length pattern) (length event))
+                (every (lambda (p e) (or (eql p e) (and (symbolp p) (symbolp e)
+                                                        (string= (symbol-name p) (symbol-name e)))))
+                       pattern event))))
+    (or (begins-with-p pattern)
+        (and (>= (length pattern) 3)
+             (begins-with-p (list* (first pattern) (third pattern) (second pattern)
+                                   (nthcdr 3 pattern)))))))
 
 (defun state-events (state)
   "Every event that ends STATE."
