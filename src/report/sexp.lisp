@@ -48,7 +48,9 @@
                                       append (list key value))))
                      (state-branches state))))
      (loop for (key value) on notes by #'cddr
-           unless (eq key :numeric-duration)
+           ;; the line coordinates are the simulator's working, in the knowledge base's
+           ;; internal terms; the positions and the path coordinates carry the result
+           unless (member key '(:numeric-duration :line-coordinates))
              append (list key (if (eq key :impact)
                                   ;; the impact model's consistency search is the solver's
                                   ;; working, not a result

@@ -179,7 +179,9 @@ coefficient is ACCELERATION / 2, else the presented polynomial."
   "The notes of STATE as (LABEL . PHRASES), those the view shows elsewhere left out."
   (loop for (key value) on (state-notes state) by #'cddr
         append (case key
-                 ((:numeric :numeric-duration :events))
+                 ;; :line-coordinates is the simulator's working (the coordinate along the
+                 ;; line of two bodies, in the knowledge base's terms): the positions show it
+                 ((:numeric :numeric-duration :events :line-coordinates))
                  (:numeric-trajectory
                   (list (cons "integrated numerically"
                               (list (list (format nil "~D sample~:P of the motion" 
