@@ -37,7 +37,7 @@ subscript (mp -> m_{p}, v0 -> v_{0}, theta0 -> \\theta_{0}), or \\mathit{word}."
                    ((= (length stem) 1) stem)
                    ((and (= (length stem) 2) (string= index "") (every #'alpha-char-p stem))
                     (format nil "~C_{~C}" (char stem 0) (char stem 1)))
-                   (t (format nil "\\mathit{~A}" (cl-ppcre:regex-replace-all "-" stem "\\\\text{-}"))))))
+                   (t (format nil "\\mathit{~A}" (cl-ppcre:regex-replace-all "-" stem "\\\\mbox{-}"))))))
       (cond ((string= stem "") index)
             ((string= index "") (stem-latex stem))
             (t (format nil "{~A}_{~A}" (stem-latex stem) index))))))
