@@ -16,6 +16,10 @@
 
 (in-package #:ames.maxima)
 
+(defvar *compound-fact-signs* t
+  "True when LEAF-SIGNS looks for a factor that is a multiple of what a fact in force
+bounds (COMPOUND-FACT-MULTIPLE-SIGNS, in sturm.lisp).")
+
 (defparameter *largest-decided-part* 60
   "LEAF-SIGNS asks DECIDE about a part of at most this many atoms and operators; a
 longer one gets Maxima's sign() only.")

@@ -143,10 +143,6 @@ NIL when that does not apply or the roots are inside the interval."
 
 ;;; Facts about compound expressions
 
-(defvar *compound-fact-signs* t
-  "True when LEAF-SIGNS looks for a factor that is a multiple of what a fact in force
-bounds (COMPOUND-FACT-MULTIPLE-SIGNS).")
-
 (defun compound-fact-signs (bridge)
   "For each fact in force that bounds a compound expression (a branch's X > 0, with X
 a sum such as f l3 - mb g (l1 - l2)), (DIFFERENCE . SIGNS): LHS - RHS and the signs the
