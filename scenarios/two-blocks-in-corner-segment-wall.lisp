@@ -15,9 +15,12 @@
 ;;;;     is selected: B rises, and its corner reaches the upper end of A's face at
 ;;;;       t1 = sqrt(l3 / a_Ax) = sqrt((ma l3^2 + mb (l1 - l2)^2) / (f l3 - mb g (l1 - l2))),
 ;;;;     where the state ends: (:leaves block-a block-b :endpoint).
-;;;; One state only: after it, the order of the next events (A meeting the segment's foot,
-;;;; B leaving the segment's top, B landing) is a comparison of times written with three
-;;;; square roots, which the bridge does not decide yet.
+;;;; One state here. Run on (the test two-blocks-in-a-corner-with-a-segment-wall-to-rest,
+;;;; with the defaults and :branch nil), B flies up and lands on A's top corner at
+;;;; t1 + 2 v_B/g, v_B = (l1 - l2) sqrt(F/D) (F = f l3 - mb g (l1 - l2), D = ma l3^2 +
+;;;; mb (l1 - l2)^2), and A hits the wall with v_A^2 = (3 f l3 - mb (l1 - l2)^2 F/D -
+;;;; mb g (l1 - l2))/ma and stops there: at rest from then on. Without values the order of
+;;;; those events depends on long polynomial facts, and the tree of branches is deep.
 
 (scenario two-blocks-in-corner-segment-wall
   "Block A, pushed toward a thin wall, lifts block B that rests on its inclined face."

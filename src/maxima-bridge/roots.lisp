@@ -133,8 +133,10 @@ depending on VARIABLE), MAXIMA-ERROR, MAXIMA-TIMEOUT."
             (t (solved-earliest-root search form offset-variable coefficients)))))))
 
 (defun constant-earliest-root (search constant)
-  "EXPRESSION does not depend on the variable: no root, or (identically zero) every value."
-  (let ((signs (signs-of search constant)))
+  "EXPRESSION does not depend on the variable: no root, or (identically zero) every value.
+Its signs are SIGN-PATTERN-OF's (narrowed by DECIDE: mb g (5 l1 - l2)(l1 - l2) expanded
+is not zero when l1 > l2 > 0, which Maxima's sign() does not see)."
+  (let ((signs (sign-pattern-of search constant)))
     (cond ((not (member :zero signs)) (values :none nil))
           ((and (equal signs '(:zero)) (not (search-strictly search))) (found search 0))
           (t (values :unknown nil)))))

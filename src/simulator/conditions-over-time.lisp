@@ -109,7 +109,16 @@ holds at once only when it is loose."
              (-1 :true)
              (1 :false)
              (0 (if loose :true :false))
-             (t (values :unknown `(< ,coefficient 0)))))))))
+             (t (or (and (run-decider-override run) (impact-verdict-by-values coefficient))
+                    (values :unknown `(< ,coefficient 0))))))))))
+
+(defun impact-verdict-by-values (coefficient)
+  "While an impact is resolved, whether a relation whose leading COEFFICIENT's sign the
+assumptions leave open fires (:TRUE when it is negative, :FALSE when positive) at the
+run's parameter values, the fact recorded as assumed from them; NIL when there are no
+values or they do not settle it. An impact has one outcome: it is not branched on."
+  (cond ((eq (ames.maxima:decide-by-values `(< ,coefficient 0)) :true) :true)
+        ((eq (ames.maxima:decide-by-values `(> ,coefficient 0)) :true) :false)))
 
 (defun vanishes-identically-p (run solved expression)
   "True when EXPRESSION (over quantity terms) vanishes identically near the start, as

@@ -143,11 +143,22 @@ parameter values, the numbers decide (and the fact is noted as assumed from them
 arc length)."
   (and (candidate-group a) (eq (candidate-group a) (candidate-group b))))
 
+(defun preceded-p (run not-before candidates)
+  "True when one of CANDIDATES is proven to fire strictly before the time NOT-BEFORE."
+  (and not-before (closed-form-time-p not-before)
+       (some (lambda (c)
+               (and (closed-form-time-p (candidate-time c))
+                    (eq (compare-times run not-before (candidate-time c)) :false)))
+             candidates)))
+
 (defun earliest-candidates (run candidates unknown)
   "The CANDIDATES that fire first, all at one time, proven earliest (NIL when there is
-none: the state lasts forever). Signals AMBIGUOUS-TRANSITION (restart STOP-SIMULATION)
-when UNKNOWN (conditions whose firing is undecided) is not empty or the order is not
+none: the state lasts forever). UNKNOWN lists conditions whose firing is undecided, as
+(FACT EVENT [NOT-BEFORE]); one that a candidate proven to fire strictly before its
+NOT-BEFORE precedes cannot end the state and is left out. Signals AMBIGUOUS-TRANSITION
+(restart STOP-SIMULATION) when an undecided condition remains or the order is not
 decided."
+  (setf unknown (remove-if (lambda (u) (preceded-p run (third u) candidates)) unknown))
   (when unknown
     (ambiguity run (simplest-missing-fact run (mapcar #'first unknown)) candidates unknown))
   (when candidates

@@ -46,12 +46,18 @@ and velocities just before, each of CONTACTS with its outward normal there, and 
 
 (defun impact-decider (run)
   "The decider of an impact's model: whether a touching contact pushes is always a
-choice (settled by consistency); everything else goes to Maxima."
+choice (settled by consistency); everything else goes to Maxima, and what the
+assumptions leave open to the run's parameter values when it has them (the fact is
+recorded as assumed from the values: AMES.MAXIMA:DECIDE-BY-VALUES). An impact is no
+place to branch: its outcome is one, the question only how the algebra shows it."
   (lambda (relation)
     (if (and (consp relation) (consp (second relation))
              (eq (first (second relation)) 'ames.kb:separation-after))
         :choice
-        (decide run (constant-roots-taken run relation)))))
+        (let* ((relation (constant-roots-taken run relation))
+               (verdict (decide run relation)))
+          (or (and (eq verdict :unknown) (ames.maxima:decide-by-values relation))
+              verdict)))))
 
 (defun call-with-model (run model decider thunk)
   "Call THUNK with RUN working on MODEL and DECIDER (an impact's), then restore the

@@ -125,9 +125,27 @@ rules out a meeting without solving for it."
     ((>= >) `(- ,(relation-lhs relation) ,(relation-rhs relation)))
     ((<= <) `(- ,(relation-rhs relation) ,(relation-lhs relation)))))
 
+(defun roots-outside-extent-p (run gap after extent)
+  "True when GAP, a polynomial in TAU of degree 1 or 2 whose earliest root after AFTER
+is not decided, has every root Maxima writes in closed form outside the contact's
+EXTENT (a relation of EXTENT proven false there): whichever of those roots are real
+and come after AFTER, the relative motion does not meet the contact at them. (A point
+on the line of a face, but past the face's end, at every time it crosses that line.)"
+  (let* ((bridge (run-bridge run))
+         (degree (1- (length (ames.maxima:polynomial-coefficients bridge gap 'tau))))
+         (checks (remove 'or extent :key #'first)))
+    (and checks (<= 1 degree 2)
+         (multiple-value-bind (status roots)
+             (ames.maxima:earliest-root bridge gap 'tau :after after :strictly t)
+           (and (eq status :unknown) (= (length roots) degree)
+                (every (lambda (root)
+                         (some (lambda (r) (eq (decide run (at-time r root)) :false)) checks))
+                       roots))))))
+
 (defun meeting-time (run meeting over-time contact)
   "When the relative motion first meets CONTACT from its exterior, strictly after the
-start: (values :AT TIME RATE), (values :NEVER) or (values :UNKNOWN FACT). MEETING is
+start: (values :AT TIME RATE), (values :NEVER) or (values :UNKNOWN FACT NOT-BEFORE),
+NOT-BEFORE (or NIL) a time before which it is proven not to meet. MEETING is
 the geometry's meeting over state terms; OVER-TIME makes functions of TAU of them.
 RATE is the gap's rate then (negative: an impact)."
   (let* ((gap (tidy run (funcall over-time (ames.geometry:meeting-gap meeting))))
@@ -148,7 +166,9 @@ RATE is the gap's rate then (negative: an impact)."
                  (cond ((eq root :none) (return-from meeting-time (values :never)))
                        ((eq root :unknown)
                         (return-from meeting-time
-                          (values :unknown (undecided-sign-fact run gap after))))
+                          (if (roots-outside-extent-p run gap after extent)
+                              (values :never)
+                              (values :unknown (undecided-sign-fact run gap after)))))
                        (t
                         (let* ((root (tidy run root :full))
                                (rate (funcall rate-of root))
@@ -157,8 +177,10 @@ RATE is the gap's rate then (negative: an impact)."
                           (cond ((every (lambda (a) (eq a :true)) answers)
                                  (return-from meeting-time (values :at root rate)))
                                 ((member :unknown answers)
+                                 ;; it may meet here or later, never before ROOT
                                  (return-from meeting-time
-                                   (values :unknown (nth (position :unknown answers) checks))))
+                                   (values :unknown (nth (position :unknown answers) checks)
+                                           root)))
                                 (t (setf after root))))))))
       (values :unknown `(:meets ,@(contact-bodies run contact))))))
 
@@ -187,20 +209,41 @@ is reached at a non-zero RATE), or its model change when the component names non
 
 (defun tau-candidate (run solved groups condition)
   "When CONDITION fires over bodies moving with constant accelerations: a CANDIDATE,
-:NEVER, or (values :UNKNOWN FACT)."
+:NEVER, or (values :UNKNOWN FACT NOT-BEFORE) (see MEETING-TIME)."
   (let* ((relation (ames.engine:termination-condition-relation condition))
          (contact (gap-relation-contact relation))
          (over-time (lambda (x) (motion-value groups (over-state-terms run solved x)))))
-    (multiple-value-bind (status time rate)
+    (multiple-value-bind (status time rate-or-not-before)
         (if contact
             (meeting-time run (contact-meeting-terms run solved contact) over-time contact)
             (relation-time-and-rate run condition relation over-time))
       (case status
-        (:at (make-candidate condition
-                             (condition-event condition (and rate (holds run `(< ,rate 0)) rate))
-                             time :rate rate))
+        (:at (let ((rate rate-or-not-before))
+               (multiple-value-bind (approach fact) (if rate (approach-kind run rate) :none)
+                 (if (eq approach :unknown)
+                     ;; it fires then, as an impact or not
+                     (values :unknown fact time)
+                     (make-candidate condition
+                                     (condition-event condition (and (eq approach :impact) rate))
+                                     time :rate rate)))))
         (:never :never)
-        (t (values :unknown time))))))
+        (t (values :unknown time rate-or-not-before))))))
+
+(defun approach-kind (run rate)
+  "How a condition whose violation function crosses zero at RATE (proven <= 0) is
+reached: :IMPACT when RATE is proven negative (an impulsive event), :GRAZING when it is
+proven zero; otherwise decided by the run's parameter values (the fact noted as assumed
+from them, see COMPARE-TIMES), else (values :UNKNOWN (< RATE 0)). Never guessed: a
+contact reached with an undecided velocity is not taken for a touch without impact."
+  (cond ((holds run `(< ,rate 0)) :impact)
+        ((holds run `(= ,rate 0)) :grazing)
+        (t (let* ((fact `(< ,rate 0))
+                  (values (run-values run))
+                  (number (and values (numeric-or-nil (run-bridge run) rate values))))
+             (cond ((and number (< number (- (* 1d-9 (max 1d0 (abs number))))))
+                    (push (list :fact fact :from :values) (run-assumed run))
+                    :impact)
+                   (t (values :unknown fact)))))))
 
 (defun relation-time-and-rate (run condition relation over-time)
   "RELATION-TIME's answer for RELATION, with a third value when it fires and CONDITION
@@ -218,7 +261,8 @@ velocity, an impulsive event)."
 
 (defun candidates-of (run solved groups)
   "Every termination condition of the model that fires: (values CANDIDATES UNKNOWN
-NEVER), UNKNOWN a list of (FACT EVENT) for the conditions whose firing is not decided,
+NEVER), UNKNOWN a list of (FACT EVENT [NOT-BEFORE]) for the conditions whose firing is
+not decided (NOT-BEFORE a time before which such a condition is proven not to fire),
 NEVER the events of the conditions proven never to fire in this state. Conditions over
 a :NUMERIC group are watched by a numeric integration (under parameter values) up to
 the earliest of the others. A contact the broad phase proves out of reach (see
@@ -230,7 +274,7 @@ broad-phase.lisp) never fires."
              (contact (gap-relation-contact relation))
              (involved (and (not (and contact (cannot-meet-p reach contact)))
                             (condition-groups run solved groups relation))))
-        (multiple-value-bind (result fact)
+        (multiple-value-bind (result fact not-before)
             (cond ((null involved) :never)
                   ((some (lambda (g) (eq (group-kind g) :numeric)) involved)
                    (push condition numeric)
@@ -242,7 +286,9 @@ broad-phase.lisp) never fires."
                   (t (values :unknown `(:no-closed-form ,(condition-event condition nil)))))
           (cond ((candidate-p result) (push result candidates))
                 ((eq result :unknown)
-                 (push (list fact (condition-event condition nil)) unknown))
+                 (push (list* fact (condition-event condition nil)
+                              (and not-before (list not-before)))
+                       unknown))
                 ((not (member condition numeric))
                  (push (condition-event condition nil) never))))))
     (when (some (lambda (g) (eq (group-kind g) :numeric)) groups)
