@@ -353,7 +353,7 @@ the forces are conservative and nothing is lost."
           :assumed (loop for assumed in (reverse (getf (history-notes history) :assumed))
                          collect (phrase (if (getf assumed :state)
                                              (format nil "at state ~D: " (getf assumed :state))
-                                             "while checking the geometry: ")
+                                             "elsewhere in the run (the geometry, an impact): ")
                                          (present-relation presenter (getf assumed :fact))))
           :ambiguity
           (when (typep stopped 'ambiguous-transition)
