@@ -175,3 +175,15 @@ condition on f, checked on both sides of the threshold."
           (is-true (holds-at 49/20))
           (is-false (holds-at 51/20))
           (is-false (holds-at 5)))))))
+
+(test a-failed-branch-names-the-form-at-fault
+  "A branch that fails on an undecidable geometric fact says which fact: the reason
+holds the condition's detail and its datum, on one line."
+  (let* ((fact '(= (* w (+ (- d) (sqrt h))) 0))
+         (text (ames.simulator::failure-text
+                (make-condition 'ames.geometry:undecidable-geometric-fact
+                                :fact fact :datum fact
+                                :detail "neither exact arithmetic nor Maxima can decide it"))))
+    (is (search "neither exact arithmetic nor Maxima can decide it" text))
+    (is (search "(= (* w (+ (- d) (sqrt h))) 0)" (string-downcase text)))
+    (is (not (find #\Newline text)))))

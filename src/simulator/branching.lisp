@@ -206,8 +206,7 @@ fork on, renumbered after the fork, as (:ASSUME FACT :STATES ... :OUTCOME ...
                         ;; one branch that cannot be simulated (or whose scenario, with a
                         ;; parameter substituted at a boundary, cannot be checked) does not
                         ;; lose the others
-                        (setf failure (or (ames-error-detail condition)
-                                          (string-downcase (type-of condition))))
+                        (setf failure (failure-text condition))
                         nil))))
          (states (and history
                       (remove-if (lambda (state) (< (state-index state) index))
@@ -220,6 +219,19 @@ fork on, renumbered after the fork, as (:ASSUME FACT :STATES ... :OUTCOME ...
             (and selected (list :selected t))
             (and (getf alternative :substitution)
                  (list :substitution (getf alternative :substitution))))))
+
+(defun failure-text (condition)
+  "Why a branch failed, from the AMES-ERROR CONDITION: its detail (or its type) and the
+form at fault (its datum, printed on one line and cut at 300 characters), so that the
+fact a geometry could not decide is named."
+  (let* ((detail (or (ames-error-detail condition) (string-downcase (type-of condition))))
+         (datum (ames-error-datum condition))
+         (printed (and datum
+                       (let ((*print-pretty* nil) (*print-case* :downcase))
+                         (princ-to-string datum)))))
+    (cond ((or (null printed) (search printed detail)) detail)
+          ((> (length printed) 300) (format nil "~A (at ~A ...)" detail (subseq printed 0 300)))
+          (t (format nil "~A (at ~A)" detail printed)))))
 
 (defun history-leaf-outcomes (history)
   "The outcomes of HISTORY's paths: its own outcome, or, when it ends in a fork, every
