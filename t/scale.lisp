@@ -246,7 +246,7 @@ log gives each file's exit code. Skipped where GNU parallel is not installed."
           (unwind-protect
                (progn
                  (with-open-file (out ssh :direction :output :if-exists :supersede)
-                   (format out "#!/bin/sh~%# stands in for ssh: skips the options and the host, runs the command here~%while [ $# -gt 0 ]; do case \"$1\" in -*) shift;; *) break;; esac; done~%shift~%[ \"$1\" = \"--\" ] && shift~%exec sh -c \"$*\"~%"))
+                   (format out "#!/bin/sh~%# stands in for ssh: skips the options and the host, runs the command here~%while [ $# -gt 0 ]; do case \"$1\" in -*) shift;; *) break;; esac; done~%shift~%[ \"$1\" = \"--\" ] && shift~%# a login through sshd always has SHELL (parallel's remote worker runs the job with it)~%SHELL=/bin/sh; export SHELL~%exec sh -c \"$*\"~%"))
                  (uiop:run-program (list "chmod" "+x" (namestring ssh)))
                  (multiple-value-bind (expected) (uiop:run-program (list* program "run" "--format" "sexp" files)
                                                                    :output :string)
@@ -259,6 +259,8 @@ log gives each file's exit code. Skipped where GNU parallel is not installed."
                                                  files)
                                          :output :string :error-output :string :ignore-error-status t)
                      (is (eql 0 code) "parallel: ~A" errors)
-                     (is (string= expected output))
+                     (is (string= expected output)
+                         "parallel printed ~D characters, the single run ~D; they differ from ~D on"
+                         (length output) (length expected) (mismatch expected output))
                      (is (= 4 (length (uiop:read-file-lines log))) "a header and a line per file"))))
             (uiop:delete-directory-tree directory :validate t :if-does-not-exist :ignore))))))
