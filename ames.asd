@@ -45,6 +45,7 @@ frictionless translating rigid bodies evolve (after Leon Wong's 1994 MIT thesis)
                  (:file "linear-ode")
                  (:file "trig-roots")
                  (:file "presentation")
+                 (:file "radicals")
                  (:static-file "maxima-server.lisp")))
    (:module "tms" :pathname "src/tms/" :serial t
     :depends-on ("base")

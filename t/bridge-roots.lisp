@@ -161,3 +161,68 @@ relative to the point L, at time TM.")
      (let ((text (ames.maxima:latex b '(= (* m (acc particle :x)) theta0))))
        (is (search "\\theta" text))
        (is (search "\\mathrm{acc}_{\\mathit{particle},x}" text))))))
+
+;;; Real square roots (radicals.lisp)
+
+(defun complex-value (expression bindings)
+  "The value of the arithmetic EXPRESSION at BINDINGS in complex arithmetic, with the
+principal branch of every root (CL's SQRT and EXPT): a check of the arranged forms where
+a radicand is negative, which EXPRESSION-VALUE (real only) does not evaluate."
+  (labels ((value (x)
+             (cond ((numberp x) x)
+                   ((symbolp x) (or (cdr (assoc x bindings)) (error "unbound ~S" x)))
+                   (t (let ((arguments (mapcar #'value (rest x))))
+                        (ecase (first x)
+                          (+ (apply #'+ arguments))
+                          (- (apply #'- arguments))
+                          (* (apply #'* arguments))
+                          (/ (apply #'/ arguments))
+                          (sqrt (sqrt (first arguments)))
+                          (expt (expt (first arguments) (second arguments)))))))))
+    (value expression)))
+
+(defun radicands (expression)
+  "The radicands of the square roots in EXPRESSION."
+  (cond ((atom expression) '())
+        ((ames.maxima::radical-exponent expression)
+         (cons (second expression) (radicands (second expression))))
+        (t (mapcan #'radicands (rest expression)))))
+
+(test real-radicals-write-real-products-with-real-roots
+  "With x < 0 < p and y < 0: sqrt(x) sqrt(y) p is -sqrt(-x) sqrt(-y) p, sqrt(x)/sqrt(y) is
+sqrt(-x)/sqrt(-y), and a product that is not real (sqrt(x) p) or has no negative radicand
+is left alone. The value is the same at points satisfying the facts (complex arithmetic,
+principal roots), and every radicand left is proven >= 0 in the rewritten real forms."
+  (let ((facts '((< x 0) (< y (- 1)) (> p 0)))
+        (points (loop for (x y p) in '((-1/2 -3 2) (-2 -5/4 1/3) (-7 -2 5))
+                      collect (list (cons 'x (float x 1d0)) (cons 'y (float y 1d0))
+                                    (cons 'p (float p 1d0))))))
+    (call-with-bridge
+     (lambda (b)
+       (ames.maxima:with-assumptions (b facts)
+         (dolist (case '(((* p (sqrt x) (sqrt y)) :real)
+                         ((/ (sqrt x) (sqrt (+ y 1))) :real)
+                         ((+ 1 (/ (* 3 (expt x 3/2)) (sqrt y))) :real)
+                         ((* p (sqrt x)) :unchanged)
+                         ((* (sqrt p) (sqrt (+ p 1))) :unchanged)))
+           (destructuring-bind (form kind) case
+             (let ((rewritten (ames.maxima:real-radicals b form)))
+               (is (every (lambda (point)
+                            (< (abs (- (complex-value form point) (complex-value rewritten point)))
+                               1d-9))
+                          points)
+                   "~S became ~S, of another value" form rewritten)
+               (if (eq kind :unchanged)
+                   (is (equal form rewritten) "~S became ~S" form rewritten)
+                   (is (every (lambda (r) (ames.maxima:holds-p b `(>= ,r 0))) (radicands rewritten))
+                       "~S became ~S, still with a negative radicand" form rewritten))))))
+       ;; simplified, the first is Maxima's -p sqrt(x y)
+       (ames.maxima:with-assumptions (b facts)
+         (let ((simplified (ames.maxima:simplify-real b '(* p (sqrt x) (sqrt y)))))
+           (is (every (lambda (point)
+                        (< (abs (- (complex-value simplified point)
+                                   (- (* (cdr (assoc 'p point))
+                                         (sqrt (* (cdr (assoc 'x point)) (cdr (assoc 'y point))))))))
+                           1d-9))
+                      points)
+               "simplified to ~S" simplified)))))))

@@ -11,10 +11,12 @@
 (in-suite report)
 
 (defun plain-arrangement ()
-  "An arrangement by symbol name, with no sign known."
+  "An arrangement by symbol name that knows no difference's sign and takes every name to
+be >= 0, as the positive test points make it."
   (ames.report::make-arrangement
    :symbol-key (lambda (name) (list 3 (princ-to-string name)))
    :negative-p (constantly nil)
+   :nonnegative-p #'symbolp
    :variable 'tau))
 
 (defun random-positive-points (expression count seed)
@@ -120,3 +122,56 @@ POINTS random positive points, and are both defined at two of them at least."
     (is (string= "normal force of w on p" label))
     (is (string= "N" symbol))
     (is (eql 5 value))))
+
+;;; Square roots of bases that may be negative
+
+(defparameter *signed-points*
+  (let ((state (sb-ext:seed-random-state 11)))
+    (loop repeat 8
+          collect (flet ((magnitude () (+ 0.1d0 (random 2d0 state))))
+                    (list (cons 'p1 (magnitude)) (cons 'p2 (magnitude))
+                          (cons 'n1 (- (magnitude))) (cons 'n2 (- (magnitude)))
+                          (cons 'u1 (- (random 4d0 state) 2d0)) (cons 'u2 (- (random 4d0 state) 2d0))))))
+  "Points where p1, p2 > 0, n1, n2 < 0 and u1, u2 take either sign.")
+
+(defun signed-arrangement ()
+  "An arrangement that knows a sign where an expression has it at every signed point (a
+numeric stand-in, for the test, of the bridge's proof)."
+  (flet ((everywhere (test)
+           (lambda (expression)
+             (every (lambda (point)
+                      (let ((v (complex-value expression point)))
+                        (and (realp v) (funcall test v))))
+                    *signed-points*))))
+    (ames.report::make-arrangement
+     :symbol-key (lambda (name) (list 3 (princ-to-string name)))
+     :negative-p (everywhere #'minusp)
+     :nonnegative-p (everywhere (lambda (v) (>= v 0)))
+     :variable 'tau)))
+
+(test arranging-keeps-the-value-of-roots-of-negatives
+  "sqrt(x) sqrt(y) is not sqrt(x y) when x and y are negative, and sqrt(x)/sqrt(y) is
+not sqrt(x/y) when y is: the arranged forms keep the complex value of the original at
+points where the radicands take either sign; a real quantity written with roots of
+negatives (the corner's falling blocks) is written with real roots."
+  (dolist (form '((* p1 (sqrt n1) (sqrt n2))
+                  (/ (* p1 (sqrt (- n1 p2)) (sqrt n2)) (+ p2 p1))
+                  (* (sqrt u1) (sqrt u2))
+                  (/ (sqrt p1) (sqrt u1))
+                  (/ (sqrt u1) (sqrt u2))
+                  (/ 1 (* (sqrt u1) (sqrt p1)))
+                  (* (expt u1 3/2) (sqrt p1))
+                  (* (sqrt n1) (sqrt p1) (sqrt u1))
+                  (* (sqrt n1) (sqrt n2) (sqrt u1) (sqrt u2))
+                  (/ (sqrt n1) (sqrt n2))))
+    (let ((arranged (ames.report:arrange form (signed-arrangement))))
+      (is (ames.base:valid-expression-p arranged :kind :arithmetic) "~S arranged to ~S" form arranged)
+      (is (every (lambda (point)
+                   (< (abs (- (complex-value form point) (complex-value arranged point)))
+                      (* 1d-9 (max 1 (abs (complex-value form point))))))
+                 *signed-points*)
+          "~S arranged to ~S, of another value" form arranged)))
+  (let ((arranged (ames.report:arrange '(* p1 (sqrt n1) (sqrt n2)) (signed-arrangement))))
+    (is (every (lambda (point) (realp (complex-value arranged point))) *signed-points*)
+        "~S still has imaginary factors" arranged)
+    (is (eq '- (first arranged)) "~S: sqrt(n1) sqrt(n2) = -sqrt(n1 n2)" arranged)))

@@ -121,12 +121,10 @@ mb g (l1 - l2)/l3 added (f declared last, after the lengths), run for one state.
 (test corner-block-b-rises-or-falls
   "With f > mb g (l1 - l2)/l3 assumed B rises, and B's corner reaches the upper end of
 A's face at t1 = sqrt(l3 / a_Ax); with f < mb g (l1 - l2)/l3 it falls and reaches the
-lower end at t1 = sqrt(-l3 / a_Ax). Either way the contact between the blocks ends."
+lower end at t1 = sqrt(-l3 / a_Ax), A then moving away from the wall. Either way the
+contact between the blocks ends."
   (with-fixture simulator-bridge ()
-    ;; Falling (f < mb g (l1 - l2)/l3) still stops as ambiguous: Maxima writes the meeting
-    ;; times with square roots of negative factors, whose signs it cannot decide.
-    (skip "corner with f < mb g (l1 - l2)/l3: the signs of times written with square roots of negative factors are not decided yet")
-    (dolist (relation '(>))
+    (dolist (relation '(> <))
       (let* ((form (corner-with-push-assumed relation))
              (scenario (ames:parse-scenario form))
              (history (simulate-stopping-when-ambiguous scenario bridge))
@@ -150,7 +148,14 @@ lower end at t1 = sqrt(-l3 / a_Ax). Either way the contact between the blocks en
                  (is-same bridge "t1" (ames::state-duration state)
                           (if (eq relation '>)
                               `(sqrt (/ ,(x 'l3) ,a-ax))
-                              `(sqrt (- (/ ,(x 'l3) ,a-ax))))))))))))))
+                              `(sqrt (- (/ ,(x 'l3) ,a-ax)))))
+                 ;; A's speed at the end is a_Ax t1 = +-sqrt(+-l3 a_Ax): toward the wall
+                 ;; when B rises, away from it when B falls
+                 (is-same bridge "A's final velocity"
+                          (first (per-body (ames::state-final-velocities state) "BLOCK-A"))
+                          (if (eq relation '>)
+                              `(sqrt (* ,(x 'l3) ,a-ax))
+                              `(- (sqrt (- (* ,(x 'l3) ,a-ax)))))))))))))))
 
 ;;; Found while fuzzing (see the lead's report)
 

@@ -29,6 +29,8 @@ only by this package's own translation (see translation.lisp and maxima-server.l
    #:solve-script
    ;; presentation (presentation.lisp)
    #:presentation-candidates #:polynomial-coefficients #:presentation-latex
+   ;; real square roots (radicals.lisp)
+   #:real-radicals #:simplify-real
    ;; conditions
    #:maxima-condition #:maxima-error #:maxima-error-message
    #:maxima-question #:maxima-question-text #:maxima-question-expressions

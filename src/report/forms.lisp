@@ -4,8 +4,9 @@
 ;;;; Maxima chooses what is factored and simplified (see presentation.lisp); this file only
 ;;;; arranges what it gets, by rules that keep the value: + and * are reordered, a sum is
 ;;;; negated together with the sign of its odd power, cos^k x / sin^k x is written 1/tan^k x,
-;;;; and the square roots of one product merge into one (sqrt(x) sqrt(y) = sqrt(x y) wherever
-;;;; both sides are real, which is wherever the reported quantity is). The result is an
+;;;; the square root of a base known to be negative is written with the base negated (sqrt(x)
+;;;; sqrt(y) = -sqrt(-x) sqrt(-y) for x, y < 0), and square roots merge into one only where that
+;;;; keeps the value (sqrt(x) sqrt(y) = sqrt(x y) needs x or y >= 0). The result is an
 ;;;; ordinary expression of the algebra, so Maxima can still check that it equals the solved
 ;;;; form (the tests do, on every scenario).
 ;;;;
@@ -114,13 +115,15 @@ compares terms (and the bases made of them) by their contents."
 
 ;;; Arranging: the context says how symbols rank and which sums are negative
 
-(defstruct (arrangement (:constructor make-arrangement (&key symbol-key negative-p variable)))
+(defstruct (arrangement (:constructor make-arrangement
+                            (&key symbol-key negative-p (nonnegative-p (constantly nil)) variable)))
   "How to arrange: SYMBOL-KEY maps a variable or quantity term to its sort key (a list
 of numbers and strings: masses first, then the other parameters as declared, the time
 last); NEGATIVE-P (a function of an expression) says when a difference is known to be
-negative, so that it is written the other way round; VARIABLE, when given, orders a
-sum's terms by their power of it first (a polynomial in tau)."
-  symbol-key negative-p variable)
+negative, so that it is written the other way round, and NONNEGATIVE-P when an
+expression is known to be >= 0, so that its square root merges with others; VARIABLE,
+when given, orders a sum's terms by their power of it first (a polynomial in tau)."
+  symbol-key negative-p nonnegative-p variable)
 
 (defparameter *function-order* '(sin cos tan asin acos atan exp log sqrt)
   "The order of functions among the factors of a product: sin a cos a, then roots.")
@@ -196,10 +199,36 @@ terms first, fewer factors first, then its factors' keys."
   "True when BASE is a sum kept as a factor."
   (and (consp base) (eq (first base) :sum)))
 
+(defun half-integer-p (exponent)
+  "True when EXPONENT is an odd multiple of 1/2 (a power of a square root)."
+  (and (rationalp exponent) (= 2 (denominator exponent))))
+
+(defun radicals-made-real (powers arrangement)
+  "POWERS with every square-root power of a base known to be negative written with the
+base negated: sqrt(x)^m = i^m sqrt(-x)^m for x < 0. Returns (values POWERS SIGN): when
+the phases i^m multiply to +1 or -1, the rewritten powers and that sign; otherwise (the
+product is not real) POWERS unchanged and 1."
+  (let ((phase 0) (rewritten '()))
+    (dolist (power powers)
+      (destructuring-bind (base . exponent) power
+        (if (and (half-integer-p exponent) (not (realp base))
+                 (funcall (arrangement-negative-p arrangement) (display-base base arrangement)))
+            (progn (incf phase (* 2 exponent))
+                   (push (cons (cons :sum (if (sum-base-p base)
+                                              (negate-sum (rest base))
+                                              (list (make-term -1 (list (cons base 1))))))
+                               exponent)
+                         rewritten))
+            (push power rewritten))))
+    (if (evenp phase)
+        (values (nreverse rewritten) (if (zerop (mod phase 4)) 1 -1))
+        (values powers 1))))
+
 (defun normalised-term (term arrangement)
-  "TERM with cos/sin merged into tan, and each difference among its integer powers
-written with its positive terms first, or the other way round when the arrangement
-knows it to be negative (the sign going to the coefficient when the power is odd)."
+  "TERM with cos/sin merged into tan, each difference among its integer powers written
+with its positive terms first, or the other way round when the arrangement knows it to
+be negative (the sign going to the coefficient when the power is odd), and the square
+roots of negative bases written as roots of their negations (see RADICALS-MADE-REAL)."
   (let ((coefficient (term-coefficient term)) (powers '()))
     (dolist (power (tangents-merged (term-powers term)))
       (destructuring-bind (base . exponent) power
@@ -210,8 +239,9 @@ knows it to be negative (the sign going to the coefficient when the power is odd
             (progn (push (cons (cons :sum (negate-sum (rest base))) exponent) powers)
                    (when (oddp exponent) (setf coefficient (- coefficient))))
             (push power powers))))
-    (reduce #'multiply-terms (mapcar (lambda (p) (make-term 1 (list p))) (nreverse powers))
-            :initial-value (make-term coefficient '()))))
+    (multiple-value-bind (real-powers sign) (radicals-made-real (nreverse powers) arrangement)
+      (reduce #'multiply-terms (mapcar (lambda (p) (make-term 1 (list p))) real-powers)
+              :initial-value (make-term (* sign coefficient) '())))))
 
 (defun display-base (base arrangement)
   "The expression for BASE."
@@ -229,6 +259,26 @@ knows it to be negative (the sign going to the coefficient when the power is odd
 (defun display-product (factors)
   "The product of the expressions FACTORS (1 when there is none)."
   (cond ((null factors) 1) ((null (rest factors)) (first factors)) (t (cons '* factors))))
+
+(defun radicals-to-merge (radicals arrangement)
+  "RADICALS, a list of (BASE . M) for BASE^(M/2) with M odd, split into (values MERGED
+ALONE): MERGED go under one square root, ALONE stay roots of their own. sqrt(x) sqrt(y)
+= sqrt(x y) only when x or y is >= 0, so every base not known to be >= 0 stays alone,
+except one with M = 1 (M = -1 when every power is negative, the root then being a
+divisor) among bases that are."
+  (let* ((inverted (every (lambda (p) (minusp (cdr p))) radicals))
+         (unit (if inverted -1 1))
+         (merged '()) (alone '()) (open-slot t))
+    (dolist (radical radicals)
+      (destructuring-bind (base . twice) radical
+        (cond ((or (and (realp base) (plusp base))
+                   (funcall (arrangement-nonnegative-p arrangement) (display-base base arrangement)))
+               (push radical merged))
+              ((and open-slot (eql twice unit))
+               (setf open-slot nil)
+               (push radical merged))
+              (t (push radical alone)))))
+    (values (nreverse merged) (nreverse alone))))
 
 (defun display-term (term arrangement)
   "TERM as an expression: numeric coefficient first, factors by their keys, the
@@ -250,24 +300,33 @@ for a negative coefficient."
              (mapcar (lambda (p) (display-power (car p) (cdr p) arrangement))
                      (stable-sort (nreverse powers) #'compare-keys
                                   :key (lambda (p) (base-key (car p) arrangement))))))
-      (let* ((magnitude (abs coefficient))
-             (top (if (rationalp magnitude) (numerator magnitude) magnitude))
-             (bottom (if (rationalp magnitude) (denominator magnitude) 1))
-             ;; one square root; in the denominator when it has only negative powers
-             (inverted (and radicals (every (lambda (p) (minusp (cdr p))) radicals)))
-             (root (and radicals
-                        (list 'sqrt (display-term (make-term 1 (mapcar (lambda (p)
-                                                                         (cons (car p) (if inverted (- (cdr p)) (cdr p))))
-                                                                       (reverse radicals)))
-                                                  arrangement))))
-             (upper (append (unless (eql top 1) (list top)) (arranged numerator)
-                            (and root (not inverted) (list root))))
-             (lower (append (unless (eql bottom 1) (list bottom)) (arranged denominator)
-                            (and root inverted (list root))))
-             (whole (if lower
-                        (list '/ (display-product upper) (display-product lower))
-                        (display-product upper))))
-        (if (minusp coefficient) (list '- whole) whole)))))
+      (multiple-value-bind (merged alone) (radicals-to-merge (reverse radicals) arrangement)
+        (let* ((magnitude (abs coefficient))
+               (top (if (rationalp magnitude) (numerator magnitude) magnitude))
+               (bottom (if (rationalp magnitude) (denominator magnitude) 1))
+               ;; one square root; in the denominator when it has only negative powers
+               (inverted (and merged (every (lambda (p) (minusp (cdr p))) merged)))
+               (root (and merged
+                          (list 'sqrt (display-term (make-term 1 (mapcar (lambda (p)
+                                                                           (cons (car p) (if inverted (- (cdr p)) (cdr p))))
+                                                                         merged))
+                                                    arrangement))))
+               (upper (append (unless (eql top 1) (list top)) (arranged numerator)
+                              (and root (not inverted) (list root))
+                              (loop for (base . twice) in alone
+                                    unless (eql twice -1)
+                                      collect (if (eql twice 1)
+                                                  (list 'sqrt (display-base base arrangement))
+                                                  (display-power base (/ twice 2) arrangement)))))
+               (lower (append (unless (eql bottom 1) (list bottom)) (arranged denominator)
+                              (and root inverted (list root))
+                              (loop for (base . twice) in alone
+                                    when (eql twice -1)
+                                      collect (list 'sqrt (display-base base arrangement)))))
+               (whole (if lower
+                          (list '/ (display-product upper) (display-product lower))
+                          (display-product upper))))
+          (if (minusp coefficient) (list '- whole) whole))))))
 
 (defun sign-absorbed (term arrangement)
   "TERM, when its coefficient is negative and it has a sum among its odd powers whose

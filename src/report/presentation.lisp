@@ -87,15 +87,20 @@ declared, quantity terms (a_x), other names, s, then tau."
   (make-arrangement
    :symbol-key (symbol-key-function presenter)
    :variable variable
-   :negative-p (lambda (expression)
-                 (let ((key (list :negative expression)))
-                   (multiple-value-bind (known found) (gethash key (presenter-cache presenter))
-                     (if found
-                         known
-                         (setf (gethash key (presenter-cache presenter))
-                               (handler-case (ames.maxima:holds-p (presenter-bridge presenter)
-                                                                  (list '< expression 0))
-                                 (ames.maxima:maxima-condition () nil)))))))))
+   :negative-p (lambda (expression) (proven-sign-p presenter '< expression))
+   :nonnegative-p (lambda (expression) (proven-sign-p presenter '>= expression))))
+
+(defun proven-sign-p (presenter relation expression)
+  "True when the bridge proves (RELATION EXPRESSION 0) under the scenario's assumptions
+(remembered in PRESENTER's cache); false when it does not or cannot."
+  (let ((key (list relation expression)))
+    (multiple-value-bind (known found) (gethash key (presenter-cache presenter))
+      (if found
+          known
+          (setf (gethash key (presenter-cache presenter))
+                (handler-case (ames.maxima:holds-p (presenter-bridge presenter)
+                                                   (list relation expression 0))
+                  (ames.maxima:maxima-condition () nil)))))))
 
 ;;; Rewrites the assumptions justify
 

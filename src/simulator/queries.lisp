@@ -287,10 +287,10 @@ is linear in it with a coefficient of decided sign; else FACT."
                       parameter value)))))))
 
 (defun simplified (bridge expression)
-  "EXPRESSION in its simplest form through BRIDGE (each component of a vector)."
+  "EXPRESSION in its simplest real form through BRIDGE (each component of a vector)."
   (if (vector-p* expression)
-      (mapcar (lambda (x) (ames.maxima:simplify bridge x :strategy :full)) expression)
-      (ames.maxima:simplify bridge expression :strategy :full)))
+      (mapcar (lambda (x) (ames.maxima:simplify-real bridge x)) expression)
+      (ames.maxima:simplify-real bridge expression)))
 
 (defun answer-question (bridge scenario question facts outcome states paths)
   "QUESTION's answer on one path (its FACTS, OUTCOME and STATES); PATHS are all the

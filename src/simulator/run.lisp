@@ -64,6 +64,11 @@ of (:state N :fact RELATION).")
   "EXPRESSION simplified by Maxima (rational canonical form unless STRATEGY says)."
   (ames.maxima:simplify (run-bridge run) expression :strategy strategy))
 
+(defun tidy-real (run expression)
+  "EXPRESSION simplified fully, products of square roots of negative quantities written
+with real roots (AMES.MAXIMA:SIMPLIFY-REAL): how values at a state's end are reported."
+  (ames.maxima:simplify-real (run-bridge run) expression))
+
 (defun decide (run relation)
   "RELATION decided under the scenario's assumptions: :TRUE, :FALSE or :UNKNOWN."
   (ames.maxima:decide (run-bridge run) relation))

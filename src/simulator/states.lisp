@@ -88,9 +88,8 @@ then has no closed form)."
                       (let* ((group (body-group groups body))
                              (at (group-at-end run groups group fired)))
                         (mapcar (lambda (x)
-                                  (tidy run (substitute-expressions
-                                             (list (cons (group-variable group) at)) x)
-                                        :full))
+                                  (tidy-real run (substitute-expressions
+                                                  (list (cons (group-variable group) at)) x)))
                                 (body-motion run groups body what)))))))
           (body-names run)))
 
