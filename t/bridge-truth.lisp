@@ -94,6 +94,36 @@ abs; order-preserving names; parameter values; geometry asking only what matters
      (let ((x '(- (* a b c) (* d (sqrt (+ a b))))))
        (is (eq :false (decided b `((> a 0) (> b 0) (> c 0) (> d 0) (<= ,x 0)) `(> ,x 0))))))))
 
+(test facts-linear-in-a-parameter-order-it
+  "A fact linear in a parameter orders it even where the parameter is not alone on a
+side: w < h - g d^2/(2 v0^2) with w > 0 says h > w + g d^2/(2 v0^2), so the ball thrown
+from height h at speed v0 is above 0 at the wall's distance d and lands beyond it; a
+coefficient of proven sign (2 v0^2) and an equation (h = g d^2/(2 v0^2) exactly) serve
+too. Verdicts are checked against admissible random points."
+  (call-with-bridge
+   (lambda (b)
+     (let ((over '((> g 0) (> h 0) (> d 0) (> v0 0) (> w 0)
+                   (< w (- h (/ (* g (expt d 2)) (* 2 (expt v0 2)))))))
+           (landing '(- (* v0 (sqrt (/ (* 2 h) g))) d)))
+       (is (eq :true (decided b over '(> (- h (/ (* g (expt d 2)) (* 2 (expt v0 2)))) 0))))
+       (is (eq :true (decided b over `(> ,landing 0))))
+       (is (eq :false (decided b over `(= (* w ,landing) 0))))
+       (is (eq :unknown (decided b over '(> (- h (* 2 w)) 0))))
+       (dolist (relation (list `(> ,landing 0) '(> (- h w) 0) '(> (- h (* 2 w)) 0)))
+         (let ((verdict (decided b over relation)))
+           (unless (eq verdict :unknown)
+             (dolist (point (random-table-points over relation 3000))
+               (let ((truth (table-point-truth relation over point)))
+                 (unless (member truth '(:inadmissible nil))
+                   (is (eq truth verdict) "~S decided ~S, but ~S at ~S" relation verdict truth point))))))))
+     (is (eq :true (decided b '((> g 0) (> h 0) (> d 0) (> v0 0) (> w 0)
+                                (> (- (* 2 (expt v0 2) (- h w)) (* g (expt d 2))) 0))
+                            '(> (- h w) 0)))
+         "2 v0^2 (h - w) > g d^2 orders h above w")
+     (let ((grazing '((> g 0) (> d 0) (> v0 0) (= (- (* 2 h (expt v0 2)) (* g (expt d 2))) 0))))
+       (is (eq :true (decided b grazing '(> h 0))))
+       (is (eq :true (decided b grazing '(= (- (* v0 (sqrt (/ (* 2 h) g))) d) 0))))))))
+
 (test square-roots-of-negatives-in-a-product
   "Maxima writes some times as sqrt(A) sqrt(B) with A, B < 0 (both radicands negative
 under the facts, though sign() cannot see it): that is -sqrt(A B)."

@@ -12,10 +12,13 @@
   "FORMAT CONTROL with ARGUMENTS to STREAM, for a condition's :REPORT: *PRINT-LEVEL* and
 *PRINT-LENGTH* are bound to +REPORT-PRINT-LEVEL+ and +REPORT-PRINT-LENGTH+ (and
 *PRINT-READABLY* to NIL), so that a very deep, very long or circular datum prints cut
-short (with # and ...) instead of exhausting the stack or never ending."
+short (with # and ...) instead of exhausting the stack or never ending; *PRINT-PRETTY*
+is NIL, so that a datum stays on the message's line instead of being broken into a
+staircase indented past the message's head."
   (let ((*print-level* +report-print-level+)
         (*print-length* +report-print-length+)
-        (*print-readably* nil))
+        (*print-readably* nil)
+        (*print-pretty* nil))
     (apply #'format stream control arguments)))
 
 (defstruct (error-context (:constructor make-error-context (&key file line scenario location)))

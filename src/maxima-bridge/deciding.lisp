@@ -4,7 +4,7 @@
 ;;;; decide it (witnesses.lisp); sign() of the difference of the sides in several forms;
 ;;;; clearing one square root; equivalence for = and /=; what a physicist knows
 ;;;; (truth.lisp: trigonometric signs from the angles' ranges, monotonicity, squares,
-;;;; signed factors); and, last, the orderings of the parameters substituted. Each is
+;;;; signed factors); and, last, the orderings of the parameters substituted (orders.lisp). Each is
 ;;;; sound, so the first that decides gives the verdict; :UNKNOWN is never a guess.
 ;;;;
 ;;;; Speed: sign() requests are asked one at a time until the relation is decided, and
@@ -224,79 +224,6 @@ DECIDE-WITH-IMAGINARY-RADICANDS."
         (when (eq verdict :unknown)
           (setf verdict (decide-by-order-substitution bridge relation))))
       verdict)))
-
-(defun order-facts (bridge relation)
-  "The facts in force that order a variable V of RELATION against an expression E free of
-V and not a number (V > E, V < E, E > V ...), as lists (V E SIGN WEAK): V is E + SIGN * D
-for some D > 0 (D >= 0 when WEAK). These are the orderings Maxima's sign() does not use
-inside sums."
-  (loop for fact in (current-assumptions bridge)
-        for operator = (expression-operator fact)
-        for lhs = (relation-lhs fact)
-        for rhs = (relation-rhs fact)
-        for weak = (and (member operator '(>= <=)) t)
-        for above = (member operator '(> >=))          ; lhs above rhs
-        for order = (cond ((not (member operator '(> >= < <=))) nil)
-                          ((variable-symbol-p lhs) (list lhs rhs (if above 1 -1) weak))
-                          ((variable-symbol-p rhs) (list rhs lhs (if above -1 1) weak)))
-        when (and order
-                  (free-of-p (first order) (second order))
-                  (not (numberp (second order)))
-                  (not (free-of-p (first order) relation)))
-          collect order))
-
-(defun decide-by-order-substitution (bridge relation)
-  "Decide RELATION once more after writing each ordered variable V (a fact V > E or V < E
-in force, E not a number) as E + D or E - D with D > 0 fresh: sums such as
-mb g (l1 - l2)^2 + f (l1 - l2) then show their sign term by term. Sound: every admissible
-V is some E +/- D. :UNKNOWN when there is no such fact."
-  (let ((orders (and (not *substituting-orders*) (order-facts bridge relation))))
-    (cond ((null orders) :unknown)
-          ((null (rest orders)) (decide-with-orders bridge relation orders))
-          ;; all the orderings at once, else each alone (writing V = E - D forgets V > 0)
-          (t (let ((verdict (decide-with-orders bridge relation orders)))
-               (if (eq verdict :unknown)
-                   (loop for order in orders
-                         for single = (decide-with-orders bridge relation (list order))
-                         unless (eq single :unknown) return single
-                         finally (return :unknown))
-                   verdict))))))
-
-(defun order-excess-name (bridge variable)
-  "The fresh variable D standing for the excess of VARIABLE over its bound (V = E + D or
-E - D) in DECIDE-BY-ORDER-SUBSTITUTION: an uninterned symbol, so no user name can be
-it, and the same one each time for a VARIABLE of BRIDGE, so that the rewritten requests
-are answered from the cache when they come again."
-  (let ((table (bridge-excess-names bridge)))
-    (or (gethash variable table)
-        (let ((excess (make-symbol (format nil "~A-EXCESS" variable))))
-          ;; named apart from the algebra's variables ($AMESX...), so that it takes none
-          ;; of their letters
-          (maxima-name (bridge-names bridge) excess "$AMESX")
-          (setf (gethash (copy-tree variable) table) excess)))))
-
-(defun decide-with-orders (bridge relation orders)
-  "DECIDE-BY-ORDER-SUBSTITUTION's work for the given ORDERS (see ORDER-FACTS)."
-  (let* ((*substituting-orders* t)
-         (deltas (loop for order in orders
-                       collect (order-excess-name bridge (first order))))
-         (bindings (loop for (variable base sign) in orders
-                         for delta in deltas
-                         collect (cons variable (list '+ base (list '* sign delta)))))
-         (facts (loop for (nil nil nil weak) in orders
-                      for delta in deltas
-                      collect (list (if weak '>= '>) delta 0))))
-    ;; substitute one ordering after another, and again, so that a bound written with
-    ;; another ordered variable (f > mb g (l1 - l2) / l3 with l1 > l2) is rewritten too
-    (let ((rewritten relation))
-      (loop repeat 3
-            do (dolist (binding bindings)
-                 (setf rewritten (substitute-expressions (list binding) rewritten))))
-      ;; a rewriting that leaves the reals (a square root of a negative quantity)
-      ;; proves nothing: Maxima's complaint then means :UNKNOWN
-      (handler-case (call-with-assumptions bridge facts
-                                           (lambda () (decide bridge rewritten)))
-        (maxima-error () :unknown)))))
 
 (defvar *deciding* '()
   "The verdict keys (see VERDICT-KEY) of the DECIDE calls under way, innermost first.")

@@ -56,9 +56,14 @@ itself), or NIL."
                 (when (free-of-p name value)
                   (return (values name value)))))))))))
 
+(defun default-value-spec-p (spec)
+  "True when SPEC, part of a parameter's declaration, is a default (:VALUE NUMBER)."
+  (and (consp spec) (symbolp (first spec)) (string= (symbol-name (first spec)) "VALUE")))
+
 (defun substituted-form (form parameter value)
-  "The scenario FORM with PARAMETER replaced by VALUE everywhere but in its own
-declaration, which is dropped."
+  "The scenario FORM with PARAMETER replaced by VALUE everywhere (in the other
+parameters' assumptions too) but in its own declaration, which is dropped, and with no
+parameter's default value."
   (labels ((walk (x)
              (cond ((and (symbolp x) (string= (symbol-name x) (symbol-name parameter))) value)
                    ((atom x) x)
@@ -67,11 +72,19 @@ declaration, which is dropped."
               (if (and (consp clause) (symbolp (first clause))
                        (string= (symbol-name (first clause)) "PARAMETERS"))
                   (cons (first clause)
-                        (remove-if (lambda (spec)
-                                     (let ((name (if (consp spec) (first spec) spec)))
-                                       (and (symbolp name) (string= (symbol-name name)
-                                                                    (symbol-name parameter)))))
-                                   (rest clause)))
+                        (mapcar (lambda (spec)
+                                  ;; another parameter's assumptions may mention PARAMETER;
+                                  ;; default values, chosen for the whole range, need not
+                                  ;; lie on the boundary, and are dropped
+                                  (if (consp spec)
+                                      (cons (first spec)
+                                            (walk (remove-if #'default-value-spec-p (rest spec))))
+                                      spec))
+                                (remove-if (lambda (spec)
+                                             (let ((name (if (consp spec) (first spec) spec)))
+                                               (and (symbolp name) (string= (symbol-name name)
+                                                                            (symbol-name parameter)))))
+                                           (rest clause))))
                   (walk clause)))
             form)))
 
@@ -84,26 +97,30 @@ declaration, which is dropped."
 (defun fork-alternatives (run fact)
   "The branches of the missing FACT: plists (:ASSUME RELATION :FACTS FACTS :SCENARIO S)
 with FACTS the assumptions the branch adds and S its scenario (the boundary's has a
-parameter substituted). Alternatives the assumptions already exclude are left out."
-  (let ((scenario (run-scenario run))
-        (alternatives '()))
-    (dolist (side (list fact (negated-fact fact)))
+parameter substituted). They do not overlap: X > 0, X < 0 and X = 0 when there is a
+boundary branch, else FACT and its strict opposite. Alternatives the assumptions
+already exclude are left out."
+  (let* ((scenario (run-scenario run))
+         (boundary
+           (multiple-value-bind (parameter value)
+               (and (<= (ames.maxima:expression-size fact) *largest-boundary-fact*)
+                    (boundary-substitution run fact))
+             (when parameter
+               (let ((facts (parameter-facts scenario parameter value)))
+                 (unless (some (lambda (f) (eq (decide run f) :false)) facts)
+                   (let ((form (substituted-form (scenario-form scenario) parameter value)))
+                     (handler-case
+                         (list :assume `(= ,(relation-lhs fact) ,(relation-rhs fact))
+                               :facts facts
+                               :scenario (parse-scenario form :source (scenario-source scenario))
+                               :substitution (list parameter value))
+                       (scenario-error () nil))))))))
+         (alternatives '()))
+    ;; with a boundary branch of its own, the sides are strict (X >= 0 becomes X > 0)
+    (dolist (side (list (if boundary (negated-fact (negated-fact fact)) fact) (negated-fact fact)))
       (unless (eq (decide run side) :false)
         (push (list :assume side :facts (list side) :scenario scenario) alternatives)))
-    (multiple-value-bind (parameter value)
-        (and (<= (ames.maxima:expression-size fact) *largest-boundary-fact*)
-             (boundary-substitution run fact))
-      (when parameter
-        (let ((facts (parameter-facts scenario parameter value)))
-          (unless (some (lambda (f) (eq (decide run f) :false)) facts)
-            (let ((form (substituted-form (scenario-form scenario) parameter value)))
-              (handler-case
-                  (push (list :assume `(= ,(relation-lhs fact) ,(relation-rhs fact))
-                              :facts facts
-                              :scenario (parse-scenario form :source (scenario-source scenario))
-                              :substitution (list parameter value))
-                        alternatives)
-                (scenario-error () nil)))))))
+    (when boundary (push boundary alternatives))
     (nreverse alternatives)))
 
 (defun branchable-fact-p (fact)
@@ -186,8 +203,10 @@ fork on, renumbered after the fork, as (:ASSUME FACT :STATES ... :OUTCOME ...
          (outcome :failed)
          (history (let ((*branching* (list* :extra-facts facts *branching*)))
                     (handler-case
+                        ;; the values satisfy the selected branch's fact only: in the
+                        ;; others they would settle facts against the branch's own
                         (simulate-branch (getf alternative :scenario) (run-bridge run)
-                                         (run-values run) check-incremental facts)
+                                         (and selected (run-values run)) check-incremental facts)
                       ;; the run's budget is the whole tree's: it is not one branch's failure
                       (budget-exceeded (condition) (error condition))
                       ;; an ambiguity the tree may not fork on (its bound, or a fact

@@ -231,9 +231,15 @@ the scenario's assumptions in BRIDGE). PARAMETER-VALUES as SIMULATE takes them."
 
 (defun simulate-checked (scenario bridge parameter-values check-incremental &key extra-facts)
   "SIMULATE's work on the validated SCENARIO, with EXTRA-FACTS (relations) assumed
-besides the scenario's own assumptions (a branch's)."
-  (check-scenario scenario bridge)
+besides the scenario's own assumptions (a branch's). The scenario's checks (shapes, no
+overlap at the start) see the extra facts too: a boundary branch's scenario has lost a
+parameter's declaration to them."
+  (unless extra-facts
+    ;; first on its own, so that contradictory assumptions are named by parameter
+    (check-scenario scenario bridge))
   (ames.maxima:with-assumptions (bridge (append (scenario-assumption-relations scenario) extra-facts))
+    (when extra-facts
+      (check-scenario scenario bridge))
     (let ((history (make-instance 'simulation-history
                                   :scenario scenario
                                   :parameter-values (check-parameter-values parameter-values scenario)))
