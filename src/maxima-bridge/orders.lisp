@@ -51,13 +51,21 @@ VARIABLE. NIL otherwise."
                       (t -1))
                 (and (member operator '(>= <=)) t)))))))
 
-(defun order-facts (bridge relation)
+(defparameter *largest-relation-for-solved-orders* 60
+  "Facts solved for a variable (see LINEAR-ORDER) are substituted only into relations of
+at most this many atoms and operators: solving costs Maxima requests, and a large
+relation with rational expressions put for its variables grows past what Maxima
+decides in time (the corner's cubics took minutes), where the small relations of a
+textbook bound are decided at once.")
+
+(defun order-facts (bridge relation &key solved)
   "The facts in force that order a variable V of RELATION against an expression E free of
-V and not a number (V > E, V < E, E > V ..., or a fact linear in V solved for it), as
-lists (V E SIGN WEAK): V is E + SIGN * D for some D > 0 (D >= 0 when WEAK; V is E when
-SIGN is 0, from an equation). These are the orderings Maxima's sign() does not use
-inside sums. A fact with V alone on a side orders V; one that orders no variable of
-RELATION that way is solved for the first variable of RELATION it is linear in."
+V and not a number, as lists (V E SIGN WEAK): V is E + SIGN * D for some D > 0 (D >= 0
+when WEAK; V is E when SIGN is 0, from an equation). These are the orderings Maxima's
+sign() does not use inside sums. Without SOLVED, the facts with V alone on a side (V >
+E, E < V ...); with SOLVED, the equations V = E and the facts with no variable of
+RELATION alone on a side, each solved for the first variable of RELATION it is linear
+in (see LINEAR-ORDER)."
   (flet ((useful-p (order)
            (and order
                 (free-of-p (first order) (second order))
@@ -73,7 +81,8 @@ RELATION that way is solved for the first variable of RELATION it is linear in."
                             ((variable-symbol-p lhs) (list lhs rhs sign weak))
                             ((variable-symbol-p rhs) (list rhs lhs (- sign) weak)))
           for order = (cond ((null sign) nil)
-                            ((useful-p alone) alone)
+                            ((not solved) (and (/= sign 0) (useful-p alone) alone))
+                            ((useful-p alone) (and (= sign 0) alone))
                             (t (loop for variable in (expression-variables relation)
                                      for solved = (and (not (free-of-p variable fact))
                                                        (linear-order bridge fact variable))
@@ -82,22 +91,29 @@ RELATION that way is solved for the first variable of RELATION it is linear in."
             collect order)))
 
 (defun decide-by-order-substitution (bridge relation)
-  "Decide RELATION once more after writing each ordered variable V (a fact V > E or V < E
-in force, E not a number, see ORDER-FACTS) as E + D or E - D with D > 0 fresh (as E
-itself for V = E): sums such as
-mb g (l1 - l2)^2 + f (l1 - l2) then show their sign term by term. Sound: every admissible
-V is some E +/- D. :UNKNOWN when there is no such fact."
-  (let ((orders (and (not *substituting-orders*) (order-facts bridge relation))))
-    (cond ((null orders) :unknown)
-          ((null (rest orders)) (decide-with-orders bridge relation orders))
-          ;; all the orderings at once, else each alone (writing V = E - D forgets V > 0)
-          (t (let ((verdict (decide-with-orders bridge relation orders)))
-               (if (eq verdict :unknown)
-                   (loop for order in orders
-                         for single = (decide-with-orders bridge relation (list order))
-                         unless (eq single :unknown) return single
-                         finally (return :unknown))
-                   verdict))))))
+  "Decide RELATION once more after writing each ordered variable V (see ORDER-FACTS) as
+E + D or E - D with D > 0 fresh: sums such as mb g (l1 - l2)^2 + f (l1 - l2) then show
+their sign term by term. First the facts with V alone on a side, all at once and then
+each alone (writing V = E - D forgets V > 0); then, for a small relation (see
+*LARGEST-RELATION-FOR-SOLVED-ORDERS*), each other fact solved for one of its variables
+(V = E exactly for an equation). Sound: every admissible V is some E +/- D (or E).
+:UNKNOWN when no such fact decides it."
+  (flet ((each-alone (orders)
+           (loop for order in orders
+                 for single = (decide-with-orders bridge relation (list order))
+                 unless (eq single :unknown) return single
+                 finally (return :unknown))))
+    (if *substituting-orders*
+        :unknown
+        (let* ((orders (order-facts bridge relation))
+               (verdict (cond ((null orders) :unknown)
+                              ((null (rest orders)) (decide-with-orders bridge relation orders))
+                              (t (let ((together (decide-with-orders bridge relation orders)))
+                                   (if (eq together :unknown) (each-alone orders) together))))))
+          (if (and (eq verdict :unknown)
+                   (<= (expression-size relation) *largest-relation-for-solved-orders*))
+              (each-alone (order-facts bridge relation :solved t))
+              verdict)))))
 
 (defun order-excess-name (bridge variable)
   "The fresh variable D standing for the excess of VARIABLE over its bound (V = E + D or
