@@ -124,6 +124,18 @@ too. Verdicts are checked against admissible random points."
        (is (eq :true (decided b grazing '(> h 0))))
        (is (eq :true (decided b grazing '(= (- (* v0 (sqrt (/ (* 2 h) g))) d) 0))))))))
 
+(test inverse-trigonometric-values-lie-in-their-principal-ranges
+  "atan u lies in (-pi/2, pi/2) and asin u in [-pi/2, pi/2] whatever u is, so pi - atan u
+is positive (the arc length of a particle in a bowl, r (pi - atan(cos t / sin t))) and
+asin u + pi/2 is never negative; what the ranges leave open stays open."
+  (call-with-bridge
+   (lambda (b)
+     (let ((facts '((> r 0) (> theta0 0) (< theta0 (/ pi 2)) (> u 0))))
+       (is (eq :true (decided b facts '(> (* (- pi (atan (/ (cos theta0) (sin theta0)))) r) 0))))
+       (is (eq :false (decided b facts '(< (+ (asin (- u 1)) (/ pi 2)) 0))))
+       (is (eq :true (decided b facts '(> (- (* 2 pi) (acos (- u 3)) (atan u)) 0))))
+       (is (eq :unknown (decided b facts '(> (- (atan (- u 1)) theta0) 0))))))))
+
 (test square-roots-of-negatives-in-a-product
   "Maxima writes some times as sqrt(A) sqrt(B) with A, B < 0 (both radicands negative
 under the facts, though sign() cannot see it): that is -sqrt(A B)."

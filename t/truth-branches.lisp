@@ -92,3 +92,28 @@ at t = d/v0. With the defaults (--numeric) the branch over the wall is selected.
         (is (not (null chosen)))
         (when chosen
           (is (eq :over (branch-side scenario chosen over into))))))))
+
+(defparameter *particle-in-a-bowl*
+  '(scenario particle-in-a-bowl
+    "A particle released at rest inside a fixed circular bowl, at angle theta0 from the bottom."
+    (parameters (m :positive) (g :positive) (r :positive) (theta0 :positive (< theta0 (/ pi 2))))
+    (gravity g)
+    (body bowl :fixed t :shape (arc :center (0 r) :radius r :from pi :to (* 2 pi) :solid :outside))
+    (body particle :mass m :position ((* r (sin theta0)) (- r (* r (cos theta0))))
+                   :velocity (0 0) :shape point)
+    (simulate :states 3))
+  "A body that turns back on a curve: the energy integral vanishes at the mirror point
+-theta0, a root of sin(s/r) = cos theta0 that solve() does not list.")
+
+(test a-body-turning-back-on-a-curve-is-refused-not-answered
+  "The particle in a bowl swings to -theta0 and back. Turning points on a curve are not
+supported yet: the run must stop with an UNSUPPORTED-SITUATION naming the particle, not
+take it to the bowl's rim with an imaginary speed, and it must not branch on the start's
+arc length r (pi - atan(cos theta0 / sin theta0)), which is positive."
+  (with-fixture simulator-bridge ()
+    (let ((condition (handler-case (progn (ames:simulate *particle-in-a-bowl* :bridge bridge) nil)
+                       (ames:unsupported-situation (c) c))))
+      (is (typep condition 'ames:unsupported-situation))
+      (when condition
+        (is (mentions-name-p "PARTICLE" (ames-error-datum condition)))
+        (is (search "turn back" (princ-to-string condition)))))))

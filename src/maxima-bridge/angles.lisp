@@ -193,7 +193,8 @@ from bounds that are expressions of other subjects (b > a with a > 0 gives b > 0
 (defun expression-range (expression ranges)
   "The range of the arithmetic EXPRESSION over the subjects' RANGES (an alist from
 SUBJECT-RANGES; a subject not in it is unbounded), by interval arithmetic on sums,
-differences and multiples by constants; NIL when EXPRESSION is of another kind."
+differences and multiples by constants, atan, asin and acos taking their principal
+values; NIL when EXPRESSION is of another kind."
   (labels ((range (x)
              (let ((constant (pi-linear-value x)))
                (cond (constant (point-range constant))
@@ -222,6 +223,11 @@ differences and multiples by constants; NIL when EXPRESSION is of another kind."
                                      (inner (range (first arguments))))
                                  (and divisor inner (zerop (cdr divisor)) (/= 0 (car divisor))
                                       (range-scaled inner (pi-number (/ (car divisor)))))))
+                            ;; the inverse functions' principal values, whatever the argument
+                            (atan (and (= 1 (length arguments))
+                                       (make-range (pi-number 0 -1/2) (pi-number 0 1/2) t t)))
+                            (asin (make-range (pi-number 0 -1/2) (pi-number 0 1/2)))
+                            (acos (make-range (pi-number 0) (pi-number 0 1)))
                             (t nil)))))))
            (reduce-ranges (parts)
              (and (every #'identity parts) (reduce #'range-sum parts))))

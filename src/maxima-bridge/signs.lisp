@@ -303,6 +303,20 @@ outside the reals."
                 (setf signs (or (intersection signs counted) signs)))))
           signs)))))
 
+(defun range-signs (prover x)
+  "The signs X may take by its exact range (EXPRESSION-RANGE over the prover's subject
+ranges: pi - atan u lies in (pi/2, 3 pi/2)), or NIL when the range has no sign."
+  (let ((range (expression-range x (prover-ranges prover))))
+    (when range
+      (let ((low (and (range-lower range) (pn-sign (range-lower range))))
+            (high (and (range-upper range) (pn-sign (range-upper range)))))
+        (cond ((eql low 1) '(:positive))
+              ((and (eql low 0) (range-lower-open range)) '(:positive))
+              ((eql low 0) '(:positive :zero))
+              ((eql high -1) '(:negative))
+              ((and (eql high 0) (range-upper-open range)) '(:negative))
+              ((eql high 0) '(:negative :zero)))))))
+
 (defun expression-signs (prover x &key top)
   "The signs the arithmetic expression X may take at every admissible point, from the
 signs of its parts: products and quotients of signed factors, sums of terms of one sign,
@@ -322,11 +336,12 @@ nothing is known or X may be undefined."
           (t
            (let ((arguments (expression-arguments x)))
              (case (expression-operator x)
-               (+ (or (sum-signs (mapcar #'signs arguments)) (whole)))
+               (+ (or (sum-signs (mapcar #'signs arguments)) (range-signs prover x) (whole)))
                (- (if (rest arguments)
                       (or (sum-signs (cons (signs (first arguments))
                                            (mapcar (lambda (a) (negated-signs (signs a)))
                                                    (rest arguments))))
+                          (range-signs prover x)
                           (whole))
                       (let ((inner (signs (first arguments))))
                         (and inner (negated-signs inner)))))

@@ -111,6 +111,17 @@ the travel time, its AT-ARC the arc length), :NEVER, or (values :UNKNOWN FACT)."
         (if contact
             (meeting-arc run group (contact-meeting-terms run solved contact) over-arc)
             (relation-arc run group relation over-arc))
+      (when (and (eq status :at) (eq (group-kind group) :path)
+                 (holds run `(< ,(at-arc (group-speed-squared group) s) 0)))
+        ;; the energy integral is negative there: the body stops and turns back on the
+        ;; way, at a root of w^2 = 0 that solve() did not list (it gives the principal
+        ;; roots of a trigonometric equation only)
+        (error 'unsupported-situation
+               :datum (group-bodies group)
+               :detail (format nil "The body would stop and turn back on the curve before ~
+                                    ~(~A~), where its speed squared is negative; a turning ~
+                                    point on a curve is not supported yet."
+                               (let ((*print-pretty* nil)) (princ-to-string (condition-event condition nil))))))
       (case status
         (:at (make-candidate condition
                              (condition-event condition (and rate (holds run `(< ,rate 0)) rate))
