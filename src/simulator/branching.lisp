@@ -174,6 +174,7 @@ that fact: see ASSUMED-ON-THIS-PATH-P)."
                                   :initial-velocities (run-velocities run)
                                   :contacts (and partial (state-contacts partial))
                                   :accelerations (and partial (state-accelerations partial))
+                                  :forces (and partial (state-forces partial))
                                   :positions (mapcar (lambda (entry) (list (first entry) (second entry)))
                                                      (run-positions run))
                                   :velocities (run-velocities run)
