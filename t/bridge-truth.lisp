@@ -326,3 +326,11 @@ hold at sample points."
        ;; soundness at sample points
        (dolist (c '(1/100 1/4 1/2 3/4 99/100))
          (is (minusp (+ (* 32 (expt c 4)) (* 108 c) -81 (* -96 (expt c 3))))))))))
+
+(test a-relation-dividing-by-zero-is-unknown-not-an-error
+  "A relation that divides by a literal 0 is undefined: DECIDE answers :UNKNOWN (it once
+signalled DIVISION-BY-ZERO from its own reasoning, which ended the run)."
+  (call-with-bridge
+   (lambda (b)
+     (is (eq :unknown (decided b '((> d 0) (> g 0))
+                               '(< (- (/ (+ (* -2 g d) (* 2 g 0)) (* d 0))) 0)))))))

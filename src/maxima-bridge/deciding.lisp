@@ -279,7 +279,8 @@ Signals UNTRANSLATABLE-EXPRESSION, MAXIMA-ERROR, MAXIMA-TIMEOUT."
   (list* :decide *substituting-orders* relation (assumption-key bridge)))
 
 (defun decide-uncached (bridge relation)
-  "DECIDE's work, without its cache of verdicts."
+  "DECIDE's work, without its cache of verdicts. A relation whose Lisp-side reasoning
+meets an arithmetic error (it divides by a literal 0) is :UNKNOWN."
   (labels ((verdict (condition)
              (case (expression-operator condition)
                (not (ecase (verdict (second condition))
@@ -296,7 +297,10 @@ Signals UNTRANSLATABLE-EXPRESSION, MAXIMA-ERROR, MAXIMA-TIMEOUT."
                          (:true (return :true))
                          (:unknown (setf result :unknown))
                          (:false)))))
-               (t (decide-relation bridge condition)))))
+               (t (handler-case (decide-relation bridge condition)
+                    ;; the reasoning's own arithmetic met a division by a literal zero
+                    ;; (the relation is undefined): nothing is proven
+                    (arithmetic-error () :unknown))))))
     (verdict relation)))
 
 (defun holds-p (bridge relation)
