@@ -117,3 +117,48 @@ arc length r (pi - atan(cos theta0 / sin theta0)), which is positive."
       (when condition
         (is (mentions-name-p "PARTICLE" (ames-error-datum condition)))
         (is (search "turn back" (princ-to-string condition)))))))
+
+(defparameter *particle-kicked-in-a-bowl*
+  '(scenario particle-kicked-in-a-bowl
+    "A particle at the bottom of a fixed circular bowl, given speed v0 along it."
+    (parameters (m :positive) (g :positive) (r :positive) (v0 :positive))
+    (gravity g)
+    (body bowl :fixed t :shape (arc :center (0 r) :radius r :from pi :to (* 2 pi) :solid :outside))
+    (body particle :mass m :position (0 0) :velocity (v0 0) :shape point)
+    (simulate :states 1))
+  "Whether the particle reaches the bowl's rim is v0^2 against 2 g r.")
+
+(test whether-a-body-reaches-the-end-of-a-curve-is-a-fact-not-a-guess
+  "The particle kicked along the bottom of a bowl reaches the rim only if v0^2 >= 2 g r
+(its speed squared there, v0^2 - 2 g r, must not be negative): the run branches on it.
+Fast enough, it reaches the rim at s = 0 with speed sqrt(v0^2 - 2 g r); too slow, it
+would turn back, which is refused in that branch, not answered."
+  (with-fixture simulator-bridge ()
+    (let* ((scenario (ames:parse-scenario *particle-kicked-in-a-bowl*))
+           (history (ames:simulate scenario :bridge bridge))
+           (fork (first (ames::history-states history)))
+           (branches (and fork (ames::state-branches fork))))
+      (flet ((holds-at (branch v0)
+               (let* ((relation (getf branch :assume))
+                      (d (expression-value `(- ,(relation-lhs relation) ,(relation-rhs relation))
+                                           (in-scenario-terms scenario `((m . 1) (g . 10) (r . 1) (v0 . ,v0))))))
+                 (ecase (first relation) ((> >=) (> d 0)) ((< <=) (< d 0)) (= (zerop d))))))
+        (is (= 3 (length branches)))
+        (let ((fast (find-if (lambda (b) (and (not (eq '= (first (getf b :assume)))) (holds-at b 10)))
+                             branches))
+              (slow (find-if (lambda (b) (and (not (eq '= (first (getf b :assume)))) (holds-at b 1)))
+                             branches)))
+          (is (and fast slow (not (eq fast slow))))
+          (when fast
+            (let ((state (first (getf fast :states))))
+              (end-event-is state :leaves "PARTICLE" "BOWL")
+              (call-with-scenario-facts
+               bridge scenario
+               (lambda ()
+                 (ames.maxima:with-assumptions (bridge (list (getf fast :assume)))
+                   (is-same bridge "speed at the rim"
+                            (second (per-body (ames::state-final-velocities state) "PARTICLE"))
+                            (in-scenario-terms scenario '(sqrt (- (expt v0 2) (* 2 g r))))))))))
+          (when slow
+            (is (eq :failed (getf slow :outcome)))
+            (is (search "turn back" (or (getf slow :failure) "")))))))))

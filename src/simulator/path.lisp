@@ -103,7 +103,10 @@ reaches zero going negative: (values :AT S), (values :NEVER) or (values :UNKNOWN
 
 (defun path-candidate (run solved group condition)
   "When CONDITION, over GROUP's motion along its curve, fires: a CANDIDATE (its TIME
-the travel time, its AT-ARC the arc length), :NEVER, or (values :UNKNOWN FACT)."
+the travel time, its AT-ARC the arc length), :NEVER, or (values :UNKNOWN FACT). On a
+curved contact the body must reach that arc length with its speed squared >= 0: when
+that is open the answer is :UNKNOWN with it; when it is proven negative (the body turns
+back first, at a point not found) UNSUPPORTED-SITUATION is signalled naming the body."
   (let* ((relation (ames.engine:termination-condition-relation condition))
          (contact (gap-relation-contact relation))
          (over-arc (lambda (x) (motion-value (list group) (over-state-terms run solved x)))))
@@ -111,6 +114,11 @@ the travel time, its AT-ARC the arc length), :NEVER, or (values :UNKNOWN FACT)."
         (if contact
             (meeting-arc run group (contact-meeting-terms run solved contact) over-arc)
             (relation-arc run group relation over-arc))
+      (when (and (eq status :at) (eq (group-kind group) :path)
+                 (eq :unknown (decide run `(>= ,(at-arc (group-speed-squared group) s) 0))))
+        ;; whether the body gets there at all is open
+        (return-from path-candidate
+          (values :unknown `(>= ,(at-arc (group-speed-squared group) s) 0))))
       (when (and (eq status :at) (eq (group-kind group) :path)
                  (holds run `(< ,(at-arc (group-speed-squared group) s) 0)))
         ;; the energy integral is negative there: the body stops and turns back on the
