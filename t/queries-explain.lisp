@@ -78,7 +78,7 @@ state ends at the ground."
       (dolist (word '("normal-force" "terrestrial-gravitation" "newtons-second-law" "newtons-third-law"
                       "reference-frame-conversion" "path-coordinate-conversion" "kinematic-restriction"
                       "figure 2-8" "figure 2-7" "particle on wedge"
-                      "Why these contacts and modes" "Why the state ends then" "collision particle ground"))
+                      "Why these contacts and modes" "Why the state ends then" "particle collides with ground"))
         (is (search word text) "the explanation does not mention ~S:~%~A" word text)))))
 
 (test under-plane-explains-the-dropped-contact
@@ -87,7 +87,7 @@ the explanation says so."
   (with-fixture simulator-bridge ()
     (let* ((history (simulate-stopping-when-ambiguous (scenario-named "particle-under-plane") bridge))
            (text (with-output-to-string (stream) (ames:explain history :stream stream))))
-      (is (search "turned contact (particle on ceiling) off because lift-off particle ceiling" text)
+      (is (search "turned contact (particle on ceiling) off because particle lifts off ceiling" text)
           "~A" text))))
 
 (test corner-branches-on-the-sign-of-the-push

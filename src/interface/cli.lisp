@@ -35,6 +35,7 @@
   --format latex  a LaTeX fragment per scenario (formulas through Maxima's tex)
   --format json   the s-expression's content as JSON, one line per scenario
   --format html   one self-contained page: pictures, timelines, typeset formulas
+  --standalone    with --format latex: one whole LaTeX document (for pdflatex)
   --svg OUT.svg   also draw each scenario (OUT-NAME.svg when the run has several)
   --numeric       use the scenario's (:value N) defaults as parameter values
   --set p=v ...   give parameter p the number v (an integer, ratio or decimal), over its
@@ -101,7 +102,8 @@ signal USAGE-ERROR naming TEXT when it is not one."
 :FORMAT :SETTINGS :SVG :STATE :NUMERIC :TIME-LIMIT :MAXIMA-TIMEOUT :VERBOSE); the two
 limits are NIL when not given. Signals USAGE-ERROR on anything malformed."
   (let ((command (first arguments)) (files '()) (format :text) (settings '()) (svg nil)
-        (state nil) (numeric nil) (time-limit nil) (maxima-timeout nil) (verbose nil))
+        (state nil) (numeric nil) (time-limit nil) (maxima-timeout nil) (verbose nil)
+        (standalone nil))
     (cond ((null command) (error 'usage-error :detail "no command given"))
           ((member command '("help" "--help" "-h") :test #'string=)
            (return-from parse-command-line (list :command :help)))
@@ -138,6 +140,7 @@ limits are NIL when not given. Signals USAGE-ERROR on anything malformed."
                      ((string= argument "--maxima-timeout")
                       (setf maxima-timeout (parse-seconds argument (pop rest))))
                      ((string= argument "--verbose") (setf verbose t))
+                     ((string= argument "--standalone") (setf standalone t))
                      ((eql 0 (search "--" argument))
                       (error 'usage-error :datum argument :detail "unknown option"))
                      (t (push argument files)))))
@@ -145,7 +148,8 @@ limits are NIL when not given. Signals USAGE-ERROR on anything malformed."
     (list :command (if (string= command "explain") :explain :run)
           :files (nreverse files) :format format
           :settings (nreverse settings) :svg svg :state state :numeric numeric
-          :time-limit time-limit :maxima-timeout maxima-timeout :verbose verbose)))
+          :time-limit time-limit :maxima-timeout maxima-timeout :verbose verbose
+          :standalone standalone)))
 
 (defun command-line-limits (options)
   "The LIMITS for the parsed command line OPTIONS: *LIMITS* with its time limit and
@@ -179,7 +183,8 @@ child processes (RUN-JOBS). When the standard output is a pipe whose reader went
                                              :limits (command-line-limits options)))
                     (:run (if jobs
                               (run-jobs jobs options)
-                              (let ((*package* (find-package '#:ames-scenario)))
+                              (let ((*package* (find-package '#:ames-scenario))
+                                    (*latex-standalone* (getf options :standalone)))
                                 (run-files (getf options :files)
                                            :format (getf options :format)
                                            :settings (getf options :settings)

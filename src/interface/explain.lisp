@@ -25,7 +25,27 @@ figure or section it cites, or NIL."
         (values (subseq flat 0 (min (length flat) (1+ end))) cite)))))
 
 (defvar *contact-names* '()
-  "While a state is explained: an alist contact entity -> its phrase (\"particle on wedge\").")
+  "While a state is explained: an alist entity the simulator named (a contact, a rope's
+segment) -> its phrase (\"particle on wedge\", \"rope, piece 1\").")
+
+(defvar *explain-presenter* nil
+  "While a history is explained: the report's PRESENTER of it, which words its events.")
+
+(defvar *explained-state* nil
+  "While a state is explained: the state.")
+
+(defun segment-names (scenario)
+  "An alist rope segment entity -> its phrase (\"rope, piece 1\") for SCENARIO's ropes."
+  (loop for (rope . segments) in (ames.simulator::rope-segment-names scenario)
+        append (loop for segment in segments for k from 1
+                     collect (cons segment (format nil "~(~A~), piece ~D" rope k)))))
+
+(defun entity-text (x)
+  "A body, contact, segment or other name in an explanation, without package or colon."
+  (cond ((and (symbolp x) (assoc x *contact-names*)) (format nil "[~A]" (cdr (assoc x *contact-names*))))
+        ((keywordp x) (string-downcase (substitute #\Space #\- (symbol-name x))))
+        ((symbolp x) (string-downcase (symbol-name x)))
+        (t (string-downcase (princ-to-string x)))))
 
 (defun readable-terms (x)
   "X with every quantity term written as a readable symbol: (acc particle :x) as
@@ -34,10 +54,7 @@ acc_x(particle), a contact entity by its bodies."
          (make-symbol (format nil "[~A]" (cdr (assoc x *contact-names*)))))
         ((quantity-term-p x)
          (let* ((axis (find-if #'keywordp (rest x)))
-                (names (mapcar (lambda (a) (if (assoc a *contact-names*)
-                                               (format nil "[~A]" (cdr (assoc a *contact-names*)))
-                                               (string-downcase (princ-to-string a))))
-                               (remove-if #'keywordp (rest x)))))
+                (names (mapcar #'entity-text (remove-if #'keywordp (rest x)))))
            (make-symbol (format nil "~(~A~)~@[_~(~A~)~](~{~A~^, ~})" (first x) axis names))))
         ((consp x) (cons (first x) (mapcar #'readable-terms (rest x))))
         (t x)))
@@ -46,11 +63,14 @@ acc_x(particle), a contact entity by its bodies."
   "X for people: an expression in infix (its quantity terms readable), an event or
 anything else as written, lower case."
   (let ((*package* (find-package '#:ames-scenario)) (*print-case* :downcase))
-    (cond ((and (consp x) (keywordp (first x)))
-           (format nil "~(~A~)~{ ~A~}" (first x)
+    (cond ((and (consp x) (keywordp (first x)) *explain-presenter*
+                (notany (lambda (item) (assoc item *contact-names*)) (rest x)))
+           (ames.report:event-text *explain-presenter* x *explained-state*))
+          ((and (consp x) (keywordp (first x)))
+           (format nil "~(~A~)~{ ~A~}" (keyword-words (first x))
                    (loop for (item . rest) on (rest x)
                          until (keywordp item)
-                         collect (string-downcase (princ-to-string item)))))
+                         collect (entity-text item))))
           ((or (consp x) (symbolp x) (numberp x)) (infix (readable-terms x)))
           (t (princ-to-string x)))))
 
@@ -85,7 +105,8 @@ anything else as written, lower case."
                                      (if (eq (third why) :true) "on" "off") (phrase (fifth why))))
                       (:violates (format nil "rejected: ~{~A~^, ~} at once" (mapcar #'phrase (second why))))
                       (:singular "redundant constraints: no unique solution")
-                      (:unsolvable (format nil "no unique solution: ~A" (second why)))
+                      ;; the solver's own message names internal terms: say what it means
+                      (:unsolvable "no unique solution: the equations leave a force or an acceleration undetermined")
                       (t (phrase why)))))))
     (when (getf choices :chosen)
       (format stream "  kept: ~A~%" (describe-assignment (getf choices :chosen))))))
@@ -111,17 +132,22 @@ anything else as written, lower case."
   (let ((candidates (getf (state-analysis state) :candidates)))
     (format stream "  it ends with ~A~@[ after ~A~].~%" (phrase (state-end-event state))
             (let ((d (state-duration state))) (and (not (keywordp d)) (phrase d))))
-    (dolist (candidate candidates)
-      (let ((event (first candidate)) (plist (rest candidate)))
-        (cond ((eq (first plist) :never) (format stream "  ~A: never in this state.~%" (phrase event)))
-              ((getf plist :fired) (format stream "  ~A: at ~A, first.~%" (phrase event) (phrase (getf plist :at))))
-              (t (format stream "  ~A: at ~A, later.~%" (phrase event) (phrase (getf plist :at)))))))))
+    ;; two conditions of one event (a contact with two faces of a body) read alike: once
+    (let ((lines '()))
+      (dolist (candidate candidates)
+        (let* ((event (first candidate)) (plist (rest candidate))
+               (line (cond ((eq (first plist) :never) (format nil "  ~A: never in this state." (phrase event)))
+                           ((getf plist :fired) (format nil "  ~A: at ~A, first." (phrase event) (phrase (getf plist :at))))
+                           (t (format nil "  ~A: at ~A, later." (phrase event) (phrase (getf plist :at)))))))
+          (unless (member line lines :test #'string=)
+            (push line lines)
+            (format stream "~A~%" line)))))))
 
-(defun explain (history &key state (stream *standard-output*))
+(defun explain (history &key state (stream *standard-output*) (bridge (current-bridge)))
   "Explain HISTORY (a SIMULATION-HISTORY, or a scenario file's pathname: its first
 scenario is run) state by state, or only the state whose index is STATE: why its
 contacts and modes hold, where each equation comes from, and why it ends when it does.
-Signals what SIMULATE and RUN-FILE signal."
+BRIDGE words the events (the features of a contact). Signals what SIMULATE and RUN-FILE signal."
   (let ((history (if (typep history 'simulation-history)
                      history
                      (or (first (run-file history))
@@ -129,7 +155,9 @@ Signals what SIMULATE and RUN-FILE signal."
     (labels ((walk (states)
                (dolist (s states)
                  (when (or (null state) (eql state (state-index s)))
-                   (let ((*contact-names* (getf (state-analysis s) :contact-names)))
+                   (let ((*contact-names* (append (getf (state-analysis s) :contact-names)
+                                                  (segment-names (history-scenario history))))
+                         (*explained-state* s))
                      (format stream "~&~%State ~D~%" (state-index s))
                      (explain-choices s stream)
                      (explain-equations s stream)
@@ -138,5 +166,8 @@ Signals what SIMULATE and RUN-FILE signal."
                    (format stream "~&~%Branch assuming ~A:~%" (phrase (getf branch :assume)))
                    (walk (getf branch :states))))))
       (format stream "~&Scenario ~(~A~)~%" (scenario-name (history-scenario history)))
-      (walk (history-states history)))
+      (call-with-presenter history bridge
+                           (lambda (presenter)
+                             (let ((*explain-presenter* presenter))
+                               (walk (history-states history))))))
     history))

@@ -280,12 +280,45 @@ divisor) among bases that are."
               (t (push radical alone)))))
     (values (nreverse merged) (nreverse alone))))
 
+(defun square-part (n)
+  "For a positive integer N, (values Q R) with N = Q^2 R and R free of squares."
+  (let ((q 1) (r 1) (k 2))
+    (loop while (> n 1)
+          do (if (> (* k k) n)
+                 (progn (setf r (* r n) n 1))
+                 (let ((m 0))
+                   (loop while (zerop (mod n k)) do (setf n (/ n k)) (incf m))
+                   (setf q (* q (expt k (floor m 2))))
+                   (when (oddp m) (setf r (* r k)))
+                   (incf k))))
+    (values q r)))
+
+(defun numeric-roots-simplified (term)
+  "TERM with each power of a positive rational to a half-integer exponent written as a
+coefficient times the square root of a square-free integer: sqrt(8) as 2 sqrt(2),
+2^(3/2) as 2 sqrt(2), sqrt(1/2) as sqrt(2)/2. Keeps the value."
+  (let ((coefficient (term-coefficient term)) (powers '()))
+    (dolist (power (term-powers term))
+      (destructuring-bind (base . exponent) power
+        (if (and (rationalp base) (plusp base) (half-integer-p exponent)
+                 (< (integer-length (max (numerator base) (denominator base))) 40))
+            ;; b^e with b = n/d: (n d)^e d^(-2e), and n d = q^2 r
+            (let* ((whole (truncate exponent)) (half (- exponent whole))
+                   (product (* (numerator base) (denominator base))))
+              (multiple-value-bind (q r) (square-part product)
+                (setf coefficient (* coefficient (expt base whole) (expt q (* 2 half))
+                                     (expt (denominator base) (* -2 half))))
+                (unless (eql r 1) (push (cons r half) powers))))
+            (push power powers))))
+    (make-term coefficient (nreverse powers))))
+
 (defun display-term (term arrangement)
   "TERM as an expression: numeric coefficient first, factors by their keys, the
 square roots merged into one, a quotient when there are negative powers, a negation
 for a negative coefficient."
-  (let ((coefficient (term-coefficient term))
-        (numerator '()) (denominator '()) (radicals '()))
+  (let* ((term (numeric-roots-simplified term))
+         (coefficient (term-coefficient term))
+         (numerator '()) (denominator '()) (radicals '()))
     (dolist (power (term-powers term))
       (destructuring-bind (base . exponent) power
         (cond ((and (realp base) (integerp exponent))

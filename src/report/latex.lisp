@@ -207,6 +207,9 @@ Numbers, and numeric forms such as 0.7483 + 1.692 tau, are written by NUMBER-TEX
                   collect (format nil "~A = ~A" (latex-name name) (formula-latex presenter value)))))
   (when (getf view :fixed)
     (format stream "Fixed: ~{~A~^, ~}.~%" (mapcar (lambda (p) (phrase-latex presenter p)) (getf view :fixed))))
+  (when (getf view :states)
+    (format stream "~{~A.~%~}" (mapcar (lambda (p) (string-capitalize-first (phrase-latex presenter p)))
+                                       (getf view :definitions))))
   (dolist (state (getf view :states))
     (print-state-latex presenter state stream))
   (format stream "~%\\paragraph{Outcome} ~A.~%" (latex-escape (keyword-words (getf view :outcome))))
@@ -219,6 +222,31 @@ Numbers, and numeric forms such as 0.7483 + 1.692 tau, are written by NUMBER-TEX
               (mapcar (lambda (c) (phrase-latex presenter c)) (getf ambiguity :candidates)))))
   (when (getf view :stopped)
     (format stream "~A~%" (phrase-latex presenter (getf view :stopped)))))
+
+(defun string-capitalize-first (text)
+  "TEXT with its first character in upper case (a sentence's start); a formula's TeX first
+(a $) is left as it is."
+  (if (and (plusp (length text)) (alpha-char-p (char text 0)))
+      (concatenate 'string (string (char-upcase (char text 0))) (subseq text 1))
+      text))
+
+(defparameter *latex-preamble*
+  "\\documentclass{article}
+\\usepackage[utf8]{inputenc}
+\\title{AMES report}
+\\date{}
+\\begin{document}
+\\maketitle
+"
+  "The start of a standalone LaTeX document: packages every TeX Live has.")
+
+(defun print-latex-document-start (stream)
+  "Write the preamble of a standalone LaTeX document (see PRINT-LATEX-DOCUMENT-END)."
+  (write-string *latex-preamble* stream))
+
+(defun print-latex-document-end (stream)
+  "Close the document PRINT-LATEX-DOCUMENT-START opened."
+  (format stream "~%\\end{document}~%"))
 
 (defun print-history-latex (history stream &key (bridge (current-bridge)))
   "Print HISTORY on STREAM as a LaTeX fragment: the scenario's parameters, then per state

@@ -9,12 +9,20 @@
 (defparameter *report-formats* '(:text :sexp :latex :json :html)
   "The formats REPORT-HISTORY writes.")
 
+(defvar *latex-standalone* nil
+  "True when the LaTeX report is a whole document (preamble, \\begin{document} ... \\end{document})
+rather than fragments, for the REPORT-OUTPUTs made while it is bound.")
+
 (defclass report-output ()
   ((format :initarg :format :reader output-format)
    (stream :initarg :stream :reader output-stream)
    (svg :initarg :svg :initform nil :reader output-svg
         :documentation "The pathname the pictures go to, or NIL for none.")
    (bridge :initarg :bridge :reader output-bridge)
+   (standalone :initform *latex-standalone* :reader output-standalone
+               :documentation "True for a whole LaTeX document (see *LATEX-STANDALONE*).")
+   (started :initform nil :accessor output-started
+            :documentation "True once the document's preamble is written.")
    (histories :initform '() :accessor output-histories
               :documentation "The histories kept for the end of the run, last first."))
   (:documentation "One run's reports: FORMAT on STREAM, pictures to SVG."))
@@ -35,7 +43,10 @@ for an unknown format."
     (ecase (output-format output)
       (:text (print-history-text history stream :bridge bridge))
       (:sexp (print-history-sexp history stream))
-      (:latex (print-history-latex history stream :bridge bridge))
+      (:latex (when (and (output-standalone output) (not (output-started output)))
+                (print-latex-document-start stream)
+                (setf (output-started output) t))
+              (print-history-latex history stream :bridge bridge))
       (:json (print-history-json history stream))
       (:html nil))
     (when (or (eq (output-format output) :html) (output-svg output))
@@ -55,6 +66,10 @@ SEVERAL scenarios, PATHNAME with -NAME added to its name (out.svg -> out-wedge.s
 file (see PICTURE-PATHNAME). Returns the pathnames written. Signals REPORT-ERROR when a
 picture cannot be written."
   (let ((histories (reverse (output-histories output))))
+    (when (and (eq (output-format output) :latex) (output-standalone output))
+      (unless (output-started output)
+        (print-latex-document-start (output-stream output)))
+      (print-latex-document-end (output-stream output)))
     (when (and (eq (output-format output) :html) histories)
       (print-history-html histories (output-stream output) :bridge (output-bridge output)))
     (when (output-svg output)

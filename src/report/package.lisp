@@ -20,5 +20,6 @@ HTML page.")
    #:print-history-text #:print-history-latex #:print-history-html
    #:history-svg #:print-history-svg
    ;; the command line's output (output.lisp)
-   #:make-report-output #:report-history #:finish-report #:*report-formats*
+   #:make-report-output #:report-history #:finish-report #:*report-formats* #:*latex-standalone*
+   #:print-latex-document-start #:print-latex-document-end #:impulse-entry #:event-text #:keyword-words
    #:report-error))

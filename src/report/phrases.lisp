@@ -202,6 +202,27 @@ generically: the names first, the value last."
             value
             options)))
 
+(defparameter *impulse-phrases*
+  '((:impulse "impulse of ~*~A on ~:*~:*~A" 2)
+    (:rope-impulse "impulse of the jerk along ~A" 1))
+  "Each impulse kind an impact reports, with the FORMAT control of its label over its
+leading names and how many names lead its entry.")
+
+(defun impulse-entry (entry)
+  "The parts of an impact's impulse ENTRY (KIND NAME... MAGNITUDE) as (values LABEL
+MAGNITUDE): LABEL a string, MAGNITUDE an expression or NIL. Unknown kinds are taken apart
+generically: the names first, the magnitude last."
+  (let* ((kind (first entry))
+         (known (assoc kind *impulse-phrases*))
+         (value (car (last (rest entry))))
+         (magnitude (and (rest entry) (not (symbolp value))
+                         (valid-expression-p value :kind :arithmetic) value))
+         (names (if magnitude (butlast (rest entry)) (rest entry))))
+    (values (if (and known (= (length names) (third known)))
+                (apply #'format nil (second known) (mapcar #'name-text names))
+                (format nil "~A~{ ~A~}" (keyword-words kind) (mapcar #'name-text names)))
+            magnitude)))
+
 ;;; Events
 
 (defun contact-of (state a b)
@@ -248,8 +269,8 @@ generically, their options as \"key value\")."
           (:contact-ends (list (format nil "the contact of ~A with ~A ends" a b)))
           (:starts-sliding (list (format nil "~A starts sliding on ~A" a b)))
           (:stops-sliding (list (format nil "~A stops sliding on ~A" a b)))
-          (:slackens (list (format nil "rope ~A goes slack" a)))
-          (:tightens (list (format nil "rope ~A becomes taut" a)))
+          (:slackens (list (format nil "~A goes slack" a)))
+          (:tightens (list (format nil "~A becomes taut" a)))
           (:branch (list "the run branches"))
           (:time-limit (phrase "the time limit t = " (present presenter (first positional)) " is reached"))
           (t (list (format nil "~A~{ ~A~}" (keyword-words kind) (mapcar #'name-text positional)))))

@@ -16,6 +16,11 @@
   "PHRASE as plain text."
   (phrase-text phrase #'text))
 
+(defun event-text (presenter event &optional state)
+  "The end EVENT of STATE in words, as the text report writes it: \"particle collides
+with ground\"."
+  (phrase-string (event-phrase presenter event state)))
+
 (defun numbers-text (numbers)
   "The text put beside a formula for NUMBERS (see VIEW's :NUMBERS): \" = 7.357\",
 \" = 0.9152 + 0.5 tau^2\", \" (0 at the start, 29.43 at the end)\", or \"\"."
@@ -107,6 +112,8 @@
                   collect (format nil "~A = ~A" (name-text name) (number-text value)))))
   (when (getf view :fixed)
     (format stream "  fixed: ~{~A~^, ~}~%" (mapcar #'phrase-string (getf view :fixed))))
+  (when (getf view :states)
+    (format stream "~{  ~A~%~}" (mapcar #'phrase-string (getf view :definitions))))
   (dolist (state (getf view :states))
     (print-state-text state stream))
   (dolist (assumed (getf view :assumed))

@@ -92,6 +92,19 @@ state starts and ends along the curve, when known; else NIL."
                          collect (format nil "~A ~A" (keyword-words key)
                                          (if (keywordp datum) (keyword-words datum) (datum-text datum)))))))
 
+(defun numbered-symbols (forces)
+  "FORCES (plists of FORCE-VIEW) with every :SYMBOL that more than one of them has
+numbered in order, N_1, N_2 ..., so that two normal forces are told apart."
+  (let ((counts (make-hash-table :test 'equal)) (seen (make-hash-table :test 'equal)))
+    (dolist (force forces)
+      (when (getf force :symbol) (incf (gethash (getf force :symbol) counts 0))))
+    (mapcar (lambda (force)
+              (let ((symbol (getf force :symbol)))
+                (if (and symbol (> (gethash symbol counts) 1))
+                    (list* :symbol (format nil "~A_~D" symbol (incf (gethash symbol seen 0))) force)
+                    force)))
+            forces)))
+
 (defun half-acceleration-p (presenter coefficient acceleration)
   "True when COEFFICIENT is proven to be ACCELERATION / 2."
   (and (not (eql acceleration 0))
@@ -203,10 +216,10 @@ coefficient is ACCELERATION / 2, else the presented polynomial."
                                                        (present presenter (first after)) ", "
                                                        (present presenter (second after)) ") just after"))
                                (loop for entry in (getf value :impulses)
-                                     unless (eql (fourth entry) 0)
-                                       collect (phrase (format nil "impulse of ~A on ~A: " (name-text (third entry))
-                                                               (name-text (second entry)))
-                                                       (present presenter (fourth entry))))
+                                     for (label magnitude) = (multiple-value-list (impulse-entry entry))
+                                     unless (or (null magnitude) (eql magnitude 0))
+                                       collect (phrase (format nil "~A: " label)
+                                                       (present presenter magnitude)))
                                (list (phrase "kinetic energy lost: " (present presenter (getf value :energy-lost))))))))
                  (:accumulation
                   (list (cons "the impacts repeat"
@@ -234,13 +247,14 @@ coefficient is ACCELERATION / 2, else the presented polynomial."
 (defun energy-phrases (presenter entries)
   "The kinetic, potential and total energy of a state's :ENERGY note ENTRIES ((:kinetic
 BODY E) and (:potential SOURCE E) ...), each sum presented: the total is constant where
-the forces are conservative and nothing is lost."
+the forces are conservative and nothing is lost. Written K and U, since T names a
+tension."
   (let ((kinetic (loop for entry in entries when (eq (first entry) :kinetic) collect (third entry)))
         (potential (loop for entry in entries when (eq (first entry) :potential) collect (third entry))))
     (flet ((sum (terms) (present presenter (if (rest terms) (cons '+ terms) (or (first terms) 0)))))
-      (list (phrase "kinetic T = " (sum kinetic))
-            (phrase "potential V = " (sum potential))
-            (phrase "total T + V = " (sum (append kinetic potential)))))))
+      (list (phrase "kinetic K = " (sum kinetic))
+            (phrase "potential U = " (sum potential))
+            (phrase "total K + U = " (sum (append kinetic potential)))))))
 
 (defun momentum-phrases (presenter entries)
   "The total momentum of a state's :MOMENTUM note ENTRIES ((:momentum BODY (PX PY)) ...)."
@@ -266,7 +280,7 @@ the forces are conservative and nothing is lost."
           :duration-number (let ((n (or (getf (state-notes state) :numeric-duration) (getf numeric :duration))))
                              (and (realp n) n))
           :contacts (mapcar (lambda (c) (contact-phrase presenter c)) (state-contacts state))
-          :forces (mapcar (lambda (f) (force-view presenter f state)) (state-forces state))
+          :forces (numbered-symbols (mapcar (lambda (f) (force-view presenter f state)) (state-forces state)))
           ;; a body's motion where it is known (a fork's state has none of its own)
           :bodies (loop for (body) in (state-positions state)
                         when (and (moving-p presenter body)
@@ -292,6 +306,13 @@ the forces are conservative and nothing is lost."
                                         :failure (getf branch :failure)
                                         :states (mapcar (lambda (s) (state-view presenter s))
                                                         (getf branch :states)))))))
+
+(defun time-definitions ()
+  "Phrases defining the times a report writes: t from the start of the run, tau within a
+state."
+  (list (phrase "t is the time from the start of the run; within a state, "
+                (list '= 'tau (list '- (make-symbol "T") (make-symbol "T0")))
+                " is the time since the state began at " (make-symbol "T0"))))
 
 (defun answer-views (presenter history)
   "The answers to HISTORY's queries as phrases: (NAME PHRASE)."
@@ -348,6 +369,7 @@ the forces are conservative and nothing is lost."
                                            (present presenter (second position)) ")")
                                    (list (name-text (scenario-body-name body)))))
           :states (mapcar (lambda (s) (state-view presenter s)) (history-states history))
+          :definitions (time-definitions)
           :outcome (history-outcome history)
           :answers (answer-views presenter history)
           :assumed (loop for assumed in (reverse (getf (history-notes history) :assumed))

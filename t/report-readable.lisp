@@ -1,0 +1,83 @@
+;;;; t/report-readable.lisp -- no Lisp in a report for people (issue 25).
+;;;;
+;;;; The text, LaTeX, HTML and SVG reports and `explain` are for people: none may show a
+;;;; symbol with a package prefix, an uninterned symbol, a keyword, a prefix s-expression,
+;;;; Maxima's internal names ($%r2) or the simulator's entity names (contact-0, segment-1,
+;;;; arc-length), nor a numeric root with a square factor (sqrt(8) is 2 sqrt(2)). READABLE-
+;;;; PROBLEMS finds them; EVERY-SCENARIO-IN-EVERY-FORMAT (report-formats.lisp) applies it to
+;;;; every scenario of scenarios/ in every format, reusing its one run per scenario.
+
+(in-package #:ames.tests)
+
+(in-suite report)
+
+(defparameter *lisp-patterns*
+  '(("a package prefix" "[A-Za-z][A-Za-z0-9.*+-]*::?[A-Za-z*+%$]")
+    ("an uninterned symbol" "#:")
+    ("a keyword" "(?:^|[\\s(,\\[]):[a-z][a-z0-9-]*")
+    ("a prefix s-expression" "\\((?:\\+|-|\\*|/|expt|sqrt|=|<|>|<=|>=|EXPT|SQRT) [^\\s]")
+    ("a Lisp operator in capitals" "\\b(?:SQRT|EXPT|ATAN|NIL|LAMBDA)\\b")
+    ("a Maxima internal name" "\\$%|%r[0-9]|\\?\\?")
+    ("an entity the simulator named" "\\b(?:contact|segment)-[0-9]+\\b|arc-length|path-position")
+    ("a root with a square factor" "sqrt\\((?:4|8|9|12|16|18|20|24|25|27|28|32|36|45|48|50)\\b|\\\\sqrt\\{(?:4|8|9|12|16|18|20|24|25|27|28|32|36|45|48|50)\\b"))
+  "What a report for people must not show: (WHAT REGEX).")
+
+(defun visible-text (markup)
+  "The text a reader of the HTML or SVG MARKUP sees: styles, scripts, comments and tags
+removed, entities decoded."
+  (let* ((text (cl-ppcre:regex-replace-all "(?is)<(style|script)[^>]*>.*?</\\1>" markup " "))
+         (text (cl-ppcre:regex-replace-all "(?s)<!--.*?-->" text " "))
+         (text (cl-ppcre:regex-replace-all "<[^>]*>" text " ")))
+    (reduce (lambda (text pair) (cl-ppcre:regex-replace-all (car pair) text (cdr pair)))
+            '(("&lt;" . "<") ("&gt;" . ">") ("&quot;" . "\"") ("&amp;" . "&"))
+            :initial-value text)))
+
+(defun readable-problems (text)
+  "Each (WHAT . EXCERPT) of *LISP-PATTERNS* found in TEXT (a report as people see it)."
+  (loop for (what pattern) in *lisp-patterns*
+        append (let ((matches '()))
+                 (cl-ppcre:do-matches (start end pattern text)
+                   (push (cons what (subseq text (max 0 (- start 30)) (min (length text) (+ end 30)))) matches))
+                 (nreverse matches))))
+
+(defun repeated-end-lines (explanation)
+  "The lines said twice in one \"Why the state ends then\" block of EXPLANATION."
+  (loop for block in (rest (cl-ppcre:split "Why the state ends then:" explanation))
+        for lines = (remove "" (mapcar (lambda (l) (string-trim " " l))
+                                       (cl-ppcre:split "\\n" (subseq block 0 (or (search "State " block) (length block)))))
+                            :test #'string=)
+        append (loop for (line . more) on lines when (member line more :test #'string=) collect line)))
+
+(defun check-readable (name format text)
+  "Check that TEXT, the FORMAT report of the scenario NAME, shows no Lisp."
+  (let ((problems (readable-problems (if (member format '(:html :svg)) (visible-text text) text))))
+    (is (null problems) "~A (~(~A~)): ~{~&  ~A in ~S~}" name format
+        (loop for (what . excerpt) in (subseq problems 0 (min 5 (length problems)))
+              append (list what excerpt)))))
+
+(defun check-human-formats (bridge history text latex svg)
+  "Check HISTORY's TEXT, LATEX and SVG reports, its HTML page and its explanation for Lisp."
+  (let ((name (ames:scenario-name (ames:history-scenario history))))
+    (check-readable name :text text)
+    (check-readable name :latex latex)
+    (check-readable name :svg svg)
+    ;; the page without KaTeX inlined: the same text, a megabyte less to scan
+    (let ((ames.report::*katex-directory* #p"/nonexistent/katex/"))
+      (check-readable name :html (with-output-to-string (out)
+                                   (ames.report:print-history-html history out :bridge bridge))))
+    (let ((explanation (with-output-to-string (out) (ames:explain history :stream out :bridge bridge))))
+      (check-readable name :explain explanation)
+      (is (null (repeated-end-lines explanation)) "~A: explain says twice ~S" name
+          (repeated-end-lines explanation)))))
+
+(test readable-patterns-are-found
+  "The patterns find what they are for, and pass a plain report line."
+  (dolist (bad '("impulse of (- (/ (* (SQRT 2) M1)) on rope" "(AMES.KB:NORMAL-FORCE AMES.SIMULATOR::CONTACT-1)"
+                 "a name AMES did not give $%r2" "penetrates contact-0 at once" "the fact :true"
+                 "#:G123" "duration sqrt(8 h / g)" "\\sqrt{8\\,h}"))
+    (is (readable-problems bad) "not found in ~S" bad))
+  (dolist (good '("  tension in rope: T = 2 m1 m2 g / (m1 + m2)" "ends: heavy collides with floor"
+                  "position:     x = -v0^2 cos a / (2 g (sin a + mu cos a)) + (1/2) a_x tau^2"
+                  "State 0, from t = 0 (1.5)" "velocity (-r, 0)" "2 sqrt(2 h / g)"))
+    (is (null (readable-problems good)) "~S: ~S" good (readable-problems good)))
+  (is (equal "a < b" (string-trim " " (visible-text "<style>x:y</style><b>a &lt; b</b>")))))
