@@ -5,7 +5,9 @@
 ;;;; Maxima's internal names ($%r2) or the simulator's entity names (contact-0, segment-1,
 ;;;; arc-length), nor a numeric root with a square factor (sqrt(8) is 2 sqrt(2)). READABLE-
 ;;;; PROBLEMS finds them; EVERY-SCENARIO-IN-EVERY-FORMAT (report-formats.lisp) applies it to
-;;;; every scenario of scenarios/ in every format, reusing its one run per scenario.
+;;;; every scenario of scenarios/ in every format, reusing its one run per scenario. The
+;;;; pictures' labels are measured: no two text boxes overlap (LABEL-OVERLAPS, sizes read
+;;;; from the picture's own style sheet), and a state is labelled "state N", not a bare number.
 
 (in-package #:ames.tests)
 
@@ -55,12 +57,58 @@ removed, entities decoded."
         (loop for (what . excerpt) in (subseq problems 0 (min 5 (length problems)))
               append (list what excerpt)))))
 
+(defun svg-font-sizes (svg)
+  "Alist class -> font size in pixels from the <style> of SVG (13 for text by default)."
+  (let ((sizes '()))
+    (cl-ppcre:do-register-groups (class size) ("\\.([a-z-]+)\\{[^}]*font-size:([0-9.]+)px" svg)
+      (push (cons class (let ((*read-default-float-format* 'double-float))
+                          (float (read-from-string size) 1d0)))
+            sizes))
+    sizes))
+
+(defun svg-text-boxes (svg)
+  "Each <text> of SVG as (TEXT LEFT TOP RIGHT BOTTOM): its font size from its class, its
+width 0.6 of the size per character, its height the size (baseline at 0.8 of it)."
+  (let ((sizes (svg-font-sizes svg)) (boxes '()))
+    (cl-ppcre:do-register-groups (attributes content) ("<text([^>]*)>([^<]*)</text>" svg)
+      (let* ((class (or (cl-ppcre:scan-to-strings "(?<=class=\")[^\"]+" attributes) ""))
+             (size (or (cdr (assoc class sizes :test #'string=)) 13d0))
+             (x (let ((*read-default-float-format* 'double-float))
+                  (float (read-from-string (cl-ppcre:scan-to-strings "(?<= x=\")[-0-9.]+" attributes)) 1d0)))
+             (y (let ((*read-default-float-format* 'double-float))
+                  (float (read-from-string (cl-ppcre:scan-to-strings "(?<= y=\")[-0-9.]+" attributes)) 1d0)))
+             (text (visible-text content))
+             (width (* 0.6d0 size (length text)))
+             (left (cond ((search "text-anchor=\"middle\"" attributes) (- x (/ width 2)))
+                         ((search "text-anchor=\"end\"" attributes) (- x width))
+                         (t x))))
+        (push (list text left (- y (* 0.8d0 size)) (+ left width) (+ y (* 0.2d0 size))) boxes)))
+    (nreverse boxes)))
+
+(defun label-overlaps (svg)
+  "The pairs of texts of SVG whose boxes overlap."
+  (loop for (a . more) on (svg-text-boxes svg)
+        append (loop for b in more
+                     when (destructuring-bind (ta l1 t1 r1 b1) a
+                            (declare (ignore ta))
+                            (destructuring-bind (tb l2 t2 r2 b2) b
+                              (declare (ignore tb))
+                              (and (< l1 r2) (< l2 r1) (< t1 b2) (< t2 b1))))
+                       collect (list (first a) (first b)))))
+
+(defun check-picture-labels (name svg)
+  "No two labels of the picture SVG overlap, and no state is labelled by a bare number."
+  (let ((overlaps (label-overlaps svg)))
+    (is (null overlaps) "~A: overlapping labels ~S" name (subseq overlaps 0 (min 5 (length overlaps)))))
+  (is (not (cl-ppcre:scan "class=\"state-label\"[^>]*>[0-9]+<" svg)) "~A: a state numbered like an axis tick" name))
+
 (defun check-human-formats (bridge history text latex svg)
   "Check HISTORY's TEXT, LATEX and SVG reports, its HTML page and its explanation for Lisp."
   (let ((name (ames:scenario-name (ames:history-scenario history))))
     (check-readable name :text text)
     (check-readable name :latex latex)
     (check-readable name :svg svg)
+    (check-picture-labels name svg)
     ;; the page without KaTeX inlined: the same text, a megabyte less to scan
     (let ((ames.report::*katex-directory* #p"/nonexistent/katex/"))
       (check-readable name :html (with-output-to-string (out)
@@ -81,3 +129,21 @@ removed, entities decoded."
                   "State 0, from t = 0 (1.5)" "velocity (-r, 0)" "2 sqrt(2 h / g)"))
     (is (null (readable-problems good)) "~S: ~S" good (readable-problems good)))
   (is (equal "a < b" (string-trim " " (visible-text "<style>x:y</style><b>a &lt; b</b>")))))
+
+(test label-overlaps-are-measured
+  "Two labels at one place overlap; apart they do not."
+  (let ((style "<style>.event-label{font-size:12px}</style>"))
+    (is (label-overlaps (format nil "<svg>~A<text class=\"event-label\" x=\"10\" y=\"20\">hits floor</text><text class=\"event-label\" x=\"14\" y=\"26\">hits wall</text></svg>" style)))
+    (is (null (label-overlaps (format nil "<svg>~A<text class=\"event-label\" x=\"10\" y=\"20\">hits floor</text><text class=\"event-label\" x=\"10\" y=\"40\">hits wall</text></svg>" style))))))
+
+(test bouncing-ball-labels-apart
+  "The bouncing ball's impacts happen at one point: their labels are stacked, not printed
+over each other, and its picture has the plots over time."
+  (with-fixture simulator-bridge ()
+    (let* ((history (history-of "bouncing-ball" bridge))
+           (svg (ames.report:history-svg history)))
+      (is (<= 2 (length (cl-ppcre:all-matches-as-strings "class=\"event-label\"" svg))))
+      (is (null (label-overlaps svg)))
+      (dolist (title '("x(t)" "y(t)" "speed |v|" "energy"))
+        (is (search (format nil "data-title=\"~A\"" title) svg) "no plot ~A" title))
+      (is (<= 3 (length (cl-ppcre:all-matches-as-strings "class=\"event-time\"" svg)))))))

@@ -59,6 +59,8 @@ h1{font-size:1.5em}h2{border-bottom:1px solid #bbb;padding-bottom:.2em;margin-to
 .timeline .segment:nth-child(even){background:#fbf1e6}
 .timeline .event{display:block;font-weight:bold;margin-top:.2em}
 .state{margin:1em 0;padding:.5em 1em;border-left:4px solid #1f5fa8;background:#fafafa}
+.branch{margin:1em 0 1em 1.5em;padding:.3em .8em;border-left:4px solid #aaa}
+.branch.selected{border-left-color:#2e8b57;background:#f3faf5}
 .math.display{display:block;margin:.3em 0 .3em 1.5em}
 .numbers{color:#555}
 figure{margin:1em 0}figure svg{max-width:100%;height:auto;border:1px solid #ddd}
@@ -107,8 +109,8 @@ share of the known durations."
 
 (defun state-html (presenter view stream)
   "Write one state's VIEW as HTML on STREAM."
-  (format stream "<div class=\"state\"><h3>State ~D, from ~A~@[ <span class=\"numbers\">(t = ~A)</span>~]</h3>~%"
-          (getf view :index) (phrase-html presenter (cons "t = " (getf view :start)))
+  (format stream "<div class=\"state\"><h3>State ~D~@[ (branch ~A)~], from ~A~@[ <span class=\"numbers\">(t = ~A)</span>~]</h3>~%"
+          (getf view :index) (getf view :branch) (phrase-html presenter (cons "t = " (getf view :start)))
           (and (getf view :start-number) (number-text (getf view :start-number))))
   (format stream "<p><b>Contacts:</b> ~:[none~;~:*~{~A~^; ~}~].</p>~%"
           (mapcar (lambda (c) (phrase-html presenter c)) (getf view :contacts)))
@@ -156,7 +158,20 @@ share of the known durations."
               (tex-span (vector-latex presenter (getf final :position)))
               (tex-span (vector-latex presenter (getf final :velocity)))))
     (format stream "</ul>~%"))
-  (format stream "</div>~%"))
+  (format stream "</div>~%")
+  (dolist (branch (getf view :branches))
+    (branch-html presenter branch stream)))
+
+(defun branch-html (presenter branch stream)
+  "Write a BRANCH view of a fork: a box, inside the box of the branch it forks from, with
+its heading and fact, its states and how it ends; the selected branch marked."
+  (format stream "<div class=\"branch~:[~; selected~]\" data-branch=\"~A\"><h3>~A</h3><p>Assuming ~A.</p>~%"
+          (getf branch :selected) (html-escape (getf branch :label))
+          (html-escape (branch-heading branch)) (phrase-html presenter (getf branch :assume)))
+  (dolist (state (getf branch :states))
+    (state-html presenter state stream))
+  (format stream "<p><b>End of branch ~A:</b> ~A.</p></div>~%" (html-escape (getf branch :label))
+          (html-escape (branch-end-words branch))))
 
 (defun scenario-html (history stream bridge)
   "Write one scenario's section of the page."

@@ -130,7 +130,8 @@ Numbers, and numeric forms such as 0.7483 + 1.692 tau, are written by NUMBER-TEX
 (defun print-state-latex (presenter view stream)
   "Write one state's VIEW as LaTeX on STREAM."
   (let ((start (getf view :start)))
-    (format stream "~%\\subsubsection*{State ~D, from ~A}~%" (getf view :index)
+    (format stream "~%\\subsubsection*{State ~D~@[ (branch ~A)~], from ~A}~%" (getf view :index)
+            (getf view :branch)
             (if (and (= 1 (length start)) (consp (first start)))
                 (format nil "$t = ~A$" (formula-latex presenter (second (first start))))
                 (phrase-latex presenter start))))
@@ -190,7 +191,19 @@ Numbers, and numeric forms such as 0.7483 + 1.692 tau, are written by NUMBER-TEX
       (format stream "~A at $~A$, velocity $~A$.~%" (latex-escape (name-text (getf final :name)))
               (vector-latex presenter (getf final :position))
               (vector-latex presenter (getf final :velocity)))))
-  (format stream "\\end{description}~%"))
+  (format stream "\\end{description}~%")
+  (dolist (branch (getf view :branches))
+    (print-branch-latex presenter branch stream)))
+
+(defun print-branch-latex (presenter branch stream)
+  "Write a BRANCH view of a fork: its heading and fact, its states inside a quote (so a
+fork within a branch is indented once more), and how it ends."
+  (format stream "~%\\paragraph{~A} Assuming ~A.~%\\begin{quote}~%"
+          (latex-escape (branch-heading branch)) (phrase-latex presenter (getf branch :assume)))
+  (dolist (state (getf branch :states))
+    (print-state-latex presenter state stream))
+  (format stream "\\end{quote}~%End of branch ~A: ~A.~%" (latex-escape (getf branch :label))
+          (latex-escape (branch-end-words branch))))
 
 (defun print-view-latex (presenter view stream)
   "Write a HISTORY-VIEW as a LaTeX fragment on STREAM."

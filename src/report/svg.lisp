@@ -83,11 +83,14 @@
                  (first (to-picture frame a)) (second (to-picture frame a))
                  (first (to-picture frame b)) (second (to-picture frame b))))))))
 
-(defun draw-label (stream frame point text &key (class "label") (dx 6) (dy -6))
-  "Write TEXT at POINT, offset by DX and DY pixels."
+(defun draw-label (stream frame point text &key (class "label") (dx 6) (dy -6) (priority 5))
+  "Ask for TEXT at POINT, offset by DX and DY pixels, with PRIORITY (see REQUEST-LABEL);
+write it at once outside a picture's label placement."
   (destructuring-bind (x y) (to-picture frame point)
-    (format stream "<text class=\"~A\" x=\"~,2F\" y=\"~,2F\">~A</text>~%" class (+ x dx) (+ y dy)
-            (xml-escape text))))
+    (if (listp *label-requests*)
+        (request-label (+ x dx) (+ y dy) text class :priority priority)
+        (format stream "<text class=\"~A\" x=\"~,2F\" y=\"~,2F\">~A</text>~%" class (+ x dx) (+ y dy)
+                (xml-escape text)))))
 
 (defun draw-arrow (stream frame from vector label colour)
   "An arrow from FROM along VECTOR (plane units), labelled."
@@ -95,7 +98,7 @@
     (destructuring-bind ((x1 y1) (x2 y2)) (list (to-picture frame from) (to-picture frame to))
       (format stream "<line class=\"force\" x1=\"~,2F\" y1=\"~,2F\" x2=\"~,2F\" y2=\"~,2F\" style=\"stroke:~A\" marker-end=\"url(#arrow)\"/>~%"
               x1 y1 x2 y2 colour)
-      (draw-label stream frame to label :class "force-label" :dx 4 :dy 4))))
+      (draw-label stream frame to label :class "force-label" :dx 4 :dy 4 :priority 3))))
 
 ;;; Contacts and forces at the start
 

@@ -39,9 +39,40 @@ with ground\"."
                    (loop for n in numbers for axis in '("x" "y")
                          collect (format nil "~A~A" axis (numbers-text n)))))))
 
+(defun indented-lines (text indent stream)
+  "Write TEXT on STREAM with INDENT before each of its non-empty lines."
+  (dolist (line (cl-ppcre:split "\\n" text))
+    (if (string= line "")
+        (format stream "~A~%" (string-right-trim " " indent))
+        (format stream "~A~A~%" indent line))))
+
+(defun branch-heading (branch)
+  "\"Branch 1.2 of 3 (selected by the given values)\": the heading words of a BRANCH view."
+  (format nil "Branch ~A of ~D~:[~; (selected by the given values)~]" (getf branch :label)
+          (getf branch :count) (getf branch :selected)))
+
+(defun branch-end-words (branch)
+  "How a BRANCH view ends, in words: its outcome and why it failed, or, for a branch
+listed with its fact alone, that it was not simulated."
+  (let ((outcome (getf branch :outcome)))
+    (format nil "~A~@[ (~A)~]"
+            (if (and (null (getf branch :states)) (member outcome '(nil :not-simulated)))
+                "not simulated (only its fact is known)"
+                (keyword-words (or outcome :unknown)))
+            (getf branch :failure))))
+
+(defun print-branch-text (branch stream)
+  "Print a BRANCH view of a fork: its heading and fact, its states marked \"| \" (once per
+level of the tree of branches), and how it ends."
+  (format stream "~%~A, assuming ~A:~%" (branch-heading branch) (phrase-string (getf branch :assume)))
+  (indented-lines (with-output-to-string (out)
+                    (dolist (state (getf branch :states)) (print-state-text state out)))
+                  "| " stream)
+  (format stream "End of branch ~A: ~A~%" (getf branch :label) (branch-end-words branch)))
+
 (defun print-state-text (view stream)
   "Print one state's VIEW (see STATE-VIEW) on STREAM."
-  (format stream "~%State ~D, from t = ~A~@[ (~A)~]~%" (getf view :index)
+  (format stream "~%State ~D~@[ (branch ~A)~], from t = ~A~@[ (~A)~]~%" (getf view :index) (getf view :branch)
           (phrase-string (getf view :start))
           (and (getf view :start-number) (number-text (getf view :start-number))))
   (format stream "  contacts:~:[ none~;~]~%" (getf view :contacts))
@@ -83,15 +114,8 @@ with ground\"."
     (format stream "    and at the same instant ~A~%" (phrase-string event)))
   (format stream "  duration: ~A~@[ (~A)~]~%" (phrase-string (getf view :duration))
           (and (getf view :duration-number) (number-text (getf view :duration-number))))
-  (let ((branches (getf view :branches)))
-    (loop for branch in branches
-          for number from 1
-          do (format stream "~%Branch ~D of ~D~:[~; (the one the given values select)~], assuming ~A:~%"
-                     number (length branches) (getf branch :selected)
-                     (phrase-string (getf branch :assume)))
-             (dolist (state (getf branch :states)) (print-state-text state stream))
-             (format stream "~%End of branch ~D: ~(~A~)~@[ (~A)~]~%" number (getf branch :outcome)
-                     (getf branch :failure))))
+  (dolist (branch (getf view :branches))
+    (print-branch-text branch stream))
   (when (getf view :final)
     (format stream "  at the end:~%")
     (dolist (final (getf view :final))

@@ -307,6 +307,23 @@ tension."
                                         :states (mapcar (lambda (s) (state-view presenter s))
                                                         (getf branch :states)))))))
 
+(defun labelled-branches (states &optional prefix)
+  "STATES (views) with each branch of a fork labelled by its place in the tree of
+branches, :LABEL \"1\", \"2\" at the top and \"1.2\" for the second branch of a fork
+inside branch 1, and :COUNT the number of its fork's branches; each state of a branch
+has :BRANCH, the label of the branch it belongs to."
+  (mapcar (lambda (state)
+            (let ((branches (getf state :branches)))
+              (list* :branch prefix
+                     :branches (loop for branch in branches
+                                     for k from 1
+                                     for label = (format nil "~@[~A.~]~D" prefix k)
+                                     collect (list* :label label :count (length branches)
+                                                    :states (labelled-branches (getf branch :states) label)
+                                                    branch))
+                     state)))
+          states))
+
 (defun time-definitions ()
   "Phrases defining the times a report writes: t from the start of the run, tau within a
 state."
@@ -368,7 +385,7 @@ state."
                                            (present presenter (first position)) ", "
                                            (present presenter (second position)) ")")
                                    (list (name-text (scenario-body-name body)))))
-          :states (mapcar (lambda (s) (state-view presenter s)) (history-states history))
+          :states (labelled-branches (mapcar (lambda (s) (state-view presenter s)) (history-states history)))
           :definitions (time-definitions)
           :outcome (history-outcome history)
           :answers (answer-views presenter history)
