@@ -8,7 +8,8 @@
 
 (defsystem "ames"
   :description "AMES: a knowledge-based simulator that predicts in closed form how
-frictionless translating rigid bodies evolve (after Leon Wong's 1994 MIT thesis)."
+translating rigid bodies evolve under contact, friction, impacts, springs, ropes and
+gravitation (after Leon Wong's 1994 MIT thesis)."
   :version "0.1.0"
   :license "MIT"
   :depends-on ("alexandria" "cl-ppcre" "yason")
@@ -210,6 +211,7 @@ frictionless translating rigid bodies evolve (after Leon Wong's 1994 MIT thesis)
                (:file "report-presentation")
                (:file "report-readable")
                (:file "report-formats")
+               (:file "readme")
                (:file "reliability-limits")
                (:file "reliability-reader")
                (:file "reliability-bridge")
