@@ -109,7 +109,10 @@ true when it succeeds. Returns the log as a second value."
     (unwind-protect
          (progn
            (with-open-file (out (merge-pathnames "report.tex" directory) :direction :output)
-             (format out "\\documentclass{article}~%\\begin{document}~%~A~%\\end{document}~%" fragments))
+             ;; the standalone document's own preamble and end (--format latex --standalone)
+             (ames.report:print-latex-document-start out)
+             (write-string fragments out)
+             (ames.report:print-latex-document-end out))
            (multiple-value-bind (output error-output code)
                (uiop:run-program (list (program-path "pdflatex") "-interaction=nonstopmode"
                                        "-halt-on-error" "report.tex")
@@ -186,3 +189,38 @@ Chromium; skipped where it is not installed)."
                      (is (= 2 (length (cl-ppcre:all-matches-as-strings "<svg[^>]*class=\"ames-picture\"" dom))))
                      (is (search "class=\"trajectory" dom))))
               (when (probe-file page) (delete-file page))))))))
+
+(test standalone-latex-is-a-whole-document
+  "--format latex --standalone writes one whole document (one preamble, one end, whatever
+the number of scenarios) that pdflatex compiles (where texlive-latex-base is installed)."
+  (with-fixture simulator-bridge ()
+    (let* ((file (namestring (find "particle-under-plane" (scenario-files) :key #'pathname-name :test #'string=)))
+           (output (make-string-output-stream)))
+      (let ((ames.report:*latex-standalone* t))
+        (is (eql 0 (ames:run-files (list file file) :format :latex :stream output :bridge bridge))))
+      (let ((document (get-output-stream-string output)))
+        (is (eql 0 (search "\\documentclass" document)))
+        (is (= 1 (count-matches "\\\\begin\\{document\\}" document)))
+        (is (= 1 (count-matches "\\\\end\\{document\\}" document)))
+        (is (= 2 (count-matches "\\\\subsection\\*\\{Scenario" document)))
+        (is (string= "\\end{document}" (string-trim '(#\Space #\Newline) (subseq document (- (length document) 16)))))
+        (if (program-path "pdflatex")
+            (let ((directory (fresh-temporary-directory "ames-standalone")))
+              (unwind-protect
+                   (progn
+                     (with-open-file (out (merge-pathnames "report.tex" directory) :direction :output)
+                       (write-string document out))
+                     (multiple-value-bind (log error-output code)
+                         (uiop:run-program (list (program-path "pdflatex") "-interaction=nonstopmode"
+                                                 "-halt-on-error" "report.tex")
+                                           :directory directory :output :string :error-output :string
+                                           :ignore-error-status t)
+                       (declare (ignore error-output))
+                       (is (eql 0 code) "pdflatex failed:~%~A" (subseq log (max 0 (- (length log) 2000))))
+                       (is (probe-file (merge-pathnames "report.pdf" directory)))))
+                (uiop:delete-directory-tree directory :validate t :if-does-not-exist :ignore)))
+            (skip "pdflatex is not installed (Debian's texlive-latex-base)"))))))
+
+(defun count-matches (regex text)
+  "How many times REGEX matches in TEXT."
+  (length (cl-ppcre:all-matches-as-strings regex text)))
