@@ -20,8 +20,7 @@
     ("a prefix s-expression" "\\((?:\\+|-|\\*|/|expt|sqrt|=|<|>|<=|>=|EXPT|SQRT) [^\\s]")
     ("a Lisp operator in capitals" "\\b(?:SQRT|EXPT|ATAN|NIL|LAMBDA)\\b")
     ("a Maxima internal name" "\\$%|%r[0-9]|\\?\\?")
-    ("an entity the simulator named" "\\b(?:contact|segment)-[0-9]+\\b|arc-length|path-position")
-    ("a root with a square factor" "sqrt\\((?:4|8|9|12|16|18|20|24|25|27|28|32|36|45|48|50)\\b|\\\\sqrt\\{(?:4|8|9|12|16|18|20|24|25|27|28|32|36|45|48|50)\\b"))
+    ("an entity the simulator named" "\\b(?:contact|segment)-[0-9]+\\b|arc-length|path-position"))
   "What a report for people must not show: (WHAT REGEX).")
 
 (defun visible-text (markup)
@@ -34,13 +33,42 @@ removed, entities decoded."
             '(("&lt;" . "<") ("&gt;" . ">") ("&quot;" . "\"") ("&amp;" . "&"))
             :initial-value text)))
 
+(defun square-factor-roots (text)
+  "The square roots in TEXT (sqrt(...) or \\sqrt{...}) whose radicand is a product led by
+an integer with a square factor: sqrt(8 h / g), \\sqrt{8\\,h}, but not sqrt(8 m + 5 e)."
+  (let ((found '()))
+    (cl-ppcre:do-scans (start end group-starts group-ends "(?:sqrt\\(|\\\\sqrt\\{)([0-9]+)" text)
+      (declare (ignore group-ends))
+      (let* ((number (parse-integer text :start (aref group-starts 0) :end (position-if-not #'digit-char-p text :start (aref group-starts 0))))
+             (open (char text (1- (aref group-starts 0))))
+             (close (if (char= open #\() #\) #\}))
+             (depth 1)
+             (stop (loop for i from (aref group-starts 0) below (length text)
+                         do (let ((c (char text i)))
+                              (cond ((char= c open) (incf depth))
+                                    ((char= c close) (decf depth) (when (zerop depth) (return i)))))
+                         finally (return (length text))))
+             (radicand (subseq text (aref group-starts 0) stop))
+             (sum (let ((d 0))
+                    (loop for i from 0 below (length radicand)
+                          for c = (char radicand i)
+                          do (case c ((#\( #\{) (incf d)) ((#\) #\}) (decf d)))
+                          thereis (and (zerop d) (plusp i) (member c '(#\+ #\-)))))))
+        (when (and (not sum) (> number 3)
+                   (loop for k from 2 to (isqrt number) thereis (zerop (mod number (* k k)))))
+          (push (cons "a root with a square factor" (subseq text start (min (length text) (+ end 20)))) found))))
+    (nreverse found)))
+
 (defun readable-problems (text)
-  "Each (WHAT . EXCERPT) of *LISP-PATTERNS* found in TEXT (a report as people see it)."
-  (loop for (what pattern) in *lisp-patterns*
-        append (let ((matches '()))
-                 (cl-ppcre:do-matches (start end pattern text)
-                   (push (cons what (subseq text (max 0 (- start 30)) (min (length text) (+ end 30)))) matches))
-                 (nreverse matches))))
+  "Each (WHAT . EXCERPT) of *LISP-PATTERNS* found in TEXT (a report as people see it), and
+each root with a square factor (SQUARE-FACTOR-ROOTS)."
+  (append
+   (loop for (what pattern) in *lisp-patterns*
+         append (let ((matches '()))
+                  (cl-ppcre:do-matches (start end pattern text)
+                    (push (cons what (subseq text (max 0 (- start 30)) (min (length text) (+ end 30)))) matches))
+                  (nreverse matches)))
+   (square-factor-roots text)))
 
 (defun repeated-end-lines (explanation)
   "The lines said twice in one \"Why the state ends then\" block of EXPLANATION."
@@ -126,7 +154,8 @@ width 0.6 of the size per character, its height the size (baseline at 0.8 of it)
     (is (readable-problems bad) "not found in ~S" bad))
   (dolist (good '("  tension in rope: T = 2 m1 m2 g / (m1 + m2)" "ends: heavy collides with floor"
                   "position:     x = -v0^2 cos a / (2 g (sin a + mu cos a)) + (1/2) a_x tau^2"
-                  "State 0, from t = 0 (1.5)" "velocity (-r, 0)" "2 sqrt(2 h / g)"))
+                  "State 0, from t = 0 (1.5)" "velocity (-r, 0)" "2 sqrt(2 h / g)"
+                  "after sqrt(8 m1 + 5 e)/(sqrt(e) sqrt(g))" "\\sqrt{27+\\left(23+4\\,\\sin ^2 a\\right)}"))
     (is (null (readable-problems good)) "~S: ~S" good (readable-problems good)))
   (is (equal "a < b" (string-trim " " (visible-text "<style>x:y</style><b>a &lt; b</b>")))))
 

@@ -47,6 +47,10 @@ segment) -> its phrase (\"particle on wedge\", \"rope, piece 1\").")
         ((symbolp x) (string-downcase (symbol-name x)))
         (t (string-downcase (princ-to-string x)))))
 
+(defparameter *term-words* '(("PATH-POSITION" . "s") ("ARC-LENGTH" . "s"))
+  "Quantity terms an explanation writes by the letter the reports use: the arc length
+along a curved contact is s.")
+
 (defun readable-terms (x)
   "X with every quantity term written as a readable symbol: (acc particle :x) as
 acc_x(particle), a contact entity by its bodies."
@@ -55,7 +59,10 @@ acc_x(particle), a contact entity by its bodies."
         ((quantity-term-p x)
          (let* ((axis (find-if #'keywordp (rest x)))
                 (names (mapcar #'entity-text (remove-if #'keywordp (rest x)))))
-           (make-symbol (format nil "~(~A~)~@[_~(~A~)~](~{~A~^, ~})" (first x) axis names))))
+           (make-symbol (format nil "~(~A~)~@[_~(~A~)~](~{~A~^, ~})"
+                                (or (cdr (assoc (symbol-name (first x)) *term-words* :test #'string=))
+                                    (first x))
+                                axis names))))
         ((consp x) (cons (first x) (mapcar #'readable-terms (rest x))))
         (t x)))
 

@@ -106,9 +106,13 @@ fact and whether it was selected or simulated."
   (let* ((arrows (and state (force-arrows scenario state bindings)))
          (largest (reduce #'max (mapcar (lambda (a) (vlength (second a))) arrows) :initial-value 0d0)))
     (and (plusp largest)
-         (loop for (from vector label) in arrows
-               when (> (vlength vector) (* 1d-9 largest))
-                 collect (list from (v* (/ (* 0.22d0 size) largest) vector) label)))))
+         (let ((symbols (mapcar (lambda (a) (list :symbol (third a) :word (third a))) arrows)))
+           ;; two forces with one symbol are told apart as in the reports: N_1, N_2
+           (loop for (from vector) in arrows
+                 for numbered in (numbered-symbols symbols)
+                 when (> (vlength vector) (* 1d-9 largest))
+                   collect (list from (v* (/ (* 0.22d0 size) largest) vector)
+                                 (if (= 1 (length (getf numbered :word))) (getf numbered :symbol) (getf numbered :word))))))))
 
 (defun draw-trajectories (out frame scenario path paths moving colours bindings)
   "One path per moving body per state of PATH, each numbered \"state N\" where it has room."
