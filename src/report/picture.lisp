@@ -63,19 +63,21 @@ none (the path stops at the fork). Returns a second value: the branch labels tak
                                         (follow (getf (nth k branches) :states) label))))))))
       (values (follow (history-states history) nil) (reverse taken)))))
 
-(defun branch-lines (history)
-  "One line per branch of HISTORY's forks, nested by two spaces per level: its label,
-fact and whether it was selected or simulated."
+(defun branch-lines (history drawn)
+  "One (DEPTH TEXT) per branch of HISTORY's forks, DEPTH its level in the tree: its label,
+fact, whether it was selected, is the one DRAWN (a list of labels), or was not simulated."
   (labels ((walk (states prefix depth)
              (loop for state in states
                    append (loop for branch in (state-branches state)
                                 for k from 1
                                 for label = (format nil "~@[~A.~]~D" prefix k)
-                                append (cons (format nil "~vTbranch ~A~:[~; (selected)~]: ~A~:[ (not simulated)~;~]"
-                                                     (* 2 depth) label (getf branch :selected)
-                                                     (let ((fact (getf branch :assume)))
-                                                       (if (consp fact) (text-form fact) "?"))
-                                                     (getf branch :states))
+                                append (cons (list depth
+                                                   (format nil "branch ~A~:[~; (selected)~]~:[~; (drawn)~]: ~A~:[ (not simulated)~;~]"
+                                                           label (getf branch :selected)
+                                                           (member label drawn :test #'string=)
+                                                           (let ((fact (getf branch :assume)))
+                                                             (if (consp fact) (text-form fact) "?"))
+                                                           (getf branch :states)))
                                              (walk (getf branch :states) label (1+ depth)))))))
     (walk (history-states history) nil 0)))
 
@@ -157,7 +159,8 @@ path (a zero-length one where its trajectory cannot be drawn). No label overlaps
   (multiple-value-bind (bindings chosen) (illustration-values history)
     (let* ((scenario (history-scenario history))
            (bindings (mapcar (lambda (e) (cons (car e) (float (cdr e) 1d0))) bindings))
-           (path (picture-path history bindings))
+           (path-and-drawn (multiple-value-list (picture-path history bindings)))
+           (path (first path-and-drawn))
            (bodies (scenario-bodies scenario))
            (moving (mapcar #'scenario-body-name (remove-if #'scenario-body-fixed-p bodies)))
            (colours (loop for body in moving for i from 0
@@ -174,7 +177,7 @@ path (a zero-length one where its trajectory cannot be drawn). No label overlaps
                       1.24d0)))
            (arrows (scaled-arrows scenario (first path) bindings size))
            (frame (frame-for (append scene (loop for (from vector) in arrows collect (v+ from vector)))))
-           (branch-lines (branch-lines history))
+           (branch-lines (branch-lines history (second path-and-drawn)))
            (scene-bottom (+ (frame-height frame) 10))
            (branches-top (+ scene-bottom 4))
            (plots-top (+ branches-top (* 14 (length branch-lines)) 10)))
@@ -219,9 +222,9 @@ path (a zero-length one where its trajectory cannot be drawn). No label overlaps
                 (loop for (from vector label) in arrows
                       do (draw-arrow out frame from vector label "#000"))))
             (draw-events out frame path moving bindings)
-            (loop for line in branch-lines
+            (loop for (depth line) in branch-lines
                   for y from (+ branches-top 11) by 14
-                  do (request-label 10 y line "branch-label" :priority 0 :required t))
+                  do (request-label (+ 10 (* 16 depth)) y line "branch-label" :priority 0 :required t))
             (draw-time-plots out plots event-times plots-top)
             (request-label 10 (- height 24)
                            (format nil "~:[values~;illustrative values~]: ~{~A~^, ~}" chosen
