@@ -176,3 +176,32 @@ over each other, and its picture has the plots over time."
       (dolist (title '("x(t)" "y(t)" "speed |v|" "energy"))
         (is (search (format nil "data-title=\"~A\"" title) svg) "no plot ~A" title))
       (is (<= 3 (length (cl-ppcre:all-matches-as-strings "class=\"event-time\"" svg)))))))
+
+(defun synthetic-state (index &rest branches)
+  "A state view for the branch tests: words only, BRANCHES its forks' branch views."
+  (list :index index :start (list "0") :duration (list "0") :end (list "the run branches")
+        :contacts '() :forces '() :bodies '() :notes '() :final '() :branches branches))
+
+(test branches-nested-and-marked-in-the-text
+  "Every branch is shown, numbered by its place in the tree and nested (| once per level),
+the selected one marked, a branch with only its fact said not simulated."
+  (let* ((view (list :name 'fork :states
+                     (ames.report::labelled-branches
+                      (list (synthetic-state
+                             0
+                             (list :assume (list "a > 0") :selected t :outcome :branched
+                                   :states (list (synthetic-state
+                                                  1
+                                                  (list :assume (list "b > 0") :outcome :complete
+                                                        :states (list (synthetic-state 2)))
+                                                  (list :assume (list "b < 0")))))
+                             (list :assume (list "a < 0")))))
+                     :outcome :branched))
+         (text (with-output-to-string (out) (ames.report::print-view-text view out))))
+    (is (search "Branch 1 of 2 (selected by the given values), assuming a > 0:" text) "~A" text)
+    (is (search "| Branch 1.1 of 2, assuming b > 0:" text))
+    (is (search "| | State 2 (branch 1.1), from t = 0" text))
+    (is (search "| End of branch 1.2: not simulated (only its fact is known)" text))
+    (is (search "Branch 2 of 2, assuming a < 0:" text))
+    (is (search "End of branch 2: not simulated" text))
+    (is (not (search "Branch 2 of 2 (selected" text)))))

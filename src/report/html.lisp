@@ -94,12 +94,19 @@ figure{margin:1em 0}figure svg{max-width:100%;height:auto;border:1px solid #ddd}
   (tex-span (format nil "~@[~A = ~]~A~A" lhs (formula-latex presenter value) (numbers-html presenter numbers))
             :display t))
 
+(defun selected-path-views (states)
+  "STATES (views) and, at each fork, the states of the branch the given values select."
+  (loop for state in states
+        append (cons state (let ((branch (find-if (lambda (b) (getf b :selected)) (getf state :branches))))
+                             (and branch (selected-path-views (getf branch :states)))))))
+
 (defun timeline-html (presenter view stream)
-  "Write the timeline of VIEW's states and events: one segment per state, as wide as its
-share of the known durations."
+  "Write the timeline of VIEW's states and events, along the selected branch at a fork:
+one segment per state, as wide as its share of the known durations."
   (format stream "<div class=\"timeline\">~%")
-  (let ((total (reduce #'+ (mapcar (lambda (s) (or (getf s :duration-number) 0)) (getf view :states)))))
-    (dolist (state (getf view :states))
+  (let* ((states (selected-path-views (getf view :states)))
+         (total (reduce #'+ (mapcar (lambda (s) (or (getf s :duration-number) 0)) states))))
+    (dolist (state states)
       (let ((number (getf state :duration-number)))
         (format stream "<div class=\"segment\" style=\"flex:~,3F\">State ~D: ~A~@[ <span class=\"numbers\">(~A)</span>~]<span class=\"event\">~A</span></div>~%"
                 (if (and number (plusp total)) (max 0.5 (* 4 (/ number total))) 1)
