@@ -182,7 +182,7 @@ path (a zero-length one where its trajectory cannot be drawn). No label overlaps
            (branches-top (+ scene-bottom 4))
            (plots-top (+ branches-top (* 14 (length branch-lines)) 10)))
       (multiple-value-bind (plots event-times)
-          (time-plots path bindings moving colours (* 0.6d0 (scene-size scene)))
+          (time-plots path bindings moving colours)
         (let* ((height (round (+ plots-top (plots-height plots) 44)))
                (*label-requests* '()))
           (with-output-to-string (out)

@@ -12,11 +12,15 @@
 
 (defparameter *plot-height* 150 "The height of one plot's drawing area in pixels.")
 
-(defun time-samples (path bindings horizon)
+(defun time-samples (path bindings)
   "For each state of PATH with a known extent in time, (STATE START DURATION): its start
-and duration as numbers (HORIZON for a state that lasts forever). Stops at the first
-state whose start is not known."
-  (let ((clock 0d0) (samples '()))
+and duration as numbers (a third of the time before it, at least 1/4 of a time unit, for
+a state that lasts forever). Stops at the first state whose start is not known."
+  (let* ((clock 0d0) (samples '())
+         (finite (loop for state in path
+                       for d = (state-duration-number state bindings)
+                       while d sum d))
+         (horizon (max 0.25d0 (/ finite 3))))
     (dolist (state path (nreverse samples))
       (let ((duration (or (state-duration-number state bindings)
                           (and (eq (state-duration state) :forever) horizon))))
@@ -114,7 +118,8 @@ Returns nothing; its labels are requested (see REQUEST-LABEL)."
                  (format stream "<polyline class=\"curve\" data-curve=\"~A\" style=\"stroke:~A~@[;stroke-dasharray:~A~]\" points=\"~{~{~,2F,~,2F~}~^ ~}\"/>~%"
                          (xml-escape label) colour dash
                          (mapcar (lambda (p) (list (px (first p)) (py (second p)))) one)))
-               (when (and label series)
+               ;; a legend only while the colours tell the curves apart
+               (when (and label series (<= (length curves) (length *body-colours*)))
                  (request-label (- inner-right 2) (+ inner-top 10 (* 14 k)) label "legend"
                                 :anchor :end :priority 2 :colour colour)))
       (format stream "</g>~%"))))
@@ -123,10 +128,10 @@ Returns nothing; its labels are requested (see REQUEST-LABEL)."
   "The height in pixels of PLOTS laid out two to a row."
   (* (ceiling (length plots) 2) (+ *plot-height* 30)))
 
-(defun time-plots (path bindings moving colours horizon)
+(defun time-plots (path bindings moving colours)
   "The plots of PATH over time: (TITLE CURVES) for x(t), y(t), speed and energy, those
 with nothing to draw left out; and the times of the events (the ends of the states)."
-  (let* ((spans (time-samples path bindings horizon))
+  (let* ((spans (time-samples path bindings))
          (series (mapcar (lambda (body) (cons body (body-series spans body bindings))) moving))
          (energy (energy-series spans bindings))
          (plots (remove-if-not
