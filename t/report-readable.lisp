@@ -205,3 +205,17 @@ the selected one marked, a branch with only its fact said not simulated."
     (is (search "Branch 2 of 2, assuming a < 0:" text))
     (is (search "End of branch 2: not simulated" text))
     (is (not (search "Branch 2 of 2 (selected" text)))))
+
+(test a-branch-failure-is-written-infix
+  "The simulator's words for a failed branch print the missing fact as a prefix form: the
+report writes it as a formula (read back without evaluation), the words kept."
+  (let* ((message "the tree's bound is reached; the missing fact: (> (+ (* mb g l2) (* f l3)) (* (sqrt 2) mb g l1))")
+         (phrase (ames.report::failure-phrase message))
+         (text (ames.report::phrase-text phrase)))
+    (is (readable-problems message))
+    (is (search "mb g l2 + f l3 > sqrt(2) mb g l1" text))
+    (is (null (readable-problems text)) "~S" text)
+    (is (search "the tree's bound is reached; the missing fact: " text))
+    (is (= 1 (count-if #'consp phrase)))
+    ;; nothing evaluated, nothing that is not a formula taken for one
+    (is (equal '("a (list #.(error)) b") (ames.report::failure-phrase "a (list #.(error)) b")))))

@@ -177,8 +177,9 @@ its heading and fact, its states and how it ends; the selected branch marked."
           (html-escape (branch-heading branch)) (phrase-html presenter (getf branch :assume)))
   (dolist (state (getf branch :states))
     (state-html presenter state stream))
-  (format stream "<p><b>End of branch ~A:</b> ~A.</p></div>~%" (html-escape (getf branch :label))
-          (html-escape (branch-end-words branch))))
+  (format stream "<p><b>End of branch ~A:</b> ~A~@[ (~A)~].</p></div>~%" (html-escape (getf branch :label))
+          (html-escape (branch-end-words branch))
+          (and (getf branch :failure) (phrase-html presenter (getf branch :failure)))))
 
 (defun scenario-html (history stream bridge)
   "Write one scenario's section of the page."

@@ -202,8 +202,9 @@ fork within a branch is indented once more), and how it ends."
           (latex-escape (branch-heading branch)) (phrase-latex presenter (getf branch :assume)))
   (dolist (state (getf branch :states))
     (print-state-latex presenter state stream))
-  (format stream "\\end{quote}~%End of branch ~A: ~A.~%" (latex-escape (getf branch :label))
-          (latex-escape (branch-end-words branch))))
+  (format stream "\\end{quote}~%End of branch ~A: ~A~@[ (~A)~].~%" (latex-escape (getf branch :label))
+          (latex-escape (branch-end-words branch))
+          (and (getf branch :failure) (phrase-latex presenter (getf branch :failure)))))
 
 (defun print-view-latex (presenter view stream)
   "Write a HISTORY-VIEW as a LaTeX fragment on STREAM."

@@ -52,14 +52,12 @@ with ground\"."
           (getf branch :count) (getf branch :selected)))
 
 (defun branch-end-words (branch)
-  "How a BRANCH view ends, in words: its outcome and why it failed, or, for a branch
-listed with its fact alone, that it was not simulated."
+  "How a BRANCH view ends, in words: its outcome, or, for a branch listed with its fact
+alone, that it was not simulated. (Why it failed is its :FAILURE phrase.)"
   (let ((outcome (getf branch :outcome)))
-    (format nil "~A~@[ (~A)~]"
-            (if (and (null (getf branch :states)) (member outcome '(nil :not-simulated)))
-                "not simulated (only its fact is known)"
-                (keyword-words (or outcome :unknown)))
-            (getf branch :failure))))
+    (if (and (null (getf branch :states)) (member outcome '(nil :not-simulated)))
+        "not simulated (only its fact is known)"
+        (keyword-words (or outcome :unknown)))))
 
 (defun print-branch-text (branch stream)
   "Print a BRANCH view of a fork: its heading and fact, its states marked \"| \" (once per
@@ -68,7 +66,8 @@ level of the tree of branches), and how it ends."
   (indented-lines (with-output-to-string (out)
                     (dolist (state (getf branch :states)) (print-state-text state out)))
                   "| " stream)
-  (format stream "End of branch ~A: ~A~%" (getf branch :label) (branch-end-words branch)))
+  (format stream "End of branch ~A: ~A~@[ (~A)~]~%" (getf branch :label) (branch-end-words branch)
+          (and (getf branch :failure) (phrase-string (getf branch :failure)))))
 
 (defun print-state-text (view stream)
   "Print one state's VIEW (see STATE-VIEW) on STREAM."
