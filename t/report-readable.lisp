@@ -219,3 +219,14 @@ report writes it as a formula (read back without evaluation), the words kept."
     (is (= 1 (count-if #'consp phrase)))
     ;; nothing evaluated, nothing that is not a formula taken for one
     (is (equal '("a (list #.(error)) b") (ames.report::failure-phrase "a (list #.(error)) b")))))
+
+(test numeric-roots-lose-their-square-factors
+  "sqrt(8 h/g) is written 2 sqrt(2 h/g), 2^(3/2) as 2 sqrt(2), sqrt(1/2) as sqrt(2)/2 and
+sqrt(32) as 4 sqrt(2): the same values, no root of a number with a square factor."
+  (dolist (expression '((sqrt (/ (* 8 h) g)) (expt 2 3/2) (sqrt 1/2) (* (sqrt 32) m)
+                        (/ (sqrt (* 12 h)) (sqrt g)) (expt 18 -1/2)))
+    (let* ((arranged (ames.report:arrange expression (plain-arrangement)))
+           (text (ames.report:text-form arranged)))
+      (is (same-values-at-points-p expression arranged) "~S is not ~S" text expression)
+      (is (null (square-factor-roots text)) "~S keeps a square factor" text)
+      (is (not (cl-ppcre:scan "sqrt\\((?:8|12|18|32)\\b|\\^\\(3/2\\)" text)) "~S" text))))
