@@ -64,7 +64,9 @@ or any status AMES does not use: a crashed child), then an undecided run (3), th
     (error 'usage-error :datum "--format html"
                         :detail "--jobs cannot split one HTML page; use text, sexp, json or latex"))
   (when (getf options :svg)
-    (error 'usage-error :datum "--svg" :detail "--jobs cannot draw one picture set; run without --jobs")))
+    (error 'usage-error :datum "--svg" :detail "--jobs cannot draw one picture set; run without --jobs"))
+  (when (getf options :standalone)
+    (error 'usage-error :datum "--standalone" :detail "--jobs cannot write one LaTeX document; run without --jobs")))
 
 (defstruct (job (:constructor make-job (file)))
   "One file's run: its FILE, the PROCESS, the temporary files holding its OUTPUT and
