@@ -188,6 +188,22 @@ coefficient is ACCELERATION / 2, else the presented polynomial."
                                    " (the motion also has a closed form in time)"
                                    " (no closed form in time)")))))))
 
+(defun end-on-curve-phrase (presenter value)
+  "\"at s = VALUE\"; when VALUE is presented as A asin(E) or A acos(E), also the angle as
+a textbook gives it: \"where sin(s/A) = E\"."
+  (let* ((s (arc-length-symbol presenter))
+         (shown (present presenter value))
+         (factors (and (consp shown) (eq (first shown) '*) (rest shown)))
+         (inverse (find-if (lambda (f) (and (consp f) (member (first f) '(asin acos)) (= 2 (length f))))
+                           factors))
+         (scale (and inverse (remove inverse factors :count 1))))
+    (append (phrase "at " (list '= s shown))
+            (and inverse scale
+                 (phrase ", where "
+                         (list '= (list (if (eq (first inverse) 'asin) 'sin 'cos)
+                                        (list '/ s (if (rest scale) (cons '* scale) (first scale))))
+                               (second inverse)))))))
+
 (defun note-views (presenter state)
   "The notes of STATE as (LABEL . PHRASES), those the view shows elsewhere left out."
   (loop for (key value) on (state-notes state) by #'cddr
@@ -201,8 +217,7 @@ coefficient is ACCELERATION / 2, else the presented polynomial."
                                                   (reduce #'+ (mapcar (lambda (g) (length (getf g :samples))) value))))))))
                  (:undecided (list (cons "undecided" (list (list (datum-text value))))))
                  (:end-arc-length (list (cons "ends on the curve"
-                                              (list (phrase "at " (list '= (arc-length-symbol presenter)
-                                                                        (present presenter value)))))))
+                                              (list (end-on-curve-phrase presenter value)))))
                  (:path-coordinates (list (cons "on the curve" (path-note presenter value))))
                  (:impact
                   (list (cons "the impact"
