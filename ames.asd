@@ -146,6 +146,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "presentation")
                  (:file "phrases")
                  (:file "view")
+                 (:file "view-branches")
                  (:file "text")
                  (:file "sexp")
                  (:file "json")
