@@ -118,6 +118,19 @@ anything else as written, lower case."
     (when (getf choices :chosen)
       (format stream "  kept: ~A~%" (describe-assignment (getf choices :chosen))))))
 
+(defun tidied (expression)
+  "EXPRESSION with its sums and products tidied (zeros dropped, like terms and equal
+factors collected) by the reports' arrangement, which keeps the value and knows no sign;
+EXPRESSION itself where it is not arithmetic."
+  (if (valid-expression-p expression :kind :arithmetic)
+      (handler-case (arrange expression (make-arrangement :symbol-key (lambda (name)
+                                                                        ;; numbers, parameters, then quantities: m1 acc_x(heavy)
+                                                                        (list (if (quantity-term-p name) 4 3)
+                                                                              (princ-to-string name)))
+                                                          :negative-p (constantly nil)))
+        (error () expression))
+      expression))
+
 (defun explain-equations (state stream)
   "Print where each equation of STATE's model comes from, grouped by component."
   (format stream "~&Where the equations come from:~%")
@@ -131,7 +144,8 @@ anything else as written, lower case."
       (multiple-value-bind (summary cite) (component-summary (first group))
         (format stream "  ~(~A~)~@[ (thesis ~A)~]: ~@[~A~]~%" (first group) cite summary)
         (dolist (equation (reverse (rest group)))
-          (format stream "      ~A = ~A~%" (phrase (relation-lhs equation)) (phrase (relation-rhs equation))))))))
+          (format stream "      ~A = ~A~%" (phrase (tidied (relation-lhs equation)))
+                  (phrase (tidied (relation-rhs equation)))))))))
 
 (defun explain-end (state stream)
   "Print why STATE ends when it does."

@@ -14,7 +14,7 @@ HTML page.")
    #:history-json #:print-history-json #:json-to-sexp #:sexp-to-json
    ;; the presentation step (presentation.lisp, forms.lisp, view.lisp)
    #:presenter #:make-presenter #:call-with-presenter #:present #:present-relation
-   #:arrange #:history-view #:acceleration-symbol
+   #:arrange #:make-arrangement #:history-view #:acceleration-symbol
    ;; reports for people
    #:infix #:text-form #:number-text
    #:print-history-text #:print-history-latex #:print-history-html
