@@ -74,7 +74,8 @@ each root with a square factor (SQUARE-FACTOR-ROOTS)."
   "The lines said twice in one \"Why the state ends then\" block of EXPLANATION."
   (loop for block in (rest (cl-ppcre:split "Why the state ends then:" explanation))
         for lines = (remove "" (mapcar (lambda (l) (string-trim " " l))
-                                       (cl-ppcre:split "\\n" (subseq block 0 (or (search "State " block) (length block)))))
+                                       (cl-ppcre:split "\\n" (subseq block 0 (or (cl-ppcre:scan "\\n(State|Branch) " block)
+                                                                                 (length block)))))
                             :test #'string=)
         append (loop for (line . more) on lines when (member line more :test #'string=) collect line)))
 
@@ -221,8 +222,8 @@ report writes it as a formula (read back without evaluation), the words kept."
     (is (equal '("a (list #.(error)) b") (ames.report::failure-phrase "a (list #.(error)) b")))))
 
 (test numeric-roots-lose-their-square-factors
-  "sqrt(8 h/g) is written 2 sqrt(2 h/g), 2^(3/2) as 2 sqrt(2), sqrt(1/2) as sqrt(2)/2 and
-sqrt(32) as 4 sqrt(2): the same values, no root of a number with a square factor."
+  "sqrt(8 h/g) is written 2 sqrt(2 h/g), 2^(3/2) as 2 sqrt(2) and sqrt(32) as 4 sqrt(2):
+the same values, no root of a number with a square factor."
   (dolist (expression '((sqrt (/ (* 8 h) g)) (expt 2 3/2) (sqrt 1/2) (* (sqrt 32) m)
                         (/ (sqrt (* 12 h)) (sqrt g)) (expt 18 -1/2)))
     (let* ((arranged (ames.report:arrange expression (plain-arrangement)))

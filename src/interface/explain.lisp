@@ -189,9 +189,13 @@ BRIDGE words the events (the features of a contact). Signals what SIMULATE and R
                        do (format stream "~&~%Branch ~A of ~D~:[~; (selected by the given values)~], assuming ~A:~%"
                                   label (length (state-branches s)) (getf branch :selected)
                                   (phrase (getf branch :assume)))
-                          (if (getf branch :states)
-                              (walk (getf branch :states) label)
-                              (format stream "  not simulated (only its fact is known)~%"))))))
+                          (cond ((getf branch :states) (walk (getf branch :states) label))
+                                ((member (getf branch :outcome) '(nil :not-simulated))
+                                 (format stream "  not simulated (only its fact is known)~%"))
+                                (t (format stream "  no state of its own: it ended ~A~@[ (~A)~]~%"
+                                           (keyword-words (getf branch :outcome))
+                                           (and (getf branch :failure)
+                                                (text-phrase (failure-phrase (getf branch :failure)))))))))))
       (format stream "~&Scenario ~(~A~)~%" (scenario-name (history-scenario history)))
       (call-with-presenter history bridge
                            (lambda (presenter)

@@ -84,9 +84,11 @@ compares terms (and the bases made of them) by their contents."
                      ((and term (null (term-powers term)) (rationalp (term-coefficient term))
                            (plusp (term-coefficient term)))
                       (list (make-term 1 (list (cons (term-coefficient term) exponent)))))
-                     ;; a positive coefficient comes out: (8 h)^(1/2) = 8^(1/2) h^(1/2)
-                     ((and term (term-powers term) (rationalp (term-coefficient term))
-                           (plusp (term-coefficient term)) (/= 1 (term-coefficient term)))
+                     ;; a whole coefficient comes out: (8 h)^(1/2) = 8^(1/2) h^(1/2) (a
+                     ;; fraction stays inside, sqrt(2 h/3): Maxima proves that form equal
+                     ;; more often than sqrt(6 h)/3)
+                     ((and term (term-powers term) (integerp (term-coefficient term))
+                           (> (term-coefficient term) 1))
                       (list (multiply-terms (make-term 1 (list (cons (term-coefficient term) exponent)))
                                             (first (power (list (make-term 1 (term-powers term))) exponent whole)))))
                      ((and term (eql 1 (term-coefficient term)) (= 1 (length (term-powers term)))
@@ -299,14 +301,14 @@ divisor) among bases that are."
     (values q r)))
 
 (defun numeric-roots-simplified (term)
-  "TERM with each power of a positive rational to a half-integer exponent written as a
+  "TERM with each power of a positive integer to a half-integer exponent written as a
 coefficient times the square root of a square-free integer: sqrt(8) as 2 sqrt(2),
-2^(3/2) as 2 sqrt(2), sqrt(1/2) as sqrt(2)/2. Keeps the value."
+2^(3/2) as 2 sqrt(2), 18^(-1/2) as 1/(3 sqrt(2)). Keeps the value."
   (let ((coefficient (term-coefficient term)) (powers '()))
     (dolist (power (term-powers term))
       (destructuring-bind (base . exponent) power
-        (if (and (rationalp base) (plusp base) (half-integer-p exponent)
-                 (< (integer-length (max (numerator base) (denominator base))) 40))
+        (if (and (integerp base) (plusp base) (half-integer-p exponent)
+                 (< (integer-length base) 40))
             ;; b^e with b = n/d: (n d)^e d^(-2e), and n d = q^2 r
             (let* ((whole (truncate exponent)) (half (- exponent whole))
                    (product (* (numerator base) (denominator base))))

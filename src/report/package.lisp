@@ -21,5 +21,5 @@ HTML page.")
    #:history-svg #:print-history-svg
    ;; the command line's output (output.lisp)
    #:make-report-output #:report-history #:finish-report #:*report-formats* #:*latex-standalone*
-   #:print-latex-document-start #:print-latex-document-end #:impulse-entry #:event-text #:keyword-words
+   #:print-latex-document-start #:print-latex-document-end #:impulse-entry #:event-text #:keyword-words #:failure-phrase #:text-phrase
    #:report-error))

@@ -16,6 +16,10 @@
   "PHRASE as plain text."
   (phrase-text phrase #'text))
 
+(defun text-phrase (phrase)
+  "PHRASE (see PHRASE) as the text report writes it."
+  (phrase-string phrase))
+
 (defun event-text (presenter event &optional state)
   "The end EVENT of STATE in words, as the text report writes it: \"particle collides
 with ground\"."
