@@ -2,7 +2,7 @@
 ;;;;
 ;;;; One module, one folder and one package per layer; dependencies point down only:
 ;;;;   base  <-  maxima-bridge, tms  <-  geometry  <-  engine  <-  kb
-;;;;   geometry, maxima-bridge  <-  scenario;   kb, scenario  <-  simulator  <-  report
+;;;;   geometry, maxima-bridge  <-  scenario;   kb, scenario  <-  simulator  <-  report, check
 ;;;;   <-  interface (package AMES: the REPL API and bin/ames)
 ;;;; Only Debian's CL packages are used (cl-alexandria, cl-fiveam, cl-ppcre, cl-yason).
 
@@ -138,6 +138,14 @@ frictionless translating rigid bodies evolve (after Leon Wong's 1994 MIT thesis)
                  (:file "simulate")
                  (:file "branching")
                  (:file "queries")))
+   (:module "check" :pathname "src/check/" :serial t
+    :depends-on ("simulator")
+    :components ((:file "package")
+                 (:file "evaluate")
+                 (:file "integrate")
+                 (:file "claims")
+                 (:file "events")
+                 (:file "self-check")))
    (:module "report" :pathname "src/report/" :serial t
     :depends-on ("simulator")
     :components ((:file "package")
@@ -156,7 +164,7 @@ frictionless translating rigid bodies evolve (after Leon Wong's 1994 MIT thesis)
                  (:file "html")
                  (:file "output")))
    (:module "interface" :pathname "src/interface/" :serial t
-    :depends-on ("report")
+    :depends-on ("report" "check")
     :components ((:file "package")
                  (:file "runs")
                  (:file "cli")

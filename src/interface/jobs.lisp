@@ -47,15 +47,17 @@ the limits and --verbose."
             (seconds "--time-limit" :time-limit)
             (seconds "--maxima-timeout" :maxima-timeout)
             (when (getf options :verbose) (list "--verbose"))
+            (when (getf options :no-check) (list "--no-check"))
             (when (getf options :settings)
               (cons "--set" (loop for (name . value) in (getf options :settings)
                                   collect (format nil "~A=~A" name value)))))))
 
 (defun worse-status (a b)
   "The worse of the exit statuses A and B: a usage error (2), then a scenario error (1,
-or any status AMES does not use: a crashed child), then an undecided run (3), then 0."
+or any status AMES does not use: a crashed child), then a failed self-check (5), then an
+undecided run (3), then 0."
   (flet ((rank (status)
-           (case status (0 0) (3 1) (2 3) (t 2))))
+           (case status (0 0) (3 1) (5 2) (2 4) (t 3))))
     (if (> (rank b) (rank a)) b a)))
 
 (defun check-jobs-options (options)

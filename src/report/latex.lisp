@@ -210,6 +210,8 @@ Numbers, and numeric forms such as 0.7483 + 1.692 tau, are written by NUMBER-TEX
   (dolist (state (getf view :states))
     (print-state-latex presenter state stream))
   (format stream "~%\\paragraph{Outcome} ~A.~%" (latex-escape (keyword-words (getf view :outcome))))
+  (dolist (line (getf view :self-check))
+    (format stream "~A~%~%" (latex-escape line)))
   (dolist (assumed (getf view :assumed))
     (format stream "Assumed from the given values ~A.~%" (phrase-latex presenter assumed)))
   (let ((ambiguity (getf view :ambiguity)))

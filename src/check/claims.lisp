@@ -1,0 +1,132 @@
+;;;; src/check/claims.lisp -- one state's claims checked numerically.
+;;;;
+;;;; CHECK-STATE takes a state, the run's parameter values, and returns how its claims
+;;;; fare: its equations of motion (the rates the knowledge base's model gives, recorded
+;;;; as :CHECK-MODEL in the state's analysis) are integrated from the state's start by
+;;;; INTEGRATE-RK4 on a fine grid up to the claimed end (or a horizon, for a state that
+;;;; lasts forever), and
+;;;;   - the closed-form positions and velocities in TAU are compared with the integration
+;;;;     at several times, the final positions and velocities at the end (relative 1e-8,
+;;;;     with an absolute floor near zero: 1e-8 of the largest such value in the state);
+;;;;   - every termination condition's event function is evaluated on the grid: none may
+;;;;     fire before the claimed end, and one that names the claimed end event must fire
+;;;;     at the claimed time;
+;;;;   - the numbers the report prints beside the state's start, duration and final
+;;;;     values are compared with their formulas' values (relative 1e-9).
+;;;; Nothing here reads the closed-form solution to compute what it compares with.
+
+(in-package #:ames.check)
+
+(defparameter *relative-tolerance* 1d-8 "How far a closed form may be from the integration.")
+(defparameter *grid-points* 240 "The grid of times on which events are searched.")
+(defparameter *comparison-points* 8 "How many times of the grid the motion is compared at.")
+
+(defstruct (check-failure (:constructor make-check-failure (claim discrepancy &optional detail)))
+  "A claim that failed: CLAIM names it, DISCREPANCY is how far off it is (a number: the
+relative error, or the time by which an event comes earlier), DETAIL says more."
+  claim discrepancy detail)
+
+(defun near-p (a b scale &optional (tolerance *relative-tolerance*))
+  "True when A and B agree within TOLERANCE relative to their size, or to SCALE near zero."
+  (<= (abs (- a b)) (* tolerance (max (abs a) (abs b) scale))))
+
+(defun relative-error (a b scale)
+  "|A - B| relative to their size (or to SCALE near zero)."
+  (/ (abs (- a b)) (max (abs a) (abs b) scale 1d-300)))
+
+(defstruct (setup (:constructor %make-setup))
+  "A state ready to check: TERMS (its state terms), VARIABLES (TERMS, TAU and the
+parameters), PARAMETERS (their values, doubles), RATES (a function of a state vector and
+a time), Y0 the start, MODEL the recorded :CHECK-MODEL."
+  terms variables parameters rates y0 model)
+
+(defun compiled (setup expression)
+  "EXPRESSION as a function of a state vector and a time (see COMPILE-NUMERIC)."
+  (let ((function (compile-numeric expression (setup-variables setup)))
+        (parameters (setup-parameters setup))
+        (n (length (setup-terms setup))))
+    (lambda (y time)
+      (let ((v (make-array (+ n 1 (length parameters)))))
+        (replace v y)
+        (setf (svref v n) (coerce time 'double-float))
+        (replace v parameters :start1 (1+ n))
+        (funcall function v)))))
+
+(defun make-setup (model values)
+  "The SETUP of a state's MODEL under the parameter VALUES (alist name -> number), or
+NIL (and a reason) when its start has no value."
+  (let* ((terms (mapcar #'car (getf model :rates)))
+         (setup (%make-setup :terms terms :model model
+                             :variables (append terms (list 'tau) (mapcar #'car values))
+                             :parameters (map 'simple-vector (lambda (e) (coerce (cdr e) 'double-float)) values)))
+         (rate-functions (mapcar (lambda (entry) (compiled setup (cdr entry))) (getf model :rates)))
+         (y0 (map 'simple-vector (lambda (term)
+                                   (value-under (cdr (assoc term (getf model :initial) :test #'equal)) values))
+                  terms)))
+    (when (some #'null y0)
+      (return-from make-setup (values nil "a state variable has no value at the start")))
+    (setf (setup-y0 setup) y0
+          (setup-rates setup) (lambda (y time)
+                                (map 'simple-vector (lambda (f) (funcall f y time)) rate-functions)))
+    setup))
+
+(defun tau-form-p (motion)
+  "True when MOTION, a body's reported position or velocity, is a pair of expressions in TAU."
+  (and (consp motion) (= 2 (length motion))
+       (every (lambda (c) (or (realp c) (valid-expression-p c :kind :arithmetic))) motion)))
+
+(defun body-motion-values (setup body what y time)
+  "BODY's integrated position (WHAT :POSITION) or velocity (:VELOCITY), a list of doubles."
+  (mapcar (lambda (c) (funcall (compiled setup c) y time))
+          (getf (second (assoc body (getf (setup-model setup) :bodies))) what)))
+
+(defun motion-scale (setup samples what)
+  "The largest absolute coordinate of the bodies' integrated positions or velocities."
+  (loop for (time . y) in samples
+        maximize (loop for (body) in (getf (setup-model setup) :bodies)
+                       maximize (reduce #'max (mapcar #'abs (body-motion-values setup body what y time))))))
+
+(defun compare-motion (setup state samples values)
+  "Failures of STATE's closed-form motion in TAU at several grid SAMPLES."
+  (let ((failures '()) (stride (max 1 (floor (1- (length samples)) *comparison-points*))))
+    (loop for (what reported) in (list (list :position (state-positions state))
+                                       (list :velocity (state-velocities state)))
+          for scale = (* 1d-3 (max 1d-9 (motion-scale setup samples what)))
+          do (loop for (body) in (getf (setup-model setup) :bodies)
+                   for closed = (body-entry reported body)
+                   when (tau-form-p closed)
+                     do (loop for (time . y) in samples
+                              for k from 0
+                              when (and (plusp k) (zerop (mod k stride)))
+                                do (loop for c in closed
+                                         for axis in '(:x :y)
+                                         for numeric in (body-motion-values setup body what y time)
+                                         for claimed = (value-under c (acons 'tau time values))
+                                         unless (and claimed (near-p claimed numeric scale))
+                                           do (push (make-check-failure
+                                                     (format nil "~(~A~) ~(~A~)_~(~A~) at tau = ~,6G" body what axis time)
+                                                     (if claimed (relative-error claimed numeric scale) :no-value)
+                                                     (format nil "closed form ~,10G, integration ~,10G" claimed numeric))
+                                                    failures)))))
+    (nreverse failures)))
+
+(defun compare-final (setup state samples values)
+  "Failures of STATE's final positions and velocities against the integration at the end
+of SAMPLES."
+  (let ((failures '()) (end (car (car (last samples)))) (y (cdr (car (last samples)))))
+    (loop for (what finals) in (list (list :position (state-final-positions state))
+                                     (list :velocity (state-final-velocities state)))
+          for scale = (* 1d-3 (max 1d-9 (motion-scale setup samples what)))
+          do (loop for (body) in (getf (setup-model setup) :bodies)
+                   for final = (body-entry finals body)
+                   when final
+                     do (loop for c in final for axis in '(:x :y)
+                              for numeric in (body-motion-values setup body what y end)
+                              for claimed = (value-under c values)
+                              unless (and claimed (near-p claimed numeric scale))
+                                do (push (make-check-failure
+                                          (format nil "final ~(~A~) ~(~A~)_~(~A~)" what body axis)
+                                          (if claimed (relative-error claimed numeric scale) :no-value)
+                                          (format nil "claimed ~,10G, integration ~,10G at t = ~,10G" claimed numeric end))
+                                         failures))))
+    (nreverse failures)))

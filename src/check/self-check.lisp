@@ -1,0 +1,163 @@
+;;;; src/check/self-check.lisp -- a history's claims checked before they are printed.
+;;;;
+;;;; SELF-CHECK-HISTORY runs under parameter values (--set, --numeric): every state of the
+;;;; run's path (at a fork, the branch the values select) is checked by CHECK-STATE, and
+;;;; every number printed beside a formula (a state's start, duration and final values,
+;;;; the queries' answers) against that formula's value. The result goes in the history's
+;;;; notes as :SELF-CHECK, a plist
+;;;;   :CHECKED   the indices of the states whose motion and end were checked;
+;;;;   :UNCHECKED ((:STATE INDEX :REASON TEXT) ...): states that could not be (a fork, a
+;;;;              state lasting no time, no value for its model under the values ...);
+;;;;   :NUMBERS   (CHECKED TOTAL): the printed numbers compared with their formulas;
+;;;;   :FAILURES  ((:STATE INDEX :CLAIM TEXT :DISCREPANCY X :DETAIL TEXT) ...), INDEX NIL
+;;;;              for a query's answer;
+;;;; or (:SKIPPED T) under --no-check.
+;;;; A failure is a defect of AMES: the command line exits with a status of its own.
+
+(in-package #:ames.check)
+
+(defvar *self-check* t
+  "When true (the default), runs under parameter values are self-checked (--no-check
+makes it NIL).")
+
+(defparameter *number-tolerance* 1d-9
+  "How far a printed number may be from its formula's value, relative.")
+
+(defun duration-number (state)
+  "STATE's duration as the run printed it (a number), NIL when it has none, :FOREVER."
+  (let ((duration (state-duration state))
+        (numeric (getf (state-notes state) :numeric)))
+    (cond ((eq duration :forever) :forever)
+          ((realp duration) duration)
+          (t (let ((n (or (getf (state-notes state) :numeric-duration) (getf numeric :duration))))
+               (and (realp n) n))))))
+
+(defun check-state (state values &key (horizon 1d0))
+  "Check STATE's motion and end under VALUES (see claims.lisp and events.lisp): a plist
+(:STATUS S :REASON R :FAILURES F), S one of :CHECKED, :UNCHECKED (R says why) and
+:FAILED. A state lasting forever is checked up to HORIZON."
+  (let ((model (getf (state-analysis state) :check-model))
+        (duration (duration-number state)))
+    (flet ((unchecked (reason) (return-from check-state (list :status :unchecked :reason reason))))
+      (cond ((state-branches state) (unchecked "a fork: its branches are checked"))
+            ((null model) (unchecked "no model recorded"))
+            ((null duration) (unchecked "its duration has no number"))
+            ((and (realp duration) (zerop duration)) (unchecked "it lasts no time")))
+      (handler-case
+          (multiple-value-bind (setup reason) (make-setup model values)
+            (unless setup (unchecked reason))
+            (let* ((end (if (eq duration :forever) nil (coerce duration 'double-float)))
+                   (samples (integrate-grid (setup-rates setup) (setup-y0 setup)
+                                            (or end (coerce horizon 'double-float)) *grid-points*))
+                   (failures (append (compare-motion setup state samples values)
+                                     (and end (compare-final setup state samples values)))))
+              (multiple-value-bind (event-failures reason) (check-events setup state samples end)
+                (setf failures (append failures event-failures))
+                (cond (failures (list :status :failed :failures failures))
+                      (reason (list :status :unchecked :reason reason))
+                      (t (list :status :checked))))))
+        (unevaluable (condition)
+          (unchecked (format nil "cannot evaluate ~A" (datum-string (ames-error-datum condition)))))
+        (integration-failed (condition)
+          (unchecked (ames-error-detail condition)))))))
+
+(defun datum-string (datum)
+  "DATUM printed briefly, without package prefixes."
+  (let ((*package* (find-package '#:ames.check)))
+    (let ((text (format nil "~(~S~)" datum)))
+      (if (> (length text) 80) (concatenate 'string (subseq text 0 77) "...") text))))
+
+(defun printed-numbers (state)
+  "The numbers the report prints beside STATE's formulas: a list of (LABEL NUMBER FORMULA)."
+  (let ((numeric (getf (state-notes state) :numeric)))
+    (append
+     (let ((start (getf numeric :start)))
+       (and (realp start) (not (realp (state-start state)))
+            (list (list "start time" start (state-start state)))))
+     (let ((duration (getf numeric :duration)))
+       (and (realp duration) (not (realp (state-duration state)))
+            (not (keywordp (state-duration state)))
+            (not (and (consp (state-duration state)) (keywordp (first (state-duration state)))))
+            (list (list "duration" duration (state-duration state)))))
+     (loop for (key formulas) in (list (list :final-positions (state-final-positions state))
+                                       (list :final-velocities (state-final-velocities state)))
+           append (loop for (body numbers) in (getf numeric key)
+                        for formula = (body-entry formulas body)
+                        append (loop for n in numbers for f in formula for axis in '(:x :y)
+                                     when (and (realp n) (not (realp f)))
+                                       collect (list (format nil "~(~A ~A~)_~(~A~)"
+                                                             (if (eq key :final-positions) "final position of" "final velocity of")
+                                                             body axis)
+                                                     n f)))))))
+
+(defun check-number (label number formula values)
+  "NIL when NUMBER is FORMULA's value under VALUES; a CHECK-FAILURE when not; :UNCHECKED
+when the formula has no value here."
+  (let ((value (handler-case (value-under formula values) (unevaluable () :unevaluable))))
+    (cond ((or (null value) (eq value :unevaluable)) :unchecked)
+          ((near-p value (coerce number 'double-float) 0d0 *number-tolerance*) nil)
+          (t (make-check-failure (format nil "the number printed for the ~A" label)
+                                 (relative-error value (coerce number 'double-float) 0d0)
+                                 (format nil "printed ~,10G, its formula ~A is ~,10G"
+                                         number (datum-string formula) value))))))
+
+(defun checked-path (states)
+  "STATES along the run's path: at a fork, the selected branch's states follow it."
+  (loop for state in states
+        collect state
+        append (let ((selected (find-if (lambda (b) (getf b :selected)) (state-branches state))))
+                 (and selected (checked-path (getf selected :states))))))
+
+(defun answer-numbers (history)
+  "The answers printed with a number: (LABEL NUMBER FORMULA) for each scalar one."
+  (loop for (name value . options) in (history-answers history)
+        for number = (getf options :numeric)
+        when (and (realp number) (not (realp value)) (valid-expression-p value :kind :arithmetic))
+          collect (list (format nil "answer ~(~A~)" name) number value)))
+
+(defun failure-entry (index failure)
+  "The plist the history's notes keep for FAILURE of state INDEX (NIL: an answer)."
+  (list :state index :claim (check-failure-claim failure)
+        :discrepancy (check-failure-discrepancy failure) :detail (check-failure-detail failure)))
+
+(defun self-check-history (history)
+  "Check HISTORY's claims under its parameter values (see the file header) and record the
+result in its notes as :SELF-CHECK. Does nothing without values or when *SELF-CHECK* is
+NIL. Returns the result plist, or NIL."
+  (let ((values (history-parameter-values history)))
+    (when (and values (not *self-check*))
+      (setf (getf (history-notes history) :self-check) (list :skipped t)))
+    (when (and *self-check* values)
+      (let ((checked '()) (unchecked '()) (failures '()) (numbers-checked 0) (numbers 0) (clock 0d0))
+        (flet ((number-check (index entry)
+                 (destructuring-bind (label number formula) entry
+                   (incf numbers)
+                   (let ((result (check-number label number formula values)))
+                     (cond ((null result) (incf numbers-checked))
+                           ((check-failure-p result)
+                            (incf numbers-checked)
+                            (push (failure-entry index result) failures)))))))
+          (dolist (state (checked-path (history-states history)))
+            (let* ((index (state-index state))
+                   (start (getf (getf (state-notes state) :numeric) :start))
+                   (result (check-state state values
+                                        :horizon (max 1d0 (* 2 (if (realp start) start clock))))))
+              (when (realp start) (setf clock (coerce start 'double-float)))
+              (ecase (getf result :status)
+                (:checked (push index checked))
+                (:unchecked (push (list :state index :reason (getf result :reason)) unchecked))
+                (:failed (dolist (f (getf result :failures))
+                           (push (failure-entry index f) failures))))
+              (dolist (entry (printed-numbers state)) (number-check index entry))))
+          (dolist (entry (answer-numbers history)) (number-check nil entry)))
+        (setf (getf (history-notes history) :self-check)
+              (list :checked (nreverse checked) :unchecked (nreverse unchecked)
+                    :numbers (list numbers-checked numbers) :failures (nreverse failures)))))))
+
+(defun self-check-result (history)
+  "The :SELF-CHECK plist of HISTORY's notes, or NIL when it was not checked."
+  (getf (history-notes history) :self-check))
+
+(defun self-check-failed-p (history)
+  "True when HISTORY's self-check found a claim that is wrong."
+  (and (getf (self-check-result history) :failures) t))
