@@ -23,21 +23,26 @@ makes it NIL).")
 (defparameter *number-tolerance* 1d-9
   "How far a printed number may be from its formula's value, relative.")
 
-(defun duration-number (state)
-  "STATE's duration as the run printed it (a number), NIL when it has none, :FOREVER."
+(defun duration-number (state values)
+  "STATE's claimed duration as a number: its formula's value under VALUES; for a
+duration with no closed form, the number the run found (see the simulator's notes); NIL
+when there is none; :FOREVER."
   (let ((duration (state-duration state))
         (numeric (getf (state-notes state) :numeric)))
     (cond ((eq duration :forever) :forever)
           ((realp duration) duration)
-          (t (let ((n (or (getf (state-notes state) :numeric-duration) (getf numeric :duration))))
-               (and (realp n) n))))))
+          ((or (keywordp duration) (and (consp duration) (keywordp (first duration))))
+           (let ((n (or (getf (state-notes state) :numeric-duration) (getf numeric :duration))))
+             (and (realp n) n)))
+          (t (handler-case (value-under duration values)
+               (unevaluable () nil))))))
 
 (defun check-state (state values &key (horizon 1d0))
   "Check STATE's motion and end under VALUES (see claims.lisp and events.lisp): a plist
 (:STATUS S :REASON R :FAILURES F), S one of :CHECKED, :UNCHECKED (R says why) and
 :FAILED. A state lasting forever is checked up to HORIZON."
   (let ((model (getf (state-analysis state) :check-model))
-        (duration (duration-number state)))
+        (duration (duration-number state values)))
     (flet ((unchecked (reason) (return-from check-state (list :status :unchecked :reason reason))))
       (cond ((state-branches state) (unchecked "a fork: its branches are checked"))
             ((null model) (unchecked "no model recorded"))
