@@ -11,6 +11,8 @@
 ;;;;   :NUMBERS   (CHECKED TOTAL): the printed numbers compared with their formulas;
 ;;;;   :FAILURES  ((:STATE INDEX :CLAIM TEXT :DISCREPANCY X :DETAIL TEXT) ...), INDEX NIL
 ;;;;              for a query's answer;
+;;;;   :CHOSEN    ((PARAMETER . NUMBER) ...), when the run left parameters without a value
+;;;;              that the check gave one (see CHECK-VALUES);
 ;;;; or (:SKIPPED T) under --no-check.
 ;;;; A failure is a defect of AMES: the command line exits with a status of its own.
 
@@ -120,6 +122,31 @@ when the formula has no value here."
         when (and (realp number) (not (realp value)) (valid-expression-p value :kind :arithmetic))
           collect (list (format nil "answer ~(~A~)" name) number value)))
 
+(defparameter *generic-values* '(12345/10000 13579/10000 14142/10000 15731/10000 16180/10000 17321/10000)
+  "The values the self-check gives, in turn, to parameters the run has no value for (see
+CHECK-VALUES): unremarkable numbers, distinct so that no two parameters coincide.")
+
+(defun check-values (history)
+  "The parameter values the self-check uses for HISTORY: the run's, and for each
+parameter without one whose only assumptions are that it is positive (or non-negative),
+a generic value -- the run's claims are made for every such value, so any one of them
+tests them. Returns (values ALIST CHOSEN), CHOSEN the generic entries."
+  (let* ((scenario (history-scenario history))
+         (values (history-parameter-values history))
+         (relations (ames.scenario:scenario-assumption-relations scenario))
+         (generic *generic-values*)
+         (chosen '()))
+    (dolist (parameter (ames.scenario:scenario-parameters scenario))
+      (let ((name (ames.scenario:scenario-parameter-name parameter)))
+        (when (and generic (not (assoc name values))
+                   (every (lambda (relation)
+                            (or (free-of-p name relation)
+                                (and (member (first relation) '(> >=)) (eq (second relation) name)
+                                     (eql (third relation) 0))))
+                          relations))
+          (push (cons name (pop generic)) chosen))))
+    (values (append values (reverse chosen)) (reverse chosen))))
+
 (defun failure-entry (index failure)
   "The plist the history's notes keep for FAILURE of state INDEX (NIL: an answer)."
   (list :state index :claim (check-failure-claim failure)
@@ -133,6 +160,7 @@ NIL. Returns the result plist, or NIL."
     (when (and values (not *self-check*))
       (setf (getf (history-notes history) :self-check) (list :skipped t)))
     (when (and *self-check* values)
+      (multiple-value-bind (values chosen) (check-values history)
       (let ((checked '()) (unchecked '()) (failures '()) (numbers-checked 0) (numbers 0) (clock 0d0))
         (flet ((number-check (index entry)
                  (destructuring-bind (label number formula) entry
@@ -156,8 +184,9 @@ NIL. Returns the result plist, or NIL."
               (dolist (entry (printed-numbers state)) (number-check index entry))))
           (dolist (entry (answer-numbers history)) (number-check nil entry)))
         (setf (getf (history-notes history) :self-check)
-              (list :checked (nreverse checked) :unchecked (nreverse unchecked)
-                    :numbers (list numbers-checked numbers) :failures (nreverse failures)))))))
+              (append (list :checked (nreverse checked) :unchecked (nreverse unchecked)
+                            :numbers (list numbers-checked numbers) :failures (nreverse failures))
+                      (and chosen (list :chosen chosen)))))))))
 
 (defun self-check-result (history)
   "The :SELF-CHECK plist of HISTORY's notes, or NIL when it was not checked."
