@@ -16,11 +16,6 @@
 
 (in-package #:ames.check)
 
-(defun safe (function y time)
-  "FUNCTION's value at Y and TIME, or NIL where it has none."
-  (handler-case (funcall function y time)
-    (arithmetic-error () nil)))
-
 (defun event-functions (setup condition)
   "The event functions of one recorded CONDITION, or :UNSEARCHABLE: for a relation, a
 list of functions of a state vector and a time, one per part; for a contact's gap, a
@@ -90,7 +85,8 @@ sample where it was not below zero, before CUTOFF (NIL: over all SAMPLES); NIL i
           for (time . y) = sample
           for value = (funcall function y time)
           do (when value
-               (let ((margin (noise function y time scales)))
+               ;; the noise is needed only below zero
+               (let ((margin (if (minusp value) (noise function y time scales) 0d0)))
                  (cond ((>= value (- margin)) (setf armed t))
                        ((and armed (or (null cutoff) (< time cutoff)))
                         (return (first-crossing setup function (previous-sample samples sample) sample)))))))))
@@ -111,7 +107,7 @@ all SAMPLES); NIL if never."
     (loop for sample in samples
           for (time . y) = sample
           for value = (funcall gap y time)
-          do (when value
+          do (when (and value (or (plusp value) outside))
                (let ((margin (noise gap y time scales)))
                  (cond ((> value margin) (setf outside sample))
                        ((and outside (< value (- margin)))

@@ -56,7 +56,7 @@ when there is none; :FOREVER."
             (let* ((end (if (eq duration :forever) nil (coerce duration 'double-float)))
                    (samples (integrate-grid (setup-rates setup) (setup-y0 setup)
                                             (or end (coerce horizon 'double-float)) *grid-points*))
-                   (failures (append (compare-motion setup state samples values)
+                   (failures (append (compare-motion setup state samples)
                                      (and end (compare-final setup state samples values)))))
               (multiple-value-bind (event-failures reason) (check-events setup state samples end)
                 (setf failures (append failures event-failures))
