@@ -225,3 +225,51 @@ no claim the self-check can test is wrong, but the known failures listed."
             (unless (known-failure-p file failure)
               (fail "~A: state ~A: ~A (off by ~A): ~A" (pathname-name file) (getf failure :state)
                     (getf failure :claim) (getf failure :discrepancy) (getf failure :detail)))))))))
+
+(defun perturbed-verdict (state history accessor setter change)
+  "CHECK-STATE's verdict on STATE with the slot read by ACCESSOR replaced by CHANGE of
+it (SETTER writes it), restored afterwards."
+  (let ((right (funcall accessor state)))
+    (funcall setter (funcall change right) state)
+    (unwind-protect (state-check state history)
+      (funcall setter right state))))
+
+(test the-self-check-on-a-curve-and-on-a-spring
+  "A particle sliding on a sphere until it leaves it (its motion over the arc length, its
+end a normal force reaching zero) and two masses on a spring (trigonometric closed
+forms): the right claims pass, perturbed ones fail."
+  (with-fixture simulator-bridge ()
+    (let* ((history (first (ames:run-file (find "particle-on-sphere" (scenario-files) :key #'pathname-name
+                                                                                     :test #'string=)
+                                          :numeric t :bridge bridge)))
+           (state (first (ames:history-states history))))
+      (is (eq :checked (getf (state-check state history) :status)))
+      (flet ((set-duration (value state) (setf (ames::state-duration state) value))
+             (set-finals (value state) (setf (ames::state-final-velocities state) value)))
+        (dolist (factor '(99/100 101/100))
+          (is (eq :failed (getf (perturbed-verdict state history #'ames:state-duration #'set-duration
+                                                   (lambda (d) `(* ,factor ,d)))
+                                :status))
+              "a lift-off time ~A times the right one is not caught" factor))
+        (is (eq :failed (getf (perturbed-verdict state history #'ames:state-final-velocities #'set-finals
+                                                 (lambda (finals)
+                                                   (mapcar (lambda (entry)
+                                                             (list (first entry)
+                                                                   (mapcar (lambda (c) `(* 1000001/1000000 ,c))
+                                                                           (second entry))))
+                                                           finals)))
+                              :status)))))
+    (let* ((history (first (ames:run-file (find "two-masses-on-a-spring" (scenario-files) :key #'pathname-name
+                                                                                         :test #'string=)
+                                          :numeric t :bridge bridge)))
+           (state (first (ames:history-states history))))
+      (is (eq :checked (getf (state-check state history) :status)))
+      (flet ((set-positions (value state) (setf (ames::state-positions state) value)))
+        (is (eq :failed (getf (perturbed-verdict state history #'ames:state-positions #'set-positions
+                                                 (lambda (positions)
+                                                   (mapcar (lambda (entry)
+                                                             (list (first entry)
+                                                                   (mapcar (lambda (c) `(+ ,c (* 1/10000000 (sin tau))))
+                                                                           (second entry))))
+                                                           positions)))
+                              :status)))))))
