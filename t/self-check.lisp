@@ -191,8 +191,19 @@ number beside it that sum's value (not the sum of the durations printed before i
         (is (eq :failed (getf verdict :status)))
         (is (some (lambda (claim) (search "before the end" claim)) (failed-claims verdict)))))))
 
-(test no-check-skips-and-says-so
+(test no-check-skips-and-says-so-and-a-failed-check-has-its-exit-status
   (with-fixture simulator-bridge ()
+    ;; a check that can never be met (a negative tolerance) fails: the status is 5
+    (let ((file (find "particle-under-plane" (scenario-files) :key #'pathname-name :test #'string=)))
+      (is (eql ames::+exit-check-failed+
+               (let ((ames.check::*relative-tolerance* -1d0))
+                 (ames:run-files (list file) :numeric t :bridge bridge :stream (make-broadcast-stream)))))
+      (is (eql 0 (ames:run-files (list file) :numeric t :bridge bridge :stream (make-broadcast-stream))))
+      (is (eql 0 (let ((ames.check:*self-check* nil)
+                       (ames.check::*relative-tolerance* -1d0))
+                   (ames:run-files (list file) :numeric t :bridge bridge :stream (make-broadcast-stream))))))
+    (is (eql 5 (ames::worse-status 3 5)))
+    (is (eql 1 (ames::worse-status 5 1)))
     (let ((history (let ((ames.check:*self-check* nil)) (numeric-history *thrown-ball* bridge))))
       (is (equal '(:skipped t) (self-check-of history))))
     (let ((options (ames::parse-command-line '("run" "a.lisp" "--no-check"))))
@@ -221,6 +232,13 @@ no claim the self-check can test is wrong, but the known failures listed."
       (dolist (history (handler-case (ames:run-file file :numeric t :bridge bridge)
                          (ames:ames-error () '())))
         (let ((check (self-check-of history)))
+          ;; every state of the path is accounted for: checked, failed, or not checked and why
+          (unless (getf check :skipped)
+            (dolist (state (ames.check::checked-path (ames:history-states history)))
+              (is (or (member (ames:state-index state) (getf check :checked))
+                      (find (ames:state-index state) (getf check :unchecked) :key (lambda (u) (getf u :state)))
+                      (find (ames:state-index state) (getf check :failures) :key (lambda (f) (getf f :state))))
+                  "~A: state ~D is not accounted for" (pathname-name file) (ames:state-index state))))
           (dolist (failure (getf check :failures))
             (unless (known-failure-p file failure)
               (fail "~A: state ~A: ~A (off by ~A): ~A" (pathname-name file) (getf failure :state)
