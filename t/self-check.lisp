@@ -291,3 +291,34 @@ forms): the right claims pass, perturbed ones fail."
                                                                            (second entry))))
                                                            positions)))
                               :status)))))))
+
+(defparameter *hanging-mass*
+  "(scenario mass-hanging-on-a-spring
+     \"A mass hangs from a ceiling hook on a spring, released below its rest point.\"
+     (parameters (m :positive (:value 1)) (k :positive (:value 4)) (g :positive (:value 10)))
+     (gravity g)
+     (body hook :fixed t :position (0 5) :shape point)
+     (body bob :mass m :position (0 1) :velocity (0 0) :shape point)
+     (spring coil :from (hook (0 0)) :to (bob (0 0)) :stiffness k)
+     (simulate :states 2))"
+  "A fresh scenario: an oscillation that lasts forever, of period 2 pi sqrt(m / k).")
+
+(test a-periodic-state-comes-back-after-its-period
+  "A state said periodic (its notes' :PERIODIC, see the scenario language) is integrated
+over its period and must be back at its start: 2 pi sqrt(m/k) passes, a period 1% off
+fails."
+  (with-fixture simulator-bridge ()
+    (let* ((history (numeric-history *hanging-mass* bridge))
+           (state (first (ames:history-states history)))
+           (scenario (ames:history-scenario history)))
+      (is (eq :forever (ames:state-duration state)))
+      (is (eq :checked (getf (state-check state history) :status)))
+      (flet ((with-period (period)
+               (setf (getf (ames::state-notes state) :periodic)
+                     (list :period (in-scenario-terms scenario period)))
+               (prog1 (state-check state history)
+                 (remf (ames::state-notes state) :periodic))))
+        (is (eq :checked (getf (with-period '(* 2 pi (sqrt (/ m k)))) :status)))
+        (let ((verdict (with-period '(* 101/100 2 pi (sqrt (/ m k))))))
+          (is (eq :failed (getf verdict :status)))
+          (is (some (lambda (claim) (search "the period" claim)) (failed-claims verdict))))))))

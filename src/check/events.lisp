@@ -129,10 +129,25 @@ all SAMPLES); NIL if never."
   (let ((value (funcall function y time)))
     (and value (<= (abs value) (* 10 (max (noise function y time scales) 1d-300))))))
 
-(defun check-events (setup state samples end)
+(defun velocity-indices (setup)
+  "The indices of SETUP's state terms that are velocities: the rates of other state terms."
+  (let ((rates (getf (setup-model setup) :rates)))
+    (loop for term in (setup-terms setup)
+          for i from 0
+          when (find term rates :key #'cdr :test #'equal) collect i)))
+
+(defun at-rest-p (setup time from scales)
+  "True when every velocity of the state is zero (within 1e-6 of its scale) at TIME,
+integrating from the sample FROM: a turning point."
+  (let ((y (integrate-rk4 (setup-rates setup) (cdr from) (car from) time)))
+    (every (lambda (i) (<= (abs (svref y i)) (* 1d-6 (svref scales i)))) (velocity-indices setup))))
+
+(defun check-events (setup state samples end &key turning-points-allowed)
   "Failures of STATE's end against its termination conditions over SAMPLES (the grid up
 to END, a double, or to a horizon when END is NIL: the state claims to last forever),
-and a second value: NIL, or the reason the end could not be checked."
+and a second value: NIL, or the reason the end could not be checked. With
+TURNING-POINTS-ALLOWED (a periodic state), a condition that fires where every velocity
+is zero is the motion turning back, which the periodic state includes."
   (let ((failures '()) (claimed-checked (null end)) (unsearchable nil)
         (end-event (state-end-event state))
         (cutoff (and end (* end (- 1 1d-6))))
@@ -148,6 +163,10 @@ and a second value: NIL, or the reason the end could not be checked."
               (let ((at (if (and (consp function) (eq (first function) :gap))
                             (gap-fires-early setup (second function) (third function) samples cutoff scales)
                             (fires-early setup function samples cutoff scales))))
+                (when (and at turning-points-allowed
+                           (at-rest-p setup at (find-if (lambda (sample) (<= (car sample) at)) samples :from-end t)
+                                      scales))
+                  (setf at nil))
                 (when at
                   (push (make-check-failure
                          (format nil "no condition fires before the end: ~A" (condition-name condition))

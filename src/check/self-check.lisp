@@ -39,26 +39,40 @@ when there is none; :FOREVER."
           (t (handler-case (value-under duration values)
                (unevaluable () nil))))))
 
+(defun period-number (state values)
+  "The period of a periodic STATE (its notes' :PERIODIC (:PERIOD EXPR ...), see the
+scenario language's \"Oscillation and turning points\") under VALUES, or NIL."
+  (let ((periodic (getf (state-notes state) :periodic)))
+    (and (consp periodic) (getf periodic :period)
+         (handler-case (value-under (getf periodic :period) values)
+           (unevaluable () nil)))))
+
 (defun check-state (state values &key (horizon 1d0))
   "Check STATE's motion and end under VALUES (see claims.lisp and events.lisp): a plist
 (:STATUS S :REASON R :FAILURES F), S one of :CHECKED, :UNCHECKED (R says why) and
-:FAILED. A state lasting forever is checked up to HORIZON."
+:FAILED. A state lasting forever is checked up to HORIZON; a periodic one over its
+period, at whose end it must be back where it started, its turning points allowed."
   (let ((model (getf (state-analysis state) :check-model))
-        (duration (duration-number state values)))
+        (duration (duration-number state values))
+        (periodic (getf (state-notes state) :periodic)))
     (flet ((unchecked (reason) (return-from check-state (list :status :unchecked :reason reason))))
       (cond ((state-branches state) (unchecked "a fork: its branches are checked"))
             ((null model) (unchecked "no model recorded"))
             ((null duration) (unchecked "its duration has no number"))
-            ((and (realp duration) (zerop duration)) (unchecked "it lasts no time")))
+            ((and (realp duration) (zerop duration)) (unchecked "it lasts no time"))
+            ((and periodic (not (period-number state values))) (unchecked "its period has no number")))
       (handler-case
           (multiple-value-bind (setup reason) (make-setup model values)
             (unless setup (unchecked reason))
             (let* ((end (if (eq duration :forever) nil (coerce duration 'double-float)))
+                   (period (and periodic (null end) (period-number state values)))
                    (samples (integrate-grid (setup-rates setup) (setup-y0 setup)
-                                            (or end (coerce horizon 'double-float)) *grid-points*))
+                                            (or end period (coerce horizon 'double-float)) *grid-points*))
                    (failures (append (compare-motion setup state samples)
-                                     (and end (compare-final setup state samples values)))))
-              (multiple-value-bind (event-failures reason) (check-events setup state samples end)
+                                     (and end (compare-final setup state samples values))
+                                     (and period (compare-period setup samples period)))))
+              (multiple-value-bind (event-failures reason)
+                  (check-events setup state samples end :turning-points-allowed (and period t))
                 (setf failures (append failures event-failures))
                 (cond (failures (list :status :failed :failures failures))
                       (reason (list :status :unchecked :reason reason))
@@ -67,6 +81,18 @@ when there is none; :FOREVER."
           (unchecked (format nil "cannot evaluate ~A" (datum-string (ames-error-datum condition)))))
         (integration-failed (condition)
           (unchecked (ames-error-detail condition)))))))
+
+(defun compare-period (setup samples period)
+  "Failures of a periodic state's claim: after PERIOD (the end of SAMPLES) every state
+variable is back at its start."
+  (let ((y0 (cdr (first samples))) (y1 (cdr (car (last samples)))) (scales (state-scales samples)))
+    (loop for term in (setup-terms setup)
+          for i from 0
+          unless (near-p (svref y0 i) (svref y1 i) (* 1d-3 (svref scales i)))
+            collect (make-check-failure (format nil "the period: ~(~A~) back at its start after ~,10G"
+                                                (datum-string term) period)
+                                        (relative-error (svref y0 i) (svref y1 i) (* 1d-3 (svref scales i)))
+                                        (format nil "start ~,10G, after a period ~,10G" (svref y0 i) (svref y1 i))))))
 
 (defun datum-string (datum)
   "DATUM printed briefly, without package prefixes."
