@@ -263,7 +263,23 @@ forms): the right claims pass, perturbed ones fail."
            (state (first (ames:history-states history))))
       (is (eq :checked (getf (state-check state history) :status)))
       (flet ((set-duration (value state) (setf (ames::state-duration state) value))
-             (set-finals (value state) (setf (ames::state-final-velocities state) value)))
+             (set-finals (value state) (setf (ames::state-final-velocities state) value))
+             (set-velocities (value state) (setf (ames::state-velocities state) value)))
+        ;; the velocity over the arc length (from the energy integral) a little off
+        (let ((verdict (perturbed-verdict
+                        state history #'ames:state-velocities #'set-velocities
+                        (lambda (velocities)
+                          (mapcar (lambda (entry)
+                                    (destructuring-bind (body motion) entry
+                                      (list body (if (and (consp motion) (eq (first motion) :on-path))
+                                                     (list* :on-path (mapcar (lambda (c) `(* 1000001/1000000 ,c))
+                                                                             (second motion))
+                                                            (cddr motion))
+                                                     motion))))
+                                  velocities)))))
+          (is (eq :failed (getf verdict :status)))
+          (is (some (lambda (claim) (search "velocity_x at tau" claim)) (failed-claims verdict))
+              "~S" (failed-claims verdict)))
         (dolist (factor '(99/100 101/100))
           (is (eq :failed (getf (perturbed-verdict state history #'ames:state-duration #'set-duration
                                                    (lambda (d) `(* ,factor ,d)))

@@ -97,15 +97,29 @@ NIL (and a reason) when its start has no value."
         maximize (loop for (body) in (getf (setup-model setup) :bodies)
                        maximize (reduce #'max (mapcar #'abs (body-motion-values setup body what y time))))))
 
+(defun closed-motion (setup body motion)
+  "BODY's reported MOTION (position or velocity) as two expressions the setup can
+evaluate: in TAU as it is, or, reported over the arc length along a curve (:ON-PATH (X Y)
+:ARC-LENGTH S), with S the body's arc-length state term (so that the integrated arc
+length gives the claimed place and velocity); NIL when it is neither."
+  (cond ((tau-form-p motion) motion)
+        ((and (consp motion) (eq (first motion) :on-path))
+         (let ((term (getf (second (assoc body (getf (setup-model setup) :bodies))) :arc-length))
+               (variable (getf (cddr motion) :arc-length)))
+           (and term variable (tau-form-p (second motion))
+                (mapcar (lambda (c) (substitute-expressions (list (cons variable term)) c))
+                        (second motion)))))))
+
 (defun compare-motion (setup state samples)
-  "Failures of STATE's closed-form motion in TAU at several grid SAMPLES."
+  "Failures of STATE's closed-form motion (in TAU, or over the arc length) at several
+grid SAMPLES."
   (let ((failures '()) (stride (max 1 (floor (1- (length samples)) *comparison-points*))))
     (loop for (what reported) in (list (list :position (state-positions state))
                                        (list :velocity (state-velocities state)))
           for scale = (* 1d-3 (max 1d-9 (motion-scale setup samples what)))
           do (loop for (body) in (getf (setup-model setup) :bodies)
-                   for closed = (body-entry reported body)
-                   when (tau-form-p closed)
+                   for closed = (closed-motion setup body (body-entry reported body))
+                   when closed
                      do (loop for (time . y) in samples
                               for k from 0
                               when (and (plusp k) (zerop (mod k stride)))

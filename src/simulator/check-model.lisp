@@ -13,8 +13,9 @@
 ;;;;                component names it), and either :GAP G :MARGINS (M...) for a contact's
 ;;;;                reaching (G the gap, each M >= 0 within the contact's extent) or
 ;;;;                :PARTS (F...) for a relation, which holds where some F < 0;
-;;;;   :BODIES      alist moving body -> (:POSITION (X Y) :VELOCITY (VX VY)) over the state
-;;;;                terms.
+;;;;   :BODIES      alist moving body -> (:POSITION (X Y) :VELOCITY (VX VY) :ARC-LENGTH S)
+;;;;                over the state terms, S the state term of its arc length along a curved
+;;;;                contact (the variable of its motion reported :ON-PATH), or NIL.
 ;;;; Nothing here is solved in time: the check integrates it itself.
 
 (in-package #:ames.simulator)
@@ -41,9 +42,14 @@ when its relation is none the check can search numerically."
       (error () (append names (list :unsearchable relation))))))
 
 (defun check-body-motion (run solved body)
-  "BODY's position and velocity over SOLVED's state terms, as the self-check reads them."
+  "BODY's position and velocity over SOLVED's state terms, as the self-check reads them,
+and the state term of its arc length along a curved contact it moves on, if any."
   (list body (list :position (body-position-terms run solved body)
-                   :velocity (body-velocity-terms run solved body))))
+                   :velocity (body-velocity-terms run solved body)
+                   :arc-length (find-if (lambda (term)
+                                          (and (eq (first term) 'ames.kb:path-position)
+                                               (eq body (first (contact-bodies run (second term))))))
+                                        (solved-model-state solved)))))
 
 (defun check-model (run solved)
   "The plist the self-check reads of the current state's model (see the file header)."
