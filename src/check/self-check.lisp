@@ -149,7 +149,7 @@ when the formula has no value here."
         when (and (realp number) (not (realp value)) (valid-expression-p value :kind :arithmetic))
           collect (list (format nil "answer ~(~A~)" name) number value)))
 
-(defparameter *generic-values* '(12345/10000 13579/10000 14142/10000 15731/10000 16180/10000 17321/10000)
+(defparameter *generic-values* '(1.234d0 1.357d0 1.414d0 1.573d0 1.618d0 1.732d0 1.877d0 1.953d0)
   "The values the self-check gives, in turn, to parameters the run has no value for (see
 CHECK-VALUES): unremarkable numbers, distinct so that no two parameters coincide.")
 
