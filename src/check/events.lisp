@@ -184,5 +184,5 @@ is zero is the motion turning back, which the periodic state includes."
                                 "no termination condition naming it is at zero then")
             failures))
     (values (nreverse failures)
-            (and unsearchable (not claimed-checked)
+            (and unsearchable
                  (format nil "the condition ~A cannot be searched numerically" unsearchable)))))
