@@ -278,7 +278,9 @@ error, else +EXIT-CHECK-FAILED+ (5) when a self-check found a wrong claim, else
                   (when (undecided-history-p history)
                     (setf undecided-seen t))
                   (when (ames.check:self-check-failed-p history)
-                    (setf check-failed t))
+                    (setf check-failed t)
+                    (format *error-output* "~&ames: ~A: the self-check found a wrong claim (a defect of AMES; see the report's SELF-CHECK FAILED lines)~%"
+                            (string-downcase (symbol-name (scenario-name scenario)))))
                   (report-history output history)
                   (finish-output stream))
               (ames-error (condition) (report-error condition))
