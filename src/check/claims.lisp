@@ -112,7 +112,7 @@ length gives the claimed place and velocity); NIL when it is neither."
 
 (defun compare-motion (setup state samples)
   "Failures of STATE's closed-form motion (in TAU, or over the arc length) at several
-grid SAMPLES."
+grid SAMPLES: for each body and coordinate, the worst time."
   (let ((failures '()) (stride (max 1 (floor (1- (length samples)) *comparison-points*))))
     (loop for (what reported) in (list (list :position (state-positions state))
                                        (list :velocity (state-velocities state)))
@@ -120,20 +120,53 @@ grid SAMPLES."
           do (loop for (body) in (getf (setup-model setup) :bodies)
                    for closed = (closed-motion setup body (body-entry reported body))
                    when closed
-                     do (loop for (time . y) in samples
-                              for k from 0
-                              when (and (plusp k) (zerop (mod k stride)))
-                                do (loop for c in closed
-                                         for axis in '(:x :y)
-                                         for numeric in (body-motion-values setup body what y time)
-                                         for claimed = (safe (compiled setup c) y time)
-                                         unless (and claimed (near-p claimed numeric scale))
-                                           do (push (make-check-failure
-                                                     (format nil "~(~A~) ~(~A~)_~(~A~) at tau = ~,6G" body what axis time)
-                                                     (if claimed (relative-error claimed numeric scale) :no-value)
-                                                     (format nil "closed form ~,10G, integration ~,10G" claimed numeric))
-                                                    failures)))))
+                     do (loop for c in closed
+                              for axis in '(:x :y)
+                              for function = (compiled setup c)
+                              for worst = nil
+                              do (loop for (time . y) in samples
+                                       for k from 0
+                                       when (and (plusp k) (zerop (mod k stride)))
+                                         do (let ((claimed (safe function y time))
+                                                  (numeric (nth (position axis '(:x :y))
+                                                                (body-motion-values setup body what y time))))
+                                              (unless (and claimed (near-p claimed numeric scale))
+                                                (let ((off (if claimed (relative-error claimed numeric scale) :no-value)))
+                                                  (when (or (null worst) (not (realp off))
+                                                            (and (realp (first worst)) (> off (first worst))))
+                                                    (setf worst (list off time claimed numeric)))))))
+                                 (when worst
+                                   (destructuring-bind (off time claimed numeric) worst
+                                     (push (make-check-failure
+                                            (format nil "~(~A~) ~(~A~)_~(~A~) at tau = ~A" body what axis (number-string time))
+                                            off
+                                            (format nil "closed form ~A, integration ~A"
+                                                    (number-string claimed) (number-string numeric)))
+                                           failures))))))
     (nreverse failures)))
+
+(defun plain-text (datum)
+  "DATUM written without package prefixes: symbols by their lower-case names."
+  (cond ((keywordp datum) (format nil ":~(~A~)" (symbol-name datum)))
+        ((and datum (symbolp datum)) (string-downcase (symbol-name datum)))
+        ((consp datum)
+         (format nil "(~{~A~^ ~})" (loop for cell on datum
+                                         collect (plain-text (car cell))
+                                         unless (listp (cdr cell)) collect (format nil ". ~A" (plain-text (cdr cell))))))
+        ((null datum) "()")
+        (t (princ-to-string datum))))
+
+(defun datum-string (datum)
+  "DATUM written briefly (see PLAIN-TEXT), cut at 80 characters."
+  (let ((text (plain-text datum)))
+    (if (> (length text) 80) (concatenate 'string (subseq text 0 77) "...") text)))
+
+(defun number-string (x)
+  "X (a real or NIL) written briefly for a report: 10 significant digits."
+  (if (realp x)
+      (let ((*read-default-float-format* 'double-float))
+        (string-trim " " (format nil "~,10G" x)))
+      "none"))
 
 (defun compare-final (setup state samples values)
   "Failures of STATE's final positions and velocities against the integration at the end
@@ -152,6 +185,7 @@ of SAMPLES."
                                 do (push (make-check-failure
                                           (format nil "final ~(~A~) ~(~A~)_~(~A~)" what body axis)
                                           (if claimed (relative-error claimed numeric scale) :no-value)
-                                          (format nil "claimed ~,10G, integration ~,10G at t = ~,10G" claimed numeric end))
+                                          (format nil "claimed ~A, integration ~A at tau = ~A"
+                                                  (number-string claimed) (number-string numeric) (number-string end)))
                                          failures))))
     (nreverse failures)))

@@ -29,7 +29,7 @@ list of one (:GAP GAP-FUNCTION MARGIN-FUNCTIONS) (see GAP-FIRES-EARLY)."
 
 (defun condition-name (condition)
   "A short text naming a recorded CONDITION."
-  (format nil "~(~S~)" (or (getf condition :event) (getf condition :change))))
+  (datum-string (or (getf condition :event) (getf condition :change))))
 
 (defun first-crossing (setup function low-sample high-sample)
   "The time in [LOW, HIGH] where FUNCTION first goes below zero, by bisection,
@@ -171,7 +171,8 @@ is zero is the motion turning back, which the periodic state includes."
                   (push (make-check-failure
                          (format nil "no condition fires before the end: ~A" (condition-name condition))
                          (if end (- end at) at)
-                         (format nil "it fires at tau = ~,10G~@[, before the claimed end tau = ~,10G~]" at end))
+                         (format nil "it fires at tau = ~A~@[, before the claimed end tau = ~A~]"
+                                 (number-string at) (and end (number-string end))))
                         failures)))
               ;; the claimed one at the claimed time
               (when (and end (ends-as-claimed-p condition end-event)
@@ -179,7 +180,7 @@ is zero is the motion turning back, which the periodic state includes."
                                     (cdr (car (last samples))) end scales))
                 (setf claimed-checked t))))))
     (when (and end (not claimed-checked) (not unsearchable))
-      (push (make-check-failure (format nil "the claimed end ~(~S~) at tau = ~,10G" (event-head end-event) end)
+      (push (make-check-failure (format nil "the claimed end ~A at tau = ~A" (datum-string (event-head end-event)) (number-string end))
                                 :not-at-end
                                 "no termination condition naming it is at zero then")
             failures))

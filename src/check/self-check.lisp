@@ -89,16 +89,10 @@ variable is back at its start."
     (loop for term in (setup-terms setup)
           for i from 0
           unless (near-p (svref y0 i) (svref y1 i) (* 1d-3 (svref scales i)))
-            collect (make-check-failure (format nil "the period: ~(~A~) back at its start after ~,10G"
-                                                (datum-string term) period)
+            collect (make-check-failure (format nil "the period: ~A back at its start after ~A"
+                                                (datum-string term) (number-string period))
                                         (relative-error (svref y0 i) (svref y1 i) (* 1d-3 (svref scales i)))
-                                        (format nil "start ~,10G, after a period ~,10G" (svref y0 i) (svref y1 i))))))
-
-(defun datum-string (datum)
-  "DATUM printed briefly, without package prefixes."
-  (let ((*package* (find-package '#:ames.check)))
-    (let ((text (format nil "~(~S~)" datum)))
-      (if (> (length text) 80) (concatenate 'string (subseq text 0 77) "...") text))))
+                                        (format nil "start ~A, after a period ~A" (number-string (svref y0 i)) (number-string (svref y1 i)))))))
 
 (defun printed-numbers (state)
   "The numbers the report prints beside STATE's formulas: a list of (LABEL NUMBER FORMULA)."
@@ -132,8 +126,8 @@ when the formula has no value here."
           ((near-p value (coerce number 'double-float) 0d0 *number-tolerance*) nil)
           (t (make-check-failure (format nil "the number printed for the ~A" label)
                                  (relative-error value (coerce number 'double-float) 0d0)
-                                 (format nil "printed ~,10G, its formula ~A is ~,10G"
-                                         number (datum-string formula) value))))))
+                                 (format nil "printed ~A, its formula ~A is ~A"
+                                         (number-string number) (datum-string formula) (number-string value)))))))
 
 (defun checked-path (states)
   "STATES along the run's path: at a fork, the selected branch's states follow it."

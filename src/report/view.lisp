@@ -378,7 +378,7 @@ claim that failed with how far off it was. NIL when the run had no values to che
     (cond ((null check) '())
           ((getf check :skipped) (list "Self-check: skipped (--no-check); nothing here was checked."))
           (t (append
-              (list (format nil "Self-check~@[ (with ~{~A~^, ~} chosen for it: the claims hold for every value)~]: ~:[no state~;~:*state~P ~{~D~^, ~}~] checked against a numeric integration and an event search~@[; ~{~A~^; ~}~]; ~D of ~D printed numbers checked against their formulas."
+              (list (format nil "Self-check~@[ (with ~{~A~^, ~} chosen for it: the claims hold for every value)~]: ~:[no state~*~;~:*state~P ~{~D~^, ~}~] checked against a numeric integration and an event search~@[; ~{~A~^; ~}~]; ~D of ~D printed numbers checked against their formulas."
                             (loop for (name . value) in (getf check :chosen)
                                   collect (format nil "~A = ~A" (name-text name) (number-text value)))
                             (and (getf check :checked) (length (getf check :checked))) (getf check :checked)
