@@ -4,8 +4,9 @@
 ;;;; Maxima), at most N at a time. Their reports are printed in the order of the files on
 ;;;; the command line, each as soon as it and every file before it have finished; what a
 ;;;; child writes on its standard error goes to ours, in the same order. The exit code is
-;;;; the worst of the children's (0 success, 1 a scenario error; a child that could not be
-;;;; run or died counts as 1 at least). The unit of work is a file: scenarios meant to run
+;;;; the worst of the children's (see WORSE-STATUS: 0 success, 3 undecided, 5 a failed
+;;;; self-check, 1 a scenario error; a child that could not be run or died counts as 1 at
+;;;; least). The unit of work is a file: scenarios meant to run
 ;;;; side by side go in files of their own.
 ;;;;
 ;;;; The formats that concatenate (text, sexp, json, latex) can be split this way; the
