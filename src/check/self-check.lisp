@@ -58,6 +58,9 @@ period, at whose end it must be back where it started, its turning points allowe
     (flet ((unchecked (reason) (return-from check-state (list :status :unchecked :reason reason))))
       (cond ((state-branches state) (unchecked "a fork: its branches are checked"))
             ((null model) (unchecked "no model recorded"))
+            ((getf model :uncompared)
+             (unchecked (format nil "the motion of ~{~A~^, ~} is no state variable of its model"
+                                (mapcar #'plain-text (getf model :uncompared)))))
             ((null duration) (unchecked "its duration has no number"))
             ((and (realp duration) (zerop duration)) (unchecked "it lasts no time"))
             ((and periodic (not (period-number state values))) (unchecked "its period has no number")))

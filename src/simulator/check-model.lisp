@@ -15,7 +15,9 @@
 ;;;;                :PARTS (F...) for a relation, which holds where some F < 0;
 ;;;;   :BODIES      alist moving body -> (:POSITION (X Y) :VELOCITY (VX VY) :ARC-LENGTH S)
 ;;;;                over the state terms, S the state term of its arc length along a curved
-;;;;                contact (the variable of its motion reported :ON-PATH), or NIL.
+;;;;                contact (the variable of its motion reported :ON-PATH), or NIL;
+;;;;   :UNCOMPARED  the moving bodies whose position is no state variable (their motion is
+;;;;                not the model's to integrate): a state with one is not called checked.
 ;;;; Nothing here is solved in time: the check integrates it itself.
 
 (in-package #:ames.simulator)
@@ -57,5 +59,12 @@ and the state term of its arc length along a curved contact it moves on, if any.
         :initial (copy-list (solved-model-initial solved))
         :conditions (mapcar (lambda (condition) (check-condition run solved condition))
                             (ames.engine:model-termination-conditions (run-model run)))
-        :bodies (mapcar (lambda (body) (check-body-motion run solved body))
-                        (free-body-names run))))
+        :bodies (loop for body in (free-body-names run)
+                      when (state-variable-body-p solved body)
+                        collect (check-body-motion run solved body))
+        :uncompared (remove-if (lambda (body) (state-variable-body-p solved body))
+                               (free-body-names run))))
+
+(defun state-variable-body-p (solved body)
+  "True when BODY's position is among SOLVED's state variables (its motion is integrated)."
+  (and (member `(ames.kb:pos ,body :x) (solved-model-state solved) :test #'equal) t))
