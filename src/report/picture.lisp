@@ -138,8 +138,11 @@ per state (a zero-length one where its trajectory cannot be drawn)."
         ;; events, where and when they happen
         (let ((clock 0d0))
           (dolist (state (history-states history))
-            (let ((duration (state-duration-number state bindings)))
-              (setf clock (and clock duration (+ clock duration)))
+            (let ((duration (state-duration-number state bindings))
+                  (start (number-at (state-start state) bindings)))
+              ;; the time of the state's end is its start's value plus its duration: after
+              ;; impacts that accumulate, not the durations before it summed
+              (setf clock (and (or start clock) duration (+ (or start clock) duration)))
               (loop for event in (state-events state)
                     for k from 0
                     for body = (find-if (lambda (b) (member b moving)) (rest event))
