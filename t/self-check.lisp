@@ -179,6 +179,19 @@ number beside it that sum's value (not the sum of the durations printed before i
                   (failed-claims (state-check state history))))
         (setf (ames::state-final-velocities state) right))
       (is (eq :checked (getf (state-check state history) :status)))
+      ;; a solve that is wrong: the solved quantities put in the model's equations leave
+      ;; one side 1/1000 off
+      (let* ((model (getf (ames:state-analysis state) :check-model))
+             (right (getf model :equations)))
+        (setf (getf (getf (ames::state-analysis state) :check-model) :equations)
+              (mapcar (lambda (equation) (list (first equation) `(* 1001/1000 ,(second equation))))
+                      right))
+        (let ((verdict (state-check state history)))
+          (is (eq :failed (getf verdict :status)))
+          (is (some (lambda (claim) (search "the model equation" claim)) (failed-claims verdict))
+              "~S" (failed-claims verdict)))
+        (setf (getf (getf (ames::state-analysis state) :check-model) :equations) right))
+      (is (equal '(:status :checked) (subseq (state-check state history) 0 2)))
       ;; a printed number that is not its formula's value: the history's check fails
       (let ((numeric (getf (ames:state-notes state) :numeric)))
         (setf (getf (getf (ames::state-notes state) :numeric) :duration)

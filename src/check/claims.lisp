@@ -189,3 +189,60 @@ of SAMPLES."
                                                   (number-string claimed) (number-string numeric) (number-string end)))
                                          failures))))
     (nreverse failures)))
+
+;;; The model's equations, satisfied by the solved quantities along the motion
+
+(defun subexpressions (expression &optional (limit 200))
+  "EXPRESSION and its compound subexpressions, at most LIMIT of them, outermost first."
+  (let ((found '()))
+    (labels ((walk (x)
+               (when (and (consp x) (< (length found) limit))
+                 (push x found)
+                 (unless (quantity-term-p x) (mapc #'walk (rest x))))))
+      (walk expression))
+    (nreverse found)))
+
+(defun equation-residual (setup equation y time)
+  "For EQUATION (LHS RHS), (values RESIDUAL SCALE) at Y and TIME: LHS - RHS and the
+largest magnitude among both sides and their parts (what the residual is measured
+against); NIL where a side has no value. Signals UNEVALUABLE as COMPILED does."
+  (destructuring-bind (lhs rhs) equation
+    (let ((left (safe (compiled setup lhs) y time))
+          (right (safe (compiled setup rhs) y time)))
+      (when (and left right)
+        ;; the scale: the largest value of any part of the equation (terms that cancel
+        ;; leave a residual of their own size's rounding)
+        (values (- left right)
+                (reduce #'max (mapcar (lambda (term) (abs (or (safe (compiled setup term) y time) 0d0)))
+                                      (append (subexpressions lhs) (subexpressions rhs)))
+                        :initial-value (max (abs left) (abs right))))))))
+
+(defun compare-equations (setup samples)
+  "Failures of the model's equations (the state's :CHECK-MODEL :EQUATIONS) at four
+SAMPLES along the integration, relative 1e-8 of their terms' size; and the numbers of
+equations verified and in all (an equation with a term the check cannot evaluate is not
+verified)."
+  (let* ((equations (getf (setup-model setup) :equations))
+         (n (length samples))
+         (points (remove-duplicates (list (first samples) (nth (floor n 3) samples)
+                                          (nth (floor (* 2 n) 3) samples) (car (last samples)))))
+         (failures '()) (verified 0))
+    (dolist (equation equations)
+      (handler-case
+          (let ((worst nil))
+            (dolist (sample points)
+              (multiple-value-bind (residual scale) (equation-residual setup equation (cdr sample) (car sample))
+                (when (and residual (> (abs residual) (* *relative-tolerance* scale)))
+                  (let ((off (/ (abs residual) (max scale 1d-300))))
+                    (when (or (null worst) (> off (first worst)))
+                      (setf worst (list off (car sample))))))))
+            (incf verified)
+            (when worst
+              (push (make-check-failure (format nil "the model equation ~A = ~A at tau = ~A"
+                                                (datum-string (first equation)) (datum-string (second equation))
+                                                (number-string (second worst)))
+                                        (first worst)
+                                        "the solved quantities do not satisfy it")
+                    failures)))
+        (unevaluable () nil)))
+    (values (nreverse failures) verified (length equations))))

@@ -9,6 +9,8 @@
 ;;;;   :UNCHECKED ((:STATE INDEX :REASON TEXT) ...): states that could not be (a fork, a
 ;;;;              state lasting no time, no value for its model under the values ...);
 ;;;;   :NUMBERS   (CHECKED TOTAL): the printed numbers compared with their formulas;
+;;;;   :EQUATIONS (VERIFIED TOTAL): the states' model equations evaluated with the solved
+;;;;              quantities along the integration (the solve checked);
 ;;;;   :FAILURES  ((:STATE INDEX :CLAIM TEXT :DISCREPANCY X :DETAIL TEXT) ...), INDEX NIL
 ;;;;              for a query's answer;
 ;;;;   :CHOSEN    ((PARAMETER . NUMBER) ...), when the run left parameters without a value
@@ -49,8 +51,8 @@ scenario language's \"Oscillation and turning points\") under VALUES, or NIL."
 
 (defun check-state (state values &key (horizon 1d0))
   "Check STATE's motion and end under VALUES (see claims.lisp and events.lisp): a plist
-(:STATUS S :REASON R :FAILURES F), S one of :CHECKED, :UNCHECKED (R says why) and
-:FAILED. A state lasting forever is checked up to HORIZON; a periodic one over its
+(:STATUS S :REASON R :FAILURES F :EQUATIONS (VERIFIED TOTAL)), S one of :CHECKED,
+:UNCHECKED (R says why) and :FAILED. A state lasting forever is checked up to HORIZON; a periodic one over its
 period, at whose end it must be back where it started, its turning points allowed."
   (let ((model (getf (state-analysis state) :check-model))
         (duration (duration-number state values))
@@ -76,10 +78,12 @@ period, at whose end it must be back where it started, its turning points allowe
                                      (and period (compare-period setup samples period)))))
               (multiple-value-bind (event-failures reason)
                   (check-events setup state samples end :turning-points-allowed (and period t))
-                (setf failures (append failures event-failures))
-                (cond (failures (list :status :failed :failures failures))
-                      (reason (list :status :unchecked :reason reason))
-                      (t (list :status :checked))))))
+                (multiple-value-bind (equation-failures verified total) (compare-equations setup samples)
+                  (setf failures (append failures event-failures equation-failures))
+                  (append (cond (failures (list :status :failed :failures failures))
+                                (reason (list :status :unchecked :reason reason))
+                                (t (list :status :checked)))
+                          (list :equations (list verified total)))))))
         (unevaluable (condition)
           (unchecked (format nil "cannot evaluate ~A" (datum-string (ames-error-datum condition)))))
         (integration-failed (condition)
@@ -185,7 +189,8 @@ NIL. Returns the result plist, or NIL."
       (setf (getf (history-notes history) :self-check) (list :skipped t)))
     (when (and *self-check* values)
       (multiple-value-bind (values chosen) (check-values history)
-      (let ((checked '()) (unchecked '()) (failures '()) (numbers-checked 0) (numbers 0) (clock 0d0))
+      (let ((checked '()) (unchecked '()) (failures '()) (numbers-checked 0) (numbers 0) (clock 0d0)
+            (equations (list 0 0)))
         (flet ((number-check (index entry)
                  (destructuring-bind (label number formula) entry
                    (incf numbers)
@@ -200,6 +205,8 @@ NIL. Returns the result plist, or NIL."
                    (result (check-state state values
                                         :horizon (max 1d0 (* 2 (if (realp start) start clock))))))
               (when (realp start) (setf clock (coerce start 'double-float)))
+              (let ((counts (getf result :equations)))
+                (when counts (setf equations (mapcar #'+ equations counts))))
               (ecase (getf result :status)
                 (:checked (push index checked))
                 (:unchecked (push (list :state index :reason (getf result :reason)) unchecked))
@@ -209,7 +216,8 @@ NIL. Returns the result plist, or NIL."
           (dolist (entry (answer-numbers history)) (number-check nil entry)))
         (setf (getf (history-notes history) :self-check)
               (append (list :checked (nreverse checked) :unchecked (nreverse unchecked)
-                            :numbers (list numbers-checked numbers) :failures (nreverse failures))
+                            :numbers (list numbers-checked numbers) :equations equations
+                            :failures (nreverse failures))
                       (and chosen (list :chosen chosen)))))))))
 
 (defun self-check-result (history)

@@ -378,12 +378,14 @@ claim that failed with how far off it was. NIL when the run had no values to che
     (cond ((null check) '())
           ((getf check :skipped) (list "Self-check: skipped (--no-check); nothing here was checked."))
           (t (append
-              (list (format nil "Self-check~@[ (with ~{~A~^, ~} chosen for it: the claims hold for every value)~]: ~:[no state~*~;~:*state~P ~{~D~^, ~}~] checked against a numeric integration and an event search~@[; ~{~A~^; ~}~]; ~D of ~D printed numbers checked against their formulas."
+              (list (format nil "Self-check~@[ (with ~{~A~^, ~} chosen for it: the claims hold for every value)~]: ~:[no state~*~;~:*state~P ~{~D~^, ~}~] checked against a numeric integration and an event search~@[; ~{~A~^; ~}~]; ~@[~{~D of ~D model equations satisfied by the solution along it~}; ~]~D of ~D printed numbers checked against their formulas."
                             (loop for (name . value) in (getf check :chosen)
                                   collect (format nil "~A = ~A" (name-text name) (number-text value)))
                             (and (getf check :checked) (length (getf check :checked))) (getf check :checked)
                             (loop for entry in (getf check :unchecked)
                                   collect (format nil "state ~D not checked (~A)" (getf entry :state) (getf entry :reason)))
+                            (let ((equations (getf check :equations)))
+                              (and equations (plusp (second equations)) equations))
                             (first (getf check :numbers)) (second (getf check :numbers))))
               (loop for failure in (getf check :failures)
                     collect (format nil "SELF-CHECK FAILED~@[ at state ~D~]: ~A (off by ~A): ~A"

@@ -9,6 +9,8 @@
 ;;;;                parameters (the solved DERIVATIVE beliefs: accelerations as functions
 ;;;;                of the state, not of time);
 ;;;;   :INITIAL     alist state term -> its value at the start of the state;
+;;;;   :EQUATIONS   the model's equations, each (LHS RHS) with the solved quantities put in:
+;;;;                the check evaluates them along its integration (is the solve right?);
 ;;;;   :CONDITIONS  one plist per termination condition: :EVENT and :IMPACT (what the
 ;;;;                component names it), and either :GAP G :MARGINS (M...) for a contact's
 ;;;;                reaching (G the gap, each M >= 0 within the contact's extent) or
@@ -53,9 +55,30 @@ and the state term of its arc length along a curved contact it moves on, if any.
                                                (eq body (first (contact-bodies run (second term))))))
                                         (solved-model-state solved)))))
 
+(defun check-equations (run solved)
+  "The model's equations as the solve took them (see SOLVE-MODEL), each as (LHS RHS)
+with every quantity the solve determined replaced by its value (a state term's rate by
+the rate the integration uses): over the state terms, TAU and the parameters, LHS = RHS
+wherever the solution is right."
+  (let ((values (append
+                 ;; the rates as the integration takes them (simplified), then every value
+                 (loop for (state-term . rate-term) in (model-derivatives (run-model run))
+                       for rate = (cdr (assoc state-term (solved-model-rates solved) :test #'equal))
+                       when (and rate (quantity-term-p rate-term))
+                         collect (cons rate-term rate))
+                 (solved-model-values solved))))
+    (loop for equation in (without-idle-path-terms
+                           (mapcar (lambda (e) (with-initial-positions run e))
+                                   (ames.engine:model-equations (run-model run)))
+                           (solved-model-state solved))
+          when (eq (first equation) '=)
+            collect (list (substitute-expressions values (relation-lhs equation))
+                          (substitute-expressions values (relation-rhs equation))))))
+
 (defun check-model (run solved)
   "The plist the self-check reads of the current state's model (see the file header)."
   (list :rates (copy-list (solved-model-rates solved))
+        :equations (check-equations run solved)
         :initial (copy-list (solved-model-initial solved))
         :conditions (mapcar (lambda (condition) (check-condition run solved condition))
                             (ames.engine:model-termination-conditions (run-model run)))
