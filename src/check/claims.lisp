@@ -1,18 +1,21 @@
 ;;;; src/check/claims.lisp -- one state's claims checked numerically.
 ;;;;
-;;;; CHECK-STATE takes a state, the run's parameter values, and returns how its claims
-;;;; fare: its equations of motion (the rates the knowledge base's model gives, recorded
+;;;; CHECK-STATE (self-check.lisp) takes a state and the run's parameter values, and
+;;;; returns how its claims fare: its equations of motion (the rates the knowledge base's model gives, recorded
 ;;;; as :CHECK-MODEL in the state's analysis) are integrated from the state's start by
 ;;;; INTEGRATE-RK4 on a fine grid up to the claimed end (or a horizon, for a state that
 ;;;; lasts forever), and
-;;;;   - the closed-form positions and velocities in TAU are compared with the integration
-;;;;     at several times, the final positions and velocities at the end (relative 1e-8,
-;;;;     with an absolute floor near zero: 1e-8 of the largest such value in the state);
+;;;;   - the closed-form positions and velocities (in TAU, or over the arc length along a
+;;;;     curve) are compared with the integration at several times, the final positions
+;;;;     and velocities at the end (relative 1e-8, with an absolute floor near zero: 1e-11
+;;;;     of the largest such value in the state);
 ;;;;   - every termination condition's event function is evaluated on the grid: none may
 ;;;;     fire before the claimed end, and one that names the claimed end event must fire
 ;;;;     at the claimed time;
-;;;;   - the numbers the report prints beside the state's start, duration and final
-;;;;     values are compared with their formulas' values (relative 1e-9).
+;;;;   - the model's equations, with the solved quantities put in, are evaluated at four
+;;;;     points of the integration (relative 1e-8 of the size of their parts);
+;;;;   - (self-check.lisp) the numbers the report prints beside the state's start, duration
+;;;;     and final values are compared with their formulas' values (relative 1e-9).
 ;;;; Nothing here reads the closed-form solution to compute what it compares with.
 
 (in-package #:ames.check)
