@@ -254,8 +254,11 @@ yet: a list of (SCENARIO-FILE-NAME STATE-INDEX CLAIM-PREFIX). Listed, never hidd
 no claim the self-check can test is wrong, but the known failures listed."
   (with-fixture simulator-bridge ()
     (dolist (file (scenario-files))
-      (dolist (history (handler-case (ames:run-file file :numeric t :bridge bridge)
-                         (ames:ames-error () '())))
+      ;; only the scenarios with (:value N) defaults: the others have nothing to check with
+      (dolist (history (loop for scenario in (ames:read-scenario-file file)
+                             when (ames:scenario-parameter-values scenario)
+                               append (handler-case (list (ames:run-scenario scenario :numeric t :bridge bridge))
+                                        (ames:ames-error () '()))))
         (let ((check (self-check-of history)))
           ;; every state of the path is accounted for: checked, failed, or not checked and why
           (when (and check (not (getf check :skipped)))
