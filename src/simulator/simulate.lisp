@@ -289,9 +289,7 @@ after the durations of the states printed before it), else CLOCK, the numbers of
 durations before it summed (after a state whose end has no closed form)."
   (let ((start (state-start state)))
     (cond ((realp start) start)
-          ((and (consp start) (closed-form-time-p start))
-           (or (numeric-or-nil bridge start values) clock))
-          ((and start (symbolp start) (not (keywordp start)))
+          ((and start (not (keywordp start)) (closed-form-time-p start))
            (or (numeric-or-nil bridge start values) clock))
           (t clock))))
 
