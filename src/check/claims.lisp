@@ -15,7 +15,7 @@
 ;;;;   - the model's equations, with the solved quantities put in, are evaluated at four
 ;;;;     points of the integration (relative 1e-8 of the size of their parts);
 ;;;;   - (self-check.lisp) the numbers the report prints beside the state's start, duration
-;;;;     and final values are compared with their formulas' values (relative 1e-9).
+;;;;     and final values are compared with their formulas' values (relative 1e-8).
 ;;;; Nothing here reads the closed-form solution to compute what it compares with.
 
 (in-package #:ames.check)

@@ -24,7 +24,7 @@
   "When true (the default), runs under parameter values are self-checked (--no-check
 makes it NIL).")
 
-(defparameter *number-tolerance* 1d-9
+(defparameter *number-tolerance* 1d-8
   "How far a printed number may be from its formula's value, relative.")
 
 (defun duration-number (state values)
