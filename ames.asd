@@ -2,7 +2,7 @@
 ;;;;
 ;;;; One module, one folder and one package per layer; dependencies point down only:
 ;;;;   base  <-  maxima-bridge, tms  <-  geometry  <-  engine  <-  kb
-;;;;   geometry, maxima-bridge  <-  scenario;   kb, scenario  <-  simulator  <-  report
+;;;;   geometry, maxima-bridge  <-  scenario;   kb, scenario  <-  simulator  <-  report, check
 ;;;;   <-  interface (package AMES: the REPL API and bin/ames)
 ;;;; Only Debian's CL packages are used (cl-alexandria, cl-fiveam, cl-ppcre, cl-yason).
 
@@ -130,6 +130,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "line")
                  (:file "broad-phase")
                  (:file "termination")
+                 (:file "check-model")
                  (:file "path")
                  (:file "numeric")
                  (:file "earliest")
@@ -138,6 +139,14 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "simulate")
                  (:file "branching")
                  (:file "queries")))
+   (:module "check" :pathname "src/check/" :serial t
+    :depends-on ("simulator")
+    :components ((:file "package")
+                 (:file "evaluate")
+                 (:file "integrate")
+                 (:file "claims")
+                 (:file "events")
+                 (:file "self-check")))
    (:module "report" :pathname "src/report/" :serial t
     :depends-on ("simulator")
     :components ((:file "package")
@@ -159,7 +168,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "html")
                  (:file "output")))
    (:module "interface" :pathname "src/interface/" :serial t
-    :depends-on ("report")
+    :depends-on ("report" "check")
     :components ((:file "package")
                  (:file "runs")
                  (:file "cli")
@@ -220,6 +229,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "reliability-crash")
                (:file "reliability-fuzz")
                (:file "scale")
+               (:file "self-check")
                (:file "runner"))
   :perform (test-op (o c)
              (declare (ignore o c))

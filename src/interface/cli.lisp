@@ -1,4 +1,4 @@
-;;;; src/interface/cli.lisp -- the command line: bin/ames run|explain FILE... [--format F] [--svg FILE] [--numeric] [--set p=v ...] [--time-limit S] [--maxima-timeout S] [--verbose]
+;;;; src/interface/cli.lisp -- the command line: bin/ames run|explain FILE... [--format F] [--svg FILE] [--numeric] [--set p=v ...] [--time-limit S] [--maxima-timeout S] [--verbose] [--no-check]
 ;;;;
 ;;;; Exit codes, so that a script can tell a finished run from one that stopped:
 ;;;;   0  every scenario ran to its end (a run that branched ran every branch to its end);
@@ -7,7 +7,11 @@
 ;;;;   2  a usage error (nothing is run);
 ;;;;   3  every scenario was valid, but a run (or a branch of it) ended ambiguous or
 ;;;;      undecided: the assumptions (and the values, if any) did not decide what comes next.
-;;;; When a run has both an error and an undecided scenario, the status is 1.
+;;;;   5  a self-check failed: under parameter values a claim AMES was about to print (a
+;;;;      closed form, a state's end, a number beside its formula) disagrees with AMES's
+;;;;      independent numeric check (see src/check/); the report names the claim. A defect.
+;;;; When a run has both an error and an undecided scenario, the status is 1; 1 wins over
+;;;; 5, and 5 over 3.
 ;;;;   141  the reader of the standard output went away (bin/ames run x | head).
 
 (in-package #:ames)
@@ -17,6 +21,8 @@
 (defconstant +exit-usage+ 2 "Exit status: the command line is malformed.")
 (defconstant +exit-undecided+ 3
   "Exit status: a run ended ambiguous or undecided (and no scenario had an error).")
+(defconstant +exit-check-failed+ 5
+  "Exit status: a self-check found a wrong claim (and no scenario had an error).")
 
 (define-condition usage-error (ames-error) ()
   (:documentation "The command line is malformed. DATUM is the offending argument.")
@@ -44,13 +50,16 @@
                   reported. Values that break a declared assumption are an error.
   --time-limit S  the wall time one scenario may take, in seconds (default 300)
   --maxima-timeout S  the time one Maxima request may take, in seconds (default 20)
+  --no-check      skip the self-check (under values, every state's closed form, end and
+                  printed numbers are checked numerically before printing; the report
+                  says which states were)
   --verbose       print error messages in full (long ones are otherwise cut short)
   --jobs N        run the files in N processes at once (each with its own Maxima);
                   reports in the files' order, the exit code the worst of them
   explain         why each state's contacts and modes hold, where its equations
                   come from, and why it ends when it does (or only state N)
 Exit codes: 0 complete, 1 a scenario error, 2 usage, 3 a run (or a branch) that ended
-ambiguous or undecided (1 wins when both happen)."
+ambiguous or undecided, 5 a self-check failed (1 wins over 5, 5 over 3)."
   "The text printed for `ames help` and after a usage error.")
 
 (defun parse-decimal (text)
@@ -103,7 +112,7 @@ signal USAGE-ERROR naming TEXT when it is not one."
 limits are NIL when not given. Signals USAGE-ERROR on anything malformed."
   (let ((command (first arguments)) (files '()) (format :text) (settings '()) (svg nil)
         (state nil) (numeric nil) (time-limit nil) (maxima-timeout nil) (verbose nil)
-        (standalone nil))
+        (standalone nil) (no-check nil))
     (cond ((null command) (error 'usage-error :detail "no command given"))
           ((member command '("help" "--help" "-h") :test #'string=)
            (return-from parse-command-line (list :command :help)))
@@ -141,6 +150,7 @@ limits are NIL when not given. Signals USAGE-ERROR on anything malformed."
                       (setf maxima-timeout (parse-seconds argument (pop rest))))
                      ((string= argument "--verbose") (setf verbose t))
                      ((string= argument "--standalone") (setf standalone t))
+                     ((string= argument "--no-check") (setf no-check t))
                      ((eql 0 (search "--" argument))
                       (error 'usage-error :datum argument :detail "unknown option"))
                      (t (push argument files)))))
@@ -149,7 +159,7 @@ limits are NIL when not given. Signals USAGE-ERROR on anything malformed."
           :files (nreverse files) :format format
           :settings (nreverse settings) :svg svg :state state :numeric numeric
           :time-limit time-limit :maxima-timeout maxima-timeout :verbose verbose
-          :standalone standalone)))
+          :standalone standalone :no-check no-check)))
 
 (defun command-line-limits (options)
   "The LIMITS for the parsed command line OPTIONS: *LIMITS* with its time limit and
@@ -174,7 +184,8 @@ child processes (RUN-JOBS). When the standard output is a pipe whose reader went
   (let ((status
           (handler-case
               (multiple-value-bind (jobs arguments) (jobs-option arguments)
-                (let ((options (parse-command-line arguments)))
+                (let* ((options (parse-command-line arguments))
+                       (ames.check:*self-check* (not (getf options :no-check))))
                   (case (getf options :command)
                     (:help (write-string *usage*) (terpri) +exit-complete+)
                     (:explain (explain-files (getf options :files) :state (getf options :state)
@@ -251,9 +262,9 @@ on *ERROR-OUTPUT*, naming the file, the scenario and the line; the others still 
 Lisp error that is no AMES-ERROR, a defect of AMES, is reported as an INTERNAL-ERROR).
 Long messages are cut short unless VERBOSE. Returns the exit status: +EXIT-COMPLETE+
 (0) when every scenario ran to its end, +EXIT-SCENARIO-ERROR+ (1) when any had an
-error, else +EXIT-UNDECIDED+ (3) when any (or a branch of one) ended ambiguous or
-undecided."
-  (let ((error-seen nil) (undecided-seen nil)
+error, else +EXIT-CHECK-FAILED+ (5) when a self-check found a wrong claim, else
++EXIT-UNDECIDED+ (3) when any (or a branch of one) ended ambiguous or undecided."
+  (let ((error-seen nil) (undecided-seen nil) (check-failed nil)
         (*full-reports* (or verbose *full-reports*))
         (output (make-report-output format stream :svg svg :bridge bridge)))
     (flet ((report-error (condition)
@@ -269,6 +280,10 @@ undecided."
                                                       :numeric numeric :limits limits)))
                   (when (undecided-history-p history)
                     (setf undecided-seen t))
+                  (when (ames.check:self-check-failed-p history)
+                    (setf check-failed t)
+                    (format *error-output* "~&ames: ~A: the self-check found a wrong claim (a defect of AMES; see the report's SELF-CHECK FAILED lines)~%"
+                            (string-downcase (symbol-name (scenario-name scenario)))))
                   (report-history output history)
                   (finish-output stream))
               (ames-error (condition) (report-error condition))
@@ -283,6 +298,7 @@ undecided."
       (handler-case (finish-report output)
         (ames-error (condition) (report-error condition))))
     (cond (error-seen +exit-scenario-error+)
+          (check-failed +exit-check-failed+)
           (undecided-seen +exit-undecided+)
           (t +exit-complete+))))
 

@@ -4,8 +4,9 @@
 ;;;; Maxima), at most N at a time. Their reports are printed in the order of the files on
 ;;;; the command line, each as soon as it and every file before it have finished; what a
 ;;;; child writes on its standard error goes to ours, in the same order. The exit code is
-;;;; the worst of the children's (0 success, 1 a scenario error; a child that could not be
-;;;; run or died counts as 1 at least). The unit of work is a file: scenarios meant to run
+;;;; the worst of the children's (see WORSE-STATUS: 0 success, 3 undecided, 5 a failed
+;;;; self-check, 1 a scenario error; a child that could not be run or died counts as 1 at
+;;;; least). The unit of work is a file: scenarios meant to run
 ;;;; side by side go in files of their own.
 ;;;;
 ;;;; The formats that concatenate (text, sexp, json, latex) can be split this way; the
@@ -47,15 +48,17 @@ the limits and --verbose."
             (seconds "--time-limit" :time-limit)
             (seconds "--maxima-timeout" :maxima-timeout)
             (when (getf options :verbose) (list "--verbose"))
+            (when (getf options :no-check) (list "--no-check"))
             (when (getf options :settings)
               (cons "--set" (loop for (name . value) in (getf options :settings)
                                   collect (format nil "~A=~A" name value)))))))
 
 (defun worse-status (a b)
   "The worse of the exit statuses A and B: a usage error (2), then a scenario error (1,
-or any status AMES does not use: a crashed child), then an undecided run (3), then 0."
+or any status AMES does not use: a crashed child), then a failed self-check (5), then an
+undecided run (3), then 0."
   (flet ((rank (status)
-           (case status (0 0) (3 1) (2 3) (t 2))))
+           (case status (0 0) (3 1) (5 2) (2 4) (t 3))))
     (if (> (rank b) (rank a)) b a)))
 
 (defun check-jobs-options (options)

@@ -117,6 +117,8 @@ BUDGET-EXCEEDED when the run goes over its budget, and whatever SIMULATE signals
                                        :key (lambda (entry) (getf entry :fact)) :test #'equal)
                          (push (list :state nil :fact fact)
                                (getf (history-notes history) :assumed))))
+                     ;; under values, the claims are checked before they are printed
+                     (ames.check:self-check-history history)
                      history)))
                :limits limits :subject (scenario-name scenario)))))
       (when out-of-time

@@ -198,6 +198,8 @@ its heading and fact, its states and how it ends; the selected branch marked."
        (timeline-html presenter view stream)
        (dolist (state (getf view :states)) (state-html presenter state stream))
        (format stream "<p><b>Outcome:</b> ~A.</p>~%" (html-escape (keyword-words (getf view :outcome))))
+       (dolist (line (getf view :self-check))
+         (format stream "<p>~A</p>~%" (html-escape line)))
        (dolist (assumed (getf view :assumed))
          (format stream "<p>Assumed from the given values ~A.</p>~%" (phrase-html presenter assumed)))
        (let ((ambiguity (getf view :ambiguity)))

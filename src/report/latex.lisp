@@ -227,6 +227,8 @@ fork within a branch is indented once more), and how it ends."
   (dolist (state (getf view :states))
     (print-state-latex presenter state stream))
   (format stream "~%\\paragraph{Outcome} ~A.~%" (latex-escape (keyword-words (getf view :outcome))))
+  (dolist (line (getf view :self-check))
+    (format stream "~A~%~%" (latex-escape line)))
   (dolist (assumed (getf view :assumed))
     (format stream "Assumed from the given values ~A.~%" (phrase-latex presenter assumed)))
   (let ((ambiguity (getf view :ambiguity)))

@@ -135,8 +135,11 @@ fact, whether it was selected, is the one DRAWN (a list of labels), or was not s
   "Every event of PATH marked where it happens, labelled with what and when."
   (let ((clock 0d0))
     (dolist (state path)
-      (let ((duration (state-duration-number state bindings)))
-        (setf clock (and clock duration (+ clock duration)))
+      (let ((duration (state-duration-number state bindings))
+            (start (number-at (state-start state) bindings)))
+        ;; the time of the state's end is its start's value plus its duration: after
+        ;; impacts that accumulate, not the durations before it summed
+        (setf clock (and (or start clock) duration (+ (or start clock) duration)))
         (loop for event in (state-events state)
               for k from 0
               for body = (find-if (lambda (b) (member b moving)) (rest event))

@@ -25,8 +25,11 @@ a state that lasts forever). Stops at the first state whose start is not known."
       (let ((duration (or (state-duration-number state bindings)
                           (and (eq (state-duration state) :forever) horizon))))
         (unless duration (return (nreverse samples)))
-        (push (list state clock duration) samples)
-        (incf clock duration)))))
+        ;; a state starts at its start formula's value where it has one (after impacts
+        ;; that accumulate, the durations before it summed fall short)
+        (let ((start (or (number-at (state-start state) bindings) clock)))
+          (push (list state start duration) samples)
+          (setf clock (+ start duration)))))))
 
 (defun state-series (state start duration bindings function)
   "Points (T VALUE) of FUNCTION (of tau, a number or NIL) over STATE, from START."

@@ -18,6 +18,9 @@
            (append
             (let ((assumed (getf (history-notes history) :assumed)))
               (when assumed (list :assumed-from-values (reverse assumed))))
+            ;; which claims the self-check verified under the values (see AMES.CHECK)
+            (let ((check (getf (history-notes history) :self-check)))
+              (when check (list :self-check check)))
             (when (typep stopped 'ambiguous-transition)
              (list :ambiguity (list :missing-fact (ambiguous-transition-missing-fact stopped)
                                     :candidates (ambiguous-transition-candidates stopped))))))))

@@ -156,7 +156,9 @@ level of the tree of branches), and how it ends."
       (format stream "  Missing fact: ~A~%" (phrase-string (getf ambiguity :missing-fact)))
       (format stream "  Candidates:~%~{    ~A~%~}" (mapcar #'phrase-string (getf ambiguity :candidates)))))
   (when (getf view :stopped)
-    (format stream "  ~A~%" (phrase-string (getf view :stopped)))))
+    (format stream "  ~A~%" (phrase-string (getf view :stopped))))
+  (dolist (line (getf view :self-check))
+    (format stream "~A~%" line)))
 
 (defun print-history-text (history stream &key (bridge (current-bridge)))
   "Print HISTORY on STREAM as a report for people: the parameters and fixed bodies once,

@@ -282,9 +282,21 @@ parameter's declaration to them."
                                 (getf (rest duration) :from-arc-length)
                                 (getf (rest duration) :to-arc-length) values)))))
 
+(defun numeric-start (bridge state values clock)
+  "STATE's start time as a number under VALUES: the value of its start formula when it
+has one (a state after an accumulation of impacts starts where the series sums, not
+after the durations of the states printed before it), else CLOCK, the numbers of the
+durations before it summed (after a state whose end has no closed form)."
+  (let ((start (state-start state)))
+    (cond ((realp start) start)
+          ((and start (not (keywordp start)) (closed-form-time-p start))
+           (or (numeric-or-nil bridge start values) clock))
+          (t clock))))
+
 (defun add-numeric-values (history bridge)
   "When HISTORY has parameter values, record in each state's notes (:NUMERIC plist) the
-numeric start, duration and final positions and velocities."
+numeric start, duration and final positions and velocities, each the value of the
+formula it is printed beside."
   (let ((values (history-parameter-values history))
         (clock 0))
     (when values
@@ -295,6 +307,7 @@ numeric start, duration and final positions and velocities."
                                  (mapcar (lambda (x) (numeric-or-nil bridge x values)) (second entry))))
                          alist)))
           (let ((duration (numeric-duration bridge state values)))
+            (setf clock (numeric-start bridge state values clock))
             (setf (getf (state-notes state) :numeric)
                   (list :start clock
                         :duration (or duration (state-duration state))
