@@ -136,6 +136,7 @@ frictionless translating rigid bodies evolve (after Leon Wong's 1994 MIT thesis)
                  (:file "impacts")
                  (:file "simulate")
                  (:file "branching")
+                 (:file "quantities")
                  (:file "queries")))
    (:module "report" :pathname "src/report/" :serial t
     :depends-on ("simulator")

@@ -66,26 +66,29 @@ event printed (:leaves cart block :endpoint) when the cart is the observer."
 
 (defun at-point (expression state at)
   "EXPRESSION of STATE evaluated AT :START, :END or a local time: TAU put to 0, the
-duration or the time; on a curve, the arc length put to its start or end."
-  (let ((path (getf (state-notes state) :path-coordinates))
-        (end-arc (getf (state-notes state) :end-arc-length)))
-    (cond ((and path (not (free-of-p +arc-length+ expression)))
-           (substitute-expressions
-            (list (cons +arc-length+
-                        (case at
-                          (:start (getf path :arc-length-from))
-                          (:end (or end-arc (unanswerable "the state on the curve never ends")))
-                          (t (unanswerable "on a curve a time inside the state has no closed form")))))
-            expression))
-          (t (substitute-expressions
-              (list (cons 'tau (case at
-                                 (:start 0)
-                                 (:end (let ((d (state-duration state)))
-                                         (if (or (keywordp d) (and (consp d) (keywordp (first d))))
-                                             (unanswerable "state ~D has no closed-form end" (state-index state))
-                                             d)))
-                                 (t at))))
-              expression)))))
+duration or the time; over a curve's or a line's arc length, the arc length put to its
+start or end (no time needed: the energy integral gives the speed there)."
+  (cond ((not (free-of-p +arc-length+ expression))
+         (substitute-expressions
+          (list (cons +arc-length+
+                      (case at
+                        (:start (or (arc-length-start state)
+                                    (unanswerable "where the motion of state ~D starts along its path is not known"
+                                                  (state-index state))))
+                        (:end (or (arc-length-end state)
+                                  (unanswerable "state ~D never ends on its path" (state-index state))))
+                        (t (unanswerable "along a path a time inside the state has no closed form")))))
+          expression))
+        ((free-of-p 'tau expression) expression)
+        (t (substitute-expressions
+            (list (cons 'tau (case at
+                               (:start 0)
+                               (:end (let ((d (state-duration state)))
+                                       (if (closed-form-p d)
+                                           d
+                                           (unanswerable "state ~D has no closed-form end" (state-index state)))))
+                               (t at))))
+            expression))))
 
 (defun vector-of (entry)
   "A per-body vector entry, the :ON-PATH form reduced to its point."
@@ -96,8 +99,8 @@ duration or the time; on a curve, the arc length put to its start or end."
 (defun quantity-expression (scenario state form)
   "The quantity FORM (see src/scenario/queries.lisp) in STATE, over its local time."
   (flet ((body (name) (or (find-scenario-body name scenario) (unanswerable "~A is no body" name)))
-         (place (b) (vector-of (body-data (state-positions state) b)))
-         (velocity (b) (vector-of (body-data (state-velocities state) b)))
+         (place (b) (vector-of (recorded state (state-positions state) b)))
+         (velocity (b) (vector-of (recorded state (state-velocities state) b)))
          (force (kind a b)
            (let ((entry (find-if (lambda (f)
                                    (and (eq (first f) kind)
@@ -112,7 +115,7 @@ duration or the time; on a curve, the arc length put to its start or end."
       (:y (second (place (second form))))
       (:position (place (second form)))
       (:velocity (velocity (second form)))
-      (:acceleration (vector-of (body-data (state-accelerations state) (second form))))
+      (:acceleration (vector-of (recorded state (state-accelerations state) (second form))))
       (:speed (let ((v (velocity (second form)))) `(sqrt (+ (expt ,(first v) 2) (expt ,(second v) 2)))))
       (:normal-force (force :normal (second form) (third form)))
       (:friction (force :friction (second form) (third form)))
@@ -120,29 +123,29 @@ duration or the time; on a curve, the arc length put to its start or end."
                                                        (string= (symbol-name (second f)) (symbol-name (second form)))))
                                       (state-forces state))))
                   (if entry (third entry) 0)))
-      (:kinetic-energy (let ((v (velocity (second form))) (m (scenario-body-mass (body (second form)))))
-                         `(* 1/2 ,m (+ (expt ,(first v) 2) (expt ,(second v) 2)))))
-      (:momentum (let ((v (velocity (second form))) (m (scenario-body-mass (body (second form)))))
-                   (list `(* ,m ,(first v)) `(* ,m ,(second v)))))
+      (:kinetic-energy (or (reported-kinetic-energy state (second form)
+                                                    (scenario-body-fixed-p (body (second form))))
+                           (unanswerable "state ~D reports no kinetic energy of ~(~A~)"
+                                         (state-index state) (second form))))
+      (:momentum (or (reported-momentum state (second form) (scenario-body-fixed-p (body (second form))))
+                     (unanswerable "state ~D reports no momentum of ~(~A~)" (state-index state) (second form))))
       (:energy (system-energy scenario state)))))
 
 (defun system-energy (scenario state)
-  "The kinetic energy of every free body plus its gravitational potential energy (the
-knowledge base's reported :ENERGY entries when the state has any other kind)."
-  (let ((reported (getf (state-notes state) :energy)))
-    (when (and (null reported) (or (scenario-forces scenario)))
-      (unanswerable "the energy of the external forces is not known"))
-    (cons '+ (loop for body in (scenario-moving-bodies scenario)
-                   for name = (scenario-body-name body)
-                   for v = (vector-of (body-data (state-velocities state) name))
-                   for y = (second (vector-of (body-data (state-positions state) name)))
-                   collect `(* 1/2 ,(scenario-body-mass body) (+ (expt ,(first v) 2) (expt ,(second v) 2)))
-                   when (scenario-gravity scenario)
-                     collect `(* ,(scenario-body-mass body) ,(scenario-gravity scenario) ,y)))))
+  "The whole system's energy in STATE: the sum of the terms the knowledge base reports,
+the report's total T + V (kinetic energy of the free bodies and the potential energy of
+the conservative sources; the work of an external force is not in it)."
+  (declare (ignore scenario))
+  (or (state-total-energy state)
+      (unanswerable "state ~D reports no energy" (state-index state))))
 
 (defun quantity-in (scenario state form)
   "FORM, a query's quantity (an expression over quantity forms), in STATE over TAU."
-  (cond ((and (consp form) (keywordp (first form))) (quantity-expression scenario state form))
+  (cond ((and (consp form) (keywordp (first form)))
+         (let ((value (quantity-expression scenario state form)))
+           (when (mentions-unknown-p value)
+             (unanswerable "state ~D's motion has no closed form" (state-index state)))
+           value))
         ((consp form) (let ((parts (mapcar (lambda (x) (quantity-in scenario state x)) (rest form))))
                         (when (some #'vector-p* parts)
                           (unanswerable "arithmetic on a vector quantity"))
@@ -353,4 +356,10 @@ the scenario's assumptions."
                                                    (and number (list :numeric number))))))
                                    (unanswerable (condition)
                                      (append (list name :unanswered :reason (ames-error-detail condition))
+                                             assume))
+                                   ;; a query that fails never ends the run: it is not answered
+                                   (ames-error (condition)
+                                     (append (list name :unanswered
+                                                   :reason (format nil "it could not be worked out: ~A"
+                                                                   (one-line condition)))
                                              assume))))))))
