@@ -58,7 +58,7 @@ event printed (:leaves cart block :endpoint) when the cart is the observer."
 
 (defun unanswerable (control &rest arguments)
   "Signal UNANSWERABLE with the reason CONTROL and ARGUMENTS."
-  (error 'unanswerable :detail (apply #'format nil control arguments)))
+  (error 'unanswerable :detail (let ((*print-pretty* nil)) (apply #'format nil control arguments))))
 
 (defun body-data (alist body)
   "The entry of BODY in a state's per-body ALIST, or NIL."
@@ -240,9 +240,15 @@ decided under the assumptions in BRIDGE; signals UNANSWERABLE when it is not dec
             (values (case verdict (:true :false) (:false :true) (t :unknown)) reason)))
     (t (let ((chosen (if during
                          (list (resolve-when bridge states during))
-                         (remove-if (lambda (s) (eql 0 (state-duration s))) states)))
+                         (remove-if (lambda (s) (or (eql 0 (state-duration s)) (state-branches s))) states)))
              (reasons '()))
-         (dolist (state chosen (values :true (format nil "~{~A~^; ~}" (reverse reasons))))
+         (when (null chosen)
+           (return-from prove-on-path
+             (values :unknown (format nil "no period of motion on this path to tell (the run ~(~A~))" outcome))))
+         (dolist (state chosen (if (or during (member outcome '(:complete :time-limit :state-limit)))
+                                   (values :true (format nil "~{~A~^; ~}" (reverse reasons)))
+                                   (values :unknown (format nil "it holds in the states found, but the run ~(~A~) before its end"
+                                                            outcome))))
            (multiple-value-bind (verdict reason) (relation-holds-over bridge scenario state condition)
              (push reason reasons)
              (unless (eq verdict :true) (return (values verdict reason)))))))))
@@ -313,9 +319,15 @@ run's paths (for parameter selection). Returns the answer's value; signals UNANS
     (:parameter
      (let* ((parameter (second question))
             (condition (getf (cddr question) :such-that))
-            (holding (loop for (path-facts path-outcome . path-states) in paths
-                           when (eq :true (prove-on-path bridge scenario path-states path-outcome condition nil))
-                             collect path-facts)))
+            (verdicts (loop for (path-facts path-outcome . path-states) in paths
+                            collect (cons (ames.maxima:with-assumptions (bridge path-facts)
+                                            (prove-on-path bridge scenario path-states path-outcome condition nil))
+                                          path-facts)))
+            (holding (loop for (verdict . path-facts) in verdicts when (eq verdict :true) collect path-facts))
+            (undecided (find :unknown verdicts :key #'first)))
+       (when undecided
+         (unanswerable "whether it holds is not decided on the branch assuming ~{~(~S~)~^ and ~}"
+                       (rest undecided)))
        (cond ((null holding) (list :never "on no branch of the run"))
              ((= (length holding) (length paths)) (list :always "on every branch of the run"))
              (t (cons :when (mapcar (lambda (path-facts)
@@ -348,7 +360,7 @@ the scenario's assumptions."
                        collect (let ((assume (and branched (not (eq (first question) :parameter))
                                                   (list :assume facts))))
                                  (handler-case
-                                     (ames.maxima:with-assumptions (bridge facts)
+                                     (ames.maxima:with-assumptions (bridge (and assume facts))
                                        (let ((value (answer-question bridge scenario question facts
                                                                      outcome states paths)))
                                          (append (list name value) assume
