@@ -1,0 +1,143 @@
+;;;; src/simulator/questions.lisp -- the questions of the language page's "Queries, more
+;;;; questions" (issue 26): when a body comes to rest for good, when a quantity first takes a
+;;;; value, and the distance a body travels (summed over a Zeno sequence of impacts).
+;;;;
+;;;; Each works on one path of the run (see HISTORY-PATHS) and signals UNANSWERABLE, saying
+;;;; why, where the history does not give the answer in closed form.
+
+(in-package #:ames.simulator)
+
+(defun motion-states (states)
+  "The STATES that are periods of motion (a fork only splits the run)."
+  (remove-if #'state-branches states))
+
+(defun zero-vector-p (bridge vector)
+  "True when both components of VECTOR are proven identically 0."
+  (and (consp vector) (not (keywordp (first vector)))
+       (every (lambda (x) (or (eql x 0) (eql 0 (ames.maxima:simplify bridge x :strategy :full)))) vector)))
+
+(defun at-rest-p (bridge scenario state body)
+  "True when BODY's velocity in STATE is identically zero."
+  (let ((velocity (ignore-errors (quantity-expression scenario state `(:velocity ,body)))))
+    (and velocity (zero-vector-p bridge velocity))))
+
+(defun rest-time (bridge scenario states outcome body)
+  "The time from which BODY stays at rest for good: the start of the first of the last
+STATES in which it is at rest, the last lasting forever (a Zeno sequence's accumulation
+point when impacts bring it to rest)."
+  (let* ((moving (motion-states states))
+         (last (first (last moving))))
+    (unless (and last (eq (state-duration last) :forever))
+      (unanswerable "the run ~(~A~) before ~(~A~) could be seen at rest for good" outcome body))
+    (let ((resting (loop for state in (reverse moving)
+                         while (at-rest-p bridge scenario state body)
+                         collect state)))
+      (unless resting (unanswerable "~(~A~) never comes to rest for good in this run" body))
+      (let ((start (state-start (first (last resting)))))
+        (unless (closed-form-p start) (unanswerable "the time it comes to rest has no closed form"))
+        (ames.maxima:simplify-real bridge start)))))
+
+(defun reaches-time (bridge scenario states quantity value)
+  "The first time QUANTITY takes VALUE on STATES: at a state's start, or at the earliest
+root of their difference inside a state; (:NEVER REASON) when a complete run never
+reaches it."
+  (dolist (state (motion-states states) (list :never "it is never reached in this run"))
+    (let* ((difference (quantity-in scenario state `(- ,quantity ,value)))
+           (start (state-start state))
+           (duration (state-duration state)))
+      (unless (closed-form-p start) (unanswerable "state ~D's start has no closed form" (state-index state)))
+      (unless (free-of-p +arc-length+ difference)
+        (unanswerable "along a path the time a quantity takes a value has no closed form"))
+      (let ((at-start (ames.maxima:decide bridge `(= ,(substitute-expressions '((tau . 0)) difference) 0))))
+        (when (eq at-start :true) (return (ames.maxima:simplify-real bridge start)))
+        (when (eq at-start :unknown)
+          (unanswerable "whether it holds at the start of state ~D is not decided" (state-index state))))
+      (unless (free-of-p 'tau difference)
+        (let ((root (ames.maxima:earliest-root bridge difference 'tau :after 0 :strictly t :candidates nil)))
+          (when (eq root :unknown)
+            (unanswerable "where it is reached in state ~D is not decided" (state-index state)))
+          (unless (eq root :none)
+            (case (if (eq duration :forever) :true
+                      (progn (unless (closed-form-p duration)
+                               (unanswerable "state ~D's end has no closed form" (state-index state)))
+                             (ames.maxima:decide bridge `(<= ,root ,duration))))
+              (:true (return (ames.maxima:simplify-real bridge `(+ ,start ,root))))
+              (:unknown (unanswerable "whether it is reached before state ~D ends is not decided"
+                                      (state-index state))))))))))
+
+(defun absolute-value (bridge x)
+  "|X| where the sign of X is decided, else signals UNANSWERABLE."
+  (let ((x (ames.maxima:simplify bridge x :strategy :full)))
+    (cond ((eql x 0) 0)
+          ((eq :true (ames.maxima:decide bridge `(>= ,x 0))) x)
+          ((eq :true (ames.maxima:decide bridge `(<= ,x 0))) `(- ,x))
+          (t (unanswerable "the sign of the displacement ~S is not decided" x)))))
+
+(defun turning-times (bridge component duration)
+  "The times in (0, DURATION) at which the velocity COMPONENT (over TAU) vanishes, in order."
+  (loop with times = '()
+        for after = 0 then (first times)
+        for root = (ames.maxima:earliest-root bridge component 'tau :after after :strictly t :candidates nil)
+        repeat 8
+        do (cond ((eq root :unknown) (unanswerable "where the body turns back is not decided"))
+                 ((eq root :none) (return (reverse times)))
+                 ((eq :true (ames.maxima:decide bridge `(< ,root ,duration))) (push root times))
+                 ((eq :true (ames.maxima:decide bridge `(>= ,root ,duration))) (return (reverse times)))
+                 (t (unanswerable "whether the body turns back before the state ends is not decided")))
+        finally (unanswerable "the body turns back too many times")))
+
+(defun state-distance (bridge scenario state body)
+  "The path length BODY travels in STATE (a straight-line motion; a state lasting
+forever only when the body is at rest in it)."
+  (let ((duration (state-duration state)))
+    (when (at-rest-p bridge scenario state body) (return-from state-distance 0))
+    (when (eq duration :forever) (unanswerable "~(~A~) moves forever in state ~D" body (state-index state)))
+    (unless (closed-form-p duration) (unanswerable "state ~D's end has no closed form" (state-index state)))
+    (let* ((position (quantity-expression scenario state `(:position ,body)))
+           (velocity (quantity-expression scenario state `(:velocity ,body)))
+           (acceleration (quantity-expression scenario state `(:acceleration ,body))))
+      (unless (and (free-of-p +arc-length+ position) (free-of-p +arc-length+ velocity))
+        (unanswerable "the distance along a curved path is not worked out"))
+      (unless (eql 0 (ames.maxima:simplify bridge `(- (* ,(first velocity) ,(second acceleration))
+                                                      (* ,(second velocity) ,(first acceleration)))
+                                           :strategy :full))
+        (unanswerable "the distance along a curved path is not worked out"))
+      (let* ((component (if (eql 0 (ames.maxima:simplify bridge (first velocity) :strategy :full))
+                            (second velocity)
+                            (first velocity)))
+             (times (append '(0) (if (free-of-p 'tau component) '() (turning-times bridge component duration))
+                            (list duration)))
+             (pieces (loop for (a b) on times while b
+                           collect (flet ((at (x time) (substitute-expressions (list (cons 'tau time)) x)))
+                                     (let ((dx (absolute-value bridge `(- ,(at (first position) b) ,(at (first position) a))))
+                                           (dy (absolute-value bridge `(- ,(at (second position) b) ,(at (second position) a)))))
+                                       (cond ((eql dx 0) dy)
+                                             ((eql dy 0) dx)
+                                             (t `(sqrt (+ (expt ,dx 2) (expt ,dy 2))))))))))
+        (if (rest pieces) (cons '+ pieces) (first pieces))))))
+
+(defun repeated-distance (bridge state distance)
+  "DISTANCE, travelled in STATE, with the repeats of a Zeno sequence added when STATE's
+impacts accumulate (its :ACCUMULATION note): under constant accelerations each cycle is
+the one before scaled by the factor F in time and F^2 in space, so the sum is
+DISTANCE / (1 - F^2)."
+  (let ((accumulation (getf (state-notes state) :accumulation)))
+    (cond ((null accumulation) distance)
+          ((not (every (lambda (entry) (free-of-p 'tau (second entry))) (state-accelerations state)))
+           (unanswerable "the repeated cycles of state ~D do not have constant accelerations" (state-index state)))
+          ((not (eq :true (ames.maxima:decide bridge `(= ,(getf accumulation :cycle) ,(state-duration state)))))
+           (unanswerable "the repeated cycle is not state ~D alone" (state-index state)))
+          (t `(/ ,distance (- 1 (expt ,(getf accumulation :factor) 2)))))))
+
+(defun distance-travelled (bridge scenario states outcome body during)
+  "The path length BODY travels during the state DURING names, or over the whole path
+(a Zeno sequence's cycles summed) when DURING is NIL."
+  (if during
+      (ames.maxima:simplify-real bridge (state-distance bridge scenario (resolve-when bridge states during) body))
+      (let ((moving (motion-states states)))
+        (unless (or (member outcome '(:complete)) (and moving (eq :forever (state-duration (first (last moving))))))
+          (unanswerable "the run ~(~A~) before its end" outcome))
+        (ames.maxima:simplify-real
+         bridge (cons '+ (mapcar (lambda (state)
+                                   (repeated-distance bridge state (state-distance bridge scenario state body)))
+                                 moving))))))
