@@ -182,3 +182,110 @@ prints for state N there, wherever the report has one in closed form (Maxima-che
                                    (is-same bridge (format nil "~A ~A" (pathname-name file) name)
                                             (second entry) expected))))))))))))
       (is (> compared 40) "only ~D energies compared" compared))))
+
+(test bouncing-ball-rest-time-distance-and-more
+  "The ball dropped from h bouncing with e = 1/2: it comes to rest for good at the Zeno
+sum sqrt(2h/g) (1 + 2 e/(1 - e)) = 3 sqrt(2h/g); it travels h (1 + e^2)/(1 - e^2) = 5h/3
+in all, h/2 in its first bounce; it lands with vertical velocity -sqrt(2 g h); state 1
+ends at 2 sqrt(2h/g) (asked both as (time (end 1)) and (value (time) :at (end 1))); it
+first falls to h/2 at sqrt(h/g) and never reaches 2h."
+  (with-fixture simulator-bridge ()
+    (let* ((scenario (ames:parse-scenario
+                      (with-queries "bouncing-ball"
+                        "(query rest (time (:rest ball)))"
+                        "(query dist (distance ball))"
+                        "(query first-bounce (distance ball :during (start 1)))"
+                        "(query vy (value (y (velocity ball)) :at (:collision ball floor)))"
+                        "(query vx (value (x (velocity ball)) :at (end 0)))"
+                        "(query end-1 (time (end 1)))"
+                        "(query clock (value (time) :at (end 1)))"
+                        "(query half (time (reaches (y ball) (/ h 2))))"
+                        "(query twice (time (reaches (y ball) (* 2 h))))")))
+           (history (ames:simulate scenario :bridge bridge)))
+      (flet ((x (e) (in-scenario-terms scenario e)))
+        (call-with-scenario-facts
+         bridge scenario
+         (lambda ()
+           (is-same bridge "rest" (answer-value history "REST")
+                    (x '(* (sqrt (/ (* 2 h) g)) (+ 1 (/ (* 2 1/2) (- 1 1/2))))))
+           (is-same bridge "distance" (answer-value history "DIST")
+                    (x '(/ (* h (+ 1 (expt 1/2 2))) (- 1 (expt 1/2 2)))))
+           (is-same bridge "first bounce" (answer-value history "FIRST-BOUNCE") (x '(* 2 (/ h 4))))
+           (is-same bridge "landing velocity" (answer-value history "VY") (x '(- (sqrt (* 2 g h)))))
+           (is-same bridge "horizontal velocity" (answer-value history "VX") 0)
+           (is-same bridge "end of state 1" (answer-value history "END-1") (x '(* 2 (sqrt (/ (* 2 h) g)))))
+           (is-same bridge "clock at the end of state 1" (answer-value history "CLOCK")
+                    (x '(* 2 (sqrt (/ (* 2 h) g)))))
+           (is-same bridge "half height" (answer-value history "HALF") (x '(sqrt (/ h g))))
+           (is (eq :never (first (answer-value history "TWICE"))))))))))
+
+(defun boundary-substitution (bridge scenario facts)
+  "For each equation among FACTS (a boundary branch's), the binding of the first of the
+parameters w and h it holds (linearly) that solves it: the values that put the branch
+on its boundary, so that answers are compared there."
+  (loop for fact in facts
+        when (eq (first fact) '=)
+          append (let ((unknown (find-if (lambda (name) (mentions-name-p name fact)) '("W" "H"))))
+                   (and unknown
+                        (let* ((symbol (in-scenario-terms scenario (intern unknown :ames.tests)))
+                               (solutions (ames.maxima:solve-equations bridge (list fact) (list symbol))))
+                          (is (= 1 (length solutions)) "~S solved for ~A: ~S" fact unknown solutions)
+                          (first solutions))))))
+
+(test every-query-kind-answers-per-branch
+  "The ball thrown toward a low wall branches on whether it clears the wall and whether
+it lands before reaching it. On every path each answer carries its path's facts, and
+(on a boundary path, compared on the boundary): it lands at sqrt(2h/g) (the wall's
+impulse is horizontal), asked as an event's time and as (value (time) :at EVENT); it falls
+to the wall's height at sqrt(2(h - w)/g); its horizontal velocity on landing is 0 after a
+(plastic) hit on the wall, else v0; its energy before landing is m g h after the hit, else
+m g h + m v0^2/2; it rests for good from the later of its landing and its reaching the
+wall (d/v0), and never when it clears the wall (it slides on); its curved path's length
+is not answered, saying why; a proof and a parameter selection are answered too."
+  (with-fixture simulator-bridge ()
+    (let* ((scenario (ames:parse-scenario
+                      (with-queries "ball-toward-low-wall"
+                        "(query lands (time (:collision ball floor)))"
+                        "(query clock (value (time) :at (:collision ball floor)))"
+                        "(query wall-height (time (reaches (y ball) w)))"
+                        "(query vx (value (x (velocity ball)) :at (:collision ball floor)))"
+                        "(query energy (value (energy) :at (:collision ball floor)))"
+                        "(query rest (time (:rest ball)))"
+                        "(query path (distance ball))"
+                        "(query falls (prove (<= (y ball) h)))"
+                        "(query clears (parameter v0 :such-that (not (:collision ball wall))))")))
+           (history (ames:simulate scenario :bridge bridge))
+           (paths (ames.simulator::history-paths history)))
+      (is (> (length paths) 1))
+      (flet ((x (e) (in-scenario-terms scenario e)))
+        (loop for (facts nil . states) in paths
+              for k from 0
+              for hit = (position-if (lambda (s) (ames.simulator::event-state (list s) '(:collision ball wall))) states)
+              for landed = (position-if (lambda (s) (ames.simulator::event-state (list s) '(:collision ball floor))) states)
+              for hit-first = (and hit (or (null landed) (< hit landed)))
+              do (ames.maxima:with-assumptions
+                     (bridge (append (ames:scenario-assumption-relations scenario)
+                                     (remove '= facts :key #'first)))
+                   (let ((boundary (boundary-substitution bridge scenario facts)))
+                     (flet ((entry (name) (nth k (answers-named history name)))
+                            (same (what actual expected)
+                              (flet ((there (e) (ames.base:substitute-expressions boundary e)))
+                                (is-same bridge (format nil "~A on path ~D" what k)
+                                         (and actual (not (keywordp actual)) (there actual))
+                                         (there (x expected))))))
+                       (dolist (name '("LANDS" "CLOCK" "WALL-HEIGHT" "VX" "ENERGY" "REST" "PATH" "FALLS"))
+                         (is (equal facts (getf (cddr (entry name)) :assume)) "~A on path ~D" name k))
+                       (when landed
+                         (same "landing" (second (entry "LANDS")) '(sqrt (/ (* 2 h) g)))
+                         (same "clock" (second (entry "CLOCK")) '(sqrt (/ (* 2 h) g)))
+                         (same "vx" (second (entry "VX")) (if hit-first 0 'v0))
+                         (same "energy" (second (entry "ENERGY"))
+                               (if hit-first '(* m g h) '(+ (* m g h) (* 1/2 m (expt v0 2))))))
+                       (cond ((and hit landed) (same "rest" (second (entry "REST"))
+                                                     (if hit-first '(sqrt (/ (* 2 h) g)) '(/ d v0))))
+                             (t (is (eq :unanswered (second (entry "REST"))) "rest ~S" (entry "REST"))))
+                       (same "wall height" (second (entry "WALL-HEIGHT")) '(sqrt (/ (* 2 (- h w)) g)))
+                       (is (eq :unanswered (second (entry "PATH"))))
+                       (is (stringp (getf (cddr (entry "PATH")) :reason)))
+                       (is (member (first (second (entry "FALLS"))) '(:true :unknown)) "~S" (entry "FALLS")))))))
+      (is (= 1 (length (answers-named history "CLEARS")))))))
