@@ -289,3 +289,36 @@ is not answered, saying why; a proof and a parameter selection are answered too.
                        (is (stringp (getf (cddr (entry "PATH")) :reason)))
                        (is (member (first (second (entry "FALLS"))) '(:true :unknown)) "~S" (entry "FALLS")))))))
       (is (= 1 (length (answers-named history "CLEARS")))))))
+
+(test numbers-people-write
+  "(deg 17) is 17 pi/180 in a scenario's expressions and queries; a default may be a
+constant expression ((:value (deg 30)) is pi/6, (:value (/ 3 4)) stays exact); a default
+naming a parameter is refused. --set takes pi/4, 3*pi/4, -pi, 2pi, 30deg and 2.5deg, and
+refuses pi/x and 1/0."
+  (let* ((scenario (scenario-from-text
+                    "(scenario degrees \"Degrees.\"
+                       (parameters (a (> a 0) (< a (/ pi 2)) (:value (deg 30))) (b :positive (:value (/ 3 4)))
+                                   (g :positive (:value 10)))
+                       (gravity g)
+                       (body ground :fixed t :shape (half-plane (1 0) (0 0)))
+                       (body p :mass 1 :position (0 (+ 1 (sin (deg 17)))) :velocity ((cos a) (sin (deg 17))) :shape point)
+                       (simulate :states 1)
+                       (query q (value (+ (x p) (deg 45)) :at (start 0))))"))
+         (values (ames:scenario-parameter-values scenario))
+         (a (cdr (find "A" values :key (lambda (e) (symbol-name (car e))) :test #'string=)))
+         (b (cdr (find "B" values :key (lambda (e) (symbol-name (car e))) :test #'string=))))
+    (is (< (abs (- a (/ pi 6))) 1d-15))
+    (is (eql 3/4 b))
+    (let ((y (second (ames:scenario-body-position (ames:find-scenario-body 'p scenario)))))
+      (is (< (abs (- (expression-value y) (+ 1 (sin (/ (* 17 pi) 180))))) 1d-12) "~S" y)))
+  (signals ames:scenario-error
+    (scenario-from-text "(scenario bad \"Bad.\" (parameters (a :positive) (b :positive (:value (* 2 a))))
+                          (body p :mass 1 :position (0 0) :velocity (0 0) :shape point) (simulate :states 1))"))
+  (flet ((near (text expected) (let ((v (ames::parse-set-value text)))
+                                 (is (and v (< (abs (- v expected)) 1d-12)) "~A gave ~S" text v))))
+    (near "pi/4" (/ pi 4)) (near "3*pi/4" (* 3/4 pi)) (near "-pi" (- pi)) (near "2pi" (* 2 pi))
+    (near "30deg" (/ pi 6)) (near "2.5deg" (/ (* 2.5d0 pi) 180)))
+  (is (eql 1/4 (ames::parse-set-value "1/4")))
+  (is (null (ames::parse-set-value "pi/x")))
+  (is (null (ames::parse-set-value "1/0")))
+  (is (equal (cons "a" 1/2) (ames::parse-setting "a=0.5"))))

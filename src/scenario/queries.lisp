@@ -62,6 +62,7 @@ UNDECLARED-SYMBOL-ERROR naming X when nothing of that name is declared."
                  (mapcar (lambda (name) (query-name-of validation name "body or rope")) (rest x)))))
         ((atom x) (canonical-atom validation x))
         ((not (proper-list-p x)) (query-reject validation x "~A is not a proper list" (show x)))
+        ((named-p (car x) "DEG") (degrees-expression validation x (lambda (y) (checked-quantity validation y))))
         (t (let ((operator (algebra-operator-named (car x))))
              (unless (and operator (arithmetic-operator-p operator))
                (query-reject validation x "~A is neither a quantity nor an arithmetic operator"
