@@ -137,6 +137,7 @@ frictionless translating rigid bodies evolve (after Leon Wong's 1994 MIT thesis)
                  (:file "simulate")
                  (:file "branching")
                  (:file "quantities")
+                 (:file "simplest-conditions")
                  (:file "queries")
                  (:file "questions")))
    (:module "report" :pathname "src/report/" :serial t

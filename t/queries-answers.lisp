@@ -322,3 +322,39 @@ refuses pi/x and 1/0."
   (is (null (ames::parse-set-value "pi/x")))
   (is (null (ames::parse-set-value "1/0")))
   (is (equal (cons "a" 1/2) (ames::parse-setting "a=0.5"))))
+
+(defun sole-relation (condition)
+  "The one relation of CONDITION, a disjunction of one conjunction of one relation, or NIL."
+  (and (consp condition) (= 1 (length condition)) (= 1 (length (first condition)))
+       (first (first condition))))
+
+(test conditions-in-their-simplest-form
+  "The angle of repose as three branches' facts (mu cos a - sin a < 0 with a boundary
+fact that cannot hold there, > 0, = 0) is one condition, mu - tan a >= 0, i.e. tan a <= mu;
+a conjunct the assumptions imply is dropped; a positive factor is cancelled; <, = and >
+together leave nothing to ask; a condition the assumptions refute is never."
+  (with-fixture simulator-bridge ()
+    (let ((assumptions '((> a 0) (< a (/ pi 2)) (> mu 0) (> g 0))))
+      (ames.maxima:with-assumptions (bridge assumptions)
+        (flet ((simplest (disjunction) (ames.simulator::simplest-condition bridge disjunction assumptions))
+               (is-relation (what relation operator expected)
+                 (is (and relation (eq operator (first relation))
+                          (ames.maxima:equivalent-p bridge `(- ,(second relation) ,(third relation)) expected))
+                     "~A: ~S" what relation)))
+          (is-relation "angle of repose"
+                       (sole-relation
+                        (simplest '(((< (- (* mu (cos a)) (sin a)) 0)
+                                     (= (/ (* (- (sin a) (* mu (cos a))) (sqrt (* 1000 g (sin a))))
+                                           (* (tan a) (sqrt (- (sin a) (* mu (cos a))))))
+                                        0))
+                                    ((> (- (* mu (cos a)) (sin a)) 0))
+                                    ((= (- (* mu (cos a)) (sin a)) 0)))))
+                       '>= '(- mu (tan a)))
+          (is-relation "implied conjunct dropped"
+                       (sole-relation (simplest '(((> g 0) (< (* 2 mu (cos a)) (* 2 (sin a)))))))
+                       '< '(- mu (tan a)))
+          (is-relation "positive factor cancelled"
+                       (sole-relation (simplest '(((> (* g (- mu 1)) 0)))))
+                       '> '(- mu 1))
+          (is (eq :true (simplest '(((< (- mu 1) 0)) ((= mu 1)) ((> (- 1 mu) -0))  ((> mu 1))))))
+          (is (eq :false (simplest '(((< mu 0)) ((< (+ g 1) 0)))))))))))

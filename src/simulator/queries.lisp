@@ -340,10 +340,14 @@ run's paths (for parameter selection). Returns the answer's value; signals UNANS
                        (rest undecided)))
        (cond ((null holding) (list :never "on no branch of the run"))
              ((= (length holding) (length paths)) (list :always "on every branch of the run"))
-             (t (cons :when (mapcar (lambda (path-facts)
-                                      (mapcar (lambda (fact) (parameter-conditions bridge parameter fact))
-                                              path-facts))
-                                    holding))))))))
+             (t (let ((plain (simplest-condition bridge holding (scenario-assumption-relations scenario))))
+                  (case plain
+                    (:true (list :always "under the assumptions"))
+                    (:false (list :never "under the assumptions"))
+                    (t (cons :when (mapcar (lambda (conjunction)
+                                             (mapcar (lambda (fact) (parameter-conditions bridge parameter fact))
+                                                     conjunction))
+                                           plain)))))))))))
 
 (defun numeric-answer (bridge value values)
   "VALUE's number under the parameter VALUES, when it has one."
