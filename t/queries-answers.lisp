@@ -358,3 +358,54 @@ together leave nothing to ask; a condition the assumptions refute is never."
                        '> '(- mu 1))
           (is (eq :true (simplest '(((< (- mu 1) 0)) ((= mu 1)) ((> (- 1 mu) -0))  ((> mu 1))))))
           (is (eq :false (simplest '(((< mu 0)) ((< (+ g 1) 0)))))))))))
+
+(test extrema-need-no-time
+  "How far is the bumper compressed? The block's least x while pressing it is
+l0 - v0 sqrt(m/k) (energy: k c^2 = m v0^2). The spheres' least distance of centres over
+their fall is a + b, found over the arc length of their line (no time needed)."
+  (with-fixture simulator-bridge ()
+    (let* ((bumper (ames:parse-scenario
+                    (with-queries "block-hits-bumper" "(query least-x (minimum (x block) :during (start 1)))")))
+           (spheres (ames:parse-scenario
+                     (with-queries "spheres-under-gravitation"
+                       "(query gap (minimum (- (x second) (x first)) :during (start 0)))")))
+           (bumper-history (ames:simulate bumper :bridge bridge))
+           (spheres-history (ames:simulate spheres :bridge bridge)))
+      (call-with-scenario-facts
+       bridge bumper
+       (lambda ()
+         (is-same bridge "greatest compression" (answer-value bumper-history "LEAST-X")
+                  (in-scenario-terms bumper '(- l0 (* v0 (sqrt (/ m k))))))))
+      (call-with-scenario-facts
+       bridge spheres
+       (lambda ()
+         (is-same bridge "least distance" (answer-value spheres-history "GAP")
+                  (in-scenario-terms spheres '(+ a b))))))))
+
+(test an-equality-over-a-state-is-decided
+  "The block on a rough incline without a bound on mu forks on mu cos a - sin a: it stays
+at rest (speed = 0 throughout) exactly when mu > tan a, the sliding branch's speed being
+non-zero at its end."
+  (with-fixture simulator-bridge ()
+    (let* ((form (with-queries "block-sliding-down-rough-incline"
+                   "(query stays (parameter mu :such-that (= (speed block) 0)))"))
+           (form (mapcar (lambda (clause)
+                           (if (and (consp clause) (same-name-p* (first clause) "PARAMETERS"))
+                               (mapcar (lambda (spec) (if (and (consp spec) (same-name-p* (first spec) "MU"))
+                                                          (list (first spec) :positive)
+                                                          spec))
+                                       clause)
+                               clause))
+                         form))
+           (scenario (ames:parse-scenario form))
+           (history (ames:simulate scenario :bridge bridge))
+           (value (answer-value history "STAYS")))
+      (is (eq :when (first value)) "~S" value)
+      (call-with-scenario-facts
+       bridge scenario
+       (lambda ()
+         (let ((relation (sole-relation (rest value))))
+           (is (and relation (eq '> (first relation))
+                    (ames.maxima:equivalent-p bridge `(- ,(second relation) ,(third relation))
+                                              (in-scenario-terms scenario '(- mu (tan a)))))
+               "~S" value)))))))

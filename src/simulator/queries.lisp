@@ -216,6 +216,8 @@ decided under the assumptions in BRIDGE; signals UNANSWERABLE when it is not dec
       (return-from relation-holds-over
         (let ((verdict (ames.maxima:decide bridge (list (first relation) difference 0))))
           (values verdict "on the curve, decided for every arc length at once"))))
+    (when (and (eq (first relation) '=) (not (free-of-p 'tau difference)))
+      (return-from relation-holds-over (equality-over-state bridge state difference)))
     (flet ((at (time) (substitute-expressions (list (cons 'tau time)) difference)))
       (let ((start (ames.maxima:decide bridge (list (first relation) (at 0) 0))))
         (cond ((eq start :false) (values :false (format nil "it fails at the start of state ~D" (state-index state))))
@@ -259,29 +261,39 @@ decided under the assumptions in BRIDGE; signals UNANSWERABLE when it is not dec
              (unless (eq verdict :true) (return (values verdict reason)))))))))
 
 (defun extremum-in (bridge scenario states quantity during maximum)
-  "The largest (MAXIMUM) or smallest value of QUANTITY over the state DURING names."
+  "The largest (MAXIMUM) or smallest value of QUANTITY over the state DURING names: the
+best of its values at the state's ends and at every zero of its derivative between them,
+over time, or over the arc length for a state along a path (no time needed: a
+compression's greatest value from the energy integral)."
   (let* ((state (resolve-when bridge states during))
-         (q (quantity-in scenario state quantity))
-         (duration (state-duration state))
-         (slope (ames.geometry:differentiate q 'tau))
-         (points (list 0)))
+         (q (quantity-in scenario state quantity)))
     (when (vector-p* q) (unanswerable "the extremum of a vector"))
-    (unless (closed-form-p duration) (unanswerable "the state's end has no closed form"))
-    (push duration points)
-    (let ((critical (ames.maxima:earliest-root bridge slope 'tau :after 0 :strictly t :candidates nil)))
-      (cond ((eq critical :unknown) (unanswerable "where its derivative vanishes is not decided"))
-            ((not (eq critical :none))
-             (when (eq (ames.maxima:decide bridge `(< ,critical ,duration)) :true) (push critical points)))))
-    (let* ((values (mapcar (lambda (p) (ames.maxima:simplify bridge (substitute-expressions (list (cons 'tau p)) q)
-                                                             :strategy :full))
-                           points))
-           (best (find-if (lambda (v)
-                            (every (lambda (w) (or (eq v w)
-                                                   (eq :true (ames.maxima:decide bridge (list (if maximum '>= '<=) v w)))))
-                                   values))
-                          values)))
-      (or best (unanswerable "which of ~{~A~^, ~} is the ~:[smallest~;largest~] is not decided"
-                             values maximum)))))
+    (multiple-value-bind (variable from to)
+        (if (free-of-p +arc-length+ q)
+            (let ((duration (state-duration state)))
+              (unless (closed-form-p duration) (unanswerable "the state's end has no closed form"))
+              (values 'tau 0 duration))
+            (let ((from (arc-length-start state)) (to (arc-length-end state)))
+              (unless (and from to) (unanswerable "the state's ends along its path are not known"))
+              (if (eq :true (ames.maxima:decide bridge `(<= ,from ,to)))
+                  (values +arc-length+ from to)
+                  (if (eq :true (ames.maxima:decide bridge `(>= ,from ,to)))
+                      (values +arc-length+ to from)
+                      (unanswerable "which way the state runs along its path is not decided")))))
+      (let* ((points (append (list from to) (critical-points bridge (ames.geometry:differentiate
+                                                                           ;; sqrt is increasing: its argument's extrema
+                                                                           (if (and (consp q) (eq (first q) 'sqrt)) (second q) q)
+                                                                           variable)
+                                                                          variable from to)))
+             (values (mapcar (lambda (p) (ames.maxima:simplify-real bridge (substitute-expressions (list (cons variable p)) q)))
+                             points))
+             (best (find-if (lambda (v)
+                              (every (lambda (w) (or (eq v w)
+                                                     (eq :true (ames.maxima:decide bridge (list (if maximum '>= '<=) v w)))))
+                                     values))
+                            values)))
+        (or best (unanswerable "which of ~{~A~^, ~} is the ~:[smallest~;largest~] is not decided"
+                               values maximum))))))
 
 (defun parameter-conditions (bridge parameter fact)
   "The inequality FACT as a condition on PARAMETER alone, (OP PARAMETER VALUE), when it

@@ -53,7 +53,7 @@ reaches it."
         (when (eq at-start :unknown)
           (unanswerable "whether it holds at the start of state ~D is not decided" (state-index state))))
       (unless (free-of-p 'tau difference)
-        (let ((root (ames.maxima:earliest-root bridge difference 'tau :after 0 :strictly t :candidates nil)))
+        (let ((root (query-root bridge difference 'tau 0)))
           (when (eq root :unknown)
             (unanswerable "where it is reached in state ~D is not decided" (state-index state)))
           (unless (eq root :none)
@@ -77,7 +77,7 @@ reaches it."
   "The times in (0, DURATION) at which the velocity COMPONENT (over TAU) vanishes, in order."
   (loop with times = '()
         for after = 0 then (first times)
-        for root = (ames.maxima:earliest-root bridge component 'tau :after after :strictly t :candidates nil)
+        for root = (query-root bridge component 'tau after)
         repeat 8
         do (cond ((eq root :unknown) (unanswerable "where the body turns back is not decided"))
                  ((eq root :none) (return (reverse times)))
@@ -141,3 +141,42 @@ DISTANCE / (1 - F^2)."
          bridge (cons '+ (mapcar (lambda (state)
                                    (repeated-distance bridge state (state-distance bridge scenario state body)))
                                  moving))))))
+
+(defun equality-over-state (bridge state difference)
+  "Whether DIFFERENCE (over TAU) is 0 throughout STATE: :TRUE when it is identically 0;
+:FALSE when it is proven non-zero at a point of the state (its end, or tau = 1 in a
+state that lasts forever): a function of the motion that is not zero at one point is
+not zero throughout; else :UNKNOWN. Returns the reason too."
+  (if (ignore-errors (ames.maxima:equivalent-p bridge difference 0))
+      (values :true (format nil "it holds identically in state ~D" (state-index state)))
+      (let* ((duration (state-duration state))
+             (point (cond ((eq duration :forever) 1)
+                          ((closed-form-p duration) duration))))
+        (if (and point
+                 (eq :true (ignore-errors
+                            (ames.maxima:decide bridge `(/= ,(substitute-expressions (list (cons 'tau point)) difference) 0)))))
+            (values :false (format nil "it does not hold at tau = ~A in state ~D" point (state-index state)))
+            (values :unknown (format nil "whether it holds throughout state ~D is not decided" (state-index state)))))))
+
+(defun critical-points (bridge slope variable from to)
+  "The zeros of SLOPE (over VARIABLE) strictly between FROM and TO, in order."
+  (loop with points = '()
+        with slope = (handler-case (ames.maxima:simplify bridge slope :strategy :full)
+                       (ames-error () slope))
+        for after = from then (first points)
+        for root = (query-root bridge slope variable after)
+        repeat 8
+        do (cond ((eq root :unknown) (unanswerable "where its derivative vanishes is not decided"))
+                 ((eq root :none) (return (reverse points)))
+                 ((eq :true (ames.maxima:decide bridge `(< ,root ,to))) (push root points))
+                 ((eq :true (ames.maxima:decide bridge `(>= ,root ,to))) (return (reverse points)))
+                 (t (unanswerable "whether its derivative vanishes before the state ends is not decided")))
+        finally (unanswerable "its derivative vanishes too many times in the state")))
+
+(defun query-root (bridge g variable after)
+  "The earliest root of G in VARIABLE strictly after AFTER, :NONE or :UNKNOWN: through
+AMES.MAXIMA:EARLIEST-TRIGONOMETRIC-ROOT for a sinusoid in time, else EARLIEST-ROOT."
+  (if (and (eq variable 'tau) (trigonometric-in-time-p g))
+      (let ((root (ames.maxima:earliest-trigonometric-root bridge g 'tau :after after :strictly t)))
+        root)
+      (values (ames.maxima:earliest-root bridge g variable :after after :strictly t :candidates nil))))
