@@ -260,41 +260,6 @@ decided under the assumptions in BRIDGE; signals UNANSWERABLE when it is not dec
              (push reason reasons)
              (unless (eq verdict :true) (return (values verdict reason)))))))))
 
-(defun extremum-in (bridge scenario states quantity during maximum)
-  "The largest (MAXIMUM) or smallest value of QUANTITY over the state DURING names: the
-best of its values at the state's ends and at every zero of its derivative between them,
-over time, or over the arc length for a state along a path (no time needed: a
-compression's greatest value from the energy integral)."
-  (let* ((state (resolve-when bridge states during))
-         (q (quantity-in scenario state quantity)))
-    (when (vector-p* q) (unanswerable "the extremum of a vector"))
-    (multiple-value-bind (variable from to)
-        (if (free-of-p +arc-length+ q)
-            (let ((duration (state-duration state)))
-              (unless (closed-form-p duration) (unanswerable "the state's end has no closed form"))
-              (values 'tau 0 duration))
-            (let ((from (arc-length-start state)) (to (arc-length-end state)))
-              (unless (and from to) (unanswerable "the state's ends along its path are not known"))
-              (if (eq :true (ames.maxima:decide bridge `(<= ,from ,to)))
-                  (values +arc-length+ from to)
-                  (if (eq :true (ames.maxima:decide bridge `(>= ,from ,to)))
-                      (values +arc-length+ to from)
-                      (unanswerable "which way the state runs along its path is not decided")))))
-      (let* ((points (append (list from to) (critical-points bridge (ames.geometry:differentiate
-                                                                           ;; sqrt is increasing: its argument's extrema
-                                                                           (if (and (consp q) (eq (first q) 'sqrt)) (second q) q)
-                                                                           variable)
-                                                                          variable from to)))
-             (values (mapcar (lambda (p) (ames.maxima:simplify-real bridge (substitute-expressions (list (cons variable p)) q)))
-                             points))
-             (best (find-if (lambda (v)
-                              (every (lambda (w) (or (eq v w)
-                                                     (eq :true (ames.maxima:decide bridge (list (if maximum '>= '<=) v w)))))
-                                     values))
-                            values)))
-        (or best (unanswerable "which of ~{~A~^, ~} is the ~:[smallest~;largest~] is not decided"
-                               values maximum))))))
-
 (defun parameter-conditions (bridge parameter fact)
   "The inequality FACT as a condition on PARAMETER alone, (OP PARAMETER VALUE), when it
 is linear in it with a coefficient of decided sign; else FACT."
@@ -389,6 +354,9 @@ the scenario's assumptions."
                                      (ames.maxima:with-assumptions (bridge (and assume facts))
                                        (let ((value (answer-question bridge scenario question facts
                                                                      outcome states paths)))
+                                         (when (and (not (member (first question) '(:prove :parameter)))
+                                                    (not (and (free-of-p 'tau value) (free-of-p +arc-length+ value))))
+                                           (unanswerable "the answer still depends on a state's own time or arc length"))
                                          (append (list name value) assume
                                                  (let ((number (numeric-answer bridge value values)))
                                                    (and number (list :numeric number))))))

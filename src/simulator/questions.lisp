@@ -1,6 +1,7 @@
 ;;;; src/simulator/questions.lisp -- the questions of the language page's "Queries, more
 ;;;; questions" (issue 26): when a body comes to rest for good, when a quantity first takes a
-;;;; value, and the distance a body travels (summed over a Zeno sequence of impacts).
+;;;; value, the distance a body travels (summed over a Zeno sequence of impacts), and the
+;;;; extrema of a quantity over a state (over time, or over the arc length along a path).
 ;;;;
 ;;;; Each works on one path of the run (see HISTORY-PATHS) and signals UNANSWERABLE, saying
 ;;;; why, where the history does not give the answer in closed form.
@@ -157,6 +158,41 @@ not zero throughout; else :UNKNOWN. Returns the reason too."
                             (ames.maxima:decide bridge `(/= ,(substitute-expressions (list (cons 'tau point)) difference) 0)))))
             (values :false (format nil "it does not hold at tau = ~A in state ~D" point (state-index state)))
             (values :unknown (format nil "whether it holds throughout state ~D is not decided" (state-index state)))))))
+
+(defun extremum-in (bridge scenario states quantity during maximum)
+  "The largest (MAXIMUM) or smallest value of QUANTITY over the state DURING names: the
+best of its values at the state's ends and at every zero of its derivative between them,
+over time, or over the arc length for a state along a path (no time needed: a
+compression's greatest value from the energy integral)."
+  (let* ((state (resolve-when bridge states during))
+         (q (quantity-in scenario state quantity)))
+    (when (vector-p* q) (unanswerable "the extremum of a vector"))
+    (multiple-value-bind (variable from to)
+        (if (free-of-p +arc-length+ q)
+            (let ((duration (state-duration state)))
+              (unless (closed-form-p duration) (unanswerable "the state's end has no closed form"))
+              (values 'tau 0 duration))
+            (let ((from (arc-length-start state)) (to (arc-length-end state)))
+              (unless (and from to) (unanswerable "the state's ends along its path are not known"))
+              (if (eq :true (ames.maxima:decide bridge `(<= ,from ,to)))
+                  (values +arc-length+ from to)
+                  (if (eq :true (ames.maxima:decide bridge `(>= ,from ,to)))
+                      (values +arc-length+ to from)
+                      (unanswerable "which way the state runs along its path is not decided")))))
+      (let* ((points (append (list from to) (critical-points bridge (ames.geometry:differentiate
+                                                                           ;; sqrt is increasing: its argument's extrema
+                                                                           (if (and (consp q) (eq (first q) 'sqrt)) (second q) q)
+                                                                           variable)
+                                                                          variable from to)))
+             (values (mapcar (lambda (p) (ames.maxima:simplify-real bridge (substitute-expressions (list (cons variable p)) q)))
+                             points))
+             (best (find-if (lambda (v)
+                              (every (lambda (w) (or (eq v w)
+                                                     (eq :true (ames.maxima:decide bridge (list (if maximum '>= '<=) v w)))))
+                                     values))
+                            values)))
+        (or best (unanswerable "which of ~{~A~^, ~} is the ~:[smallest~;largest~] is not decided"
+                               values maximum))))))
 
 (defun critical-points (bridge slope variable from to)
   "The zeros of SLOPE (over VARIABLE) strictly between FROM and TO, in order."
