@@ -409,3 +409,50 @@ non-zero at its end."
                     (ames.maxima:equivalent-p bridge `(- ,(second relation) ,(third relation))
                                               (in-scenario-terms scenario '(- mu (tan a)))))
                "~S" value)))))))
+
+(defparameter *belt-text*
+  "(scenario box-on-conveyor-belt
+     \"A box set down at rest on a conveyor belt moving at constant speed v.\"
+     (parameters (m :positive (:value 1)) (g :positive (:value 981/100))
+                 (v :positive (:value 2)) (mu :positive (:value 1/2)))
+     (gravity g)
+     (body belt :driven t :velocity (v 0) :shape (half-plane (1 0) (0 0)))
+     (body box :mass m :position (0 0) :velocity (0 0) :shape (polygon (0 0) (1 0) (1 1) (0 1)))
+     (friction box belt :static mu)
+     (simulate :states 3)
+     (query catches-up (time (end 0)))
+     (query slip (value (- (x belt) (x box)) :at (end 0)))
+     (query speed (value (x (velocity box)) :at (start 1)))
+     (query energy (value (energy) :at (end 0))))"
+  "A box on a conveyor belt (a driven half-plane).")
+
+(test box-on-a-conveyor-belt
+  "A box set down at rest on a belt driven at v: kinetic friction mu m g accelerates it at
+mu g until it moves with the belt, at v/(mu g), having slipped v^2/(2 mu g) behind the belt;
+then it sticks and moves at v forever. The belt keeps its velocity; its drive balances the
+friction and the box's weight, (mu m g, m g); the system's energy is the box's m v^2/2 (the
+belt has no mass). A driven body with a :mass, or :fixed too, is refused."
+  (with-fixture simulator-bridge ()
+    (let* ((scenario (scenario-from-text *belt-text*))
+           (history (ames:simulate scenario :bridge bridge))
+           (states (ames::history-states history)))
+      (flet ((x (e) (in-scenario-terms scenario e)))
+        (call-with-scenario-facts
+         bridge scenario
+         (lambda ()
+           (is-same bridge "catches up" (answer-value history "CATCHES-UP") (x '(/ v (* mu g))))
+           (is-same bridge "slip" (answer-value history "SLIP") (x '(/ (expt v 2) (* 2 mu g))))
+           (is-same bridge "speed with the belt" (answer-value history "SPEED") (x 'v))
+           (is-same bridge "energy" (answer-value history "ENERGY") (x '(* 1/2 m (expt v 2))))
+           (is-same-vector bridge "the box's acceleration while it slips"
+                           (per-body (ames::state-accelerations (first states)) "BOX") (x '((* mu g) 0)))
+           (is-same-vector bridge "the belt's acceleration" (per-body (ames::state-accelerations (first states)) "BELT")
+                           '(0 0))
+           (let ((drive (find :drive (ames::state-forces-of (first states)) :key #'first)))
+             (is-same-vector bridge "the drive's reaction" (third drive) (x '((* mu m g) (* m g)))))
+           (is (eq :forever (ames::state-duration (second states))))
+           (is-same-vector bridge "sticking" (per-body (ames::state-velocities (second states)) "BOX") (x '(v 0)))))))
+    (signals ames:scenario-error
+      (scenario-from-text (cl-ppcre:regex-replace "belt :driven t" *belt-text* "belt :driven t :mass 1")))
+    (signals ames:scenario-error
+      (scenario-from-text (cl-ppcre:regex-replace "belt :driven t" *belt-text* "belt :driven t :fixed t")))))

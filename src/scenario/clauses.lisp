@@ -23,7 +23,7 @@
            (driven (body-flag validation arguments :driven))
            (missing (remove-if (lambda (key) (assoc key arguments))
                                (cond (fixed '(:shape))
-                                     (driven '(:shape :position :velocity))
+                                     (driven '(:shape :velocity))
                                      (t '(:shape :mass :position :velocity))))))
       (when (and fixed driven)
         (reject validation 'scenario-syntax-error clause "a body is :fixed or :driven, not both"))

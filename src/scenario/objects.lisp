@@ -32,7 +32,8 @@
 ;;;;   its :velocity, if given, must be (0 0); its :position defaults to (0 0).
 ;;;;   A constant mass must be positive. Forces may act on fixed bodies (to no effect).
 ;;;; - A body with :driven t moves at its constant :velocity whatever acts on it (a
-;;;;   conveyor belt); it needs :position and :velocity, has no :mass, and is not :fixed.
+;;;;   conveyor belt); it needs :velocity (its :position defaults to (0 0)), has no :mass,
+;;;;   and is not :fixed.
 ;;;; - (arc ...) as a shape takes :solid :inside or :outside; the default is :inside,
 ;;;;   the side to the left of its counter-clockwise direction, as for SEGMENT and
 ;;;;   OUTLINE. An arc's :to must exceed its :from by at most 2 pi (checked when
