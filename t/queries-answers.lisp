@@ -241,7 +241,8 @@ to the wall's height at sqrt(2(h - w)/g); its horizontal velocity on landing is 
 (plastic) hit on the wall, else v0; its energy before landing is m g h after the hit, else
 m g h + m v0^2/2; it rests for good from the later of its landing and its reaching the
 wall (d/v0), and never when it clears the wall (it slides on); its curved path's length
-is not answered, saying why; a proof and a parameter selection are answered too."
+is not answered, saying why; its lowest point in the state that ends on the floor is 0; a
+proof and a parameter selection are answered too."
   (with-fixture simulator-bridge ()
     (let* ((scenario (ames:parse-scenario
                       (with-queries "ball-toward-low-wall"
@@ -253,7 +254,8 @@ is not answered, saying why; a proof and a parameter selection are answered too.
                         "(query rest (time (:rest ball)))"
                         "(query path (distance ball))"
                         "(query falls (prove (<= (y ball) h)))"
-                        "(query clears (parameter v0 :such-that (not (:collision ball wall))))")))
+                        "(query clears (parameter v0 :such-that (not (:collision ball wall))))"
+                        "(query lowest (minimum (y ball) :during (:collision ball floor)))")))
            (history (ames:simulate scenario :bridge bridge))
            (paths (ames.simulator::history-paths history)))
       (is (> (length paths) 1))
@@ -273,12 +275,13 @@ is not answered, saying why; a proof and a parameter selection are answered too.
                                 (is-same bridge (format nil "~A on path ~D" what k)
                                          (and actual (not (keywordp actual)) (there actual))
                                          (there (x expected))))))
-                       (dolist (name '("LANDS" "CLOCK" "WALL-HEIGHT" "VX" "ENERGY" "REST" "PATH" "FALLS"))
+                       (dolist (name '("LANDS" "CLOCK" "WALL-HEIGHT" "VX" "ENERGY" "REST" "PATH" "FALLS" "LOWEST"))
                          (is (equal facts (getf (cddr (entry name)) :assume)) "~A on path ~D" name k))
                        (when landed
                          (same "landing" (second (entry "LANDS")) '(sqrt (/ (* 2 h) g)))
                          (same "clock" (second (entry "CLOCK")) '(sqrt (/ (* 2 h) g)))
                          (same "vx" (second (entry "VX")) (if hit-first 0 'v0))
+                         (same "lowest" (second (entry "LOWEST")) 0)
                          (same "energy" (second (entry "ENERGY"))
                                (if hit-first '(* m g h) '(+ (* m g h) (* 1/2 m (expt v0 2))))))
                        (cond ((and hit landed) (same "rest" (second (entry "REST"))
