@@ -368,4 +368,9 @@ the scenario's assumptions."
                                      (append (list name :unanswered
                                                    :reason (format nil "it could not be worked out: ~A"
                                                                    (one-line condition)))
+                                             assume))
+                                   (error (condition)
+                                     (append (list name :unanswered
+                                                   :reason (format nil "an internal error while answering it: ~A"
+                                                                   (one-line condition)))
                                              assume))))))))
