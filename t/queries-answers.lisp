@@ -219,13 +219,13 @@ first falls to h/2 at sqrt(h/g) and never reaches 2h."
            (is-same bridge "half height" (answer-value history "HALF") (x '(sqrt (/ h g))))
            (is (eq :never (first (answer-value history "TWICE"))))))))))
 
-(defun boundary-substitution (bridge scenario facts)
+(defun boundary-substitution (bridge scenario facts &optional (names '("W" "H")))
   "For each equation among FACTS (a boundary branch's), the binding of the first of the
-parameters w and h it holds (linearly) that solves it: the values that put the branch
+parameters NAMES it holds (linearly) that solves it: the values that put the branch
 on its boundary, so that answers are compared there."
   (loop for fact in facts
         when (eq (first fact) '=)
-          append (let ((unknown (find-if (lambda (name) (mentions-name-p name fact)) '("W" "H"))))
+          append (let ((unknown (find-if (lambda (name) (mentions-name-p name fact)) names)))
                    (and unknown
                         (let* ((symbol (in-scenario-terms scenario (intern unknown :ames.tests)))
                                (solutions (ames.maxima:solve-equations bridge (list fact) (list symbol))))
@@ -459,3 +459,45 @@ belt has no mass). A driven body with a :mass, or :fixed too, is refused."
       (scenario-from-text (cl-ppcre:regex-replace "belt :driven t" *belt-text* "belt :driven t :mass 1")))
     (signals ames:scenario-error
       (scenario-from-text (cl-ppcre:regex-replace "belt :driven t" *belt-text* "belt :driven t :fixed t")))))
+
+(test distance-and-state-times-per-branch
+  "A block launched up a rough incline at v0 stops after v0/(g (sin a + mu cos a)), having
+slid v0^2/(2 g (sin a + mu cos a)) (on every branch of the fork at its stop, asked as
+(time (end 0)), (value (time) :at (end 0)) and (distance block :during (start 0))). Where it
+sticks (mu cos a - sin a >= 0), that is all it travels and it rests for good from then;
+where it slides back, it moves forever: neither is answered."
+  (with-fixture simulator-bridge ()
+    (let* ((scenario (ames:parse-scenario
+                      (with-queries "block-launched-up-rough-incline"
+                        "(query up (distance block :during (start 0)))"
+                        "(query total (distance block))"
+                        "(query stop (time (end 0)))"
+                        "(query clock (value (time) :at (end 0)))"
+                        "(query rest (time (:rest block)))")))
+           (history (ames:simulate scenario :bridge bridge))
+           (paths (ames.simulator::history-paths history)))
+      (is (= 3 (length paths)))
+      (flet ((x (e) (in-scenario-terms scenario e)))
+        (loop for (facts) in paths
+              for k from 0
+              for sticks = (member (first (first facts)) '(> =))
+              do (ames.maxima:with-assumptions
+                     (bridge (append (ames:scenario-assumption-relations scenario) (remove '= facts :key #'first)))
+                   (let ((boundary (boundary-substitution bridge scenario facts '("MU"))))
+                   (flet ((entry (name) (nth k (answers-named history name)))
+                          (is-same (bridge what actual expected)
+                            (flet ((there (e) (ames.base:substitute-expressions boundary e)))
+                              (is-same bridge what (and actual (not (keywordp actual)) (there actual))
+                                       (there expected)))))
+                     (dolist (name '("UP" "TOTAL" "STOP" "CLOCK" "REST"))
+                       (is (equal facts (getf (cddr (entry name)) :assume))))
+                     (let ((run-up (x '(/ (expt v0 2) (* 2 g (+ (sin a) (* mu (cos a)))))))
+                           (stop (x '(/ v0 (* g (+ (sin a) (* mu (cos a))))))))
+                       (is-same bridge "run up" (second (entry "UP")) run-up)
+                       (is-same bridge "stop" (second (entry "STOP")) stop)
+                       (is-same bridge "clock" (second (entry "CLOCK")) stop)
+                       (cond (sticks
+                              (is-same bridge "total" (second (entry "TOTAL")) run-up)
+                              (is-same bridge "rest" (second (entry "REST")) stop))
+                             (t (is (eq :unanswered (second (entry "TOTAL"))))
+                                (is (eq :unanswered (second (entry "REST")))))))))))))))
