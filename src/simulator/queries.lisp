@@ -60,10 +60,6 @@ event printed (:leaves cart block :endpoint) when the cart is the observer."
   "Signal UNANSWERABLE with the reason CONTROL and ARGUMENTS."
   (error 'unanswerable :detail (let ((*print-pretty* nil)) (apply #'format nil control arguments))))
 
-(defun body-data (alist body)
-  "The entry of BODY in a state's per-body ALIST, or NIL."
-  (second (find body alist :key #'first :test (lambda (a b) (string= (symbol-name a) (symbol-name b))))))
-
 (defun at-point (expression state at)
   "EXPRESSION of STATE evaluated AT :START, :END or a local time: TAU put to 0, the
 duration or the time; over a curve's or a line's arc length, the arc length put to its
