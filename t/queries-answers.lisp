@@ -455,6 +455,24 @@ belt has no mass). A driven body with a :mass, or :fixed too, is refused."
              (is-same-vector bridge "the drive's reaction" (third drive) (x '((* mu m g) (* m g)))))
            (is (eq :forever (ames::state-duration (second states))))
            (is-same-vector bridge "sticking" (per-body (ames::state-velocities (second states)) "BOX") (x '(v 0)))))))
+    ;; a box thrown on faster than the belt (u > v) is slowed to the belt's speed instead,
+    ;; after (u - v)/(mu g), having slipped (u - v)^2/(2 mu g) ahead
+    (let* ((text (cl-ppcre:regex-replace
+                  ":velocity \\(0 0\\) :shape \\(polygon"
+                  (cl-ppcre:regex-replace "\\(mu :positive \\(:value 1/2\\)\\)" *belt-text*
+                                          "(mu :positive (:value 1/2)) (u (> u v) (:value 3))")
+                  ":velocity (u 0) :shape (polygon"))
+           (scenario (scenario-from-text text))
+           (history (ames:simulate scenario :bridge bridge)))
+      (is (search "(u 0)" text))
+      (call-with-scenario-facts
+       bridge scenario
+       (lambda ()
+         (is-same bridge "slowed" (answer-value history "CATCHES-UP")
+                  (in-scenario-terms scenario '(/ (- u v) (* mu g))))
+         (is-same bridge "ahead" (answer-value history "SLIP")
+                  (in-scenario-terms scenario '(- (/ (expt (- u v) 2) (* 2 mu g)))))
+         (is-same bridge "with the belt" (answer-value history "SPEED") (in-scenario-terms scenario 'v)))))
     (signals ames:scenario-error
       (scenario-from-text (cl-ppcre:regex-replace "belt :driven t" *belt-text* "belt :driven t :mass 1")))
     (signals ames:scenario-error
