@@ -6,7 +6,13 @@
 ;;;;
 ;;;; A run that branched is answered branch by branch: each path from the root to a leaf of
 ;;;; the tree, with the facts assumed along it. An answer is (NAME VALUE [:ASSUME FACTS]
-;;;; [:NUMERIC N]) or (NAME :UNANSWERED :REASON TEXT [:ASSUME FACTS]).
+;;;; [:NUMERIC N]) or (NAME :UNANSWERED :REASON TEXT [:ASSUME FACTS]); a VALUE is an
+;;;; expression, a vector, (:TRUE/:FALSE/:UNKNOWN REASON) for a proof, (:WHEN CONJUNCTION...)
+;;;; or (:ALWAYS/:NEVER REASON) for a parameter selection (its condition in its simplest
+;;;; form, simplest-conditions.lisp), or (:NEVER REASON) for a value never reached.
+;;;; Quantities are read as the knowledge base reports them (quantities.lisp); the
+;;;; questions of "Queries, more questions" are in questions.lisp. A query that fails, for
+;;;; whatever reason, is not answered and says why: it never ends the run.
 
 (in-package #:ames.simulator)
 
