@@ -364,11 +364,15 @@ together leave nothing to ask; a condition the assumptions refute is never."
 
 (test extrema-need-no-time
   "How far is the bumper compressed? The block's least x while pressing it is
-l0 - v0 sqrt(m/k) (energy: k c^2 = m v0^2). The spheres' least distance of centres over
+l0 - v0 sqrt(m/k) (energy: k c^2 = m v0^2), where its speed is least, 0; its greatest
+speed is v0, at the contact's ends (the zeros of each factor of the speed's derivative,
+cos and sin, are tried). The spheres' least distance of centres over
 their fall is a + b, found over the arc length of their line (no time needed)."
   (with-fixture simulator-bridge ()
     (let* ((bumper (ames:parse-scenario
-                    (with-queries "block-hits-bumper" "(query least-x (minimum (x block) :during (start 1)))")))
+                    (with-queries "block-hits-bumper" "(query least-x (minimum (x block) :during (start 1)))"
+                                  "(query top-speed (maximum (speed block) :during (start 1)))"
+                                  "(query least-speed (minimum (speed block) :during (start 1)))")))
            (spheres (ames:parse-scenario
                      (with-queries "spheres-under-gravitation"
                        "(query gap (minimum (- (x second) (x first)) :during (start 0)))")))
@@ -378,7 +382,9 @@ their fall is a + b, found over the arc length of their line (no time needed)."
        bridge bumper
        (lambda ()
          (is-same bridge "greatest compression" (answer-value bumper-history "LEAST-X")
-                  (in-scenario-terms bumper '(- l0 (* v0 (sqrt (/ m k))))))))
+                  (in-scenario-terms bumper '(- l0 (* v0 (sqrt (/ m k))))))
+         (is-same bridge "top speed" (answer-value bumper-history "TOP-SPEED") (in-scenario-terms bumper 'v0))
+         (is-same bridge "least speed" (answer-value bumper-history "LEAST-SPEED") 0)))
       (call-with-scenario-facts
        bridge spheres
        (lambda ()

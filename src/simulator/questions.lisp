@@ -195,12 +195,24 @@ compression's greatest value from the energy integral)."
                                values maximum))))))
 
 (defun critical-points (bridge slope variable from to)
-  "The zeros of SLOPE (over VARIABLE) strictly between FROM and TO, in order."
+  "The zeros of SLOPE (over VARIABLE) strictly between FROM and TO: those of each of its
+factors (a product vanishes where a factor does), so that v0^2 w cos(w t) sin(w t) has
+the zeros of the cosine and of the sine, each found by the root finder of its kind."
+  (let ((slope (handler-case (ames.maxima:simplify bridge slope :strategy :full)
+                 (ames-error () slope))))
+    (loop for factor in (product-factors slope)
+          for base = (if (and (consp factor) (eq (first factor) 'expt) (integerp (third factor))
+                              (plusp (third factor)))
+                         (second factor)
+                         factor)
+          unless (free-of-p variable base)
+            append (factor-zeros bridge base variable from to))))
+
+(defun factor-zeros (bridge factor variable from to)
+  "The zeros of FACTOR (over VARIABLE) strictly between FROM and TO, in order."
   (loop with points = '()
-        with slope = (handler-case (ames.maxima:simplify bridge slope :strategy :full)
-                       (ames-error () slope))
         for after = from then (first points)
-        for root = (query-root bridge slope variable after)
+        for root = (query-root bridge factor variable after)
         repeat 8
         do (cond ((eq root :unknown) (unanswerable "where its derivative vanishes is not decided"))
                  ((eq root :none) (return (reverse points)))

@@ -34,8 +34,9 @@
     (ames-error () :unknown)))
 
 (defun product-factors (e)
-  "The multiplicative factors of E (a quotient's denominator's too)."
-  (cond ((and (consp e) (eq (first e) '*)) (mapcan #'product-factors (copy-list (rest e))))
+  "The multiplicative factors of E (a quotient's denominator's too; a negation gives -1)."
+  (cond ((and (consp e) (eq (first e) '-) (= 2 (length e))) (cons -1 (product-factors (second e))))
+        ((and (consp e) (eq (first e) '*)) (mapcan #'product-factors (copy-list (rest e))))
         ((and (consp e) (eq (first e) '/)) (append (product-factors (second e)) (mapcan #'product-factors (copy-list (cddr e)))))
         (t (list e))))
 
