@@ -87,12 +87,13 @@ Lisp reader."
                   (expt 10 exponent))))))))
 
 (defun parse-setting (text)
-  "Parse one --set argument \"NAME=VALUE\" into (NAME-STRING . RATIONAL); signal
+  "Parse one --set argument \"NAME=VALUE\" into (NAME-STRING . NUMBER): a rational, or
+a double-float for a value with pi or in degrees (see set-values.lisp); signal
 USAGE-ERROR naming TEXT when it is malformed."
   (let ((position (position #\= text)))
     (unless (and position (plusp position))
       (error 'usage-error :datum text :detail "--set takes PARAM=VALUE"))
-    (let ((value (parse-decimal (subseq text (1+ position)))))
+    (let ((value (parse-set-value (subseq text (1+ position)))))
       (unless value
         (error 'usage-error :datum text :detail "--set needs a number after ="))
       (cons (subseq text 0 position) value))))

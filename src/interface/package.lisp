@@ -36,7 +36,7 @@ re-exported from the layers below) and the command line of bin/ames.")
    #:scenario-parameter #:scenario-parameter-name #:scenario-parameter-assumptions
    #:scenario-parameter-value
    #:scenario-body #:scenario-body-name #:scenario-body-shape #:scenario-body-mass
-   #:scenario-body-position #:scenario-body-velocity #:scenario-body-fixed-p
+   #:scenario-body-position #:scenario-body-velocity #:scenario-body-fixed-p #:scenario-body-driven-p
    #:scenario-force #:scenario-force-name #:scenario-force-body #:scenario-force-value
    #:scenario-frictions #:scenario-friction #:scenario-friction-bodies
    #:scenario-friction-static #:scenario-friction-kinetic #:find-scenario-friction

@@ -5,7 +5,8 @@
 ;;;; conservative forces and momentum as mass times velocity. Each is a quantity defined
 ;;;; by an equation (eliminated before Maxima solves, like any definition) and reported in
 ;;;; a section of its own, which the simulator copies into each state's notes:
-;;;;   (reported :energy (:kinetic BODY E))          1/2 m |v|^2 of a free body
+;;;;   (reported :energy (:kinetic BODY E))          1/2 m |v|^2 of a free body (a driven
+;;;;                                                 body has no mass: none)
 ;;;;   (reported :energy (:potential SOURCE E))       SOURCE (:gravity B), (:spring S),
 ;;;;                                                 (bumper S B), (gravitation B1 B2)
 ;;;;   (reported :momentum (:momentum BODY (PX PY)))  m v of a free body
@@ -16,7 +17,7 @@
 
 (defcomponent kinetic-energy-and-momentum (:knowledge-base *mechanics*)
   "A free body's kinetic energy is 1/2 m |v|^2 and its momentum m v."
-  (:arguments (?body :entity body :where (:fixed nil)))
+  (:arguments (?body :entity body :where (:fixed nil :driven nil)))
   (:assert (reported :energy (:kinetic ?body (kinetic-energy ?body)))
            (reported :momentum (:momentum ?body ((momentum ?body :x) (momentum ?body :y)))))
   (:equations (= (kinetic-energy ?body)
@@ -26,7 +27,7 @@
 
 (defcomponent gravitational-potential-energy (:knowledge-base *mechanics*)
   "In a terrestrial field a free body's potential energy is m g y."
-  (:arguments (?body :entity body :where (:fixed nil))
+  (:arguments (?body :entity body :where (:fixed nil :driven nil))
               (?field :entity gravity-field))
   (:assert (reported :energy (:potential (:gravity ?body) (potential-energy gravity ?body))))
   (:equations (= (potential-energy gravity ?body) (* (mass ?body) (strength ?field) (pos ?body :y)))))

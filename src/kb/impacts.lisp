@@ -124,13 +124,19 @@ impact)."
 (defcomponent change-of-momentum (:knowledge-base *impacts*)
   "A free body's momentum changes by the sum of the impulses on it (Newton's second law
 integrated over the impact; finite forces such as gravity give no impulse)."
-  (:arguments (?body :entity body :where (:fixed nil))
+  (:arguments (?body :entity body :where (:fixed nil :driven nil))
               (?impulses :collect ?j :matching (impulse ?j :on ?body)))
   (:assert (moving-at-impact ?body))
   (:equations (= (* (mass ?body) (- (vel-after ?body :x) (velocity-before ?body :x)))
                  (sum-of-impulses ?impulses :x))
               (= (* (mass ?body) (- (vel-after ?body :y) (velocity-before ?body :y)))
                  (sum-of-impulses ?impulses :y))))
+
+(defcomponent driven-body-at-impact (:knowledge-base *impacts*)
+  "A driven body keeps its velocity, whatever impulse it takes (its drive's)."
+  (:arguments (?body :entity body :where (:driven t)))
+  (:equations (= (vel-after ?body :x) (velocity-before ?body :x))
+              (= (vel-after ?body :y) (velocity-before ?body :y))))
 
 (defcomponent fixed-body-at-impact (:knowledge-base *impacts*)
   "A fixed body does not move, whatever impulse it takes."

@@ -12,7 +12,7 @@
 ;;;;     list, as the scenario language's output section writes them, with quantity terms
 ;;;;     that the simulator replaces by their values.
 ;;;; The simulator describes each state's situation with these entities:
-;;;;   (body NAME :fixed T-or-NIL :mass EXPR)
+;;;;   (body NAME :fixed T-or-NIL :mass EXPR [:driven T])   a driven body has no mass
 ;;;;   (gravity-field NAME :strength EXPR)                      pointing -y
 ;;;;   (external-force NAME :on BODY :fx EXPR :fy EXPR)
 ;;;;   (simple-contact K :observer A :obstacle B :geometry C)   C an ames.geometry contact
@@ -174,6 +174,23 @@ curvature (section 2.5.3, with the velocity constraint differentiated)."
   (:equations (= (path-acc ?contact :normal)
                  (* (expt (path-speed ?contact) 2) (curvature ?contact)))))
 
+(defcomponent driven-body (:knowledge-base *mechanics*)
+  "A driven body (a conveyor belt) moves at its prescribed constant velocity whatever acts
+on it: no acceleration, and a drive that supplies the force balancing every other force
+on it (the drive's reaction, reported as (:drive BODY (FX FY)))."
+  (:arguments (?body :entity body :where (:driven t)))
+  (:assert (force (drive ?body) :type drive :from environment :on ?body)
+           (reported :forces (:drive ?body ((fx drive ?body) (fy drive ?body)))))
+  (:equations (= (acc ?body :x) 0)
+              (= (acc ?body :y) 0)))
+
+(defcomponent drive-balances-the-forces (:knowledge-base *mechanics*)
+  "The forces on a driven body, its drive's included, sum to zero (it does not accelerate)."
+  (:arguments (?body :entity body :where (:driven t))
+              (?forces :collect ?f :matching (force ?f :on ?body)))
+  (:equations (= (sum-of ?forces :x) 0)
+              (= (sum-of ?forces :y) 0)))
+
 (defcomponent fixed-body (:knowledge-base *mechanics*)
   "A body glued to the fixed frame does not move: a zero-dimensional restriction
 (section 2.5.3). Its reaction forces take whatever values the others need."
@@ -198,8 +215,8 @@ that the kinematic restriction fixes (section 2.5.4)."
 
 (defcomponent terrestrial-gravitation (:knowledge-base *mechanics*)
   "A terrestrial field pulls every free body down, -y, with its mass times the field's
-strength (figure 2-7)."
-  (:arguments (?body :entity body :where (:fixed nil))
+strength (figure 2-7). A driven body has no mass: what acts on it is the drive's."
+  (:arguments (?body :entity body :where (:fixed nil :driven nil))
               (?field :entity gravity-field))
   (:assert (force (gravity ?body) :type gravity :from ?field :on ?body)
            (reported :forces (:gravity ?body ((fx gravity ?body) (fy gravity ?body)))))
@@ -219,8 +236,9 @@ gave (section 2.5.4)."
 
 (defcomponent newtons-second-law (:knowledge-base *mechanics*)
   "The sum of every force on a free body equals its mass times its acceleration in the
-fixed frame, in cartesian coordinates (figure 2-8)."
-  (:arguments (?body :entity body :where (:fixed nil))
+fixed frame, in cartesian coordinates (figure 2-8). A driven body has none (see
+DRIVEN-BODY)."
+  (:arguments (?body :entity body :where (:fixed nil :driven nil))
               (?forces :collect ?f :matching (force ?f :on ?body)))
   (:equations (= (sum-of ?forces :x) (* (mass ?body) (acc ?body :x)))
               (= (sum-of ?forces :y) (* (mass ?body) (acc ?body :y)))))

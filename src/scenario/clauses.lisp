@@ -18,15 +18,18 @@
          (what (format nil "body ~A" (symbol-name name))))
     (enter validation what clause)
     (let* ((arguments (checked-keywords validation (cddr clause)
-                                        '(:shape :mass :position :velocity :fixed) what))
-           (fixed (multiple-value-bind (value present) (keyword-value :fixed arguments)
-                    (cond ((not present) nil)
-                          ((named-p value "T") t)
-                          ((named-p value "NIL") nil)
-                          (t (reject validation 'scenario-syntax-error value
-                                     ":fixed takes T or NIL, not ~A" (show value))))))
+                                        '(:shape :mass :position :velocity :fixed :driven) what))
+           (fixed (body-flag validation arguments :fixed))
+           (driven (body-flag validation arguments :driven))
            (missing (remove-if (lambda (key) (assoc key arguments))
-                               (if fixed '(:shape) '(:shape :mass :position :velocity)))))
+                               (cond (fixed '(:shape))
+                                     (driven '(:shape :velocity))
+                                     (t '(:shape :mass :position :velocity))))))
+      (when (and fixed driven)
+        (reject validation 'scenario-syntax-error clause "a body is :fixed or :driven, not both"))
+      (when (and driven (assoc :mass arguments))
+        (reject validation 'scenario-syntax-error clause
+                "a driven body moves at its :velocity whatever acts on it: it has no :mass"))
       (when missing
         (reject validation 'missing-property-error clause
                 "the body has no ~{~S~^, ~}~:[~; (a body that is not :fixed needs ~
@@ -45,7 +48,16 @@
                   "a fixed body does not move: its :velocity can only be (0 0)"))
         (make-instance 'scenario-body :name name :shape shape :mass mass
                                       :position position :velocity velocity
-                                      :fixed-p fixed)))))
+                                      :fixed-p fixed :driven-p driven)))))
+
+(defun body-flag (validation arguments key)
+  "The value of the body's flag KEY (:fixed, :driven) in ARGUMENTS: T or NIL."
+  (multiple-value-bind (value present) (keyword-value key arguments)
+    (cond ((not present) nil)
+          ((named-p value "T") t)
+          ((named-p value "NIL") nil)
+          (t (reject validation 'scenario-syntax-error value
+                     "~(~S~) takes T or NIL, not ~A" key (show value))))))
 
 (defun checked-force (validation clause)
   "The SCENARIO-FORCE that the clause (force NAME :on BODY :value (FX FY)) declares."

@@ -46,3 +46,33 @@ when undecided. OPERATOR is one of < > <= >= = /=."
                        (= (eq order :equal))
                        (/= (not (eq order :equal))))))
           (if holds t :false)))))
+
+;;; Numbers people write (issue 26): degrees and defaults that are expressions
+
+(defun degrees-expression (validation form walk)
+  "The expression of (deg X): X degrees in radians, X pi / 180, with X checked by WALK."
+  (unless (and (proper-list-p form) (= 2 (length form)))
+    (reject validation 'scenario-expression-error form "(deg X) takes one number of degrees, not ~A" (show form)))
+  `(/ (* ,(funcall walk (second form)) pi) 180))
+
+(defun default-value (validation assumption)
+  "The number of the default (:value X): X a finite real, or a constant expression such
+as (deg 30) or (/ pi 6) (its value, exact where it is rational, else a double-float)."
+  (let ((x (second assumption)))
+    (if (realp x)
+        (if (finite-real-p x)
+            x
+            (reject validation 'scenario-expression-error assumption
+                    "a default value is (:value NUMBER) with a finite real NUMBER, not ~A" (show assumption)))
+        (let ((value (and (consp x)
+                          (constant-value (handler-case (checked-expression validation x)
+                                            (scenario-error ()
+                                              (reject validation 'scenario-expression-error assumption
+                                                      "a default value is a number or an expression of numbers and pi, not ~A"
+                                                      (show assumption))))))))
+          (unless (and (realp value) (finite-real-p value))
+            (reject validation 'scenario-expression-error assumption
+                    "a default value is a number or an expression of numbers and pi, not ~A" (show assumption)))
+          (if (and (floatp value) (= value (rational value)) (integerp (rational value)))
+              (rational value)
+              value)))))

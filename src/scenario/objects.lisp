@@ -31,6 +31,9 @@
 ;;;; - A body's :fixed takes T or NIL. A fixed body may have a :mass (kept, unused);
 ;;;;   its :velocity, if given, must be (0 0); its :position defaults to (0 0).
 ;;;;   A constant mass must be positive. Forces may act on fixed bodies (to no effect).
+;;;; - A body with :driven t moves at its constant :velocity whatever acts on it (a
+;;;;   conveyor belt); it needs :velocity (its :position defaults to (0 0)), has no :mass,
+;;;;   and is not :fixed.
 ;;;; - (arc ...) as a shape takes :solid :inside or :outside; the default is :inside,
 ;;;;   the side to the left of its counter-clockwise direction, as for SEGMENT and
 ;;;;   OUTLINE. An arc's :to must exceed its :from by at most 2 pi (checked when
@@ -131,7 +134,10 @@ words (POINT, (POLYGON (X Y) ...), ...) and checked expressions.")
    (velocity :initarg :velocity :reader scenario-body-velocity
              :documentation "The initial velocity (VX VY); (0 0) for a fixed body.")
    (fixed-p :initarg :fixed-p :initform nil :reader scenario-body-fixed-p
-            :documentation "True when the body is glued to the fixed frame."))
+            :documentation "True when the body is glued to the fixed frame.")
+   (driven-p :initarg :driven-p :initform nil :reader scenario-body-driven-p
+             :documentation "True when the body moves at its prescribed constant :velocity
+whatever acts on it (a conveyor belt); it has no mass."))
   (:documentation "A rigid body of a scenario (it translates and does not rotate)."))
 
 (defclass scenario-force ()

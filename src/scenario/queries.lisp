@@ -5,10 +5,12 @@
 ;;;;   (:value QUANTITY :at WHEN)          (:time EVENT)
 ;;;;   (:parameter P :such-that CONDITION) (:prove CONDITION :during WHEN-or-NIL)
 ;;;;   (:maximum QUANTITY :during WHEN)    (:minimum QUANTITY :during WHEN)
+;;;;   (:time-at (:start N) or (:end N))   (:rest-time BODY)    (:reaches-time QUANTITY VALUE)
+;;;;   (:distance BODY :during WHEN-or-NIL)
 ;;;; where a QUANTITY is an arithmetic expression of the algebra whose atoms may also be
 ;;;; quantity forms (:x B) (:y B) (:position B) (:velocity B) (:speed B) (:acceleration B)
 ;;;; (:normal-force A B) (:friction A B) (:tension ROPE) (:kinetic-energy B) (:momentum B)
-;;;; (:energy); a WHEN is (:start N), (:end N), (:event PATTERN) with PATTERN a list
+;;;; (:energy) (:time), or (:component :x-or-:y VECTOR-QUANTITY); a WHEN is (:start N), (:end N), (:event PATTERN) with PATTERN a list
 ;;;; (:KIND NAME...) as an event is printed, or (:time EXPR); a CONDITION is a relation
 ;;;; over quantities and parameters, (:outcome PATTERN) or (:not (:outcome PATTERN)).
 ;;;; Words are recognised by name; every body, rope or parameter a query names must be
@@ -19,7 +21,7 @@
 (defparameter +quantity-words+
   '(("X" . 1) ("Y" . 1) ("POSITION" . 1) ("VELOCITY" . 1) ("SPEED" . 1) ("ACCELERATION" . 1)
     ("NORMAL-FORCE" . 2) ("FRICTION" . 2) ("TENSION" . 1) ("KINETIC-ENERGY" . 1)
-    ("MOMENTUM" . 1) ("ENERGY" . 0))
+    ("MOMENTUM" . 1) ("ENERGY" . 0) ("TIME" . 0))
   "The quantities a query may ask for, with how many names each takes.")
 
 (defun query-reject (validation datum control &rest arguments)
@@ -40,9 +42,19 @@ UNDECLARED-SYMBOL-ERROR naming X when nothing of that name is declared."
   (and (consp x) (symbolp (car x)) (not (keywordp (car x)))
        (assoc (symbol-name (car x)) +quantity-words+ :test #'string=)))
 
+(defparameter +vector-quantities+ '(:position :velocity :acceleration :momentum)
+  "The quantities whose value is a vector, whose components (x Q) and (y Q) are asked.")
+
 (defun checked-quantity (validation x)
   "X as a canonical QUANTITY (see the file header)."
-  (cond ((quantity-form-p x)
+  (cond ((and (quantity-form-p x) (member (symbol-name (car x)) '("X" "Y") :test #'string=)
+              (proper-list-p x) (= 2 (length x)) (quantity-form-p (second x)))
+         (let ((vector (checked-quantity validation (second x))))
+           (unless (member (first vector) +vector-quantities+)
+             (query-reject validation x "a component is taken of a vector quantity (position, velocity, acceleration, momentum), not ~A"
+                           (show (second x))))
+           (list :component (intern (symbol-name (car x)) :keyword) vector)))
+        ((quantity-form-p x)
          (destructuring-bind (word . count) (assoc (symbol-name (car x)) +quantity-words+ :test #'string=)
            (unless (and (proper-list-p x) (= (length (rest x)) count))
              (query-reject validation x "~A takes ~D name~:P" (string-downcase word) count))
@@ -50,6 +62,7 @@ UNDECLARED-SYMBOL-ERROR naming X when nothing of that name is declared."
                  (mapcar (lambda (name) (query-name-of validation name "body or rope")) (rest x)))))
         ((atom x) (canonical-atom validation x))
         ((not (proper-list-p x)) (query-reject validation x "~A is not a proper list" (show x)))
+        ((named-p (car x) "DEG") (degrees-expression validation x (lambda (y) (checked-quantity validation y))))
         (t (let ((operator (algebra-operator-named (car x))))
              (unless (and operator (arithmetic-operator-p operator))
                (query-reject validation x "~A is neither a quantity nor an arithmetic operator"
@@ -103,8 +116,10 @@ UNDECLARED-SYMBOL-ERROR naming X when nothing of that name is declared."
                    (unless (option :at) (query-reject validation question "(value QUANTITY :at WHEN)"))
                    (list :value (checked-quantity validation (first arguments))
                          :at (checked-when validation (option :at))))
-                  ((equal word "TIME")
-                   (list :time (checked-pattern validation (first arguments))))
+                  ((equal word "TIME") (checked-time-question validation question))
+                  ((equal word "DISTANCE")
+                   (list :distance (query-name-of validation (first arguments) "body")
+                         :during (and (option :during) (checked-when validation (option :during)))))
                   ((equal word "PARAMETER")
                    (unless (option :such-that)
                      (query-reject validation question "(parameter P :such-that CONDITION)"))
@@ -121,5 +136,24 @@ UNDECLARED-SYMBOL-ERROR naming X when nothing of that name is declared."
                    (list (intern word :keyword) (checked-quantity validation (first arguments))
                          :during (and (option :during) (checked-when validation (option :during)))))
                   (t (query-reject validation question
-                                   "a question is (value ...), (time ...), (parameter ...), (prove ...), (maximum ...) or (minimum ...), not ~A"
+                                   "a question is (value ...), (time ...), (distance ...), (parameter ...), (prove ...), (maximum ...) or (minimum ...), not ~A"
                                    (show question))))))))
+
+(defun checked-time-question (validation question)
+  "The canonical form of (time X): X (start N) or (end N) gives (:TIME-AT (:START N)),
+(:rest BODY) gives (:REST-TIME BODY), (reaches QUANTITY VALUE) gives (:REACHES-TIME
+QUANTITY VALUE), an event pattern (:TIME PATTERN)."
+  (let ((x (and (proper-list-p question) (second question))))
+    (cond ((and (consp x) (member (and (symbolp (car x)) (not (keywordp (car x))) (symbol-name (car x)))
+                                  '("START" "END") :test #'equal))
+           (list :time-at (checked-when validation x)))
+          ((and (consp x) (eq (car x) :rest))
+           (unless (and (proper-list-p x) (= 2 (length x)))
+             (query-reject validation x "(:rest BODY) names one body"))
+           (list :rest-time (query-name-of validation (second x) "body")))
+          ((and (consp x) (named-p (car x) "REACHES"))
+           (unless (and (proper-list-p x) (= 3 (length x)))
+             (query-reject validation x "(reaches QUANTITY VALUE)"))
+           (list :reaches-time (checked-quantity validation (second x))
+                 (checked-quantity validation (third x))))
+          (t (list :time (checked-pattern validation x))))))

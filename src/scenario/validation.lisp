@@ -243,6 +243,7 @@ their declared symbols. Signals SCENARIO-EXPRESSION-ERROR or UNDECLARED-SYMBOL-E
                    ((not (proper-list-p y))
                     (reject validation 'scenario-expression-error y
                             "~A is not a proper list" (show y)))
+                   ((named-p (car y) "DEG") (degrees-expression validation y #'walk))
                    (t (let ((operator (algebra-operator-named (car y))))
                         (cond ((null operator)
                                (reject validation 'scenario-expression-error y
@@ -319,12 +320,11 @@ their declared symbols. Signals SCENARIO-EXPRESSION-ERROR or UNDECLARED-SYMBOL-E
             (when value
               (reject validation 'duplicate-clause-error assumption
                       "~A has two default values" (show name)))
-            (unless (and (proper-list-p assumption) (= (length assumption) 2)
-                         (realp (second assumption)) (finite-real-p (second assumption)))
+            (unless (and (proper-list-p assumption) (= (length assumption) 2))
               (reject validation 'scenario-expression-error assumption
                       "a default value is (:value NUMBER) with a finite real NUMBER, not ~A"
                       (show assumption)))
-            (setf value (second assumption)))
+            (setf value (default-value validation assumption)))
           (push (checked-assumption validation name assumption) assumptions)))
     (make-instance 'scenario-parameter :name name :assumptions (nreverse assumptions)
                                        :value value)))

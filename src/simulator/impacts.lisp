@@ -28,6 +28,7 @@ and velocities just before, each of CONTACTS with its outward normal there, and 
                (let ((name (scenario-body-name body)))
                  (list 'ames.kb:body name
                        :fixed (and (scenario-body-fixed-p body) t)
+                       :driven (and (scenario-body-driven-p body) t)
                        :mass (scenario-body-mass body)
                        :position (body-position run name)
                        :velocity (body-velocity run name))))

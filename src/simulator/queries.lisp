@@ -6,7 +6,13 @@
 ;;;;
 ;;;; A run that branched is answered branch by branch: each path from the root to a leaf of
 ;;;; the tree, with the facts assumed along it. An answer is (NAME VALUE [:ASSUME FACTS]
-;;;; [:NUMERIC N]) or (NAME :UNANSWERED :REASON TEXT [:ASSUME FACTS]).
+;;;; [:NUMERIC N]) or (NAME :UNANSWERED :REASON TEXT [:ASSUME FACTS]); a VALUE is an
+;;;; expression, a vector, (:TRUE/:FALSE/:UNKNOWN REASON) for a proof, (:WHEN CONJUNCTION...)
+;;;; or (:ALWAYS/:NEVER REASON) for a parameter selection (its condition in its simplest
+;;;; form, simplest-conditions.lisp), or (:NEVER REASON) for a value never reached.
+;;;; Quantities are read as the knowledge base reports them (quantities.lisp); the
+;;;; questions of "Queries, more questions" are in questions.lisp. A query that fails, for
+;;;; whatever reason, is not answered and says why: it never ends the run.
 
 (in-package #:ames.simulator)
 
@@ -58,34 +64,33 @@ event printed (:leaves cart block :endpoint) when the cart is the observer."
 
 (defun unanswerable (control &rest arguments)
   "Signal UNANSWERABLE with the reason CONTROL and ARGUMENTS."
-  (error 'unanswerable :detail (apply #'format nil control arguments)))
-
-(defun body-data (alist body)
-  "The entry of BODY in a state's per-body ALIST, or NIL."
-  (second (find body alist :key #'first :test (lambda (a b) (string= (symbol-name a) (symbol-name b))))))
+  (error 'unanswerable :detail (let ((*print-pretty* nil)) (apply #'format nil control arguments))))
 
 (defun at-point (expression state at)
   "EXPRESSION of STATE evaluated AT :START, :END or a local time: TAU put to 0, the
-duration or the time; on a curve, the arc length put to its start or end."
-  (let ((path (getf (state-notes state) :path-coordinates))
-        (end-arc (getf (state-notes state) :end-arc-length)))
-    (cond ((and path (not (free-of-p +arc-length+ expression)))
-           (substitute-expressions
-            (list (cons +arc-length+
-                        (case at
-                          (:start (getf path :arc-length-from))
-                          (:end (or end-arc (unanswerable "the state on the curve never ends")))
-                          (t (unanswerable "on a curve a time inside the state has no closed form")))))
-            expression))
-          (t (substitute-expressions
-              (list (cons 'tau (case at
-                                 (:start 0)
-                                 (:end (let ((d (state-duration state)))
-                                         (if (or (keywordp d) (and (consp d) (keywordp (first d))))
-                                             (unanswerable "state ~D has no closed-form end" (state-index state))
-                                             d)))
-                                 (t at))))
-              expression)))))
+duration or the time; over a curve's or a line's arc length, the arc length put to its
+start or end (no time needed: the energy integral gives the speed there)."
+  (cond ((not (free-of-p +arc-length+ expression))
+         (substitute-expressions
+          (list (cons +arc-length+
+                      (case at
+                        (:start (or (arc-length-start state)
+                                    (unanswerable "where the motion of state ~D starts along its path is not known"
+                                                  (state-index state))))
+                        (:end (or (arc-length-end state)
+                                  (unanswerable "state ~D never ends on its path" (state-index state))))
+                        (t (unanswerable "along a path a time inside the state has no closed form")))))
+          expression))
+        ((free-of-p 'tau expression) expression)
+        (t (substitute-expressions
+            (list (cons 'tau (case at
+                               (:start 0)
+                               (:end (let ((d (state-duration state)))
+                                       (if (closed-form-p d)
+                                           d
+                                           (unanswerable "state ~D has no closed-form end" (state-index state)))))
+                               (t at))))
+            expression))))
 
 (defun vector-of (entry)
   "A per-body vector entry, the :ON-PATH form reduced to its point."
@@ -96,8 +101,8 @@ duration or the time; on a curve, the arc length put to its start or end."
 (defun quantity-expression (scenario state form)
   "The quantity FORM (see src/scenario/queries.lisp) in STATE, over its local time."
   (flet ((body (name) (or (find-scenario-body name scenario) (unanswerable "~A is no body" name)))
-         (place (b) (vector-of (body-data (state-positions state) b)))
-         (velocity (b) (vector-of (body-data (state-velocities state) b)))
+         (place (b) (vector-of (recorded state (state-positions state) b)))
+         (velocity (b) (vector-of (recorded state (state-velocities state) b)))
          (force (kind a b)
            (let ((entry (find-if (lambda (f)
                                    (and (eq (first f) kind)
@@ -112,7 +117,7 @@ duration or the time; on a curve, the arc length put to its start or end."
       (:y (second (place (second form))))
       (:position (place (second form)))
       (:velocity (velocity (second form)))
-      (:acceleration (vector-of (body-data (state-accelerations state) (second form))))
+      (:acceleration (vector-of (recorded state (state-accelerations state) (second form))))
       (:speed (let ((v (velocity (second form)))) `(sqrt (+ (expt ,(first v) 2) (expt ,(second v) 2)))))
       (:normal-force (force :normal (second form) (third form)))
       (:friction (force :friction (second form) (third form)))
@@ -120,29 +125,34 @@ duration or the time; on a curve, the arc length put to its start or end."
                                                        (string= (symbol-name (second f)) (symbol-name (second form)))))
                                       (state-forces state))))
                   (if entry (third entry) 0)))
-      (:kinetic-energy (let ((v (velocity (second form))) (m (scenario-body-mass (body (second form)))))
-                         `(* 1/2 ,m (+ (expt ,(first v) 2) (expt ,(second v) 2)))))
-      (:momentum (let ((v (velocity (second form))) (m (scenario-body-mass (body (second form)))))
-                   (list `(* ,m ,(first v)) `(* ,m ,(second v)))))
-      (:energy (system-energy scenario state)))))
+      (:kinetic-energy (or (reported-kinetic-energy state (second form)
+                                                    (scenario-body-fixed-p (body (second form))))
+                           (unanswerable "state ~D reports no kinetic energy of ~(~A~)"
+                                         (state-index state) (second form))))
+      (:momentum (or (reported-momentum state (second form) (scenario-body-fixed-p (body (second form))))
+                     (unanswerable "state ~D reports no momentum of ~(~A~)" (state-index state) (second form))))
+      (:energy (system-energy scenario state))
+      (:time (if (closed-form-p (state-start state))
+                 `(+ ,(state-start state) tau)
+                 (unanswerable "state ~D's start has no closed form" (state-index state))))
+      (:component (let ((vector (quantity-expression scenario state (third form))))
+                    (if (eq (second form) :x) (first vector) (second vector)))))))
 
 (defun system-energy (scenario state)
-  "The kinetic energy of every free body plus its gravitational potential energy (the
-knowledge base's reported :ENERGY entries when the state has any other kind)."
-  (let ((reported (getf (state-notes state) :energy)))
-    (when (and (null reported) (or (scenario-forces scenario)))
-      (unanswerable "the energy of the external forces is not known"))
-    (cons '+ (loop for body in (scenario-moving-bodies scenario)
-                   for name = (scenario-body-name body)
-                   for v = (vector-of (body-data (state-velocities state) name))
-                   for y = (second (vector-of (body-data (state-positions state) name)))
-                   collect `(* 1/2 ,(scenario-body-mass body) (+ (expt ,(first v) 2) (expt ,(second v) 2)))
-                   when (scenario-gravity scenario)
-                     collect `(* ,(scenario-body-mass body) ,(scenario-gravity scenario) ,y)))))
+  "The whole system's energy in STATE: the sum of the terms the knowledge base reports,
+the report's total T + V (kinetic energy of the free bodies and the potential energy of
+the conservative sources; the work of an external force is not in it)."
+  (declare (ignore scenario))
+  (or (state-total-energy state)
+      (unanswerable "state ~D reports no energy" (state-index state))))
 
 (defun quantity-in (scenario state form)
   "FORM, a query's quantity (an expression over quantity forms), in STATE over TAU."
-  (cond ((and (consp form) (keywordp (first form))) (quantity-expression scenario state form))
+  (cond ((and (consp form) (keywordp (first form)))
+         (let ((value (quantity-expression scenario state form)))
+           (when (mentions-unknown-p value)
+             (unanswerable "state ~D's motion has no closed form" (state-index state)))
+           value))
         ((consp form) (let ((parts (mapcar (lambda (x) (quantity-in scenario state x)) (rest form))))
                         (when (some #'vector-p* parts)
                           (unanswerable "arithmetic on a vector quantity"))
@@ -208,6 +218,8 @@ decided under the assumptions in BRIDGE; signals UNANSWERABLE when it is not dec
       (return-from relation-holds-over
         (let ((verdict (ames.maxima:decide bridge (list (first relation) difference 0))))
           (values verdict "on the curve, decided for every arc length at once"))))
+    (when (and (eq (first relation) '=) (not (free-of-p 'tau difference)))
+      (return-from relation-holds-over (equality-over-state bridge state difference)))
     (flet ((at (time) (substitute-expressions (list (cons 'tau time)) difference)))
       (let ((start (ames.maxima:decide bridge (list (first relation) (at 0) 0))))
         (cond ((eq start :false) (values :false (format nil "it fails at the start of state ~D" (state-index state))))
@@ -237,37 +249,18 @@ decided under the assumptions in BRIDGE; signals UNANSWERABLE when it is not dec
             (values (case verdict (:true :false) (:false :true) (t :unknown)) reason)))
     (t (let ((chosen (if during
                          (list (resolve-when bridge states during))
-                         (remove-if (lambda (s) (eql 0 (state-duration s))) states)))
+                         (remove-if (lambda (s) (or (eql 0 (state-duration s)) (state-branches s))) states)))
              (reasons '()))
-         (dolist (state chosen (values :true (format nil "~{~A~^; ~}" (reverse reasons))))
+         (when (null chosen)
+           (return-from prove-on-path
+             (values :unknown (format nil "no period of motion on this path to tell (the run ~(~A~))" outcome))))
+         (dolist (state chosen (if (or during (member outcome '(:complete :time-limit :state-limit)))
+                                   (values :true (format nil "~{~A~^; ~}" (reverse reasons)))
+                                   (values :unknown (format nil "it holds in the states found, but the run ~(~A~) before its end"
+                                                            outcome))))
            (multiple-value-bind (verdict reason) (relation-holds-over bridge scenario state condition)
              (push reason reasons)
              (unless (eq verdict :true) (return (values verdict reason)))))))))
-
-(defun extremum-in (bridge scenario states quantity during maximum)
-  "The largest (MAXIMUM) or smallest value of QUANTITY over the state DURING names."
-  (let* ((state (resolve-when bridge states during))
-         (q (quantity-in scenario state quantity))
-         (duration (state-duration state))
-         (slope (ames.geometry:differentiate q 'tau))
-         (points (list 0)))
-    (when (vector-p* q) (unanswerable "the extremum of a vector"))
-    (unless (closed-form-p duration) (unanswerable "the state's end has no closed form"))
-    (push duration points)
-    (let ((critical (ames.maxima:earliest-root bridge slope 'tau :after 0 :strictly t :candidates nil)))
-      (cond ((eq critical :unknown) (unanswerable "where its derivative vanishes is not decided"))
-            ((not (eq critical :none))
-             (when (eq (ames.maxima:decide bridge `(< ,critical ,duration)) :true) (push critical points)))))
-    (let* ((values (mapcar (lambda (p) (ames.maxima:simplify bridge (substitute-expressions (list (cons 'tau p)) q)
-                                                             :strategy :full))
-                           points))
-           (best (find-if (lambda (v)
-                            (every (lambda (w) (or (eq v w)
-                                                   (eq :true (ames.maxima:decide bridge (list (if maximum '>= '<=) v w)))))
-                                   values))
-                          values)))
-      (or best (unanswerable "which of ~{~A~^, ~} is the ~:[smallest~;largest~] is not decided"
-                             values maximum)))))
 
 (defun parameter-conditions (bridge parameter fact)
   "The inequality FACT as a condition on PARAMETER alone, (OP PARAMETER VALUE), when it
@@ -299,6 +292,11 @@ run's paths (for parameter selection). Returns the answer's value; signals UNANS
   (ecase (first question)
     (:value (value-at bridge scenario states (second question) (getf (cddr question) :at)))
     (:time (event-time bridge states (second question)))
+    (:time-at (value-at bridge scenario states '(:time) (second question)))
+    (:rest-time (rest-time bridge scenario states outcome (second question)))
+    (:reaches-time (reaches-time bridge scenario states (second question) (third question)))
+    (:distance (distance-travelled bridge scenario states outcome (second question)
+                                   (getf (cddr question) :during)))
     (:prove (multiple-value-bind (verdict reason)
                 (prove-on-path bridge scenario states outcome (second question)
                                (getf (cddr question) :during))
@@ -310,15 +308,25 @@ run's paths (for parameter selection). Returns the answer's value; signals UNANS
     (:parameter
      (let* ((parameter (second question))
             (condition (getf (cddr question) :such-that))
-            (holding (loop for (path-facts path-outcome . path-states) in paths
-                           when (eq :true (prove-on-path bridge scenario path-states path-outcome condition nil))
-                             collect path-facts)))
+            (verdicts (loop for (path-facts path-outcome . path-states) in paths
+                            collect (cons (ames.maxima:with-assumptions (bridge path-facts)
+                                            (prove-on-path bridge scenario path-states path-outcome condition nil))
+                                          path-facts)))
+            (holding (loop for (verdict . path-facts) in verdicts when (eq verdict :true) collect path-facts))
+            (undecided (find :unknown verdicts :key #'first)))
+       (when undecided
+         (unanswerable "whether it holds is not decided on the branch assuming ~{~(~S~)~^ and ~}"
+                       (rest undecided)))
        (cond ((null holding) (list :never "on no branch of the run"))
              ((= (length holding) (length paths)) (list :always "on every branch of the run"))
-             (t (cons :when (mapcar (lambda (path-facts)
-                                      (mapcar (lambda (fact) (parameter-conditions bridge parameter fact))
-                                              path-facts))
-                                    holding))))))))
+             (t (let ((plain (simplest-condition bridge holding (scenario-assumption-relations scenario))))
+                  (case plain
+                    (:true (list :always "under the assumptions"))
+                    (:false (list :never "under the assumptions"))
+                    (t (cons :when (mapcar (lambda (conjunction)
+                                             (mapcar (lambda (fact) (parameter-conditions bridge parameter fact))
+                                                     conjunction))
+                                           plain)))))))))))
 
 (defun numeric-answer (bridge value values)
   "VALUE's number under the parameter VALUES, when it has one."
@@ -345,12 +353,26 @@ the scenario's assumptions."
                        collect (let ((assume (and branched (not (eq (first question) :parameter))
                                                   (list :assume facts))))
                                  (handler-case
-                                     (ames.maxima:with-assumptions (bridge facts)
+                                     (ames.maxima:with-assumptions (bridge (and assume facts))
                                        (let ((value (answer-question bridge scenario question facts
                                                                      outcome states paths)))
+                                         (when (and (not (member (first question) '(:prove :parameter)))
+                                                    (not (and (free-of-p 'tau value) (free-of-p +arc-length+ value))))
+                                           (unanswerable "the answer still depends on a state's own time or arc length"))
                                          (append (list name value) assume
                                                  (let ((number (numeric-answer bridge value values)))
                                                    (and number (list :numeric number))))))
                                    (unanswerable (condition)
                                      (append (list name :unanswered :reason (ames-error-detail condition))
+                                             assume))
+                                   ;; a query that fails never ends the run: it is not answered
+                                   (ames-error (condition)
+                                     (append (list name :unanswered
+                                                   :reason (format nil "it could not be worked out: ~A"
+                                                                   (one-line condition)))
+                                             assume))
+                                   (error (condition)
+                                     (append (list name :unanswered
+                                                   :reason (format nil "an internal error while answering it: ~A"
+                                                                   (one-line condition)))
                                              assume))))))))

@@ -215,7 +215,7 @@ are alternatives. At a concave corner both faces can push at once."
   (list* 'ames.kb:body (scenario-body-name body)
          :fixed (and (scenario-body-fixed-p body) t)
          :mass (scenario-body-mass body)
-         (append (and (scenario-body-fixed-p body) (list :position (scenario-body-position body)))
+         (append (and (scenario-body-driven-p body) (list :driven t)) (and (scenario-body-fixed-p body) (list :position (scenario-body-position body)))
                  properties)))
 
 (defun situation-entities (run)
