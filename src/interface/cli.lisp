@@ -27,7 +27,7 @@
 (defparameter *usage*
   "Usage: ames run FILE... [--format text|sexp|latex|json|html] [--svg OUT.svg] [--numeric]
                  [--set PARAM=VALUE ...] [--time-limit SECONDS] [--maxima-timeout SECONDS]
-                 [--verbose] [--jobs N]
+                 [--all-branches] [--verbose] [--jobs N]
        ames explain FILE... [--state N] [--numeric] [--set PARAM=VALUE ...]
   Simulate every scenario in each FILE and print a report.
   --format text   a report for people, state by state (the default)
@@ -37,6 +37,7 @@
   --format html   one self-contained page: pictures, timelines, typeset formulas
   --svg OUT.svg   also draw each scenario (OUT-NAME.svg when the run has several)
   --numeric       use the scenario's (:value N) defaults as parameter values
+  --all-branches  where the values select a branch of a fork, simulate the others too
   --set p=v ...   give parameter p the number v (an integer, ratio or decimal), over its
                   default; numeric values are then printed beside the closed forms, and
                   a fact the assumptions leave open but the values decide is used and
@@ -98,10 +99,12 @@ signal USAGE-ERROR naming TEXT when it is not one."
 
 (defun parse-command-line (arguments)
   "Parse ARGUMENTS (strings, without the program name) into a plist (:COMMAND :FILES
-:FORMAT :SETTINGS :SVG :STATE :NUMERIC :TIME-LIMIT :MAXIMA-TIMEOUT :VERBOSE); the two
+:FORMAT :SETTINGS :SVG :STATE :NUMERIC :TIME-LIMIT :MAXIMA-TIMEOUT :VERBOSE
+:ALL-BRANCHES); the two
 limits are NIL when not given. Signals USAGE-ERROR on anything malformed."
   (let ((command (first arguments)) (files '()) (format :text) (settings '()) (svg nil)
-        (state nil) (numeric nil) (time-limit nil) (maxima-timeout nil) (verbose nil))
+        (state nil) (numeric nil) (time-limit nil) (maxima-timeout nil) (verbose nil)
+        (all-branches nil))
     (cond ((null command) (error 'usage-error :detail "no command given"))
           ((member command '("help" "--help" "-h") :test #'string=)
            (return-from parse-command-line (list :command :help)))
@@ -122,6 +125,8 @@ limits are NIL when not given. Signals USAGE-ERROR on anything malformed."
                         (error 'usage-error :datum argument :detail "--svg takes the picture's file name")))
                      ((string= argument "--numeric")
                       (setf numeric t))
+                     ((string= argument "--all-branches")
+                      (setf all-branches t))
                      ((string= argument "--set")
                       (unless (and rest (find #\= (first rest)))
                         (error 'usage-error :datum argument :detail "--set takes PARAM=VALUE"))
@@ -145,7 +150,8 @@ limits are NIL when not given. Signals USAGE-ERROR on anything malformed."
     (list :command (if (string= command "explain") :explain :run)
           :files (nreverse files) :format format
           :settings (nreverse settings) :svg svg :state state :numeric numeric
-          :time-limit time-limit :maxima-timeout maxima-timeout :verbose verbose)))
+          :time-limit time-limit :maxima-timeout maxima-timeout :verbose verbose
+          :all-branches all-branches)))
 
 (defun command-line-limits (options)
   "The LIMITS for the parsed command line OPTIONS: *LIMITS* with its time limit and
@@ -170,7 +176,8 @@ child processes (RUN-JOBS). When the standard output is a pipe whose reader went
   (let ((status
           (handler-case
               (multiple-value-bind (jobs arguments) (jobs-option arguments)
-                (let ((options (parse-command-line arguments)))
+                (let* ((options (parse-command-line arguments))
+                       (*all-branches* (getf options :all-branches)))
                   (case (getf options :command)
                     (:help (write-string *usage*) (terpri) +exit-complete+)
                     (:explain (explain-files (getf options :files) :state (getf options :state)

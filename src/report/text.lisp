@@ -36,7 +36,8 @@
 
 (defun print-state-text (view stream)
   "Print one state's VIEW (see STATE-VIEW) on STREAM."
-  (format stream "~%State ~D, from t = ~A~@[ (~A)~]~%" (getf view :index)
+  (format stream "~%~:[State ~D~;Fork at the start of state ~D (no period of motion)~], ~
+                  from t = ~A~@[ (~A)~]~%" (getf view :fork) (getf view :index)
           (phrase-string (getf view :start))
           (and (getf view :start-number) (number-text (getf view :start-number))))
   (format stream "  contacts:~:[ none~;~]~%" (getf view :contacts))

@@ -153,9 +153,18 @@ knowledge base's reported :ENERGY entries when the state has any other kind)."
   "True when X is a two-element vector of expressions (a vector quantity's value)."
   (and (consp x) (= (length x) 2) (not (symbolp (first x)))))
 
+(defun fork-state-p (state)
+  "True when STATE is a fork (end event (:BRANCH)): no period of motion, and no number
+that queries count (the state it splits, in each branch, has its index)."
+  (equal (state-end-event state) '(:branch)))
+
 (defun resolve-when (bridge states when)
-  "The STATE and point (:START, :END or a local time) WHEN names among STATES."
-  (flet ((indexed (n) (or (find n states :key #'state-index) (unanswerable "there is no state ~D" n))))
+  "The STATE and point (:START, :END or a local time) WHEN names among STATES; a state
+number N counts periods of motion, never a fork."
+  (flet ((indexed (n) (or (find-if (lambda (state) (and (eql n (state-index state))
+                                                         (not (fork-state-p state))))
+                                    states)
+                           (unanswerable "there is no state ~D" n))))
     (ecase (first when)
       (:start (values (indexed (second when)) :start))
       (:end (values (indexed (second when)) :end))
@@ -349,7 +358,13 @@ the scenario's assumptions."
                                        (let ((value (answer-question bridge scenario question facts
                                                                      outcome states paths)))
                                          (append (list name value) assume
-                                                 (let ((number (numeric-answer bridge value values)))
+                                                 ;; numbers only with values that satisfy
+                                                 ;; the path's facts (never beside a branch
+                                                 ;; the values rule out)
+                                                 (let ((number (and (every (lambda (fact)
+                                                                             (values-satisfy-p bridge fact values))
+                                                                           facts)
+                                                                    (numeric-answer bridge value values))))
                                                    (and number (list :numeric number))))))
                                    (unanswerable (condition)
                                      (append (list name :unanswered :reason (ames-error-detail condition))

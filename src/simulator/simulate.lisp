@@ -282,11 +282,11 @@ parameter's declaration to them."
                                 (getf (rest duration) :from-arc-length)
                                 (getf (rest duration) :to-arc-length) values)))))
 
-(defun add-numeric-values (history bridge)
+(defun add-numeric-values (history bridge &optional (clock 0))
   "When HISTORY has parameter values, record in each state's notes (:NUMERIC plist) the
-numeric start, duration and final positions and velocities."
-  (let ((values (history-parameter-values history))
-        (clock 0))
+numeric start, duration and final positions and velocities. CLOCK is the number at which
+its first state starts (a branch continued from a fork starts later), or NIL."
+  (let ((values (history-parameter-values history)))
     (when values
       (dolist (state (history-states history))
         (flet ((numbers-of (alist)
