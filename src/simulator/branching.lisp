@@ -209,10 +209,12 @@ that fact: see ASSUMED-ON-THIS-PATH-P)."
 
 (defun simulate-every-branch-p (run selected)
   "True when every branch of a fork is simulated: no values select one (SELECTED is NIL),
-or the scenario's (simulate :all-branches t) or *ALL-BRANCHES* (--all-branches) asks for
-all. Otherwise only the selected branch is (the language page, \"Ambiguity and
-branching\")."
-  (or (null selected) *all-branches* (scenario-all-branches (run-scenario run))))
+the scenario's (simulate :all-branches t) or *ALL-BRANCHES* (--all-branches) asks for
+all, or a query selects a parameter (its answer is read off every branch). Otherwise
+only the selected branch is (the language page, \"Ambiguity and branching\")."
+  (or (null selected) *all-branches* (scenario-all-branches (run-scenario run))
+      (some (lambda (query) (eq (first (second query)) :parameter))
+            (scenario-queries (run-scenario run)))))
 
 (defun unsimulated-branch (alternative)
   "The branch ALTERNATIVE listed with its fact only, as the values rule it out:

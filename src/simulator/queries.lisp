@@ -355,6 +355,8 @@ the scenario's assumptions."
                                                   (list :assume facts))))
                                  (handler-case
                                      (ames.maxima:with-assumptions (bridge facts)
+                                       (when (eq outcome :not-simulated)
+                                         (unanswerable "the values rule this branch out, and it is not simulated (--all-branches simulates it)"))
                                        (let ((value (answer-question bridge scenario question facts
                                                                      outcome states paths)))
                                          (append (list name value) assume
