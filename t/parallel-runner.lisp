@@ -72,10 +72,11 @@ test and print the result marker and its result form on OUTPUT, until end of fil
 ;;; ------------------------------------------------------------------ the test list
 
 (defun suite-leaf-tests (suite-name)
-  "Every test case under the suite SUITE-NAME, depth first, as names."
+  "Every test case under the suite (or test) SUITE-NAME, depth first, as names."
   (let ((suite (get-test suite-name)) (names '()))
     (labels ((walk (object)
                (etypecase object
+                 (null (error "No test or suite named ~S." suite-name))
                  (symbol (walk (get-test object)))
                  (it.bese.fiveam::test-suite
                   (loop for child being the hash-values of (it.bese.fiveam::tests object)
@@ -102,10 +103,12 @@ test and print the result marker and its result form on OUTPUT, until end of fil
     table))
 
 (defun scheduled-tests (&optional (suite 'all-tests))
-  "The tests under SUITE, longest recorded cost first; unrecorded tests (new ones) are
-taken as 10 s."
+  "The tests under SUITE (a suite or test name, or a list of them), longest recorded cost
+first; unrecorded tests (new ones) are taken as 10 s."
   (let ((costs (read-test-costs (test-costs-file))))
-    (stable-sort (suite-leaf-tests suite) #'>
+    (stable-sort (remove-duplicates (mapcan #'suite-leaf-tests (alexandria:ensure-list suite))
+                                    :from-end t)
+                 #'>
                  :key (lambda (name) (gethash (symbol-name name) costs 10)))))
 
 ;;; ------------------------------------------------------------------ the coordinator side
@@ -245,8 +248,19 @@ workers could not start; see ~A~%~A" name (worker-log worker) (log-tail (worker-
                   (mapcar (lambda (r) (cons (getf r :name) (/ (round (getf r :seconds) 0.01) 100.0)))
                           (sort (copy-list results) #'> :key (lambda (r) (getf r :seconds))))))))))
 
-(defun run-ames-tests-in-parallel (&key (exit t) (suite 'all-tests) (jobs (worker-count)))
-  "Run every test under SUITE on JOBS worker processes; print a line per test as it ends,
+(defun tests-from-environment ()
+  "The suites and tests AMES_TESTS names (separated by commas or spaces, as in
+AMES_TESTS=simulator,cli), or ALL-TESTS."
+  (let ((given (uiop:getenv "AMES_TESTS")))
+    (if (and given (string/= (string-trim " ," given) ""))
+        (mapcar (lambda (name) (intern (string-upcase name) '#:ames.tests))
+                (remove "" (uiop:split-string given :separator ", ") :test #'string=))
+        'all-tests)))
+
+(defun run-ames-tests-in-parallel (&key (exit t) (suite (tests-from-environment))
+                                        (jobs (worker-count)))
+  "Run every test under SUITE (see SCHEDULED-TESTS; by default what AMES_TESTS names, or
+every suite) on JOBS worker processes; print a line per test as it ends,
 each failure's explanation, the slowest tests, the skipped count (when any) and the plain
 closing line 'N passed, N failed'. With EXIT, quit with 0 when nothing failed, 1 otherwise;
 otherwise return the passed and failed counts."
