@@ -107,8 +107,8 @@ share of the known durations."
 
 (defun state-html (presenter view stream)
   "Write one state's VIEW as HTML on STREAM."
-  (format stream "<div class=\"state\"><h3>State ~D, from ~A~@[ <span class=\"numbers\">(t = ~A)</span>~]</h3>~%"
-          (getf view :index) (phrase-html presenter (cons "t = " (getf view :start)))
+  (format stream "<div class=\"state\"><h3>~:[State ~D~;Fork at the start of state ~D (no period of motion)~], from ~A~@[ <span class=\"numbers\">(t = ~A)</span>~]</h3>~%"
+          (getf view :fork) (getf view :index) (phrase-html presenter (cons "t = " (getf view :start)))
           (and (getf view :start-number) (number-text (getf view :start-number))))
   (format stream "<p><b>Contacts:</b> ~:[none~;~:*~{~A~^; ~}~].</p>~%"
           (mapcar (lambda (c) (phrase-html presenter c)) (getf view :contacts)))

@@ -86,8 +86,11 @@
                      number (length branches) (getf branch :selected)
                      (phrase-string (getf branch :assume)))
              (dolist (state (getf branch :states)) (print-state-text state stream))
-             (format stream "~%End of branch ~D: ~(~A~)~@[ (~A)~]~%" number (getf branch :outcome)
-                     (getf branch :failure))))
+             (if (eq (getf branch :outcome) :not-simulated)
+                 (format stream "~%Branch ~D is not simulated: the given values rule it out ~
+                                 (--all-branches simulates it).~%" number)
+                 (format stream "~%End of branch ~D: ~(~A~)~@[ (~A)~]~%" number (getf branch :outcome)
+                         (getf branch :failure)))))
   (when (getf view :final)
     (format stream "  at the end:~%")
     (dolist (final (getf view :final))
