@@ -260,9 +260,9 @@ AMES_TESTS=simulator,cli), or ALL-TESTS."
 (defun run-ames-tests-in-parallel (&key (exit t) (suite (tests-from-environment))
                                         (jobs (worker-count)))
   "Run every test under SUITE (see SCHEDULED-TESTS; by default what AMES_TESTS names, or
-every suite) on JOBS worker processes; print a line per test as it ends,
-each failure's explanation, the slowest tests, the skipped count (when any) and the plain
-closing line 'N passed, N failed'. With EXIT, quit with 0 when nothing failed, 1 otherwise;
+every suite) on JOBS worker processes; print a line per test as it ends (with the
+explanation of a failure), the failed tests' names, the slowest tests, the skipped count
+(when any) and the plain closing line 'N passed, N failed'. With EXIT, quit with 0 when nothing failed, 1 otherwise;
 otherwise return the passed and failed counts."
   (let* ((tests (scheduled-tests suite))
          (start (get-internal-real-time))
@@ -275,6 +275,9 @@ otherwise return the passed and failed counts."
                                  (format t "~&[~D/~D] ~A ~,1F s~:[~; FAILED~]~%" (incf done)
                                          (length tests) (getf result :name) (getf result :seconds)
                                          (plusp (getf result :failed)))
+                                 ;; a failure is explained at once (a run cut short keeps it)
+                                 (when (plusp (getf result :failed))
+                                   (format t "~A~%" (getf result :details)))
                                  (finish-output)))
     ;; every test must have reported; one that did not is a failure
     (dolist (name (set-difference tests (mapcar (lambda (r) (getf r :name)) results)))
@@ -291,9 +294,10 @@ otherwise return the passed and failed counts."
         (skipped (reduce #'+ results :key (lambda (r) (getf r :skipped))))
         (slowest (subseq (sort (copy-list results) #'> :key (lambda (r) (getf r :seconds)))
                          0 (min 10 (length results)))))
-    (dolist (result results)
-      (when (plusp (getf result :failed))
-        (format t "~&~%---- ~A failed:~%~A~%" (getf result :name) (getf result :details))))
+    (let ((failing (remove-if-not (lambda (r) (plusp (getf r :failed))) results)))
+      (when failing
+        (format t "~&~%Failed (explained above, as each ended):~%~{  ~A~%~}"
+                (mapcar (lambda (r) (getf r :name)) (reverse failing)))))
     (format t "~&~%Wall time ~,1F s; the tests' own time adds up to ~,1F s. Slowest:~%~
                ~:{  ~6,1F s  ~A~%~}"
             wall (reduce #'+ results :key (lambda (r) (getf r :seconds)))
