@@ -139,3 +139,15 @@ still only the selected one has numbers."
                       "the selected path's answer ~S" answer))
                 (is (null (getf (cddr answer) :numeric))
                     "a number beside a branch the values rule out: ~S" answer))))))))
+
+(test all-branches-is-read-from-the-command-line-and-the-scenario
+  "--all-branches and (simulate :all-branches t) are read; :all-branches takes T or NIL."
+  (is (eq t (getf (ames::parse-command-line '("run" "a.lisp" "--all-branches")) :all-branches)))
+  (is (null (getf (ames::parse-command-line '("run" "a.lisp")) :all-branches)))
+  (is (member "--all-branches"
+              (ames::child-arguments "a.lisp" (ames::parse-command-line
+                                               '("run" "a.lisp" "--all-branches")))
+              :test #'equal))
+  (is (eq t (ames:scenario-all-branches (pushed-crate '(simulate :states 1 :all-branches t)))))
+  (is (null (ames:scenario-all-branches (pushed-crate))))
+  (signals ames:scenario-error (pushed-crate '(simulate :all-branches 3))))
