@@ -137,7 +137,7 @@ first; unrecorded tests (new ones) are taken as 10 s."
   (let ((log (asdf:system-relative-pathname "ames" (format nil "build/test-worker-~D.log" index))))
     (ensure-directories-exist log)
     (%make-worker
-     :index index :log log
+     :index index :log log :started (get-internal-real-time)
      :process (uiop:launch-program
                (list (or (uiop:getenv "SBCL") "sbcl") "--noinform" "--non-interactive"
                      "--no-sysinit" "--no-userinit" "--load"
@@ -195,13 +195,15 @@ result is passed to ON-RESULT and frees the worker. Other lines are ignored."
           (worker-started worker) (get-internal-real-time))))
 
 (defun worker-lost-p (worker timeout)
-  "Why WORKER must be replaced (a string), or NIL: its process ended, or its test has run
-longer than TIMEOUT seconds."
+  "Why WORKER must be replaced (a string), or NIL: its process ended, its test has run
+longer than TIMEOUT seconds, or it has not loaded the system after 600 s."
   (cond ((not (worker-alive-p worker))
          (format nil "ended (exit code ~A)"
                  (ignore-errors (uiop:wait-process (worker-process worker)))))
         ((and (worker-test worker) (> (seconds-since (worker-started worker)) timeout))
-         (format nil "ran out of time (~D s)" timeout))))
+         (format nil "ran out of time (~D s)" timeout))
+        ((and (not (worker-ready worker)) (> (seconds-since (worker-started worker)) 600))
+         "did not load the system within 600 s")))
 
 (defun run-test-queue (tests jobs &key (timeout (test-timeout)) (on-result #'identity))
   "Run the test names TESTS on JOBS worker processes; call ON-RESULT with each result plist
@@ -231,6 +233,7 @@ workers could not start; see ~A~%~A" name (worker-log worker) (log-tail (worker-
                                (setf queue '()))
                              (let ((fresh (start-worker (worker-index worker))))
                                (setf (worker-process worker) (worker-process fresh)
+                                     (worker-started worker) (worker-started fresh)
                                      (worker-test worker) nil (worker-ready worker) nil)))
                             ((and queue (worker-ready worker) (null (worker-test worker)))
                              (give-test worker (pop queue))))))
