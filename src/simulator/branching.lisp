@@ -200,7 +200,10 @@ that fact: see ASSUMED-ON-THIS-PATH-P)."
                             (if (or (eq alternative selected)
                                     (simulate-every-branch-p run selected))
                                 (grow-branch run alternative index check-incremental
-                                             (eq alternative selected))
+                                             (eq alternative selected)
+                                             (and values (numeric-clock (run-bridge run)
+                                                                        (history-states history)
+                                                                        values)))
                                 (unsimulated-branch alternative)))
                           alternatives)))
           (setf (history-states history) (append (history-states history) (list fork))
@@ -231,9 +234,10 @@ branch must not inherit)."
   (and (null (getf alternative :substitution))
        (or selected (null (run-values run)))))
 
-(defun grow-branch (run alternative index check-incremental selected)
+(defun grow-branch (run alternative index check-incremental selected &optional clock)
   "Simulate the branch ALTERNATIVE under its facts, from the fork on when it may continue
-there (CONTINUABLE-BRANCH-P), else from the start; its states from the fork on, as (:ASSUME FACT :STATES ... :OUTCOME ...
+there (CONTINUABLE-BRANCH-P), else from the start; CLOCK is the number at which the fork
+starts under the values (see NUMERIC-CLOCK); its states from the fork on, as (:ASSUME FACT :STATES ... :OUTCOME ...
 [:SELECTED T] [:SUBSTITUTION (P V)])."
   (let* ((facts (append (getf *branching* :extra-facts) (getf alternative :facts)))
          (failure nil)
@@ -244,7 +248,8 @@ there (CONTINUABLE-BRANCH-P), else from the start; its states from the fork on, 
                         ;; others they would settle facts against the branch's own
                         (if (continuable-branch-p run alternative selected)
                             (continue-branch run index (getf alternative :facts)
-                                             (and selected (run-values run)) check-incremental)
+                                             (and selected (run-values run)) check-incremental
+                                             clock)
                             (simulate-branch (getf alternative :scenario) (run-bridge run)
                                              (and selected (run-values run)) check-incremental
                                              facts))
@@ -305,9 +310,10 @@ branch's leaf outcomes (:FAILED for a branch that could not be simulated)."
 (defun simulate-branch (scenario bridge values check-incremental facts)
   "SCENARIO simulated from the start with FACTS assumed besides its own assumptions:
 its SIMULATION-HISTORY. VALUES are the run's parameter values (an alist by symbol)."
-  (simulate-checked scenario bridge
-                    (mapcar (lambda (entry) (cons (symbol-name (car entry)) (cdr entry)))
-                            (remove-if-not (lambda (entry)
-                                             (find-scenario-parameter (car entry) scenario))
-                                           values))
-                    check-incremental :extra-facts facts))
+  (let ((*history-clock* 0))            ; its history starts at t = 0
+    (simulate-checked scenario bridge
+                      (mapcar (lambda (entry) (cons (symbol-name (car entry)) (cdr entry)))
+                              (remove-if-not (lambda (entry)
+                                               (find-scenario-parameter (car entry) scenario))
+                                             values))
+                      check-incremental :extra-facts facts)))

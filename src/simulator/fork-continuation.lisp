@@ -38,10 +38,20 @@ its model not yet built."
                                      situation :decider (state-decider run))))
     run))
 
-(defun continue-branch (run index facts values check-incremental)
+(defun numeric-clock (bridge states values)
+  "The number at which the state after STATES (the history's so far) starts under VALUES,
+summed as ADD-NUMERIC-VALUES sums it (so that a continued branch prints the numbers a run
+from the start prints), or NIL."
+  (let ((clock *history-clock*))
+    (dolist (state states clock)
+      (let ((duration (numeric-duration bridge state values)))
+        (setf clock (and clock (realp duration) (+ clock duration)))))))
+
+(defun continue-branch (run index facts values check-incremental clock)
   "The SIMULATION-HISTORY of a branch that continues RUN from its fork at state INDEX
 with FACTS (the branch's own, besides those already in force) assumed and the parameter
-VALUES (or NIL); its states are those from INDEX on. Signals as SIMULATE-CHECKED does."
+VALUES (or NIL); its states are those from INDEX on, its numbers starting at CLOCK (see
+NUMERIC-CLOCK). Signals as SIMULATE-CHECKED does."
   (let* ((scenario (run-scenario run))
          (bridge (run-bridge run))
          (history (make-instance 'simulation-history :scenario scenario
@@ -52,7 +62,8 @@ VALUES (or NIL); its states are those from INDEX on. Signals as SIMULATE-CHECKED
       (restart-case
           (handler-bind ((ames.engine:undecided-relation #'undecided-to-ambiguity))
             (setf branch (rebuild-run-model (branch-run run values)))
-            (run-states branch history index limit check-incremental))
+            (let ((*history-clock* clock))
+              (run-states branch history index limit check-incremental)))
         (stop-simulation (&optional condition)
           :report "Stop the branch here and return its states so far."
           (setf (history-outcome history)
@@ -63,6 +74,5 @@ VALUES (or NIL); its states are those from INDEX on. Signals as SIMULATE-CHECKED
                   (append (history-states history)
                           (list (ambiguous-transition-state condition)))))
           (setf (getf (history-notes history) :stopped-by) condition)))
-      (add-numeric-values history bridge
-                          (and values (numeric-or-nil bridge (run-time run) values)))
+      (add-numeric-values history bridge clock)
       history)))
