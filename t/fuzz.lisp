@@ -2,7 +2,8 @@
 ;;;;
 ;;;; FUZZ_FORMS (default 10000) whole-path fuzz cases (t/reliability-fuzz.lisp) and
 ;;;; FUZZ_CRASH_RUNS (default 500) runs with a kill -9 of Maxima (t/reliability-crash.lisp);
-;;;; FUZZ_SEED changes the fuzz's seed. Exits 0 when every target is met (no other
+;;;; FUZZ_SEED changes the fuzz's seed; then the suite LONG-CHECKS (the order check over
+;;;; every scenario, t/reliability-runs.lisp). Exits 0 when every target is met (no other
 ;;;; condition, no hang, no lost scenario, no changed output), 1 otherwise.
 
 (require :asdf)
@@ -31,7 +32,11 @@
             (getf crash :ames-errors) (getf crash :different) (getf crash :next-failed)
             crash-seconds (getf crash :failures))
     (finish-output)
-    (uiop:quit (if (every #'zerop (list (getf figures :other) (getf figures :hangs)
-                                        (getf figures :lost) (getf figures :control-failed)
-                                        (getf crash :different) (getf crash :next-failed)))
-                   0 1))))
+    ;; the full-size repetitions of checks `make test` runs on a sample
+    (let ((long (explain! (run 'long-checks))))
+      (finish-output)
+      (uiop:quit (if (and long
+                          (every #'zerop (list (getf figures :other) (getf figures :hangs)
+                                               (getf figures :lost) (getf figures :control-failed)
+                                               (getf crash :different) (getf crash :next-failed))))
+                     0 1)))))

@@ -116,12 +116,38 @@
     (uiop:run-program (cons program arguments) :output :string :error-output :string
                                                :ignore-error-status t)))
 
-(test a-scenario-prints-the-same-bytes-alone-and-after-all-others
-  (let* ((files (mapcar #'namestring (scenario-files)))
-         (alone (mapcar (lambda (file) (bin-ames-output "run" file "--format" "sexp")) files))
-         (together (apply #'bin-ames-output "run" (append files files (list "--format" "sexp"))))
+(defparameter *order-check-scenarios*
+  '("atwood-machine" "ball-toward-low-wall" "block-bouncing-on-rough-floor" "block-hits-bumper"
+    "bouncing-ball" "particle-down-quarter-circle" "particle-under-plane" "projectile-off-table"
+    "stack-of-four-blocks")
+  "The scenarios of scenarios/ that `make test` runs again and again to check that a run's
+output does not depend on what ran before it or on a kill of Maxima: quick ones, with a
+rope, a spring, friction, impacts, a Zeno sequence, a curve and a fork among them. `make
+fuzz` checks every scenario (see the suite LONG-CHECKS).")
+
+(def-suite long-checks
+  :description "The full-size repetitions of checks `make test` runs on a sample: every
+scenario of scenarios/ instead of *ORDER-CHECK-SCENARIOS*. Not part of ALL-TESTS: `make
+fuzz` runs it.")
+
+(defun order-check-files (&optional all)
+  "The scenario files of the order and crash checks: every one with ALL, else those named
+in *ORDER-CHECK-SCENARIOS*."
+  (if all
+      (scenario-files)
+      (remove-if-not (lambda (file) (member (pathname-name file) *order-check-scenarios*
+                                            :test #'string=))
+                     (scenario-files))))
+
+(defun check-same-bytes-alone-and-after-others (files)
+  "Check that each scenario of FILES prints the same bytes alone and after all the others:
+through bin/ames (each alone, then all twice in one process) and in one Lisp (each alone
+on a fresh bridge, then after all the others on one bridge)."
+  (let* ((names (mapcar #'namestring files))
+         (alone (mapcar (lambda (file) (bin-ames-output "run" file "--format" "sexp")) names))
+         (together (apply #'bin-ames-output "run" (append names names (list "--format" "sexp"))))
          (expected (format nil "~{~A~}~:*~{~A~}" alone)))
-    (is (plusp (length files)))
+    (is (plusp (length names)))
     (is (every (lambda (text) (plusp (length text))) alone))
     (is (string= expected together)
         "the output differs from byte ~D on"
@@ -134,7 +160,7 @@
                                                       stream)
                  (ames-error (condition) (format stream "error: ~A" condition))))))
       (unwind-protect
-           (let* ((scenarios (loop for file in (scenario-files)
+           (let* ((scenarios (loop for file in files
                                    append (ames:read-scenario-file file)))
                   (alone (mapcar (lambda (scenario)
                                    (let ((fresh (ames.maxima:make-bridge)))
@@ -147,3 +173,11 @@
                    do (is (string= expected (printed scenario bridge))
                           "~A prints otherwise after the others" (ames:scenario-name scenario))))
         (ames.maxima:close-bridge bridge)))))
+
+(test a-scenario-prints-the-same-bytes-alone-and-after-all-others
+  "The order check on the sample *ORDER-CHECK-SCENARIOS* (every scenario: `make fuzz`)."
+  (check-same-bytes-alone-and-after-others (order-check-files)))
+
+(test (every-scenario-prints-the-same-bytes-alone-and-after-all-others :suite long-checks)
+  "The order check on every scenario of scenarios/."
+  (check-same-bytes-alone-and-after-others (order-check-files t)))

@@ -122,20 +122,38 @@ true when it succeeds. Returns the log as a second value."
              (values (and (eql code 0) (probe-file (merge-pathnames "report.pdf" directory)) t) output)))
       (uiop:delete-directory-tree directory :validate t :if-does-not-exist :ignore))))
 
-(test every-scenario-in-every-format
-  "Presentation forms equal the solved ones, and the text, JSON, SVG and LaTeX reports
-are produced and valid, for every scenario of scenarios/; the LaTeX compiles."
+(defun check-scenario-file-in-every-format (file)
+  "Presentation forms equal the solved ones, and the text, JSON, SVG and LaTeX reports are
+produced and valid, for every scenario of FILE; their LaTeX compiles (skipped without
+pdflatex)."
   (with-fixture simulator-bridge ()
     (let ((latex (make-string-output-stream)))
-      (dolist (file (scenario-files))
-        (dolist (scenario (ames:read-scenario-file file))
-          (let ((history (simulate-stopping-when-ambiguous scenario bridge)))
-            (check-presentation bridge history)
-            (check-formats bridge history latex))))
+      (dolist (scenario (ames:read-scenario-file file))
+        (let ((history (simulate-stopping-when-ambiguous scenario bridge)))
+          (check-presentation bridge history)
+          (check-formats bridge history latex)))
       (if (program-path "pdflatex")
           (multiple-value-bind (ok log) (compiles-with-pdflatex-p (get-output-stream-string latex))
             (is-true ok "pdflatex failed:~%~A" (subseq log (max 0 (- (length log) 3000)))))
           (skip "pdflatex is not installed (Debian's texlive-latex-base)")))))
+
+(def-suite every-scenario-in-every-format :in report
+  :description "One test per file of scenarios/, made when the tests are loaded (so that
+`make test` can run them in parallel): see CHECK-SCENARIO-FILE-IN-EVERY-FORMAT.")
+
+(defun define-every-format-tests ()
+  "Define, in the suite EVERY-SCENARIO-IN-EVERY-FORMAT, the test
+EVERY-FORMAT/NAME for each file NAME.lisp of scenarios/."
+  (let ((*package* (find-package '#:ames.tests)))
+    (dolist (file (scenario-files))
+      (it.bese.fiveam::register-test
+       (intern (string-upcase (format nil "every-format/~A" (pathname-name file))) '#:ames.tests)
+       (format nil "Every report format for scenarios/~A.~A."
+               (pathname-name file) (pathname-type file))
+       `((check-scenario-file-in-every-format ,(namestring file)))
+       (get-test 'every-scenario-in-every-format) nil :definition-time nil))))
+
+(define-every-format-tests)
 
 (test the-command-line-writes-every-format-and-the-pictures
   (with-fixture simulator-bridge ()

@@ -33,7 +33,7 @@
 (defparameter *usage*
   "Usage: ames run FILE... [--format text|sexp|latex|json|html] [--svg OUT.svg] [--numeric]
                  [--set PARAM=VALUE ...] [--time-limit SECONDS] [--maxima-timeout SECONDS]
-                 [--verbose] [--jobs N]
+                 [--all-branches] [--verbose] [--jobs N]
        ames explain FILE... [--state N] [--numeric] [--set PARAM=VALUE ...]
   Simulate every scenario in each FILE and print a report.
   --format text   a report for people, state by state (the default)
@@ -44,6 +44,7 @@
   --standalone    with --format latex: one whole LaTeX document (for pdflatex)
   --svg OUT.svg   also draw each scenario (OUT-NAME.svg when the run has several)
   --numeric       use the scenario's (:value N) defaults as parameter values
+  --all-branches  where the values select a branch of a fork, simulate the others too
   --set p=v ...   give parameter p the number v (an integer, ratio or decimal), over its
                   default; numeric values are then printed beside the closed forms, and
                   a fact the assumptions leave open but the values decide is used and
@@ -109,11 +110,12 @@ signal USAGE-ERROR naming TEXT when it is not one."
 
 (defun parse-command-line (arguments)
   "Parse ARGUMENTS (strings, without the program name) into a plist (:COMMAND :FILES
-:FORMAT :SETTINGS :SVG :STATE :NUMERIC :TIME-LIMIT :MAXIMA-TIMEOUT :VERBOSE); the two
+:FORMAT :SETTINGS :SVG :STATE :NUMERIC :TIME-LIMIT :MAXIMA-TIMEOUT :VERBOSE
+:ALL-BRANCHES); the two
 limits are NIL when not given. Signals USAGE-ERROR on anything malformed."
   (let ((command (first arguments)) (files '()) (format :text) (settings '()) (svg nil)
         (state nil) (numeric nil) (time-limit nil) (maxima-timeout nil) (verbose nil)
-        (standalone nil) (no-check nil))
+        (standalone nil) (no-check nil) (all-branches nil))
     (cond ((null command) (error 'usage-error :detail "no command given"))
           ((member command '("help" "--help" "-h") :test #'string=)
            (return-from parse-command-line (list :command :help)))
@@ -134,6 +136,8 @@ limits are NIL when not given. Signals USAGE-ERROR on anything malformed."
                         (error 'usage-error :datum argument :detail "--svg takes the picture's file name")))
                      ((string= argument "--numeric")
                       (setf numeric t))
+                     ((string= argument "--all-branches")
+                      (setf all-branches t))
                      ((string= argument "--set")
                       (unless (and rest (find #\= (first rest)))
                         (error 'usage-error :datum argument :detail "--set takes PARAM=VALUE"))
@@ -160,7 +164,7 @@ limits are NIL when not given. Signals USAGE-ERROR on anything malformed."
           :files (nreverse files) :format format
           :settings (nreverse settings) :svg svg :state state :numeric numeric
           :time-limit time-limit :maxima-timeout maxima-timeout :verbose verbose
-          :standalone standalone :no-check no-check)))
+          :standalone standalone :no-check no-check :all-branches all-branches)))
 
 (defun command-line-limits (options)
   "The LIMITS for the parsed command line OPTIONS: *LIMITS* with its time limit and
@@ -186,7 +190,8 @@ child processes (RUN-JOBS). When the standard output is a pipe whose reader went
           (handler-case
               (multiple-value-bind (jobs arguments) (jobs-option arguments)
                 (let* ((options (parse-command-line arguments))
-                       (ames.check:*self-check* (not (getf options :no-check))))
+                       (ames.check:*self-check* (not (getf options :no-check)))
+                       (*all-branches* (getf options :all-branches)))
                   (case (getf options :command)
                     (:help (write-string *usage*) (terpri) +exit-complete+)
                     (:explain (explain-files (getf options :files) :state (getf options :state)

@@ -45,6 +45,7 @@ the limits and --verbose."
              (when value (list option (format nil "~A" value))))))
     (append (list "run" file "--format" (string-downcase (getf options :format)))
             (when (getf options :numeric) (list "--numeric"))
+            (when (getf options :all-branches) (list "--all-branches"))
             (seconds "--time-limit" :time-limit)
             (seconds "--maxima-timeout" :maxima-timeout)
             (when (getf options :verbose) (list "--verbose"))

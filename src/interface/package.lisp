@@ -59,7 +59,7 @@ re-exported from the layers below) and the command line of bin/ames.")
    #:state-accelerations #:state-forces-of #:state-positions #:state-velocities
    #:state-end-event #:state-final-positions #:state-final-velocities #:state-notes
    #:state-initial-velocities #:state-analysis #:state-branches #:history-answers
-   #:explain #:explain-files #:scenario-branch #:scenario-restitutions #:scenario-restitution
+   #:explain #:explain-files #:scenario-branch #:scenario-all-branches #:*all-branches* #:scenario-restitutions #:scenario-restitution
    #:body-entry
    #:history-sexp #:print-history-sexp #:print-history-text
    #:print-history-latex #:print-history-html #:print-history-svg #:history-svg

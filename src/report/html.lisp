@@ -116,8 +116,8 @@ one segment per state, as wide as its share of the known durations."
 
 (defun state-html (presenter view stream)
   "Write one state's VIEW as HTML on STREAM."
-  (format stream "<div class=\"state\"><h3>State ~D~@[ (branch ~A)~], from ~A~@[ <span class=\"numbers\">(t = ~A)</span>~]</h3>~%"
-          (getf view :index) (getf view :branch) (phrase-html presenter (cons "t = " (getf view :start)))
+  (format stream "<div class=\"state\"><h3>~:[State ~D~;Fork at the start of state ~D (no period of motion)~]~@[ (branch ~A)~], from ~A~@[ <span class=\"numbers\">(t = ~A)</span>~]</h3>~%"
+          (getf view :fork) (getf view :index) (getf view :branch) (phrase-html presenter (cons "t = " (getf view :start)))
           (and (getf view :start-number) (number-text (getf view :start-number))))
   (format stream "<p><b>Contacts:</b> ~:[none~;~:*~{~A~^; ~}~].</p>~%"
           (mapcar (lambda (c) (phrase-html presenter c)) (getf view :contacts)))

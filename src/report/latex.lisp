@@ -130,8 +130,8 @@ Numbers, and numeric forms such as 0.7483 + 1.692 tau, are written by NUMBER-TEX
 (defun print-state-latex (presenter view stream)
   "Write one state's VIEW as LaTeX on STREAM."
   (let ((start (getf view :start)))
-    (format stream "~%\\subsubsection*{State ~D~@[ (branch ~A)~], from ~A}~%" (getf view :index)
-            (getf view :branch)
+    (format stream "~%\\subsubsection*{~:[State ~D~;Fork at the start of state ~D (no period of motion)~]~@[ (branch ~A)~], from ~A}~%"
+            (getf view :fork) (getf view :index) (getf view :branch)
             (if (and (= 1 (length start)) (consp (first start)))
                 (format nil "$t = ~A$" (formula-latex presenter (second (first start))))
                 (phrase-latex presenter start))))

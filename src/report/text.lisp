@@ -75,7 +75,8 @@ level of the tree of branches), and how it ends."
 
 (defun print-state-text (view stream)
   "Print one state's VIEW (see STATE-VIEW) on STREAM."
-  (format stream "~%State ~D~@[ (branch ~A)~], from t = ~A~@[ (~A)~]~%" (getf view :index) (getf view :branch)
+  (format stream "~%~:[State ~D~;Fork at the start of state ~D (no period of motion)~]~@[ (branch ~A)~], ~
+                  from t = ~A~@[ (~A)~]~%" (getf view :fork) (getf view :index) (getf view :branch)
           (phrase-string (getf view :start))
           (and (getf view :start-number) (number-text (getf view :start-number))))
   (format stream "  contacts:~:[ none~;~]~%" (getf view :contacts))

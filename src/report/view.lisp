@@ -210,7 +210,7 @@ a textbook gives it: \"where sin(s/A) = E\"."
         append (case key
                  ;; :line-coordinates is the simulator's working (the coordinate along the
                  ;; line of two bodies, in the knowledge base's terms): the positions show it
-                 ((:numeric :numeric-duration :events :line-coordinates))
+                 ((:numeric :numeric-duration :events :line-coordinates :fork))
                  (:numeric-trajectory
                   (list (cons "integrated numerically"
                               (list (list (format nil "~D sample~:P of the motion" 
@@ -288,6 +288,9 @@ tension."
   (let* ((numeric (getf (state-notes state) :numeric))
          (events (getf (state-notes state) :events)))
     (list :index (state-index state)
+          ;; a fork is no period of motion: its index is the state it splits (see
+          ;; the simulator's branching)
+          :fork (and (getf (state-notes state) :fork) t)
           :start (time-phrase presenter (state-start state))
           :start-number (let ((n (getf numeric :start)))
                           (and (realp n) (not (realp (state-start state))) n))

@@ -107,12 +107,13 @@ are more."
       (checked-expression validation (second clause)))))
 
 (defun checked-simulate (validation clauses)
-  "The :states, :until and :branch of the (simulate ...) clause among CLAUSES, as three
-values (:branch defaults to T)."
+  "The :states, :until, :branch and :all-branches of the (simulate ...) clause among
+CLAUSES, as four values (:branch defaults to T, :all-branches to NIL)."
   (let ((clause (single-clause validation 'ames-scenario:simulate clauses)))
     (if (null clause)
-        (values nil nil t)
-        (let* ((arguments (checked-keywords validation (rest clause) '(:states :until :branch)
+        (values nil nil t nil)
+        (let* ((arguments (checked-keywords validation (rest clause)
+                                            '(:states :until :branch :all-branches)
                                             "simulate"))
                (states (keyword-value :states arguments))
                (until (multiple-value-bind (until present) (keyword-value :until arguments)
@@ -122,14 +123,20 @@ values (:branch defaults to T)."
                                ((named-p value "T") t)
                                ((named-p value "NIL") nil)
                                (t (reject validation 'scenario-syntax-error value
-                                          ":branch takes T or NIL, not ~A" (show value)))))))
+                                          ":branch takes T or NIL, not ~A" (show value))))))
+               (all (multiple-value-bind (value present) (keyword-value :all-branches arguments)
+                      (cond ((not present) nil)
+                            ((named-p value "T") t)
+                            ((named-p value "NIL") nil)
+                            (t (reject validation 'scenario-syntax-error value
+                                       ":all-branches takes T or NIL, not ~A" (show value)))))))
           (when (and (assoc :states arguments) (not (and (integerp states) (plusp states))))
             (reject validation 'scenario-syntax-error states
                     ":states takes a positive integer, not ~A" (show states)))
           (when until
             (check-positive-constant validation until "the :until time"
                                      'scenario-expression-error))
-          (values states until branch)))))
+          (values states until branch all)))))
 
 ;;; ------------------------------------------------------------------------------------
 ;;; Collisions
@@ -278,13 +285,14 @@ CHECK-SCENARIO-GEOMETRY, which the caller runs when it has those layers."
               (when (null bodies)
                 (enter validation "form" form)
                 (reject validation 'missing-property-error form "the scenario has no body"))
-              (multiple-value-bind (states until branch)
+              (multiple-value-bind (states until branch all-branches)
                   (checked-simulate validation (clauses 'ames-scenario:simulate))
                 (make-instance 'scenario
                                :name name :description description
                                :parameters parameters :gravity gravity
                                :bodies bodies :forces forces :frictions frictions
                                :states states :until until :branch branch
+                               :all-branches all-branches
                                :queries (mapcar (lambda (clause) (checked-query validation clause))
                                                 (clauses 'ames-scenario:query))
                                :restitutions (checked-restitutions

@@ -91,6 +91,9 @@ bodies), in order of declaration.")
    (branch :initarg :branch :initform t :reader scenario-branch
            :documentation "True when an ambiguity splits the run into branches; NIL when it
 stops the run, naming the missing fact.")
+   (all-branches :initarg :all-branches :initform nil :reader scenario-all-branches
+                 :documentation "True when every branch is simulated even where parameter
+values select one ((simulate :all-branches t)); by default only the selected one is.")
    (queries :initarg :queries :initform '() :reader scenario-queries
             :documentation "The validated queries, each (NAME QUESTION) in the canonical form
 of src/scenario/queries.lisp.")

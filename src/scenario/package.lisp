@@ -48,7 +48,7 @@ and Maxima (assumptions, overlaps).")
    #:scenario #:parse-scenario #:scenario-p #:scenario-positions #:scenario-body-source
    #:scenario-name #:scenario-description #:scenario-parameters #:scenario-gravity
    #:scenario-bodies #:scenario-forces #:scenario-states #:scenario-until
-   #:scenario-branch
+   #:scenario-branch #:scenario-all-branches
    #:scenario-queries #:scenario-source #:scenario-form
    #:scenario-restitutions #:scenario-restitution
    ;; springs, pulleys, ropes, universal gravitation (extensions.lisp)

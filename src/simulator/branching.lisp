@@ -12,8 +12,13 @@
 ;;;; branch is simulated anew from the start under its fact (the states before the fork
 ;;;; come out the same, and are not repeated), so that nothing of one branch leaks into
 ;;;; another. Parameter values (--set) select one branch, marked :SELECTED; every branch is
-;;;; still listed. The tree is bounded: *BRANCH-LIMIT* branches and *BRANCH-DEPTH-LIMIT*
-;;;; nested forks; a branch beyond the bound stops at its ambiguity, and the history says so.
+;;;; still listed, but only the selected one is simulated (the others have the outcome
+;;;; :NOT-SIMULATED) unless (simulate :all-branches t) or --all-branches asks for all.
+;;;; A fork is not a period of motion: it takes the index of the state it splits, which
+;;;; the branches' first states keep, and queries count no fork (`(end 0)` is the end of
+;;;; the first period of motion). The tree is bounded: *BRANCH-LIMIT* branches and
+;;;; *BRANCH-DEPTH-LIMIT* nested forks; a branch beyond the bound stops at its ambiguity,
+;;;; and the history says so.
 
 (in-package #:ames.simulator)
 
@@ -128,21 +133,25 @@ already exclude are left out."
   (and (consp fact) (member (first fact) '(< > <= >=))
        (notany #'keywordp (alexandria:flatten fact))))
 
+(defun values-satisfy-p (bridge relation values)
+  "True when the parameter VALUES (an alist) satisfy RELATION numerically (within 1e-12;
+an equation only when its sides agree so closely); NIL when they do not or when it
+cannot be evaluated."
+  (let ((difference (numeric-or-nil bridge `(- ,(relation-lhs relation) ,(relation-rhs relation))
+                                    values)))
+    (and difference
+         (ecase (first relation)
+           (> (> difference 1d-12))
+           (>= (>= difference -1d-12))
+           (< (< difference -1d-12))
+           (<= (<= difference 1d-12))
+           (= (<= (abs difference) 1d-12))))))
+
 (defun selected-alternative (run alternatives values)
   "The alternative of ALTERNATIVES whose fact the parameter VALUES satisfy, or NIL."
   (when values
     (find-if (lambda (alternative)
-               (let ((relation (getf alternative :assume)))
-                 (let ((difference (numeric-or-nil (run-bridge run)
-                                                   `(- ,(relation-lhs relation) ,(relation-rhs relation))
-                                                   values)))
-                   (and difference
-                        (ecase (first relation)
-                          (> (> difference 1d-12))
-                          (>= (>= difference -1d-12))
-                          (< (< difference -1d-12))
-                          (<= (<= difference 1d-12))
-                          (= (<= (abs difference) 1d-12)))))))
+               (values-satisfy-p (run-bridge run) (getf alternative :assume) values))
              alternatives)))
 
 (defun assumed-on-this-path-p (fact)
@@ -181,23 +190,54 @@ that fact: see ASSUMED-ON-THIS-PATH-P)."
                                   :end-event '(:branch)
                                   :final-positions (run-positions run)
                                   :final-velocities (run-velocities run)
-                                  :notes (list :missing-fact fact))))
+                                  :notes (list :missing-fact fact :fork t))))
         (when (rest alternatives)
           (setf (state-branches fork)
                 (let ((*branching* (list :count (+ (getf *branching* :count 0) (length alternatives))
                                          :depth (1+ (getf *branching* :depth 0))
                                          :extra-facts (getf *branching* :extra-facts))))
                   (mapcar (lambda (alternative)
-                            (grow-branch run alternative index check-incremental
-                                         (eq alternative selected)))
+                            (if (or (eq alternative selected)
+                                    (simulate-every-branch-p run selected))
+                                (grow-branch run alternative index check-incremental
+                                             (eq alternative selected)
+                                             (and values (numeric-clock (run-bridge run)
+                                                                        (history-states history)
+                                                                        values)))
+                                (unsimulated-branch alternative)))
                           alternatives)))
           (setf (history-states history) (append (history-states history) (list fork))
                 (history-outcome history) :branched)
           t)))))
 
-(defun grow-branch (run alternative index check-incremental selected)
-  "Simulate the branch ALTERNATIVE from the start under its facts; its states from the
-fork on, renumbered after the fork, as (:ASSUME FACT :STATES ... :OUTCOME ...
+(defun simulate-every-branch-p (run selected)
+  "True when every branch of a fork is simulated: no values select one (SELECTED is NIL),
+the scenario's (simulate :all-branches t) or *ALL-BRANCHES* (--all-branches) asks for
+all, or a query selects a parameter (its answer is read off every branch). Otherwise
+only the selected branch is (the language page, \"Ambiguity and branching\")."
+  (or (null selected) *all-branches* (scenario-all-branches (run-scenario run))
+      (some (lambda (query) (eq (first (second query)) :parameter))
+            (scenario-queries (run-scenario run)))))
+
+(defun unsimulated-branch (alternative)
+  "The branch ALTERNATIVE listed with its fact only, as the values rule it out:
+(:ASSUME FACT :STATES () :OUTCOME :NOT-SIMULATED [:SUBSTITUTION (P V)])."
+  (append (list :assume (getf alternative :assume) :states '() :outcome :not-simulated)
+          (and (getf alternative :substitution)
+               (list :substitution (getf alternative :substitution)))))
+
+(defun continuable-branch-p (run alternative selected)
+  "True when the branch ALTERNATIVE continues from the fork (see fork-continuation.lisp):
+its scenario is the run's (no parameter substituted), and either it is the SELECTED one
+or the run has no values (which may have settled facts before the fork that another
+branch must not inherit)."
+  (and (null (getf alternative :substitution))
+       (or selected (null (run-values run)))))
+
+(defun grow-branch (run alternative index check-incremental selected &optional clock)
+  "Simulate the branch ALTERNATIVE under its facts, from the fork on when it may continue
+there (CONTINUABLE-BRANCH-P), else from the start; CLOCK is the number at which the fork
+starts under the values (see NUMERIC-CLOCK); its states from the fork on, as (:ASSUME FACT :STATES ... :OUTCOME ...
 [:SELECTED T] [:SUBSTITUTION (P V)])."
   (let* ((facts (append (getf *branching* :extra-facts) (getf alternative :facts)))
          (failure nil)
@@ -206,8 +246,13 @@ fork on, renumbered after the fork, as (:ASSUME FACT :STATES ... :OUTCOME ...
                     (handler-case
                         ;; the values satisfy the selected branch's fact only: in the
                         ;; others they would settle facts against the branch's own
-                        (simulate-branch (getf alternative :scenario) (run-bridge run)
-                                         (and selected (run-values run)) check-incremental facts)
+                        (if (continuable-branch-p run alternative selected)
+                            (continue-branch run index (getf alternative :facts)
+                                             (and selected (run-values run)) check-incremental
+                                             clock)
+                            (simulate-branch (getf alternative :scenario) (run-bridge run)
+                                             (and selected (run-values run)) check-incremental
+                                             facts))
                       ;; the run's budget is the whole tree's: it is not one branch's failure
                       (budget-exceeded (condition) (error condition))
                       ;; an ambiguity the tree may not fork on (its bound, or a fact
@@ -231,7 +276,6 @@ fork on, renumbered after the fork, as (:ASSUME FACT :STATES ... :OUTCOME ...
          (states (and history
                       (remove-if (lambda (state) (< (state-index state) index))
                                  (history-states history)))))
-    (dolist (state states) (renumber-state state 1))
     (append (list :assume (getf alternative :assume)
                   :states states
                   :outcome (if history (history-outcome history) outcome))
@@ -263,18 +307,13 @@ branch's leaf outcomes (:FAILED for a branch that could not be simulated)."
                  (list outcome))))
     (leaves (history-outcome history) (history-states history))))
 
-(defun renumber-state (state offset)
-  "Shift STATE's index, and its branches' states', by OFFSET."
-  (setf (slot-value state 'index) (+ (state-index state) offset))
-  (dolist (branch (state-branches state))
-    (dolist (inner (getf branch :states)) (renumber-state inner offset))))
-
 (defun simulate-branch (scenario bridge values check-incremental facts)
   "SCENARIO simulated from the start with FACTS assumed besides its own assumptions:
 its SIMULATION-HISTORY. VALUES are the run's parameter values (an alist by symbol)."
-  (simulate-checked scenario bridge
-                    (mapcar (lambda (entry) (cons (symbol-name (car entry)) (cdr entry)))
-                            (remove-if-not (lambda (entry)
-                                             (find-scenario-parameter (car entry) scenario))
-                                           values))
-                    check-incremental :extra-facts facts))
+  (let ((*history-clock* 0))            ; its history starts at t = 0
+    (simulate-checked scenario bridge
+                      (mapcar (lambda (entry) (cons (symbol-name (car entry)) (cdr entry)))
+                              (remove-if-not (lambda (entry)
+                                               (find-scenario-parameter (car entry) scenario))
+                                             values))
+                      check-incremental :extra-facts facts)))

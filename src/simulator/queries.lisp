@@ -163,9 +163,18 @@ the conservative sources; the work of an external force is not in it)."
   "True when X is a two-element vector of expressions (a vector quantity's value)."
   (and (consp x) (= (length x) 2) (not (symbolp (first x)))))
 
+(defun fork-state-p (state)
+  "True when STATE is a fork (end event (:BRANCH)): no period of motion, and no number
+that queries count (the state it splits, in each branch, has its index)."
+  (equal (state-end-event state) '(:branch)))
+
 (defun resolve-when (bridge states when)
-  "The STATE and point (:START, :END or a local time) WHEN names among STATES."
-  (flet ((indexed (n) (or (find n states :key #'state-index) (unanswerable "there is no state ~D" n))))
+  "The STATE and point (:START, :END or a local time) WHEN names among STATES; a state
+number N counts periods of motion, never a fork."
+  (flet ((indexed (n) (or (find-if (lambda (state) (and (eql n (state-index state))
+                                                         (not (fork-state-p state))))
+                                    states)
+                           (unanswerable "there is no state ~D" n))))
     (ecase (first when)
       (:start (values (indexed (second when)) :start))
       (:end (values (indexed (second when)) :end))
@@ -354,13 +363,21 @@ the scenario's assumptions."
                                                   (list :assume facts))))
                                  (handler-case
                                      (ames.maxima:with-assumptions (bridge (and assume facts))
+                                       (when (eq outcome :not-simulated)
+                                         (unanswerable "the values rule this branch out, and it is not simulated (--all-branches simulates it)"))
                                        (let ((value (answer-question bridge scenario question facts
                                                                      outcome states paths)))
                                          (when (and (not (member (first question) '(:prove :parameter)))
                                                     (not (and (free-of-p 'tau value) (free-of-p +arc-length+ value))))
                                            (unanswerable "the answer still depends on a state's own time or arc length"))
                                          (append (list name value) assume
-                                                 (let ((number (numeric-answer bridge value values)))
+                                                 ;; numbers only with values that satisfy
+                                                 ;; the path's facts (never beside a branch
+                                                 ;; the values rule out)
+                                                 (let ((number (and (every (lambda (fact)
+                                                                             (values-satisfy-p bridge fact values))
+                                                                           facts)
+                                                                    (numeric-answer bridge value values))))
                                                    (and number (list :numeric number))))))
                                    (unanswerable (condition)
                                      (append (list name :unanswered :reason (ames-error-detail condition))

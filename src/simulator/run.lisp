@@ -8,6 +8,14 @@
 
 (in-package #:ames.simulator)
 
+(defvar *all-branches* nil
+  "True when every branch of a fork is simulated even where the parameter values select
+one (the command line's --all-branches); see also SCENARIO-ALL-BRANCHES.")
+
+(defvar *history-clock* 0
+  "The number at which the first state of the history being simulated starts under the
+values: 0, or a continued branch's start (see CONTINUE-BRANCH), or NIL when unknown.")
+
 (defvar *branching* nil
   "The current run's tree while it grows (see branching.lisp): a plist (:COUNT branches
 so far :DEPTH forks on the current path :EXTRA-FACTS facts of the current branch), or

@@ -293,12 +293,12 @@ durations before it summed (after a state whose end has no closed form)."
            (or (numeric-or-nil bridge start values) clock))
           (t clock))))
 
-(defun add-numeric-values (history bridge)
+(defun add-numeric-values (history bridge &optional (clock 0))
   "When HISTORY has parameter values, record in each state's notes (:NUMERIC plist) the
 numeric start, duration and final positions and velocities, each the value of the
-formula it is printed beside."
-  (let ((values (history-parameter-values history))
-        (clock 0))
+formula it is printed beside. CLOCK is the number at which its first state starts (a
+branch continued from a fork starts later), or NIL."
+  (let ((values (history-parameter-values history)))
     (when values
       (dolist (state (history-states history))
         (flet ((numbers-of (alist)
