@@ -58,7 +58,7 @@ period, at whose end it must be back where it started, its turning points allowe
         (duration (duration-number state values))
         (periodic (getf (state-notes state) :periodic)))
     (flet ((unchecked (reason) (return-from check-state (list :status :unchecked :reason reason))))
-      (cond ((state-branches state) (unchecked "a fork: the branch the values select is checked"))
+      (cond ((state-branches state) (unchecked "the fork there has no period of motion; the branch the values select is checked"))
             ((null model) (unchecked "no model recorded"))
             ((getf model :uncompared)
              (unchecked (format nil "the motion of ~{~A~^, ~} is no state variable of its model"

@@ -118,8 +118,6 @@ level of the tree of branches), and how it ends."
     (format stream "    and at the same instant ~A~%" (phrase-string event)))
   (format stream "  duration: ~A~@[ (~A)~]~%" (phrase-string (getf view :duration))
           (and (getf view :duration-number) (number-text (getf view :duration-number))))
-  (dolist (branch (getf view :branches))
-    (print-branch-text branch stream))
   (when (getf view :final)
     (format stream "  at the end:~%")
     (dolist (final (getf view :final))
@@ -127,7 +125,10 @@ level of the tree of branches), and how it ends."
               (text (first (getf final :position))) (text (second (getf final :position)))
               (vector-numbers-text (getf final :position-numbers))
               (text (first (getf final :velocity))) (text (second (getf final :velocity)))
-              (vector-numbers-text (getf final :velocity-numbers))))))
+              (vector-numbers-text (getf final :velocity-numbers)))))
+  ;; a fork's branches come after its own values, each nested under it
+  (dolist (branch (getf view :branches))
+    (print-branch-text branch stream)))
 
 (defun print-view-text (view stream)
   "Print a HISTORY-VIEW on STREAM as the text report."
