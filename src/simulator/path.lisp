@@ -51,6 +51,11 @@ reaches zero going negative: (values :AT S), (values :NEVER) or (values :UNKNOWN
   (let ((function (tidy run function :full)))
     (when (free-of-p +arc-length+ function)
       (return-from crossing-ahead (values :never)))
+    (when (group-radius run group)
+      ;; on a circle: every turn, in the direction of motion (turns.lisp)
+      (multiple-value-bind (status s) (circle-crossing run group function)
+        (when status
+          (return-from crossing-ahead (if (eq status :never) (values :never) (values status s))))))
     (let ((roots (roots-in-arc run function)) (best nil))
       (when (eq roots :failed)
         (return-from crossing-ahead (values :unknown `(:roots-of (= ,function 0)))))
