@@ -1,5 +1,5 @@
 ;;;; src/simulator/turns.lisp -- roots along a circle in the direction of motion, over every
-;;;; turn, and turning points of a one-degree-of-freedom motion.
+;;;; turn, and the inverse functions of a root's own angle undone.
 ;;;;
 ;;;; On a circle of radius r a condition is a function of the arc length s through sin(s/r)
 ;;;; and cos(s/r): solve() lists its principal roots only, which may lie behind the body
@@ -9,11 +9,6 @@
 ;;;; substitution, every turn considered: the function has period 2 pi). A root in the
 ;;;; form solve() wrote (or that form shifted by whole turns, or its mirror image) is
 ;;;; used when it is proven to be that same root.
-;;;;
-;;;; A turning point is where the energy integral E(s) = s'^2 reaches zero ahead of the
-;;;; body with E'(s) against the motion: the speed vanishes and the tangential
-;;;; acceleration brings the body back. A condition whose violation function is the
-;;;; speed along the path itself (its sign changes only through zero) is found there.
 
 (in-package #:ames.simulator)
 
@@ -38,6 +33,8 @@ reaches zero going negative, over every turn: (values :AT S), (values :NEVER), (
                  (handler-case (ames.maxima:earliest-trigonometric-root (run-bridge run) f +turn-angle+
                                                                         :after after :strictly t)
                    (ames.maxima:maxima-error () (values :unknown nil)))
+               (unless (keywordp root)
+                 (setf root (tidy run (inverse-of-own-function run root))))
                (cond ((eq root :none) (return-from circle-crossing (values :never)))
                      ((eq root :unknown)
                       (return-from circle-crossing (and status (values :unknown status))))
@@ -70,24 +67,28 @@ arc length in the bridge's form."
                 (return-from nicest-arc candidate)))))))
     s))
 
-(defun speed-function-p (run group function)
-  "True when FUNCTION (of the arc length) is the speed along GROUP's path or its
-negative: a quantity whose sign changes only through zero, where E(s) vanishes."
-  (let ((speed (group-speed group)))
-    (and speed (not (free-of-p +arc-length+ function))
-         (or (eql 0 (tidy run `(- ,function ,speed)))
-             (eql 0 (tidy run `(+ ,function ,speed)))))))
-
-(defun turning-crossing (run group function)
-  "Where FUNCTION, the speed along GROUP's path (see SPEED-FUNCTION-P), changes sign
-ahead of the body: where E(s) = s'^2 reaches zero with E going negative beyond it (the
-body stops and the push brings it back). (values :AT S), (values :NEVER) or (values
-:UNKNOWN FACT). FUNCTION is the speed's negative when the condition is the speed
-turning from negative: then it never fires while the body moves forward, and the other
-way round."
-  (let ((sign (if (eql 0 (tidy run `(- ,function ,(group-speed group)))) 1 -1)))
-    ;; the speed is direction sqrt(E): the condition fires when it reaches zero from the
-    ;; side of its sign
-    (if (/= (* sign (group-direction group)) 1)
-        (values :never)
-        (crossing-ahead run group (group-speed-squared group)))))
+(defun inverse-of-own-function (run expression)
+  "EXPRESSION with acos(cos u) written u where 0 <= u <= pi is proven, asin(sin u) and
+atan(tan u) written u where -pi/2 <= u <= pi/2 is (the principal ranges), and acos(-cos
+u) written pi - u: the roots of a sinusoid at a turning point come out so."
+  (labels ((within (u low high)
+             (and (holds run `(>= ,u ,low)) (holds run `(<= ,u ,high))))
+           (walk (x)
+             (if (or (atom x) (quantity-term-p x))
+                 x
+                 (let ((x (cons (first x) (mapcar #'walk (rest x)))))
+                   (destructuring-bind (operator &optional argument &rest more) x
+                     (cond ((or more (atom argument)) x)
+                           ((and (eq operator 'acos) (eq (first argument) 'cos)
+                                 (within (second argument) 0 'pi))
+                            (second argument))
+                           ((and (eq operator 'acos) (eq (first argument) '-) (null (cddr argument))
+                                 (consp (second argument)) (eq (first (second argument)) 'cos)
+                                 (within (second (second argument)) 0 'pi))
+                            `(- pi ,(second (second argument))))
+                           ((and (member operator '(asin atan))
+                                 (eq (first argument) (if (eq operator 'asin) 'sin 'tan))
+                                 (within (second argument) '(- (/ pi 2)) '(/ pi 2)))
+                            (second argument))
+                           (t x)))))))
+    (walk expression)))
