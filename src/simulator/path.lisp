@@ -47,18 +47,24 @@ sign()."
 
 (defun crossing-ahead (run group function)
   "The nearest arc length ahead of GROUP's start where FUNCTION (of the arc length)
-reaches zero going negative: (values :AT S), (values :NEVER) or (values :UNKNOWN FACT)."
+reaches zero going negative: (values :AT S), (values :NEVER) or (values :UNKNOWN FACT).
+Among solve()'s roots first; on a circle, when none of them is found ahead, over every
+turn of the circle in the direction of motion (CIRCLE-CROSSING): solve() lists the
+principal roots only, which may lie behind the body or miss the other family."
+  (multiple-value-bind (status s) (crossing-among-roots run group function)
+    (if (or (eq status :at) (null (group-radius run group)))
+        (values status s)
+        (multiple-value-bind (circle-status circle-s) (circle-crossing run group function)
+          (if circle-status (values circle-status circle-s) (values status s))))))
+
+(defun crossing-among-roots (run group function)
+  "CROSSING-AHEAD's answer among the roots solve() lists."
   (let ((function (tidy run function :full)))
     (when (free-of-p +arc-length+ function)
-      (return-from crossing-ahead (values :never)))
-    (when (group-radius run group)
-      ;; on a circle: every turn, in the direction of motion (turns.lisp)
-      (multiple-value-bind (status s) (circle-crossing run group function)
-        (when status
-          (return-from crossing-ahead (if (eq status :never) (values :never) (values status s))))))
+      (return-from crossing-among-roots (values :never)))
     (let ((roots (roots-in-arc run function)) (best nil))
       (when (eq roots :failed)
-        (return-from crossing-ahead (values :unknown `(:roots-of (= ,function 0)))))
+        (return-from crossing-among-roots (values :unknown `(:roots-of (= ,function 0)))))
       (dolist (root roots)
         (case (ahead-p run group root)
           (:true
@@ -68,9 +74,9 @@ reaches zero going negative: (values :AT S), (values :NEVER) or (values :UNKNOWN
                (:true (if (or (null best) (eq (nearer-p run group root best) :true))
                           (setf best root)
                           (unless (eq (nearer-p run group best root) :true)
-                            (return-from crossing-ahead (values :unknown `(< ,root ,best))))))
-               (:unknown (return-from crossing-ahead (values :unknown `(< ,(at-arc slope root) 0)))))))
-          (:unknown (return-from crossing-ahead
+                            (return-from crossing-among-roots (values :unknown `(< ,root ,best))))))
+               (:unknown (return-from crossing-among-roots (values :unknown `(< ,(at-arc slope root) 0)))))))
+          (:unknown (return-from crossing-among-roots
                       (values :unknown `(> (* ,(group-direction group) (- ,root ,(group-s0 group))) 0))))))
       (if best (values :at best) (values :never)))))
 
