@@ -97,6 +97,7 @@ frictionless translating rigid bodies evolve (after Leon Wong's 1994 MIT thesis)
                  (:file "springs")
                  (:file "ropes")
                  (:file "gravitation")
+                 (:file "turning")
                  (:file "energy")))
    (:module "scenario" :pathname "src/scenario/" :serial t
     :depends-on ("base" "maxima-bridge" "geometry")

@@ -122,9 +122,14 @@ back first, at a point not found) UNSUPPORTED-SITUATION is signalled naming the 
          (contact (gap-relation-contact relation))
          (over-arc (lambda (x) (motion-value (list group) (over-state-terms run solved x)))))
     (multiple-value-bind (status s rate)
-        (if contact
-            (meeting-arc run group (contact-meeting-terms run solved contact) over-arc)
-            (relation-arc run group relation over-arc))
+        (cond (contact
+               (meeting-arc run group (contact-meeting-terms run solved contact) over-arc))
+              ((speed-function-p run group (speed-condition-function relation over-arc))
+               ;; the speed along the path changes sign: a turning point (turns.lisp)
+               (turning-crossing run group (speed-condition-function relation over-arc)))
+              ((positive-where-reached-p run group (speed-condition-function relation over-arc))
+               (values :never))
+              (t (relation-arc run group relation over-arc)))
       (when (and (eq status :at) (eq (group-kind group) :path)
                  (eq :unknown (decide run `(>= ,(at-arc (group-speed-squared group) s) 0))))
         ;; whether the body gets there at all is open
@@ -133,8 +138,11 @@ back first, at a point not found) UNSUPPORTED-SITUATION is signalled naming the 
       (when (and (eq status :at) (eq (group-kind group) :path)
                  (holds run `(< ,(at-arc (group-speed-squared group) s) 0)))
         ;; the energy integral is negative there: the body stops and turns back on the
-        ;; way, at a root of w^2 = 0 that solve() did not list (it gives the principal
-        ;; roots of a trigonometric equation only)
+        ;; way. When the knowledge base watches for that (a condition on the speed along
+        ;; this path, see TURNING-WATCHED-P), that turning point ends the state first
+        ;; and this condition does not fire in it
+        (when (turning-watched-p run solved group)
+          (return-from path-candidate :never))
         (error 'unsupported-situation
                :datum (group-bodies group)
                :detail (format nil "The body would stop and turn back on the curve before ~

@@ -15,16 +15,16 @@
 (defconstant +turn-angle+ 'turn-angle
   "The variable standing for the angle turned along a circle from a state's start.")
 
-(defun arc-of-turn (group radius x)
+(defun arc-of-turn (run group radius x)
   "The arc length reached after turning the angle X along GROUP's circle of RADIUS."
-  `(+ ,(group-s0 group) (* ,(group-direction group) ,radius ,x)))
+  `(+ ,(inverse-of-own-function run (group-s0 group)) (* ,(group-direction group) ,radius ,x)))
 
 (defun circle-crossing (run group function)
   "On GROUP's circle: the first arc length ahead where FUNCTION (of the arc length)
 reaches zero going negative, over every turn: (values :AT S), (values :NEVER), (values
 :UNKNOWN FACT), or NIL when FUNCTION is no sinusoid of the angle turned (one frequency)."
   (let* ((radius (group-radius run group))
-         (f (and radius (tidy run (at-arc function (arc-of-turn group radius +turn-angle+)) :full)))
+         (f (and radius (tidy run (at-arc function (arc-of-turn run group radius +turn-angle+)) :full)))
          (after 0))
     (when (or (null f) (free-of-p +turn-angle+ f))
       (return-from circle-crossing nil))
@@ -53,7 +53,7 @@ reaches zero going negative, over every turn: (values :AT S), (values :NEVER), (
   "The arc length after turning ANGLE (a proven root of FUNCTION's sinusoid): solve()'s
 root of FUNCTION, shifted by whole turns or mirrored, when it is proven equal; else the
 arc length in the bridge's form."
-  (let ((s (tidy run (arc-of-turn group radius angle)))
+  (let ((s (tidy run (arc-of-turn run group radius angle)))
         (roots (roots-in-arc run function))
         (turn `(* 2 pi ,radius)))
     (unless (eq roots :failed)
@@ -69,8 +69,10 @@ arc length in the bridge's form."
 
 (defun inverse-of-own-function (run expression)
   "EXPRESSION with acos(cos u) written u where 0 <= u <= pi is proven, asin(sin u) and
-atan(tan u) written u where -pi/2 <= u <= pi/2 is (the principal ranges), and acos(-cos
-u) written pi - u: the roots of a sinusoid at a turning point come out so."
+atan(tan u) (also atan(sin u/cos u)) written u where -pi/2 <= u <= pi/2 is (the
+principal ranges), acos(-cos u) written pi - u and atan(cos u/sin u) pi/2 - u where
+0 <= u <= pi is: the roots of a sinusoid, and the arc lengths of a body released on a
+circle, come out so."
   (labels ((within (u low high)
              (and (holds run `(>= ,u ,low)) (holds run `(<= ,u ,high))))
            (walk (x)
@@ -86,9 +88,80 @@ u) written pi - u: the roots of a sinusoid at a turning point come out so."
                                  (consp (second argument)) (eq (first (second argument)) 'cos)
                                  (within (second (second argument)) 0 'pi))
                             `(- pi ,(second (second argument))))
+                           ((and (eq operator 'atan) (eq (first argument) '/) (= (length argument) 3)
+                                 (consp (second argument)) (consp (third argument))
+                                 (equal (second (second argument)) (second (third argument)))
+                                 (member (list (first (second argument)) (first (third argument)))
+                                         '((sin cos) (cos sin)) :test #'equal))
+                            ;; atan(tan u) = u on (-pi/2, pi/2); atan(cot u) = pi/2 - u on (0, pi)
+                            (let ((u (second (second argument))))
+                              (if (eq (first (second argument)) 'sin)
+                                  (if (within u '(- (/ pi 2)) '(/ pi 2)) u x)
+                                  (if (within u 0 'pi) `(- (/ pi 2) ,u) x))))
                            ((and (member operator '(asin atan))
                                  (eq (first argument) (if (eq operator 'asin) 'sin 'tan))
                                  (within (second argument) '(- (/ pi 2)) '(/ pi 2)))
                             (second argument))
                            (t x)))))))
     (walk expression)))
+
+;;; Turning points
+;;;
+;;; A turning point is where the energy integral E(s) = s'^2 reaches zero ahead of the
+;;; body and turns negative: the speed vanishes and the tangential force brings the body
+;;; back. A condition whose violation function is the speed along the path itself (whose
+;;; sign changes only through zero) fires there.
+
+(defun speed-condition-function (relation over-arc)
+  "RELATION's violation function over the arc length (see VIOLATION-FUNCTION), or NIL
+for a compound relation."
+  (and (not (member (first relation) '(or and not)))
+       (funcall over-arc (violation-function relation))))
+
+(defun speed-function-p (run group function)
+  "True when FUNCTION (of the arc length) is the speed along GROUP's path or its
+negative."
+  (let ((speed (group-speed group)))
+    (and speed function (not (free-of-p +arc-length+ function))
+         (or (eql 0 (tidy run `(- ,function ,speed)))
+             (eql 0 (tidy run `(+ ,function ,speed)))))))
+
+(defun turning-crossing (run group function)
+  "Where FUNCTION, plus or minus the speed along GROUP's path, reaches zero from the
+side of its sign ahead of the body: where E(s) = s'^2 reaches zero going negative.
+(values :AT S), (values :NEVER) or (values :UNKNOWN FACT). FUNCTION, the speed times
+the direction of motion, is positive while the body moves: it vanishes at the turning
+point; of the opposite sign, it never reaches zero from its side."
+  (let ((sign (if (eql 0 (tidy run `(- ,function ,(group-speed group)))) 1 -1)))
+    (if (/= (* sign (group-direction group)) 1)
+        (values :never)
+        (crossing-ahead run group (group-speed-squared group)))))
+
+(defun turning-watched-p (run solved group)
+  "True when a termination condition of the model fires where GROUP's speed along its
+path changes sign (SPEED-FUNCTION-P): the knowledge base's turning point, whatever it
+calls it."
+  (let ((over-arc (lambda (x) (motion-value (list group) (over-state-terms run solved x)))))
+    (some (lambda (condition)
+            (let ((relation (ames.engine:termination-condition-relation condition)))
+              (and (not (gap-relation-contact relation))
+                   (speed-function-p run group (speed-condition-function relation over-arc)))))
+          (ames.engine:model-termination-conditions (run-model run)))))
+
+(defun positive-where-reached-p (run group function)
+  "True when FUNCTION (of the arc length) is proven positive wherever GROUP's body can
+be: it is alpha + beta E(s), E the energy integral (>= 0 wherever the body is), with
+constants alpha > 0 and beta >= 0. On a circle under gravity the normal force is such a
+function (the height is affine in the speed squared): a particle swinging in a bowl
+never lifts off, whatever the roots of N = 0 beyond its turning points."
+  (let ((energy (group-speed-squared group)))
+    (when (and function energy (not (free-of-p +arc-length+ function))
+               (not (free-of-p +arc-length+ energy)))
+      (let* ((beta (tidy run `(/ ,(ames.geometry:differentiate function +arc-length+)
+                                 ,(ames.geometry:differentiate energy +arc-length+))
+                         :full))
+             (alpha (and (free-of-p +arc-length+ beta)
+                         (tidy run `(- ,function (* ,beta ,energy)) :full))))
+        (and alpha (free-of-p +arc-length+ alpha)
+             (holds run `(> ,alpha 0))
+             (holds run `(>= ,beta 0)))))))
