@@ -191,6 +191,15 @@ coefficient is ACCELERATION / 2, else the presented polynomial."
                                               (list (phrase "at " (list '= (arc-length-symbol presenter)
                                                                         (present presenter value)))))))
                  (:path-coordinates (list (cons "on the curve" (path-note presenter value))))
+                 (:periodic
+                  (list (cons "periodic"
+                              (list (phrase "period " (present presenter (getf value :period)))
+                                    (phrase "between turning points at "
+                                            (list '= (arc-length-symbol presenter)
+                                                  (present presenter (first (getf value :between))))
+                                            " and "
+                                            (list '= (arc-length-symbol presenter)
+                                                  (present presenter (second (getf value :between)))))))))
                  (:impact
                   (list (cons "the impact"
                               (append

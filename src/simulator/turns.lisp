@@ -165,3 +165,29 @@ never lifts off, whatever the roots of N = 0 beyond its turning points."
         (and alpha (free-of-p +arc-length+ alpha)
              (holds run `(> ,alpha 0))
              (holds run `(>= ,beta 0)))))))
+
+;;; Periodic motion
+
+(defun periodic-swing (run solved fired)
+  "When the state ends with FIRED, a single turning point (see TURNING-CROSSING) of a
+body on a curve that started at rest (its energy integral vanishes at the start: a
+turning point too), the motion between the two turning points is periodic, nothing
+else interrupting it on the way there (nor, by the energy integral, on the way back):
+the plist (:PERIOD P :BETWEEN (S1 S2)), P the closed form of the bridge's
+LIBRATION-PERIOD. NIL otherwise (another end, or no closed form of the period)."
+  (let* ((candidate (and fired (null (rest fired)) (first fired)))
+         (group (and candidate (candidate-group candidate)))
+         (condition (and candidate (candidate-condition candidate))))
+    (when (and group condition (eq (group-kind group) :path) (candidate-at-arc candidate))
+      (let* ((relation (ames.engine:termination-condition-relation condition))
+             (over-arc (lambda (x) (motion-value (list group) (over-state-terms run solved x))))
+             (energy (group-speed-squared group)))
+        (when (and (not (gap-relation-contact relation))
+                   (speed-function-p run group (speed-condition-function relation over-arc))
+                   (holds run `(= ,(tidy run (at-arc energy (group-s0 group))) 0)))
+          (let ((period (handler-case (ames.maxima:libration-period (run-bridge run) energy +arc-length+)
+                          (ames.maxima:maxima-condition () nil))))
+            (when period
+              (list :period period
+                    :between (list (tidy run (inverse-of-own-function run (group-s0 group)))
+                                   (candidate-at-arc candidate))))))))))
