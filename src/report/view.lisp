@@ -193,7 +193,9 @@ coefficient is ACCELERATION / 2, else the presented polynomial."
                  (:path-coordinates (list (cons "on the curve" (path-note presenter value))))
                  (:periodic
                   (list (cons "periodic"
-                              (list (phrase "period " (present presenter (getf value :period)))
+                              (list (let ((number (getf (getf (state-notes state) :numeric) :period)))
+                                      (phrase "period " (present presenter (getf value :period))
+                                              (if number (format nil " (~A)" (number-text number)) "")))
                                     (phrase "between turning points at "
                                             (list '= (arc-length-symbol presenter)
                                                   (present presenter (first (getf value :between))))
