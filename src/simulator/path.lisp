@@ -55,7 +55,10 @@ principal roots only, which may lie behind the body or miss the other family."
     (if (or (eq status :at) (null (group-radius run group)))
         (values status s)
         (multiple-value-bind (circle-status circle-s) (circle-crossing run group function)
-          (if circle-status (values circle-status circle-s) (values status s))))))
+          (cond (circle-status (values circle-status circle-s))
+                ;; solve()'s principal roots prove nothing about the other turns
+                ((eq status :never) (values :unknown `(:roots-of (= ,(tidy run function) 0))))
+                (t (values status s)))))))
 
 (defun crossing-among-roots (run group function)
   "CROSSING-AHEAD's answer among the roots solve() lists."
@@ -126,7 +129,7 @@ back first, at a point not found) UNSUPPORTED-SITUATION is signalled naming the 
                (meeting-arc run group (contact-meeting-terms run solved contact) over-arc))
               ((speed-function-p run group (speed-condition-function relation over-arc))
                ;; the speed along the path changes sign: a turning point (turns.lisp)
-               (turning-crossing run group (speed-condition-function relation over-arc)))
+               (turning-crossing run solved group (speed-condition-function relation over-arc)))
               ((positive-where-reached-p run group (speed-condition-function relation over-arc))
                (values :never))
               (t (relation-arc run group relation over-arc)))

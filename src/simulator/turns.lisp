@@ -126,16 +126,45 @@ negative."
          (or (eql 0 (tidy run `(- ,function ,speed)))
              (eql 0 (tidy run `(+ ,function ,speed)))))))
 
-(defun turning-crossing (run group function)
+(defun turning-crossing (run solved group function)
   "Where FUNCTION, plus or minus the speed along GROUP's path, reaches zero from the
 side of its sign ahead of the body: where E(s) = s'^2 reaches zero going negative.
 (values :AT S), (values :NEVER) or (values :UNKNOWN FACT). FUNCTION, the speed times
 the direction of motion, is positive while the body moves: it vanishes at the turning
 point; of the opposite sign, it never reaches zero from its side."
   (let ((sign (if (eql 0 (tidy run `(- ,function ,(group-speed group)))) 1 -1)))
-    (if (/= (* sign (group-direction group)) 1)
-        (values :never)
-        (crossing-ahead run group (group-speed-squared group)))))
+    (cond ((/= (* sign (group-direction group)) 1) (values :never))
+          ((turning-preceded-p run solved group) (values :never))
+          (t (crossing-ahead run group (group-speed-squared group))))))
+
+(defun energy-affine-parts (run group function)
+  "(values ALPHA BETA) with FUNCTION (of the arc length) = ALPHA + BETA E(s), E GROUP's
+energy integral, ALPHA and BETA constants; NIL when FUNCTION is no such function."
+  (let ((energy (group-speed-squared group)))
+    (when (and function energy (not (free-of-p +arc-length+ function))
+               (not (free-of-p +arc-length+ energy)))
+      (let* ((beta (tidy run `(/ ,(ames.geometry:differentiate function +arc-length+)
+                                 ,(ames.geometry:differentiate energy +arc-length+))
+                         :full))
+             (alpha (and (free-of-p +arc-length+ beta)
+                         (tidy run `(- ,function (* ,beta ,energy)) :full))))
+        (when (and alpha (free-of-p +arc-length+ alpha))
+          (values alpha beta))))))
+
+(defun turning-preceded-p (run solved group)
+  "True when another termination condition of the model surely fires before GROUP's
+body could turn: its violation function is ALPHA + BETA E(s) with ALPHA < 0 < BETA, so
+it turns negative while E is still positive (the normal force of a ball above the
+centre of a loop vanishes before its speed does). Then the turning point, whether it
+exists or not, never ends the state."
+  (let ((over-arc (lambda (x) (motion-value (list group) (over-state-terms run solved x)))))
+    (some (lambda (condition)
+            (let ((relation (ames.engine:termination-condition-relation condition)))
+              (and (not (gap-relation-contact relation))
+                   (multiple-value-bind (alpha beta)
+                       (energy-affine-parts run group (speed-condition-function relation over-arc))
+                     (and alpha (holds run `(< ,alpha 0)) (holds run `(> ,beta 0)))))))
+          (ames.engine:model-termination-conditions (run-model run)))))
 
 (defun turning-watched-p (run solved group)
   "True when a termination condition of the model fires where GROUP's speed along its
@@ -154,17 +183,8 @@ be: it is alpha + beta E(s), E the energy integral (>= 0 wherever the body is), 
 constants alpha > 0 and beta >= 0. On a circle under gravity the normal force is such a
 function (the height is affine in the speed squared): a particle swinging in a bowl
 never lifts off, whatever the roots of N = 0 beyond its turning points."
-  (let ((energy (group-speed-squared group)))
-    (when (and function energy (not (free-of-p +arc-length+ function))
-               (not (free-of-p +arc-length+ energy)))
-      (let* ((beta (tidy run `(/ ,(ames.geometry:differentiate function +arc-length+)
-                                 ,(ames.geometry:differentiate energy +arc-length+))
-                         :full))
-             (alpha (and (free-of-p +arc-length+ beta)
-                         (tidy run `(- ,function (* ,beta ,energy)) :full))))
-        (and alpha (free-of-p +arc-length+ alpha)
-             (holds run `(> ,alpha 0))
-             (holds run `(>= ,beta 0)))))))
+  (multiple-value-bind (alpha beta) (energy-affine-parts run group function)
+    (and alpha (holds run `(> ,alpha 0)) (holds run `(>= ,beta 0)))))
 
 ;;; Periodic motion
 
