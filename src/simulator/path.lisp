@@ -38,12 +38,24 @@ sign()."
         answer)))
 
 (defun roots-in-arc (run expression)
-  "The roots in +ARC-LENGTH+ of EXPRESSION = 0 that Maxima's solve() finds, simplified."
+  "The roots in +ARC-LENGTH+ of EXPRESSION = 0 that Maxima's solve() finds, simplified;
+those proven not real (an asin or acos of a quantity proven beyond [-1, 1], such as the
+lift-off point of a ball fast enough to loop) left out."
   (handler-case
       (loop for solution in (ames.maxima:solve-equations (run-bridge run) (list `(= ,expression 0))
                                                          (list +arc-length+))
-            collect (tidy run (cdr (first solution))))
+            for root = (tidy run (cdr (first solution)))
+            unless (not-real-p run root)
+              collect root)
     (ames.maxima:solve-failed () :failed)))
+
+(defun not-real-p (run expression)
+  "True when EXPRESSION has an asin or acos of a quantity proven outside [-1, 1]."
+  (and (consp expression)
+       (or (and (member (first expression) '(asin acos))
+                (or (eq (decide run `(<= ,(second expression) 1)) :false)
+                    (eq (decide run `(>= ,(second expression) -1)) :false)))
+           (some (lambda (x) (not-real-p run x)) (rest expression)))))
 
 (defun crossing-ahead (run group function)
   "The nearest arc length ahead of GROUP's start where FUNCTION (of the arc length)
