@@ -113,8 +113,10 @@ each alone (writing V = E - D forgets V > 0); then, for a small relation (see
           (when (and (eq verdict :unknown)
                      (<= (expression-size relation) *largest-relation-for-solved-orders*))
             (setf verdict (each-alone (order-facts bridge relation :solved t))))
-          (if (eq verdict :unknown)
-              ;; bounds carried through x -> x^2 (square-orders.lisp)
+          (if (and (eq verdict :unknown)
+                   (<= (expression-size relation) *largest-relation-for-solved-orders*))
+              ;; bounds carried through x -> x^2 (square-orders.lisp), on small relations
+              ;; only, like the solved orders
               (decide-by-square-orders bridge relation)
               verdict)))))
 
