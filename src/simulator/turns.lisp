@@ -62,7 +62,7 @@ arc length in the bridge's form."
           (dolist (candidate (list `(+ ,root (* ,k ,turn))
                                    `(+ (- (* pi ,radius) ,root) (* ,k ,turn))
                                    `(+ (- ,root) (* ,k ,turn))))
-            (let ((candidate (tidy run candidate)))
+            (let ((candidate (tidy run (inverse-of-own-function run (tidy run candidate)))))
               (when (eq (decide run `(= ,candidate ,s)) :true)
                 (return-from nicest-arc candidate)))))))
     s))
@@ -70,8 +70,8 @@ arc length in the bridge's form."
 (defun inverse-of-own-function (run expression)
   "EXPRESSION with acos(cos u) written u where 0 <= u <= pi is proven, asin(sin u) and
 atan(tan u) (also atan(sin u/cos u)) written u where -pi/2 <= u <= pi/2 is (the
-principal ranges), acos(-cos u) written pi - u and atan(cos u/sin u) pi/2 - u where
-0 <= u <= pi is: the roots of a sinusoid, and the arc lengths of a body released on a
+principal ranges), acos(-cos u) written pi - u, and atan(cos u/sin u) and asin(cos u)
+pi/2 - u where 0 <= u <= pi is (acos(sin u) where -pi/2 <= u <= pi/2): the roots of a sinusoid, and the arc lengths of a body released on a
 circle, come out so."
   (labels ((within (u low high)
              (and (holds run `(>= ,u ,low)) (holds run `(<= ,u ,high))))
@@ -98,6 +98,14 @@ circle, come out so."
                               (if (eq (first (second argument)) 'sin)
                                   (if (within u '(- (/ pi 2)) '(/ pi 2)) u x)
                                   (if (within u 0 'pi) `(- (/ pi 2) ,u) x))))
+                           ((and (eq operator 'asin) (eq (first argument) 'cos)
+                                 (within (second argument) 0 'pi))
+                            ;; asin(cos u) = pi/2 - u on [0, pi]
+                            `(- (/ pi 2) ,(second argument)))
+                           ((and (eq operator 'acos) (eq (first argument) 'sin)
+                                 (within (second argument) '(- (/ pi 2)) '(/ pi 2)))
+                            ;; acos(sin u) = pi/2 - u on [-pi/2, pi/2]
+                            `(- (/ pi 2) ,(second argument)))
                            ((and (member operator '(asin atan))
                                  (eq (first argument) (if (eq operator 'asin) 'sin 'tan))
                                  (within (second argument) '(- (/ pi 2)) '(/ pi 2)))
