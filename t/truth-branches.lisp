@@ -105,34 +105,48 @@ at t = d/v0. With the defaults (--numeric) the branch over the wall is selected.
   "A body that turns back on a curve: the energy integral vanishes at the mirror point
 -theta0, a root of sin(s/r) = cos theta0 that solve() does not list.")
 
-(test a-body-turning-back-on-a-curve-is-refused-not-answered
-  "The particle in a bowl swings to -theta0 and back. Turning points on a curve are not
-supported yet: the run must stop with an UNSUPPORTED-SITUATION naming the particle, not
-take it to the bowl's rim with an imaginary speed, and it must not branch on the start's
-arc length r (pi - atan(cos theta0 / sin theta0)), which is positive."
+(test a-body-turning-back-on-a-curve-swings-between-its-turning-points
+  "The particle in a bowl swings to -theta0 and back: it is not taken to the bowl's rim
+with an imaginary speed, nor does it branch on the start's arc length. Its first state
+is periodic forever, between the turning points s = r (pi/2 -+ theta0), with the
+pendulum's period 4 sqrt(r/g) K(sin^2(theta0/2)) (Maxima-checked)."
   (with-fixture simulator-bridge ()
-    (let ((condition (handler-case (progn (ames:simulate *particle-in-a-bowl* :bridge bridge) nil)
-                       (ames:unsupported-situation (c) c))))
-      (is (typep condition 'ames:unsupported-situation))
-      (when condition
-        (is (mentions-name-p "PARTICLE" (ames-error-datum condition)))
-        (is (search "turn back" (princ-to-string condition)))))))
+    (let* ((scenario (ames:parse-scenario *particle-in-a-bowl*))
+           (history (ames:simulate scenario :bridge bridge))
+           (state (first (ames::history-states history)))
+           (periodic (and state (getf (ames::state-notes state) :periodic))))
+      (is (eq :complete (ames::history-outcome history)))
+      (is (eq :forever (and state (ames::state-duration state))))
+      (is (not (null periodic)))
+      (when periodic
+        (flet ((x (form) (in-scenario-terms scenario form)))
+          (call-with-scenario-facts
+           bridge scenario
+           (lambda ()
+             ;; K's parameter sin^2(theta0/2) is (1 - cos theta0)/2
+             (is-same bridge "period" (getf periodic :period)
+                      (x '(* 4 (sqrt (/ r g)) (elliptic-k (/ (- 1 (cos theta0)) 2)))))
+             (is-same bridge "first turning point" (first (getf periodic :between))
+                      (x '(* r (- (/ pi 2) theta0))))
+             (is-same bridge "second turning point" (second (getf periodic :between))
+                      (x '(* r (+ (/ pi 2) theta0)))))))))))
 
 (defparameter *particle-kicked-in-a-bowl*
   '(scenario particle-kicked-in-a-bowl
     "A particle at the bottom of a fixed circular bowl, given speed v0 along it."
-    (parameters (m :positive) (g :positive) (r :positive) (v0 :positive))
+    (parameters (m :positive) (g :positive) (r :positive) (v0 :positive (< v0 (sqrt (* 5 g r)))))
     (gravity g)
     (body bowl :fixed t :shape (arc :center (0 r) :radius r :from pi :to (* 2 pi) :solid :outside))
     (body particle :mass m :position (0 0) :velocity (v0 0) :shape point)
     (simulate :states 1))
-  "Whether the particle reaches the bowl's rim is v0^2 against 2 g r.")
+  "Whether the particle reaches the bowl's rim is v0^2 against 2 g r (below sqrt(5 g r)
+the normal force could not vanish on the bowl's far half, were it a whole circle).")
 
 (test whether-a-body-reaches-the-end-of-a-curve-is-a-fact-not-a-guess
   "The particle kicked along the bottom of a bowl reaches the rim only if v0^2 >= 2 g r
 (its speed squared there, v0^2 - 2 g r, must not be negative): the run branches on it.
 Fast enough, it reaches the rim at s = 0 with speed sqrt(v0^2 - 2 g r); too slow, it
-would turn back, which is refused in that branch, not answered."
+turns back, (:turns particle), at the height v0^2/(2 g) where its speed vanishes."
   (with-fixture simulator-bridge ()
     (let* ((scenario (ames:parse-scenario *particle-kicked-in-a-bowl*))
            (history (ames:simulate scenario :bridge bridge))
@@ -160,5 +174,15 @@ would turn back, which is refused in that branch, not answered."
                             (second (per-body (ames::state-final-velocities state) "PARTICLE"))
                             (in-scenario-terms scenario '(sqrt (- (expt v0 2) (* 2 g r))))))))))
           (when slow
-            (is (eq :failed (getf slow :outcome)))
-            (is (search "turn back" (or (getf slow :failure) "")))))))))
+            (let ((state (first (getf slow :states))))
+              (end-event-is state :turns "PARTICLE")
+              (call-with-scenario-facts
+               bridge scenario
+               (lambda ()
+                 (ames.maxima:with-assumptions (bridge (list (getf slow :assume)))
+                   (is-same bridge "height of the turning point"
+                            (second (per-body (ames::state-final-positions state) "PARTICLE"))
+                            (in-scenario-terms scenario '(/ (expt v0 2) (* 2 g))))
+                   (is-same-vector bridge "velocity at the turning point"
+                                   (per-body (ames::state-final-velocities state) "PARTICLE")
+                                   '(0 0))))))))))))

@@ -110,9 +110,14 @@ each alone (writing V = E - D forgets V > 0); then, for a small relation (see
                               ((null (rest orders)) (decide-with-orders bridge relation orders))
                               (t (let ((together (decide-with-orders bridge relation orders)))
                                    (if (eq together :unknown) (each-alone orders) together))))))
+          (when (and (eq verdict :unknown)
+                     (<= (expression-size relation) *largest-relation-for-solved-orders*))
+            (setf verdict (each-alone (order-facts bridge relation :solved t))))
           (if (and (eq verdict :unknown)
                    (<= (expression-size relation) *largest-relation-for-solved-orders*))
-              (each-alone (order-facts bridge relation :solved t))
+              ;; bounds carried through x -> x^2 (square-orders.lisp), on small relations
+              ;; only, like the solved orders
+              (decide-by-square-orders bridge relation)
               verdict)))))
 
 (defun order-excess-name (bridge variable)

@@ -88,14 +88,21 @@ relation or NIL (see the file header)."
         (return-from earliest-angle (values nil :none)))
       (when (and (not strictly) (settled `(= (+ ,a ,b) 0)))
         (return-from earliest-angle (values 0 :found)))
-      (let ((first (first-positive-root `(+ (* (- ,a ,b) (expt ,u 2)) (* 2 ,c ,u) (+ ,a ,b)))))
+      (let ((first (first-positive-root `(+ (* (- ,a ,b) (expt ,u 2)) (* 2 ,c ,u) (+ ,a ,b))))
+            (even (eq (decide bridge `(= ,c 0)) :true)))
         (when first
-          (return-from earliest-angle (values `(* 2 (atan ,first)) :found))))
+          ;; without a sine term, the only root in (0, pi) is acos(-A/B): cos is one-to-one there
+          (return-from earliest-angle
+            (values (if even `(acos (/ (- ,a) ,b)) `(* 2 (atan ,first))) :found))))
       (when (settled `(= ,a ,b))
         (return-from earliest-angle (values 'pi :found)))
       (let ((second (first-positive-root `(- (+ (* (+ ,a ,b) (expt ,u 2)) (- ,a ,b)) (* 2 ,c ,u)))))
         (when second
-          (return-from earliest-angle (values `(+ pi (* 2 (atan ,second))) :found))))
+          (return-from earliest-angle
+            (values (if (eq (decide bridge `(= ,c 0)) :true)
+                        `(- (* 2 pi) (acos (/ (- ,a) ,b)))
+                        `(+ pi (* 2 (atan ,second))))
+                    :found))))
       (if (settled `(= (+ ,a ,b) 0))
           (values '(* 2 pi) :found)
           (values nil :none)))))

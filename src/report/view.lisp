@@ -219,6 +219,17 @@ a textbook gives it: \"where sin(s/A) = E\"."
                  (:end-arc-length (list (cons "ends on the curve"
                                               (list (end-on-curve-phrase presenter value)))))
                  (:path-coordinates (list (cons "on the curve" (path-note presenter value))))
+                 (:periodic
+                  (list (cons "periodic"
+                              (list (let ((number (getf (getf (state-notes state) :numeric) :period)))
+                                      (phrase "period " (present presenter (getf value :period))
+                                              (if number (format nil " (~A)" (number-text number)) "")))
+                                    (phrase "between turning points at "
+                                            (list '= (arc-length-symbol presenter)
+                                                  (present presenter (first (getf value :between))))
+                                            " and "
+                                            (list '= (arc-length-symbol presenter)
+                                                  (present presenter (second (getf value :between)))))))))
                  (:impact
                   (list (cons "the impact"
                               (append

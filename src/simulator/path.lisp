@@ -38,22 +38,48 @@ sign()."
         answer)))
 
 (defun roots-in-arc (run expression)
-  "The roots in +ARC-LENGTH+ of EXPRESSION = 0 that Maxima's solve() finds, simplified."
+  "The roots in +ARC-LENGTH+ of EXPRESSION = 0 that Maxima's solve() finds, simplified;
+those proven not real (an asin or acos of a quantity proven beyond [-1, 1], such as the
+lift-off point of a ball fast enough to loop) left out."
   (handler-case
       (loop for solution in (ames.maxima:solve-equations (run-bridge run) (list `(= ,expression 0))
                                                          (list +arc-length+))
-            collect (tidy run (cdr (first solution))))
+            for root = (tidy run (cdr (first solution)))
+            unless (not-real-p run root)
+              collect root)
     (ames.maxima:solve-failed () :failed)))
+
+(defun not-real-p (run expression)
+  "True when EXPRESSION has an asin or acos of a quantity proven outside [-1, 1]."
+  (and (consp expression)
+       (or (and (member (first expression) '(asin acos))
+                (or (eq (decide run `(<= ,(second expression) 1)) :false)
+                    (eq (decide run `(>= ,(second expression) -1)) :false)))
+           (some (lambda (x) (not-real-p run x)) (rest expression)))))
 
 (defun crossing-ahead (run group function)
   "The nearest arc length ahead of GROUP's start where FUNCTION (of the arc length)
-reaches zero going negative: (values :AT S), (values :NEVER) or (values :UNKNOWN FACT)."
+reaches zero going negative: (values :AT S), (values :NEVER) or (values :UNKNOWN FACT).
+Among solve()'s roots first; on a circle, when none of them is found ahead, over every
+turn of the circle in the direction of motion (CIRCLE-CROSSING): solve() lists the
+principal roots only, which may lie behind the body or miss the other family."
+  (multiple-value-bind (status s) (crossing-among-roots run group function)
+    (if (or (eq status :at) (null (group-radius run group)))
+        (values status s)
+        (multiple-value-bind (circle-status circle-s) (circle-crossing run group function)
+          (cond (circle-status (values circle-status circle-s))
+                ;; solve()'s principal roots prove nothing about the other turns
+                ((eq status :never) (values :unknown `(:roots-of (= ,(tidy run function) 0))))
+                (t (values status s)))))))
+
+(defun crossing-among-roots (run group function)
+  "CROSSING-AHEAD's answer among the roots solve() lists."
   (let ((function (tidy run function :full)))
     (when (free-of-p +arc-length+ function)
-      (return-from crossing-ahead (values :never)))
+      (return-from crossing-among-roots (values :never)))
     (let ((roots (roots-in-arc run function)) (best nil))
       (when (eq roots :failed)
-        (return-from crossing-ahead (values :unknown `(:roots-of (= ,function 0)))))
+        (return-from crossing-among-roots (values :unknown `(:roots-of (= ,function 0)))))
       (dolist (root roots)
         (case (ahead-p run group root)
           (:true
@@ -63,9 +89,9 @@ reaches zero going negative: (values :AT S), (values :NEVER) or (values :UNKNOWN
                (:true (if (or (null best) (eq (nearer-p run group root best) :true))
                           (setf best root)
                           (unless (eq (nearer-p run group best root) :true)
-                            (return-from crossing-ahead (values :unknown `(< ,root ,best))))))
-               (:unknown (return-from crossing-ahead (values :unknown `(< ,(at-arc slope root) 0)))))))
-          (:unknown (return-from crossing-ahead
+                            (return-from crossing-among-roots (values :unknown `(< ,root ,best))))))
+               (:unknown (return-from crossing-among-roots (values :unknown `(< ,(at-arc slope root) 0)))))))
+          (:unknown (return-from crossing-among-roots
                       (values :unknown `(> (* ,(group-direction group) (- ,root ,(group-s0 group))) 0))))))
       (if best (values :at best) (values :never)))))
 
@@ -111,9 +137,14 @@ back first, at a point not found) UNSUPPORTED-SITUATION is signalled naming the 
          (contact (gap-relation-contact relation))
          (over-arc (lambda (x) (motion-value (list group) (over-state-terms run solved x)))))
     (multiple-value-bind (status s rate)
-        (if contact
-            (meeting-arc run group (contact-meeting-terms run solved contact) over-arc)
-            (relation-arc run group relation over-arc))
+        (cond (contact
+               (meeting-arc run group (contact-meeting-terms run solved contact) over-arc))
+              ((speed-function-p run group (speed-condition-function relation over-arc))
+               ;; the speed along the path changes sign: a turning point (turns.lisp)
+               (turning-crossing run solved group (speed-condition-function relation over-arc)))
+              ((positive-where-reached-p run group (speed-condition-function relation over-arc))
+               (values :never))
+              (t (relation-arc run group relation over-arc)))
       (when (and (eq status :at) (eq (group-kind group) :path)
                  (eq :unknown (decide run `(>= ,(at-arc (group-speed-squared group) s) 0))))
         ;; whether the body gets there at all is open
@@ -122,8 +153,11 @@ back first, at a point not found) UNSUPPORTED-SITUATION is signalled naming the 
       (when (and (eq status :at) (eq (group-kind group) :path)
                  (holds run `(< ,(at-arc (group-speed-squared group) s) 0)))
         ;; the energy integral is negative there: the body stops and turns back on the
-        ;; way, at a root of w^2 = 0 that solve() did not list (it gives the principal
-        ;; roots of a trigonometric equation only)
+        ;; way. When the knowledge base watches for that (a condition on the speed along
+        ;; this path, see TURNING-WATCHED-P), that turning point ends the state first
+        ;; and this condition does not fire in it
+        (when (turning-watched-p run solved group)
+          (return-from path-candidate :never))
         (error 'unsupported-situation
                :datum (group-bodies group)
                :detail (format nil "The body would stop and turn back on the curve before ~

@@ -312,5 +312,7 @@ branch continued from a fork starts later), or NIL."
                   (list :start clock
                         :duration (or duration (state-duration state))
                         :final-positions (numbers-of (state-final-positions state))
-                        :final-velocities (numbers-of (state-final-velocities state))))
+                        :final-velocities (numbers-of (state-final-velocities state))
+                        :period (let ((periodic (getf (state-notes state) :periodic)))
+                                  (and periodic (numeric-or-nil bridge (getf periodic :period) values)))))
             (setf clock (and clock (realp duration) (+ clock duration)))))))))

@@ -268,6 +268,11 @@ known."
                                                 :fired (and (member c fired) t)))
                               candidates)
                       (mapcar (lambda (event) (list event :never)) never)))
+        (let ((swing (periodic-swing run solved fired)))
+          (when swing
+            ;; between two turning points: periodic, forever (turns.lisp)
+            (setf (getf (state-notes state) :periodic) swing
+                  fired nil)))
         (when fired
           (let ((time (candidate-time (first fired))))
             (setf (state-duration state) time

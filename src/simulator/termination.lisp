@@ -142,6 +142,30 @@ on the line of a face, but past the face's end, at every time it crosses that li
                          (some (lambda (r) (eq (decide run (at-time r root)) :false)) checks))
                        roots))))))
 
+(defun without-roots-at-start (run gap)
+  "GAP (a function of TAU) divided by TAU as often as (up to 4 times) it vanishes at the
+start: through its coefficients as a polynomial in TAU, each proven zero, when it is one
+(a lift-off from inside a circle leaves tangentially: the gap is of order TAU^3 or
+TAU^4, its low coefficients zero only once their radicals are simplified); else by
+division."
+  (let ((coefficients (and (not (trigonometric-in-time-p gap))
+                           (handler-case (ames.maxima:polynomial-coefficients (run-bridge run) gap 'tau)
+                             ((or ames.maxima:maxima-error ames.maxima:untranslatable-expression) () nil)))))
+    (if coefficients
+        (let ((dropped 0))
+          (loop while (and (< dropped 4) (rest coefficients)
+                           (holds run `(= ,(first coefficients) 0)))
+                do (pop coefficients) (incf dropped))
+          (if (zerop dropped)
+              gap
+              (tidy run (cons '+ (loop for c in coefficients for i from 0
+                                       collect `(* ,c (expt tau ,i)))))))
+        (progn
+          (loop repeat 4
+                while (and (not (free-of-p 'tau gap)) (holds run `(= ,(tidy run (at-time gap 0)) 0)))
+                do (setf gap (tidy run `(/ ,gap tau))))
+          gap))))
+
 (defun meeting-time (run meeting over-time contact)
   "When the relative motion first meets CONTACT from its exterior, strictly after the
 start: (values :AT TIME RATE), (values :NEVER) or (values :UNKNOWN FACT NOT-BEFORE),
@@ -157,9 +181,7 @@ RATE is the gap's rate then (negative: an impact)."
       (return-from meeting-time (values :never)))
     (when (eql gap 0)
       (return-from meeting-time (values :never)))
-    (loop repeat 4
-          while (and (not (free-of-p 'tau gap)) (holds run `(= ,(tidy run (at-time gap 0)) 0)))
-          do (setf gap (tidy run `(/ ,gap tau))))
+    (setf gap (without-roots-at-start run gap))
     (let ((after 0))
       (loop repeat 4
             do (let ((root (earliest-root-after run gap after)))
