@@ -142,6 +142,15 @@ on the line of a face, but past the face's end, at every time it crosses that li
                          (some (lambda (r) (eq (decide run (at-time r root)) :false)) checks))
                        roots))))))
 
+(defun divided-by-tau (run gap)
+  "(GAP - GAP(0)) / TAU simplified, GAP a function of TAU that vanishes at 0 (a root at
+the start, taken out before the earliest root after it is sought), or NIL when the
+division leaves TAU in a denominator (GAP(0) is 0 only after trigonometric identities
+rational simplification does not see: the quotient at 0 would divide by 0)."
+  (let ((divided (tidy run `(/ (- ,gap ,(at-time gap 0)) tau))))
+    (handler-case (progn (tidy run (at-time divided 0)) divided)
+      (ames.maxima:maxima-error () nil))))
+
 (defun meeting-time (run meeting over-time contact)
   "When the relative motion first meets CONTACT from its exterior, strictly after the
 start: (values :AT TIME RATE), (values :NEVER) or (values :UNKNOWN FACT NOT-BEFORE),
@@ -158,8 +167,10 @@ RATE is the gap's rate then (negative: an impact)."
     (when (eql gap 0)
       (return-from meeting-time (values :never)))
     (loop repeat 4
-          while (and (not (free-of-p 'tau gap)) (holds run `(= ,(tidy run (at-time gap 0)) 0)))
-          do (setf gap (tidy run `(/ ,gap tau))))
+          for divided = (and (not (free-of-p 'tau gap)) (holds run `(= ,(tidy run (at-time gap 0)) 0))
+                             (divided-by-tau run gap))
+          while divided
+          do (setf gap divided))
     (let ((after 0))
       (loop repeat 4
             do (let ((root (earliest-root-after run gap after)))

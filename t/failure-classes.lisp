@@ -1,0 +1,162 @@
+;;;; t/failure-classes.lisp -- issue 20's failure classes 3, 9, 10 and 11 on fresh scenarios:
+;;;; a bumper in a block's path on a floor, impacts at the foot of a ramp with restitution
+;;;; (a corner of the ramp touching too), derivatives of expressions an operator the
+;;;; differentiator does not know leaves constant.
+;;;;
+;;;; Every expected result is the textbook's, over the scenario's own parameters, compared by
+;;;; Maxima-checked equivalence (helpers in t/simulator-scenarios.lisp and
+;;;; t/springs-ropes-gravitation.lisp).
+
+(in-package #:ames.tests)
+
+(def-suite failure-classes :in all-tests
+  :description "Issue 20, classes 3, 9, 10, 11: bumpers on floors, impacts at corners, errors where an answer exists.")
+
+(in-suite failure-classes)
+
+(defun scenario-from-text (text)
+  "The validated scenario written in TEXT (scenario-language source)."
+  (ames:parse-scenario (first (ames:read-scenario-forms text))))
+
+;;; Class 3: a bumper in the path of a block sliding on a floor
+
+(defun check-bumper-bounce (bridge scenario history direction height)
+  "Check HISTORY, a block (speed v, mass m) meeting a bumper (stiffness k) after d / v
+along DIRECTION (+1 or -1 on x): three states, pressed for pi sqrt(m/k) with the floor's
+normal force m g, compressed by v sqrt(m/k) half-way, leaving with its velocity reversed,
+energy m v^2 / 2 + m g HEIGHT (HEIGHT the centre of mass's) conserved while pressed."
+  (let ((states (ames::history-states history)))
+    (flet ((x (form) (in-scenario-terms scenario form)))
+      (is (eq :complete (ames::history-outcome history)) "outcome ~S" (ames::history-outcome history))
+      (is (= 3 (length states)) "~D states" (length states))
+      (destructuring-bind (&optional approach pressed away) states
+        (when away
+          (is (equal '(:contact "BLOCK" "BUMPER") (event-names (ames::state-end-event approach))))
+          (is (equal '(:leaves "BLOCK" "BUMPER") (event-names (ames::state-end-event pressed))))
+          (is (eq :forever (ames::state-duration away)))
+          (is (not (member "WALL" (alexandria:flatten (contact-pairs away)) :test #'equal)))
+          (call-with-scenario-facts
+           bridge scenario
+           (lambda ()
+             (is-same bridge "time to the bumper" (ames::state-duration approach) (x '(/ d v)))
+             (is-same bridge "contact time" (ames::state-duration pressed) (x '(* pi (sqrt (/ m k)))))
+             (is-same bridge "the floor's normal force" (normal-force-between pressed "BLOCK" "FLOOR")
+                      (x '(* m g)))
+             (is-same-vector bridge "leaves with the velocity reversed"
+                             (per-body (ames::state-final-velocities pressed) "BLOCK")
+                             (x `((* ,(- direction) v) 0)))
+             (let* ((half (x '(* 1/2 pi (sqrt (/ m k)))))
+                    (x0 (first (per-body (ames::state-positions pressed) "BLOCK")))
+                    (start (at-variable x0 'tau 0)))
+               (is-same bridge "maximum compression"
+                        (at-variable `(* ,direction (- ,x0 ,start)) 'tau half)
+                        (x '(* v (sqrt (/ m k))))))
+             (is-conserved bridge "energy while pressed" (total-energy pressed) 'tau 0)
+             (is-same bridge "the energy" (at-variable (total-energy pressed) 'tau 0)
+                      (x `(+ (* 1/2 m (expt v 2)) (* m g ,height))))))
+          (is-same-vector bridge "velocity away" (per-body (ames:state-initial-velocities away) "BLOCK")
+                          (x `((* ,(- direction) v) 0))))))))
+
+(test block-into-bumper-on-a-floor-comes-back
+  "scenarios/block-into-bumper-on-floor.lisp: the block on the floor meets the bumper on a
+half-plane wall, compresses it by v sqrt(m/k) and comes back at v; the wall is never hit."
+  (with-fixture simulator-bridge ()
+    (multiple-value-bind (scenario history) (run-scenario-file "block-into-bumper-on-floor" bridge)
+      (check-bumper-bounce bridge scenario history -1 0))))
+
+(test block-into-bumper-on-a-right-hand-wall-comes-back
+  "A centred block sliding to the right into a bumper on a wall at x = w (a half-plane
+whose solid is x > w), the bumper at a quarter of the block's height: the same bounce,
+mirrored."
+  (with-fixture simulator-bridge ()
+    (let* ((scenario (scenario-from-text "
+(scenario bumper-right
+  \"A block slides right into a bumper on a wall.\"
+  (parameters (m :positive) (k :positive) (g :positive) (v :positive) (d :positive)
+              (l0 :positive (> l0 (* v (sqrt (/ m k)))))
+              (w :positive (> w (+ l0 d 1))))
+  (gravity g)
+  (body floor :fixed t :shape (half-plane (1 0) (0 0)))
+  (body wall :fixed t :shape (half-plane (w 1) (w 0)))
+  (body block :mass m :position ((- w l0 d 1/2) 1/2) :velocity (v 0)
+        :shape (polygon (-1/2 -1/2) (1/2 -1/2) (1/2 1/2) (-1/2 1/2)))
+  (spring bumper :from (wall (w 1/4)) :toward (-1 0) :stiffness k :rest-length l0)
+  (simulate :states 4))"))
+           (history (simulate-stopping-when-ambiguous scenario bridge)))
+      (check-bumper-bounce bridge scenario history 1 1/2))))
+
+;;; Class 11: a particle leaving the foot of a ramp, bouncing (the ramp's corner touches too)
+
+(defun ramp-foot-scenario (e mirrored)
+  "A particle released at the top of a fixed ramp of height h and angle a on the floor,
+restitution E; MIRRORED puts the slope on the left (the particle leaves toward -x)."
+  (scenario-from-text
+   (format nil "
+(scenario ramp-foot
+  \"A particle slides down a ramp onto the floor and bounces.\"
+  (parameters (m :positive) (g :positive) (h :positive) (a (> a 0) (< a (/ pi 2))))
+  (gravity g)
+  (body floor :fixed t :shape (half-plane (1 0) (0 0)))
+  (body ramp :fixed t :shape ~A)
+  (body particle :mass m :position (0 h) :velocity (0 0) :shape point)
+  (restitution ~A)
+  (simulate :states 3))"
+           (if mirrored
+               "(polygon (0 0) (0 h) ((- (/ h (tan a))) 0))"
+               "(polygon (0 0) ((/ h (tan a)) 0) (0 h))")
+           e)))
+
+(defun check-ramp-foot-bounce (bridge e mirrored)
+  "The particle reaches the foot with speed sqrt(2 g h) along the slope; the floor turns
+its vertical part -sqrt(2 g h) sin a into E sqrt(2 g h) sin a, the horizontal part
+sqrt(2 g h) cos a is kept, no impulse comes from the ramp; it then flies free and lands
+again after 2 E sqrt(2 g h) sin a / g."
+  (let* ((scenario (ramp-foot-scenario e mirrored))
+         (history (simulate-stopping-when-ambiguous scenario bridge))
+         (states (ames::history-states history))
+         (sign (if mirrored -1 1)))
+    (flet ((x (form) (in-scenario-terms scenario form)))
+      (is (member (ames::history-outcome history) '(:complete :state-limit))
+          "e = ~A: outcome ~S" e (ames::history-outcome history))
+      (destructuring-bind (&optional slide flight &rest more) states
+        (declare (ignore more))
+        (is (not (null flight)) "e = ~A: ~D states" e (length states))
+        (when flight
+          (is (equal '(:collision "PARTICLE" "FLOOR") (event-names (ames::state-end-event slide))))
+          (is (null (contact-pairs flight)) "e = ~A: contacts in flight ~S" e (contact-pairs flight))
+          (call-with-scenario-facts
+           bridge scenario
+           (lambda ()
+             (is-same-vector bridge "velocity just after the impact"
+                             (per-body (ames:state-initial-velocities flight) "PARTICLE")
+                             (x `((* ,sign (sqrt (* 2 g h)) (cos a)) (* ,e (sqrt (* 2 g h)) (sin a)))))
+             (is-same bridge "impulse of the floor"
+                      (getf (cdddr (ames::state-end-event slide)) :impulse)
+                      (x `(* (+ 1 ,e) m (sqrt (* 2 g h)) (sin a))))
+             (is-same bridge "time of flight" (ames::state-duration flight)
+                      (x `(/ (* 2 ,e (sqrt (* 2 g h)) (sin a)) g))))))))))
+
+(test particle-bounces-off-the-floor-at-a-ramp-foot
+  "Restitution 1/2 at the foot of a ramp whose lower corner touches the particle too: the
+corner's base face, which the particle leaves, is no constraint of the impact."
+  (with-fixture simulator-bridge ()
+    (check-ramp-foot-bounce bridge 1/2 nil)))
+
+(test particle-bounces-elastically-off-a-mirrored-ramp-foot
+  "The mirrored ramp (slope down toward -x), elastic impact with the floor."
+  (with-fixture simulator-bridge ()
+    (check-ramp-foot-bounce bridge 1 t)))
+
+;;; Class 9: the differentiator and operators it does not know
+
+(test derivative-of-constant-subexpressions-and-abs
+  "Any subexpression free of the variable is a constant, whatever its operator (|l| of a
+parameter); d|u|/dt = u u' / |u|."
+  (with-fixture simulator-bridge ()
+    (ames.maxima:with-assumptions (bridge '((> l 0)))
+      (is-same bridge "d/dtau (|l| tau)" (ames.geometry::differentiate '(* (abs l) tau) 'tau) '(abs l))
+      (is-same bridge "d/dtau (floor(l) + tau^2)"
+               (ames.geometry::differentiate '(+ (floor l) (expt tau 2)) 'tau) '(* 2 tau))
+      (is-same bridge "d/dtau |l - tau^2|"
+               (ames.geometry::differentiate '(abs (- l (expt tau 2))) 'tau)
+               '(/ (* -2 tau (- l (expt tau 2))) (abs (- l (expt tau 2))))))))
