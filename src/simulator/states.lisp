@@ -82,6 +82,11 @@ then has no closed form)."
             (list body
                   (cond
                     ((body-fixed-p run body) (body-motion run groups body what))
+                    ((and (eq (group-kind (body-group groups body)) :numeric)
+                          (null (group-end-state (body-group groups body)))
+                          (ends-at-start-p fired))
+                     ;; a numeric group never integrated: the state ends where it starts
+                     (if (eq what :pos) (body-position run body) (body-velocity run body)))
                     ((eq (group-kind (body-group groups body)) :numeric)
                      (numeric-final-value run (body-group groups body) body what))
                     (t
@@ -92,6 +97,10 @@ then has no closed form)."
                                                   (list (cons (group-variable group) at)) x)))
                                 (body-motion run groups body what)))))))
           (body-names run)))
+
+(defun ends-at-start-p (fired)
+  "True when the FIRED candidates end the state at its start (an impact there)."
+  (and fired (every (lambda (candidate) (eql (candidate-time candidate) 0)) fired)))
 
 (defun numeric-final-value (run group body what)
   "BODY's position (WHAT :POS) or velocity (:VEL) at the end of a numeric GROUP's state.
