@@ -160,3 +160,60 @@ parameter); d|u|/dt = u u' / |u|."
       (is-same bridge "d/dtau |l - tau^2|"
                (ames.geometry::differentiate '(abs (- l (expt tau 2))) 'tau)
                '(/ (* -2 tau (- l (expt tau 2))) (abs (- l (expt tau 2))))))))
+
+;;; Class 9: three touching discs (a numeric group ended at its start; steps that overflow)
+
+(defun discs-in-a-row (masses)
+  "Three discs of radius r in a row on a frictionless floor, touching, the first (speed v)
+pushing the other two at rest; MASSES their three masses (forms); plastic impacts."
+  (scenario-from-text
+   (format nil "
+(scenario discs
+  \"A disc pushes two touching discs.\"
+  (parameters (g :positive) (m1 :positive) (m2 :positive) (m3 :positive) (r :positive) (v :positive))
+  (gravity g)
+  (body floor :fixed t :shape (half-plane (1 0) (0 0)))
+  (body a :mass ~A :position (0 r) :velocity (v 0) :shape (circle r))
+  (body b :mass ~A :position ((* 2 r) r) :velocity (0 0) :shape (circle r))
+  (body c :mass ~A :position ((* 4 r) r) :velocity (0 0) :shape (circle r))
+  (restitution 0)
+  (simulate :states 2))" (first masses) (second masses) (third masses))))
+
+(defun check-discs-move-together (bridge masses)
+  "Plastic: the three discs move on together at m1 v / (m1 + m2 + m3) just after the
+impact at the start (momentum conserved)."
+  (let* ((scenario (discs-in-a-row masses))
+         (history (simulate-stopping-when-ambiguous scenario bridge))
+         (first-state (first (ames::history-states history)))
+         (next (second (ames::history-states history))))
+    (flet ((x (form) (in-scenario-terms scenario form)))
+      (is (not (null next)) "two states expected, outcome ~S" (ames::history-outcome history))
+      (when next
+        (is (equal '(:collision "A" "B") (event-names (ames::state-end-event first-state))))
+        (call-with-scenario-facts
+         bridge scenario
+         (lambda ()
+           (is-same bridge "impact at the start" (ames::state-duration first-state) 0)
+           (let ((common (x `(/ (* ,(first masses) v) (+ ,@masses)))))
+             (dolist (body '("A" "B" "C"))
+               (is-same-vector bridge (format nil "~A just after" body)
+                               (per-body (ames:state-initial-velocities next) body)
+                               (list common 0))))))))))
+
+(test three-touching-discs-plastic-equal-masses
+  "Equal masses m: each disc moves on at v/3."
+  (with-fixture simulator-bridge ()
+    (check-discs-move-together bridge '(m1 m1 m1))))
+
+(test three-touching-discs-plastic-three-masses
+  "Masses m1, m2, m3: each disc moves on at m1 v / (m1 + m2 + m3)."
+  (with-fixture simulator-bridge ()
+    (check-discs-move-together bridge '(m1 m2 m3))))
+
+(test integration-without-events-stops-before-overflowing
+  "A uniform motion with no event: the integrator reports no event (NIL time) instead of
+overflowing its growing steps."
+  (let ((time (ames.simulator::integrate-until
+               (lambda (y) (vector (svref y 1) 0d0)) (vector 0d0 1d0)
+               (list (lambda (state time) (declare (ignore time)) (+ 1d0 (svref state 1)))))))
+    (is (null time))))
