@@ -217,3 +217,21 @@ overflowing its growing steps."
                (lambda (y) (vector (svref y 1) 0d0)) (vector 0d0 1d0)
                (list (lambda (state time) (declare (ignore time)) (+ 1d0 (svref state 1)))))))
     (is (null time))))
+
+;;; Class 11: a sign fact of the geometry decided by the run's values (a stairs-shaped
+;;; polygon with a parameter height met by a disc: TYPE-ERROR on a NIL ball before)
+
+(test geometry-sign-fact-decided-by-values
+  "(:SIGN X) under parameter values: :POSITIVE, :NEGATIVE or :ZERO as X's value is, and
+:NONE when no value settles it."
+  (let ((s (intern "S" '#:ames-scenario)))
+    (flet ((outcome (value expression)
+             (ames.maxima:with-parameter-values ((list (cons s value)))
+               (ames.geometry::value-outcome (list :sign expression) '(:positive :zero :negative)))))
+      ;; 1 - 16 (s - 7/4)^2: positive for s in (3/2, 2), zero at s = 3/2, negative below
+      (let ((x `(+ (* -16 (expt (+ ,s -7/4) 2)) 1)))
+        (is (eq :positive (outcome 7/4 x)))
+        (is (eq :negative (outcome 1/2 x)))
+        (is (eq :zero (outcome 3/2 x))))
+      (is (eq :none (ames.maxima:with-parameter-values ('())
+                      (ames.geometry::value-outcome (list :sign s) '(:positive :negative))))))))
