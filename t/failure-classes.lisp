@@ -235,3 +235,39 @@ overflowing its growing steps."
         (is (eq :zero (outcome 3/2 x))))
       (is (eq :none (ames.maxima:with-parameter-values ('())
                       (ames.geometry::value-outcome (list :sign s) '(:positive :negative))))))))
+
+;;; Class 9: the sexp output names things as the user does
+
+(defun foreign-symbols (tree)
+  "The symbols of TREE, keywords aside, that are not accessible in the scenario package."
+  (let ((found '()))
+    (labels ((walk (x)
+               (cond ((consp x) (walk (car x)) (walk (cdr x)))
+                     ((and x (symbolp x) (not (keywordp x))
+                           (not (eq x (find-symbol (symbol-name x) '#:ames-scenario))))
+                      (pushnew x found)))))
+      (walk tree))
+    found))
+
+(test sexp-output-names-the-arc-length-s
+  "The particle sliding down a quarter circle: the sexp report writes the arc length s
+(no internal symbol of AMES anywhere, the JSON round trip intact), and its formulas over s
+are the textbook's: position (-r sin(s/r), r - r cos(s/r)), normal force 3 m g cos(s/r)."
+  (with-fixture simulator-bridge ()
+    (multiple-value-bind (scenario history) (run-scenario-file "particle-down-quarter-circle" bridge)
+      (let* ((sexp (ames:history-sexp history))
+             (state (first (getf sexp :states)))
+             (r (intern "R" '#:ames-scenario)) (m (intern "M" '#:ames-scenario))
+             (g (intern "G" '#:ames-scenario)) (s (intern "S" '#:ames-scenario)))
+        (flet ((x (form) (sublis (list (cons 'r r) (cons 'm m) (cons 'g g) (cons 's s)) form)))
+          (is (null (foreign-symbols sexp)) "internal symbols: ~S" (foreign-symbols sexp))
+          (is (equal sexp (ames.report:json-to-sexp (ames.report:history-json history))))
+          (call-with-scenario-facts
+           bridge scenario
+           (lambda ()
+             (is-same-vector bridge "position on the curve"
+                             (second (per-body (getf state :positions) "PARTICLE"))
+                             (x '((- (* r (sin (/ s r)))) (- r (* r (cos (/ s r)))))))
+             (is-same bridge "normal force"
+                      (car (last (find :normal (getf state :forces) :key #'first)))
+                      (x '(* 3 m g (cos (/ s r))))))))))))
