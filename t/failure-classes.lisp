@@ -271,3 +271,54 @@ are the textbook's: position (-r sin(s/r), r - r cos(s/r)), normal force 3 m g c
              (is-same bridge "normal force"
                       (car (last (find :normal (getf state :forces) :key #'first)))
                       (x '(* 3 m g (cos (/ s r))))))))))))
+
+;;; Class 3 with friction: a block on a rough floor into a bumper (numbers)
+
+(defun rough-bumper-scenario (speed)
+  "A block (m = 1) on a rough floor (mu = 1/2, g = 10), its front 1 from a bumper's free
+end (k = 20, rest length 1) on a wall, launched toward it at SPEED (a form)."
+  (scenario-from-text
+   (format nil "
+(scenario rough-bumper
+  \"A block slides on a rough floor into a bumper.\"
+  (gravity 10)
+  (body floor :fixed t :shape (half-plane (1 0) (0 0)))
+  (body wall :fixed t :shape (half-plane (0 0) (0 1)))
+  (body block :mass 1 :position (2 0) :velocity ((- ~A) 0) :shape (polygon (0 0) (1 0) (1 1) (0 1)))
+  (friction block floor :static 1/2)
+  (spring bumper :from (wall (0 1/2)) :toward (1 0) :stiffness 20 :rest-length 1)
+  (simulate :states 5))" speed)))
+
+(defun check-rough-bumper (bridge speed rests)
+  "The block reaches the bumper with v1^2 = SPEED^2 - 2 mu g; work and energy give the
+compression c at its first stop: k c^2 / 2 + mu m g c = m v1^2 / 2. It stays there when
+k c <= mu m g; else it slides back and stops at the mirror image of that point about the
+equilibrium 1 - mu m g / k (half an oscillation). RESTS: the expected positions where it
+stops, in order."
+  (let* ((scenario (rough-bumper-scenario speed))
+         (history (simulate-stopping-when-ambiguous scenario bridge))
+         (states (ames::history-states history))
+         (stops (loop for state in states
+                      when (equal '(:stops-sliding "BLOCK" "FLOOR")
+                                  (event-names (ames::state-end-event state)))
+                        collect state)))
+    (is (eq :complete (ames::history-outcome history)) "outcome ~S" (ames::history-outcome history))
+    (is (= (length rests) (length stops)) "~D stops" (length stops))
+    (loop for state in stops for rest in rests
+          do (is-same-vector bridge "where it stops"
+                             (per-body (ames::state-final-positions state) "BLOCK") (list rest 0))
+             (is-same-vector bridge "at rest"
+                             (per-body (ames::state-final-velocities state) "BLOCK") '(0 0)))
+    (is (eq :forever (ames::state-duration (car (last states)))))))
+
+(test block-on-a-rough-floor-sticks-against-the-bumper
+  "v0 = 2 sqrt(3): v1^2 = 2, 10 c^2 + 5 c = 1, c = (sqrt(65) - 5)/20, k c < 5: it stays
+compressed, its front at 1 - c."
+  (with-fixture simulator-bridge ()
+    (check-rough-bumper bridge '(* 2 (sqrt 3)) '((/ (- 25 (sqrt 65)) 20)))))
+
+(test block-on-a-rough-floor-is-pushed-back-by-the-bumper-then-sticks
+  "v0 = 4: v1^2 = 6, 10 c^2 + 5 c = 3, c = (sqrt(145) - 5)/20, k c > 5: pushed back, it
+stops at 2 (3/4) - (1 - c) = (5 + sqrt(145))/20, where k (1 - x) < 5: it stays."
+  (with-fixture simulator-bridge ()
+    (check-rough-bumper bridge 4 '((/ (- 25 (sqrt 145)) 20) (/ (+ 5 (sqrt 145)) 20)))))
