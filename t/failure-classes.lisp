@@ -322,3 +322,16 @@ compressed, its front at 1 - c."
 stops at 2 (3/4) - (1 - c) = (5 + sqrt(145))/20, where k (1 - x) < 5: it stays."
   (with-fixture simulator-bridge ()
     (check-rough-bumper bridge 4 '((/ (- 25 (sqrt 145)) 20) (/ (+ 5 (sqrt 145)) 20)))))
+
+;;; Class 9: abs in relations decided by the cases of its argument's sign
+
+(test abs-is-decided-by-the-sign-cases-of-its-argument
+  "|u| >= u whatever u; a sum of lengths with |len - 2 r - top| is at least len; |a - b|
+> 0 where a > b; |x| < -1 never; |x - 1| > 1/2 depends on x."
+  (with-fixture simulator-bridge ()
+    (ames.maxima:with-assumptions (bridge '((> r 0) (> top 0) (> len 0) (> a b)))
+      (is (eq :true (ames.maxima:decide bridge '(>= (abs (- x y)) (- x y)))))
+      (is (eq :true (ames.maxima:decide bridge '(>= (+ (* 2 r) top (abs (- len (* 2 r) top))) len))))
+      (is (eq :true (ames.maxima:decide bridge '(> (abs (- a b)) 0))))
+      (is (eq :false (ames.maxima:decide bridge '(< (abs x) -1))))
+      (is (eq :unknown (ames.maxima:decide bridge '(> (abs (- x 1)) 1/2)))))))
