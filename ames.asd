@@ -225,6 +225,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "friction")
                (:file "friction-scenarios")
                (:file "springs-ropes-gravitation")
+               (:file "failure-classes")
                (:file "simulator-fuzz")
                (:file "truth-scenarios")
                (:file "truth-branches")

@@ -346,12 +346,14 @@ rationals with + - * /, integer powers and rational roots), else NIL."
 
 (defun differentiate (expression variable)
   "The derivative of EXPRESSION (prefix algebra) with respect to the variable VARIABLE,
-lightly simplified. Quantity terms and other variables are constants. Signals MALFORMED-EXPRESSION for an operator it
-does not know."
+lightly simplified. Quantity terms and other variables are constants, and so is any
+subexpression free of VARIABLE, whatever its operator (the length |l| of a parameter);
+d|u| = u u' / |u|. Signals MALFORMED-EXPRESSION for an operator it does not know in a
+subexpression that depends on VARIABLE."
   (labels ((d (x)
              (check-budget expression)
              (cond ((eq x variable) 1)
-                   ((or (atom x) (quantity-term-p x)) 0)
+                   ((or (atom x) (quantity-term-p x) (free-of-p variable x)) 0)
                    (t (let ((args (cdr x)))
                         (case (car x)
                           (+ (apply #'e+ (mapcar #'d args)))
@@ -372,6 +374,7 @@ does not know."
                           (sqrt (e/ (d (first args)) (e* 2 (esqrt (first args)))))
                           (exp (e* x (d (first args))))
                           (log (e/ (d (first args)) (first args)))
+                          (abs (e/ (e* (first args) (d (first args))) x))
                           (sin (e* (ecos (first args)) (d (first args))))
                           (cos (e- (e* (esin (first args)) (d (first args)))))
                           (tan (e/ (d (first args)) (esquare (ecos (first args)))))

@@ -297,11 +297,46 @@ meets an arithmetic error (it divides by a literal 0) is :UNKNOWN."
                          (:true (return :true))
                          (:unknown (setf result :unknown))
                          (:false)))))
-               (t (handler-case (decide-relation bridge condition)
-                    ;; the reasoning's own arithmetic met a division by a literal zero
-                    ;; (the relation is undefined): nothing is proven
-                    (arithmetic-error () :unknown))))))
+               (t (let ((answer (handler-case (decide-relation bridge condition)
+                                  ;; the reasoning's own arithmetic met a division by a
+                                  ;; literal zero (the relation is undefined): nothing is proven
+                                  (arithmetic-error () :unknown))))
+                    (if (eq answer :unknown)
+                        (decide-by-cases-of-abs bridge condition)
+                        answer))))))
     (verdict relation)))
+
+(defun innermost-abs-argument (expression)
+  "The argument U of an abs(U) in EXPRESSION with no abs inside U, or NIL."
+  (and (consp expression)
+       (or (some #'innermost-abs-argument (expression-arguments expression))
+           (and (eq (expression-operator expression) 'abs) (second expression)))))
+
+(defun decide-by-cases-of-abs (bridge relation)
+  "RELATION, which has an abs(U), decided in the two cases U >= 0 (abs(U) = U) and U <= 0
+(abs(U) = -U): :TRUE or :FALSE when both cases agree (a case the facts in force exclude
+agrees with anything), else :UNKNOWN (|u| >= u holds whatever the sign of u)."
+  (let ((u (innermost-abs-argument relation)))
+    (if (null u)
+        :unknown
+        (flet ((case-verdict (fact value)
+                 (handler-case
+                     (with-assumptions (bridge (list fact))
+                       (decide bridge (substitute-abs relation u value)))
+                   (inconsistent-assumptions () :excluded))))
+          (let ((verdicts (remove :excluded (list (case-verdict `(>= ,u 0) u)
+                                                  (case-verdict `(<= ,u 0) `(- ,u))))))
+            (cond ((null verdicts) :unknown)
+                  ((every (lambda (v) (eq v :true)) verdicts) :true)
+                  ((every (lambda (v) (eq v :false)) verdicts) :false)
+                  (t :unknown)))))))
+
+(defun substitute-abs (expression argument value)
+  "EXPRESSION with every abs(ARGUMENT) replaced by VALUE."
+  (cond ((atom expression) expression)
+        ((and (eq (expression-operator expression) 'abs) (equal (second expression) argument)) value)
+        (t (cons (first expression)
+                 (mapcar (lambda (x) (substitute-abs x argument value)) (rest expression))))))
 
 (defun holds-p (bridge relation)
   "True when DECIDE answers :TRUE for RELATION (a relation or a logical form), found

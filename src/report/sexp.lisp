@@ -9,7 +9,32 @@
   "HISTORY as the s-expression of the scenario language's output section:
 (:scenario NAME :states ((:index 0 :start ... :duration ... :contacts ... :accelerations
 ... :forces ... :positions ... :end-event ... :final-positions ... :final-velocities ...)
-...) :outcome ...), with extra keys :velocities, :events and :numeric where known."
+...) :outcome ...), with extra keys :velocities, :events and :numeric where known. Its
+names are the user's (see OUTPUT-NAMES): no internal symbol of AMES's layers."
+  (output-names (history-scenario history) (raw-history-sexp history)))
+
+(defun output-names (scenario tree)
+  "TREE with every symbol of another package than the scenario's (AMES-SCENARIO), CL's
+and the keywords replaced by the scenario-package symbol of the same name, except the
+simulator's arc-length and arc-speed variables, named s and sdot (s1, sdot1 ... when a
+parameter of SCENARIO has that name) as the text report names them s and s'."
+  (let ((renamings (list (cons +arc-length+ (output-symbol (display-symbol "S" scenario)))
+                         (cons +arc-speed+ (output-symbol (display-symbol "SDOT" scenario))))))
+    (labels ((walk (x)
+               (cond ((consp x) (cons (walk (car x)) (walk (cdr x))))
+                     ((or (null x) (not (symbolp x)) (keywordp x)
+                          (member (symbol-package x)
+                                  (list (find-package '#:ames-scenario) (find-package '#:common-lisp))))
+                      x)
+                     (t (or (cdr (assoc x renamings)) (output-symbol x))))))
+      (walk tree))))
+
+(defun output-symbol (symbol)
+  "The symbol of the scenario package named like SYMBOL."
+  (intern (symbol-name symbol) '#:ames-scenario))
+
+(defun raw-history-sexp (history)
+  "HISTORY-SEXP before its names are the user's."
   (list* :scenario (scenario-name (history-scenario history))
          :states (mapcar #'state-sexp (history-states history))
          :outcome (history-outcome history)

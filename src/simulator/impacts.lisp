@@ -14,9 +14,26 @@
 
 (defun touching-contacts (run)
   "The contacts of two bodies' shapes whose observer lies on their locus now (a probe's
-locus is no surface: nothing touches it)."
-  (loop for (name) in (run-contacts run)
-        when (and (shape-contact-p run name) (touching-on-locus-p run name)) collect name))
+locus is no surface: nothing touches it), less those a corner excuses (see
+EXCUSED-AT-CORNER-P)."
+  (let ((touching (loop for (name) in (run-contacts run)
+                        when (and (shape-contact-p run name) (touching-on-locus-p run name))
+                          collect name)))
+    (remove-if (lambda (contact) (excused-at-corner-p run contact touching)) touching)))
+
+(defun excused-at-corner-p (run contact touching)
+  "True when CONTACT, one of the TOUCHING contacts, meets another of them at a corner that
+is not concave (see CORNER-ALTERNATIVES), the observer separating from CONTACT's face
+just before the impact and not from the other's. At such a corner the observer is
+outside the obstacle when it is outside either face: the other face, which the impact
+leaves unpenetrated (it pushes, or the bodies do not approach through it), keeps it
+out, and CONTACT must not stop a motion that leaves past its end (a particle sliding
+off the foot of a slope onto the ground, bouncing up)."
+  (and (eql (sign-of run (normal-approach run contact)) 1)
+       (some (lambda (other)
+               (and (member other touching)
+                    (member (sign-of run (normal-approach run other)) '(-1 0))))
+             (touching-alternatives run contact))))
 
 (defun impact-entities (run contacts)
   "The situation of an impact (see src/kb/impacts.lisp): the bodies with their positions

@@ -105,11 +105,16 @@ and an error estimate (a double). RATES maps a state vector to its derivative ve
 list of functions of (STATE TIME) returning a double that is >= 0 while the event has
 not happened (NIL where undefined). Returns (values TIME STATE INDEX SAMPLES): the time
 and state where event INDEX first crosses below zero, located by bisection, and the
-accepted steps as (TIME . STATE). NIL for TIME when the step limit is reached first."
+accepted steps as (TIME . STATE). NIL for TIME when the step limit is reached first, or
+when the state or the step overflows the doubles (a motion that goes on forever with no
+event: the steps grow without bound)."
   (let ((y y0) (time 0d0) (h start-step) (samples (list (cons 0d0 y0)))
         (before (mapcar (lambda (event) (funcall event y0 0d0)) events)))
     (loop repeat *numeric-step-limit*
-          do (multiple-value-bind (next err) (dopri-step rates y h)
+          do (multiple-value-bind (next err)
+                 (handler-case (dopri-step rates y h)
+                   (floating-point-overflow ()
+                     (return-from integrate-until (values nil y nil (nreverse samples)))))
                (if (> err 1d0)
                    (setf h (* h (max 0.1d0 (* 0.9d0 (expt err -1/5)))))
                    (let* ((after (mapcar (lambda (event) (funcall event next (+ time h))) events))
@@ -232,7 +237,7 @@ records each numeric group's end state and samples."
     (multiple-value-bind (time state index samples) (integrate-until rates y0 events)
       (unless time
         (error 'simulation-error :datum terms
-                                 :detail (format nil "No event within ~D steps of the numeric integration."
+                                 :detail (format nil "No event within ~D steps of the numeric integration (or before its steps overflowed)."
                                                  *numeric-step-limit*)))
       (dolist (group numeric)
         (setf (group-end-state group)

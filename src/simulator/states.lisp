@@ -82,16 +82,40 @@ then has no closed form)."
             (list body
                   (cond
                     ((body-fixed-p run body) (body-motion run groups body what))
+                    ((and (eq (group-kind (body-group groups body)) :numeric)
+                          (null (group-end-state (body-group groups body)))
+                          (ends-at-start-p fired))
+                     ;; a numeric group never integrated: the state ends where it starts
+                     (if (eq what :pos) (body-position run body) (body-velocity run body)))
                     ((eq (group-kind (body-group groups body)) :numeric)
                      (numeric-final-value run (body-group groups body) body what))
                     (t
                       (let* ((group (body-group groups body))
                              (at (group-at-end run groups group fired)))
                         (mapcar (lambda (x)
-                                  (tidy-real run (substitute-expressions
+                                  (end-value run (substitute-expressions
                                                   (list (cons (group-variable group) at)) x)))
                                 (body-motion run groups body what)))))))
           (body-names run)))
+
+(defun end-value (run expression)
+  "EXPRESSION, a closed form at a state's end, simplified for the next state: a sine or
+cosine of an angle with an arc tangent in it (a spring's motion at a root found by the
+half angle, sin(2 atan u)) expanded first, so that it becomes algebraic in u (2 u / (1 +
+u^2)) and a velocity that vanishes there simplifies to 0."
+  (tidy-real run (if (trig-of-atan-p expression) (tidy run expression :trigexpand) expression)))
+
+(defun trig-of-atan-p (expression)
+  "True when EXPRESSION has a sine or cosine whose argument contains an arc tangent."
+  (labels ((has-atan (x) (and (consp x) (or (eq (first x) 'atan) (some #'has-atan (rest x)))))
+           (walk (x) (and (consp x)
+                          (or (and (member (first x) '(sin cos)) (has-atan (second x)))
+                              (some #'walk (rest x))))))
+    (walk expression)))
+
+(defun ends-at-start-p (fired)
+  "True when the FIRED candidates end the state at its start (an impact there)."
+  (and fired (every (lambda (candidate) (eql (candidate-time candidate) 0)) fired)))
 
 (defun numeric-final-value (run group body what)
   "BODY's position (WHAT :POS) or velocity (:VEL) at the end of a numeric GROUP's state.

@@ -142,12 +142,21 @@ on the line of a face, but past the face's end, at every time it crosses that li
                          (some (lambda (r) (eq (decide run (at-time r root)) :false)) checks))
                        roots))))))
 
+(defun divided-by-tau (run gap)
+  "(GAP - GAP(0)) / TAU simplified, GAP a function of TAU that vanishes at 0 (a root at
+the start, taken out before the earliest root after it is sought), or NIL when the
+division leaves TAU in a denominator (GAP(0) is 0 only after trigonometric identities
+rational simplification does not see: the quotient at 0 would divide by 0)."
+  (let ((divided (tidy run `(/ (- ,gap ,(at-time gap 0)) tau))))
+    (handler-case (progn (tidy run (at-time divided 0)) divided)
+      (ames.maxima:maxima-error () nil))))
+
 (defun without-roots-at-start (run gap)
   "GAP (a function of TAU) divided by TAU as often as (up to 4 times) it vanishes at the
 start: through its coefficients as a polynomial in TAU, each proven zero, when it is one
 (a lift-off from inside a circle leaves tangentially: the gap is of order TAU^3 or
 TAU^4, its low coefficients zero only once their radicals are simplified); else by
-division."
+division (DIVIDED-BY-TAU), as long as the quotient is defined at the start."
   (let ((coefficients (and (not (trigonometric-in-time-p gap))
                            (handler-case (ames.maxima:polynomial-coefficients (run-bridge run) gap 'tau)
                              ((or ames.maxima:maxima-error ames.maxima:untranslatable-expression) () nil)))))
@@ -162,8 +171,11 @@ division."
                                        collect `(* ,c (expt tau ,i)))))))
         (progn
           (loop repeat 4
-                while (and (not (free-of-p 'tau gap)) (holds run `(= ,(tidy run (at-time gap 0)) 0)))
-                do (setf gap (tidy run `(/ ,gap tau))))
+                for divided = (and (not (free-of-p 'tau gap))
+                                   (holds run `(= ,(tidy run (at-time gap 0)) 0))
+                                   (divided-by-tau run gap))
+                while divided
+                do (setf gap divided))
           gap))))
 
 (defun meeting-time (run meeting over-time contact)
