@@ -4,6 +4,8 @@
 ;;;;   base  <-  maxima-bridge, tms  <-  geometry  <-  engine  <-  kb
 ;;;;   geometry, maxima-bridge  <-  scenario;   kb, scenario  <-  simulator  <-  report
 ;;;;   <-  interface (package AMES: the REPL API and bin/ames)
+;;;;   base, scenario  <-  witness (Siconos as an independent witness; knows no geometry,
+;;;;   kb or simulator)  <-  interface
 ;;;; Only Debian's CL packages are used (cl-alexandria, cl-fiveam, cl-ppcre, cl-yason).
 
 (defsystem "ames"
@@ -154,10 +156,18 @@ frictionless translating rigid bodies evolve (after Leon Wong's 1994 MIT thesis)
                  (:file "picture")
                  (:file "html")
                  (:file "output")))
+   (:module "witness" :pathname "src/witness/" :serial t
+    :depends-on ("base" "scenario")
+    :components ((:file "package")
+                 (:file "model")
+                 (:file "driver")
+                 (:file "compare")
+                 (:file "generate")))
    (:module "interface" :pathname "src/interface/" :serial t
-    :depends-on ("report")
+    :depends-on ("report" "witness")
     :components ((:file "package")
                  (:file "runs")
+                 (:file "check")
                  (:file "cli")
                  (:file "jobs")
                  (:file "explain"))))

@@ -385,7 +385,7 @@ class Driver:
 
 
 def sx_states(names, qs, key):
-    return "(" + " ".join("(%s %s)" % (n, sx_vec(q)) for n, q in zip(names, qs)) + ")"
+    return "(" + " ".join("(%s %s)" % (sx_string(n), sx_vec(q)) for n, q in zip(names, qs)) + ")"
 
 
 def main():
@@ -403,7 +403,8 @@ def main():
     names = [b.name for b in driver.bodies]
     out = ["(:status :ok", " :events ("]
     for ev in driver.events:
-        pairs = " ".join("(%s %s %s)" % p for p in ev["pairs"])
+        pairs = " ".join("(%s %s %s)" % (p[0], sx_string(p[1]), sx_string(p[2]))
+                         for p in ev["pairs"])
         out.append("  (:time %s :pairs (%s) :positions %s :velocities %s :after %s)" % (
             sx_number(ev["time"]), pairs, sx_states(names, ev["q"], 0),
             sx_states(names, ev["v"], 0), sx_states(names, ev["after"], 0)))

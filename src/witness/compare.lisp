@@ -1,0 +1,163 @@
+;;;; src/witness/compare.lisp -- the comparator: AMES's states beside the witness's events.
+;;;;
+;;;; AMES's side is its s-expression output (bin/ames run --format sexp with values), read
+;;;; as data; only the numbers it prints are compared (the :numeric plist of each state, and
+;;;; for a last state that lasts forever its closed forms evaluated at the witness's end).
+;;;; Per state: the start time, the end event (kind and bodies), the positions and the
+;;;; velocities at its end (just before its event), to *VALUE-TOLERANCE* relative. The
+;;;; witness finds events by Lsodar's root finding (about 1e-12 here); where AMES sums a
+;;;; Zeno sequence of impacts, Siconos stops the sequence when the rebound speed falls
+;;;; under its own tolerance, so the accumulation time is compared to
+;;;; *ACCUMULATION-TOLERANCE* only.
+
+(in-package #:ames.witness)
+
+(defvar *value-tolerance* 1d-7 "Relative tolerance of times, positions and velocities.")
+(defvar *accumulation-tolerance* 1d-5
+  "Relative tolerance of the time where a Zeno sequence of impacts accumulates.")
+
+(defstruct (comparison (:constructor make-comparison (verdict reason rows)))
+  "The result of COMPARE-RESULTS: VERDICT is :AGREE or :AMES-WRONG (a disagreement; the
+witness has been checked on textbook cases, so it is taken as the reference), or
+:UNSUPPORTED (an event the witness does not model); REASON the first disagreement, ROWS
+the values set side by side: (STATE WHAT AMES WITNESS DIFFERENCE OK)."
+  verdict reason rows)
+
+(defun close-p (a b tolerance)
+  "True when the reals A and B agree to TOLERANCE relative (absolute below 1)."
+  (<= (abs (- a b)) (* tolerance (max 1d0 (abs a) (abs b)))))
+
+(defun name= (symbol string)
+  (string-equal (if (stringp symbol) symbol (symbol-name symbol)) string))
+
+(defun ames-path (states)
+  "The states of AMES's run along the branch its values select: a fork (end event
+(:BRANCH)) is replaced by its selected branch's states."
+  (loop for state in states
+        for branches = (getf state :branches)
+        append (if branches
+                   (let ((chosen (or (find-if (lambda (b) (getf b :selected)) branches)
+                                     (and (= 1 (length branches)) (first branches)))))
+                     (and chosen (ames-path (getf chosen :states))))
+                   (list state))))
+
+(defun event-kind (event) (if (consp event) (first event) event))
+
+(defun witness-kind-matches-p (ames-kind witness-kind)
+  (case ames-kind
+    ((:collision :contact) (member witness-kind '(:collision :contact)))
+    (:leaves (eq witness-kind :leaves))
+    (:lift-off (member witness-kind '(:lift-off :leaves)))
+    (t nil)))
+
+(defun event-matches-p (ames-event witness-event)
+  "True when the witness's event has a pair of AMES's event's kind and bodies."
+  (destructuring-bind (kind a b &rest rest) ames-event
+    (declare (ignore rest))
+    (some (lambda (pair)
+            (destructuring-bind (wkind x y) pair
+              (and (witness-kind-matches-p kind wkind)
+                   (or (and (name= a x) (name= b y)) (and (name= a y) (name= b x))))))
+          (getf witness-event :pairs))))
+
+(defun ames-end-time (ames)
+  "The time where AMES's run (its s-expression ANSWER) ends along its selected branch:
+the end of its last state, or its start when it lasts forever; NIL when not numeric."
+  (let* ((last (car (last (ames-path (getf ames :states)))))
+         (numeric (getf last :numeric)))
+    (when (realp (getf numeric :start))
+      (if (realp (getf numeric :duration))
+          (+ (getf numeric :start) (getf numeric :duration))
+          (getf numeric :start)))))
+
+(defun evaluate-vectors (entries bindings)
+  "ENTRIES ((BODY (X Y)) ...) with X and Y closed forms, evaluated under BINDINGS."
+  (loop for (body (x y)) in entries
+        collect (list body (list (expression-value x bindings) (expression-value y bindings)))))
+
+(defun compare-results (ames witness values &key (t-end (ames-end-time ames)))
+  "Compare AMES's s-expression answer AMES for one scenario with the witness's answer
+WITNESS (see RUN-WITNESS), the scenario's parameter VALUES (for closed forms) and the
+witness's horizon T-END. Returns a COMPARISON."
+  (let ((rows '()) (events (witness-events witness)) (time 0d0)
+        (time-tolerance *value-tolerance*) (index 0))
+    (labels ((row (what a w ok)
+               (push (list index what a w (and (realp a) (realp w) (- a w)) ok) rows)
+               ok)
+             (wrong (control &rest arguments)
+               (return-from compare-results
+                 (make-comparison :ames-wrong (format nil "state ~D: ~?" index control arguments)
+                                  (reverse rows))))
+             (compare-number (what a w tolerance)
+               (unless (row what a w (and (realp a) (realp w) (close-p a w tolerance)))
+                 (wrong "~A: AMES ~A, witness ~A" what a w)))
+             (compare-vectors (what ames-entries witness-entries)
+               (loop for (name (wx wy)) in witness-entries
+                     for entry = (find name ames-entries :key #'first :test (lambda (n s) (name= s n)))
+                     do (unless entry (wrong "~A: AMES has no ~A" what name))
+                        (compare-number (format nil "~A x ~A" what name) (first (second entry)) wx *value-tolerance*)
+                        (compare-number (format nil "~A y ~A" what name) (second (second entry)) wy *value-tolerance*))))
+      (dolist (state (ames-path (getf ames :states)))
+        (let* ((numeric (getf state :numeric))
+               (start (getf numeric :start))
+               (duration (getf numeric :duration))
+               (event (getf state :end-event)))
+          (setf index (getf state :index))
+          (compare-number "start" start time time-tolerance)
+          (setf time-tolerance *value-tolerance*)
+          (cond ((eq event :none)
+                 (let ((late (find-if (lambda (e) (< (getf e :time) (- t-end 1d-9))) events)))
+                   (when late
+                     (wrong "AMES has no more events; the witness has ~S at ~A"
+                            (getf late :pairs) (getf late :time))))
+                 (let* ((end (witness-end witness))
+                        (bindings (acons 'tau (- (getf end :time) start) values)))
+                   (when (< (- (getf end :time) start) 1d-6)
+                     (return))
+                   (compare-vectors "position at the witness's end" (evaluate-vectors (getf state :positions) bindings)
+                                    (getf end :positions))
+                   (compare-vectors "velocity at the witness's end" (evaluate-vectors (getf state :velocities) bindings)
+                                    (getf end :velocities)))
+                 (return))
+                ((not (and (consp event) (member (event-kind event) '(:collision :contact :leaves :lift-off))))
+                 (return-from compare-results
+                   (make-comparison :unsupported (format nil "state ~D ends with ~S, an event the witness does not model"
+                                                         index event)
+                                    (reverse rows))))
+                ((null events)
+                 (wrong "AMES ends the state with ~S at ~A; the witness has no more events"
+                        event (and (realp duration) (+ start duration))))
+                (t
+                 (let ((witness-event (pop events)))
+                   (compare-number "end time" (and (realp duration) (+ start duration))
+                                   (getf witness-event :time) *value-tolerance*)
+                   (unless (row "end event"
+                                (format nil "~(~{~A~^ ~}~)" (subseq event 0 3))
+                                (format nil "~(~{~{~A~^ ~}~^, ~}~)" (getf witness-event :pairs))
+                                (event-matches-p event witness-event))
+                     (wrong "AMES's end event ~S, the witness's ~S" (subseq event 0 3)
+                            (getf witness-event :pairs)))
+                   (compare-vectors "final position" (getf numeric :final-positions)
+                                    (getf witness-event :positions))
+                   (compare-vectors "final velocity" (getf numeric :final-velocities)
+                                    (getf witness-event :velocities))
+                   (setf time (getf witness-event :time))
+                   (when (getf state :accumulation)
+                     ;; the witness's own run of impacts of the same pair, to its end
+                     (loop while (and events (event-matches-p event (first events)))
+                           do (setf time (getf (pop events) :time)))
+                     (setf time-tolerance *accumulation-tolerance*)))))))
+      (make-comparison :agree nil (reverse rows)))))
+
+(defun print-comparison (comparison stream)
+  "Print COMPARISON's rows side by side, then its verdict, on STREAM."
+  (format stream "~&~5A ~38A ~22A ~22A ~10A~%" "state" "what" "AMES" "witness" "difference")
+  (dolist (row (comparison-rows comparison))
+    (destructuring-bind (state what a w difference ok) row
+      (format stream "~5D ~38A ~22A ~22A ~10A~A~%" state what
+              (if (realp a) (format nil "~,12G" a) (format nil "~(~A~)" a))
+              (if (realp w) (format nil "~,12G" w) (format nil "~(~A~)" w))
+              (if difference (format nil "~,2E" difference) "")
+              (if ok "" "  <-- differs"))))
+  (format stream "verdict: ~(~A~)~@[ (~A)~]~%" (comparison-verdict comparison)
+          (comparison-reason comparison)))

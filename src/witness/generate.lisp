@@ -1,0 +1,1 @@
+(in-package #:ames.witness)
