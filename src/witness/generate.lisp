@@ -1,1 +1,154 @@
+;;;; src/witness/generate.lisp -- random valid scenarios, by family, for the crosscheck.
+;;;;
+;;;; Each family writes a scenario's text: its lengths, speeds, masses and g are parameters
+;;;; (:positive) with random exact (:value N) defaults, so that a run with --numeric goes
+;;;; through AMES's closed forms and then its numbers. Every family is built so that its
+;;;; assumptions hold (bodies apart, particles on faces, restitution in [0, 1]), and only
+;;;; with what the witness models (translating points and polygons, fixed polygons and
+;;;; half-planes, gravity, constant forces, Newton restitution).
+
 (in-package #:ames.witness)
+
+(defvar *random* (make-random-state t) "The random state of the generator; bind it (SB-EXT:SEED-RANDOM-STATE) to repeat a run.")
+
+(defun random-ratio (low high &optional (denominator 4))
+  "A random rational in [LOW, HIGH] with DENOMINATOR."
+  (let ((a (ceiling (* low denominator))) (b (floor (* high denominator))))
+    (/ (+ a (random (1+ (- b a)) *random*)) denominator)))
+
+(defun pick (&rest choices) (nth (random (length choices) *random*) choices))
+
+(defun restitution-choice () (pick 0 1/2 1))
+
+(defun parameters-text (&rest names-and-values)
+  "The parameters clause: each name :positive with its value."
+  (format nil "(parameters ~{(~(~A~) :positive (:value ~A))~^ ~})" names-and-values))
+
+(defun scenario-text (name description parameters clauses states)
+  (format nil "(scenario ~(~A~)~%  ~S~%  ~A~%  (gravity g)~%~{  ~A~%~}  (simulate :states ~D))~%"
+          name description parameters clauses states))
+
+(defun floor-text () "(body floor :fixed t :shape (half-plane (1 0) (0 0)))")
+
+(defun family-table (name)
+  "A particle slides across a table top, off its edge, and lands on the floor."
+  (let ((e (restitution-choice)))
+    (scenario-text name "A particle slides off a table onto the floor."
+                   (parameters-text 'g (random-ratio 5 15) 'w (random-ratio 1 4)
+                                    'h (random-ratio 1/2 3) 'v (random-ratio 1/2 5))
+                   (list (format nil "(restitution ~A)" e) (floor-text)
+                         "(body table :fixed t :shape (polygon (0 0) (w 0) (w h) (0 h)))"
+                         "(body particle :mass 1 :position ((/ w 2) h) :velocity (v 0) :shape point)")
+                   (if (= e 1/2) 4 3))))
+
+(defun family-ramp (name)
+  "A particle starts at rest halfway down a fixed ramp standing on the floor."
+  (let ((e (restitution-choice)))
+    (scenario-text name "A particle slides down a ramp onto the floor."
+                   (parameters-text 'g (random-ratio 5 15) 'l (random-ratio 1 4) 'hh (random-ratio 1/2 3))
+                   (list (format nil "(restitution ~A)" e) (floor-text)
+                         "(body ramp :fixed t :shape (polygon (0 0) (l 0) (0 hh)))"
+                         "(body particle :mass 1 :position ((/ l 2) (/ hh 2)) :velocity (0 0) :shape point)")
+                   3)))
+
+(defun family-raised-ramp (name)
+  "A particle slides down a ramp whose foot is raised above the floor, off its end."
+  (let ((e (restitution-choice)))
+    (scenario-text name "A particle slides off a raised ramp and falls to the floor."
+                   (parameters-text 'g (random-ratio 5 15) 'l (random-ratio 1 4)
+                                    'h0 (random-ratio 1/2 3) 'rise (random-ratio 1/4 3))
+                   (list (format nil "(restitution ~A)" e) (floor-text)
+                         "(body ramp :fixed t :shape (polygon (0 0) (l 0) (l h0) (0 (+ h0 rise))))"
+                         "(body particle :mass 1 :position ((/ l 2) (+ h0 (/ rise 2))) :velocity (0 0) :shape point)")
+                   3)))
+
+(defun family-step (name)
+  "A particle thrown horizontally toward a step on the floor."
+  (let ((e (restitution-choice)))
+    (scenario-text name "A particle thrown toward a step on the floor."
+                   (parameters-text 'g (random-ratio 5 15) 'a (random-ratio 1/2 3) 'w (random-ratio 1/2 3)
+                                    's (random-ratio 1/4 2) 'h (random-ratio 1/2 4) 'v (random-ratio 1/2 6))
+                   (list (format nil "(restitution ~A)" e) (floor-text)
+                         "(body step :fixed t :shape (polygon (a 0) ((+ a w) 0) ((+ a w) s) (a s)))"
+                         "(body particle :mass 1 :position (0 (+ s h)) :velocity (v 0) :shape point)")
+                   3)))
+
+(defun family-projectile (name)
+  "A particle launched from the floor under gravity and a constant horizontal force."
+  (let ((e (pick 0 1)))
+    (scenario-text name "A particle launched under gravity and a constant push lands on the floor."
+                   (parameters-text 'g (random-ratio 5 15) 'vx (random-ratio 1/4 4) 'vy (random-ratio 1/2 6)
+                                    'f (random-ratio 1/4 3) 'm (random-ratio 1/2 3))
+                   (list (format nil "(restitution ~A)" e) (floor-text)
+                         "(body particle :mass m :position (0 0) :velocity (vx vy) :shape point)"
+                         "(force push :on particle :value (f 0))")
+                   (if (= e 0) 2 3))))
+
+(defun family-bounce (name)
+  "A ball dropped on the floor (with 0 < e < 1 the bounces accumulate)."
+  (let ((e (pick 0 1/4 1/2 3/4 1)))
+    (scenario-text name "A ball dropped on the floor bounces."
+                   (parameters-text 'g (random-ratio 5 15) 'h (random-ratio 1/4 4) 'm (random-ratio 1/2 3))
+                   (list (format nil "(restitution ~A)" e) (floor-text)
+                         "(body ball :mass m :position (0 h) :velocity (0 0) :shape point)")
+                   (if (member e '(0 1)) 2 4))))
+
+(defun family-chain (name)
+  "Two to four blocks on a frictionless floor, the first sliding into the others."
+  (let* ((count (pick 2 3 4)) (e (restitution-choice))
+         (parameters (list 'g (random-ratio 5 15) 'v (random-ratio 1/2 4)))
+         (clauses (list (format nil "(restitution ~A)" e) (floor-text)))
+         (x 0))
+    (dotimes (k count)
+      (let ((mass (random-ratio 1/2 3)) (width (random-ratio 1/2 2)) (gap (random-ratio 1/4 2)))
+        (setf parameters (append parameters (list (format nil "m~D" k) mass)))
+        (push (format nil "(body block~D :mass m~D :position (~A 0) :velocity (~A 0) :shape (polygon (0 0) (~A 0) (~A 1) (0 1)))"
+                      k k x (if (zerop k) "v" 0) width width)
+              clauses)
+        (setf x (+ x width gap))))
+    (scenario-text name "A chain of blocks on a frictionless floor."
+                   (apply #'parameters-text parameters) (reverse clauses) (+ count 2))))
+
+(defun family-wedge (name)
+  "A particle slides down a free wedge resting on a frictionless floor."
+  (let ((e (restitution-choice)))
+    (scenario-text name "A particle slides down a movable wedge on a frictionless floor."
+                   (parameters-text 'g (random-ratio 5 15) 'mw (random-ratio 1/2 4) 'mp (random-ratio 1/4 2)
+                                    'b (random-ratio 1 3) 'hh (random-ratio 1/2 3))
+                   (list (format nil "(restitution ~A)" e) (floor-text)
+                         "(body wedge :mass mw :position (0 0) :velocity (0 0) :shape (polygon (0 0) (b 0) (0 hh)))"
+                         "(body particle :mass mp :position ((/ b 2) (/ hh 2)) :velocity (0 0) :shape point)")
+                   3)))
+
+(defparameter *families*
+  '((:table . family-table) (:ramp . family-ramp) (:raised-ramp . family-raised-ramp)
+    (:step . family-step) (:projectile . family-projectile) (:bounce . family-bounce)
+    (:chain . family-chain) (:wedge . family-wedge))
+  "The families of random scenarios: (KEYWORD . FUNCTION of the scenario's name).")
+
+(defun generator-families () (mapcar #'car *families*))
+
+(defun random-scenario (family index)
+  "The text of a random scenario of FAMILY (a key of *FAMILIES*), named after it and INDEX."
+  (let ((function (cdr (assoc family *families*))))
+    (unless function (error "no family ~S" family))
+    (funcall function (format nil "~(~A~)-~D" family index))))
+
+(defun write-disagreement (directory name text result)
+  "Write the scenario TEXT and both results (RESULT, a plist of WITNESS-CHECK) under
+DIRECTORY as NAME.lisp: the scenario first, then AMES's and the witness's answers and
+the verdict as comments, so that the file can become a regression test."
+  (let ((path (merge-pathnames (format nil "~A.lisp" name) directory)))
+    (ensure-directories-exist path)
+    (with-open-file (out path :direction :output :if-exists :supersede)
+      (with-standard-io-syntax
+        (let ((*print-readably* nil) (*print-right-margin* 100) (*print-pretty* t))
+          (format out ";;;; ~A -- a disagreement found by the witness (make crosscheck).~%;;;; verdict: ~(~A~)~%;;;; reason: ~A~%;;;; Run: bin/ames check ~A --numeric~%~%~A~%"
+                  name (getf result :verdict) (getf result :reason) path text)
+          (dolist (part (list (cons "AMES's answer" (getf result :answer))
+                              (cons "witness's answer" (getf result :witness))))
+            (format out "~%;; ~A:~%" (car part))
+            (with-input-from-string (lines (prin1-to-string (cdr part)))
+              (loop for line = (read-line lines nil) while line
+                    do (format out ";;   ~A~%" line)))))))
+    path))

@@ -20,5 +20,5 @@ AMES's geometry, knowledge base or simulator, so that its answers are independen
    #:print-comparison #:*time-tolerance* #:*value-tolerance* #:*accumulation-tolerance*
    #:ames-end-time
    ;; generation (generate.lisp)
-   #:*families* #:random-scenario #:generator-families
+   #:*families* #:*random* #:random-scenario #:generator-families
    #:write-disagreement))
