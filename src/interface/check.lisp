@@ -32,13 +32,11 @@ s-expression report as data, or NIL with FAILURE :REFUSED or :CRASH and MESSAGE.
     (ames-error (condition) (values nil :refused (princ-to-string condition)))
     (error (condition) (values nil :crash (format nil "~A: ~A" (type-of condition) condition)))))
 
-(defun witness-horizon (answer)
+(defun witness-horizon (answer values)
   "How far the witness runs: a little past AMES's last event, or a while into a last
 state that lasts forever."
-  (let* ((states (getf answer :states))
-         (end (ames.witness:ames-end-time answer))
-         (forever (loop for state in states thereis (eq (getf state :end-event) :none))))
-    (declare (ignorable forever))
+  (let ((states (ames.witness:ames-path (getf answer :states)))
+        (end (ames.witness:ames-end-time answer values)))
     (when end
       (let ((last-event (getf (car (last states)) :end-event)))
         (if (eq last-event :none)
@@ -53,7 +51,7 @@ state that lasts forever."
     (when failure
       (return-from witness-check (list :verdict failure :reason message)))
     (let* ((values (run-parameter-values scenario :settings settings :numeric numeric))
-           (horizon (witness-horizon answer)))
+           (horizon (witness-horizon answer values)))
       (unless horizon
         (return-from witness-check
           (list :verdict :unsupported :answer answer

@@ -60,22 +60,39 @@ the values set side by side: (STATE WHAT AMES WITNESS DIFFERENCE OK)."
                    (or (and (name= a x) (name= b y)) (and (name= a y) (name= b x))))))
           (getf witness-event :pairs))))
 
-(defun ames-end-time (ames)
+(defun number-of (expression bindings)
+  "EXPRESSION's value under BINDINGS as a double, EXPRESSION itself when it is a keyword
+(:FOREVER), NIL when it has none."
+  (cond ((keywordp expression) expression)
+        (t (let ((value (expression-value expression bindings)))
+             (and value (coerce value 'double-float))))))
+
+(defun evaluate-vectors (entries bindings)
+  "ENTRIES ((BODY (X Y)) ...) with X and Y closed forms, evaluated under BINDINGS."
+  (loop for (body (x y)) in entries
+        collect (list body (list (number-of x bindings) (number-of y bindings)))))
+
+(defun state-numbers (state bindings)
+  "The numbers AMES gives for STATE: its :NUMERIC plist (:START :DURATION
+:FINAL-POSITIONS :FINAL-VELOCITIES) when it printed one (a run with parameter values),
+else its exact closed forms evaluated (a scenario written with numbers)."
+  (or (getf state :numeric)
+      (list :start (number-of (getf state :start) bindings)
+            :duration (number-of (getf state :duration) bindings)
+            :final-positions (evaluate-vectors (getf state :final-positions) bindings)
+            :final-velocities (evaluate-vectors (getf state :final-velocities) bindings))))
+
+(defun ames-end-time (ames &optional bindings)
   "The time where AMES's run (its s-expression ANSWER) ends along its selected branch:
 the end of its last state, or its start when it lasts forever; NIL when not numeric."
   (let* ((last (car (last (ames-path (getf ames :states)))))
-         (numeric (getf last :numeric)))
+         (numeric (state-numbers last bindings)))
     (when (realp (getf numeric :start))
       (if (realp (getf numeric :duration))
           (+ (getf numeric :start) (getf numeric :duration))
           (getf numeric :start)))))
 
-(defun evaluate-vectors (entries bindings)
-  "ENTRIES ((BODY (X Y)) ...) with X and Y closed forms, evaluated under BINDINGS."
-  (loop for (body (x y)) in entries
-        collect (list body (list (expression-value x bindings) (expression-value y bindings)))))
-
-(defun compare-results (ames witness values &key (t-end (ames-end-time ames)))
+(defun compare-results (ames witness values &key (t-end (ames-end-time ames values)))
   "Compare AMES's s-expression answer AMES for one scenario with the witness's answer
 WITNESS (see RUN-WITNESS), the scenario's parameter VALUES (for closed forms) and the
 witness's horizon T-END. Returns a COMPARISON."
@@ -98,7 +115,7 @@ witness's horizon T-END. Returns a COMPARISON."
                         (compare-number (format nil "~A x ~A" what name) (first (second entry)) wx *value-tolerance*)
                         (compare-number (format nil "~A y ~A" what name) (second (second entry)) wy *value-tolerance*))))
       (dolist (state (ames-path (getf ames :states)))
-        (let* ((numeric (getf state :numeric))
+        (let* ((numeric (state-numbers state values))
                (start (getf numeric :start))
                (duration (getf numeric :duration))
                (event (getf state :end-event)))

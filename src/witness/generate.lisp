@@ -128,11 +128,31 @@
 
 (defun generator-families () (mapcar #'car *families*))
 
+(defvar *symbolic* nil
+  "When true, random scenarios keep their parameters (with (:value N) defaults, run with
+--numeric: AMES goes through closed forms in the parameters, which is slow); when false,
+the values are written into the scenario as exact numbers.")
+
+(defun substitute-values (text)
+  "TEXT (a scenario written by a family) with every parameter replaced by its value and
+the parameters clause dropped."
+  (let* ((form (let ((*package* (find-package '#:ames-scenario)) (*read-eval* nil))
+                 (read-from-string text)))
+         (parameters (find-if (lambda (clause) (and (consp clause)
+                                                    (string-equal (symbol-name (first clause)) "PARAMETERS")))
+                              form))
+         (bindings (loop for (name nil (nil value)) in (rest parameters) collect (cons name value))))
+    (let ((*package* (find-package '#:ames-scenario)) (*print-case* :downcase)
+          (*print-pretty* t) (*print-right-margin* 100))
+      (format nil "~S~%" (sublis bindings (remove parameters form))))))
+
 (defun random-scenario (family index)
-  "The text of a random scenario of FAMILY (a key of *FAMILIES*), named after it and INDEX."
+  "The text of a random scenario of FAMILY (a key of *FAMILIES*), named after it and INDEX;
+its values as exact numbers unless *SYMBOLIC*."
   (let ((function (cdr (assoc family *families*))))
     (unless function (error "no family ~S" family))
-    (funcall function (format nil "~(~A~)-~D" family index))))
+    (let ((text (funcall function (format nil "~(~A~)-~D" family index))))
+      (if *symbolic* text (substitute-values text)))))
 
 (defun write-disagreement (directory name text result)
   "Write the scenario TEXT and both results (RESULT, a plist of WITNESS-CHECK) under

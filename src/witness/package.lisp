@@ -18,7 +18,7 @@ AMES's geometry, knowledge base or simulator, so that its answers are independen
    ;; comparison (compare.lisp)
    #:compare-results #:comparison-verdict #:comparison-rows #:comparison-reason
    #:print-comparison #:*time-tolerance* #:*value-tolerance* #:*accumulation-tolerance*
-   #:ames-end-time
+   #:ames-end-time #:ames-path
    ;; generation (generate.lisp)
-   #:*families* #:*random* #:random-scenario #:generator-families
+   #:*families* #:*random* #:*symbolic* #:random-scenario #:generator-families
    #:write-disagreement))
