@@ -19,7 +19,7 @@ closing with no approach speed), :leaves (a body in contact passing the end of a
 the face's extent is handled here, not by Siconos, so that a body leaving a table top is
 not held by the table's infinite line), or :lift-off (a contact opening on a face).
 Positions and velocities of an event are those just before it; :after the velocities
-just after.
+just after; :speed the largest approach speed of its impacts (0 for other events).
 
 The model (every number a float, in one fixed frame, y up):
   {"t_end": T, "gravity": G,
@@ -265,15 +265,17 @@ class Driver:
         self.events = []
         self.in_contact = set()
 
-    def record(self, t, pairs, qs, vs, after):
+    def record(self, t, pairs, qs, vs, after, speed=0.0):
         if self.events and abs(self.events[-1]["time"] - t) <= 1e-9 * max(1.0, abs(t)):
             last = self.events[-1]
             for p in pairs:
                 if p not in last["pairs"]:
                     last["pairs"].append(p)
             last["after"] = after
+            last["speed"] = max(last["speed"], speed)
             return
-        self.events.append({"time": t, "pairs": list(pairs), "q": qs, "v": vs, "after": after})
+        self.events.append({"time": t, "pairs": list(pairs), "q": qs, "v": vs, "after": after,
+                            "speed": speed})
 
     def touching(self, c, qs, vs):
         return abs(c.gap(qs)) <= 1e-7 and abs(c.rate(vs)) <= 1e-7
@@ -317,17 +319,18 @@ class Driver:
             seg.sim.processEvents()
             q2, v2 = seg.state()
             if ns:
-                pairs = []
+                pairs, speed = [], 0.0
                 for c in active:
                     if abs(c.gap(q1)) <= 1e-7:
                         before, after = c.rate(v1), c.rate(v2)
                         if before < -1e-9 and after > before + 1e-12:
                             pairs.append((":collision",) + pair_names(c, self.bodies))
+                            speed = max(speed, -before)
                         elif c not in self.in_contact and abs(before) <= 1e-9 and \
                                 tp > 0 and abs(after) <= 1e-9:
                             pass
                 if pairs:
-                    self.record(t1, pairs, q1, v1, v2)
+                    self.record(t1, pairs, q1, v1, v2, speed)
                 else:
                     self.lift_offs(active, t1, q1, v1, q2, v2)
             self.in_contact = {c for c in active if self.touching(c, q2, v2)}
@@ -405,8 +408,8 @@ def main():
     for ev in driver.events:
         pairs = " ".join("(%s %s %s)" % (p[0], sx_string(p[1]), sx_string(p[2]))
                          for p in ev["pairs"])
-        out.append("  (:time %s :pairs (%s) :positions %s :velocities %s :after %s)" % (
-            sx_number(ev["time"]), pairs, sx_states(names, ev["q"], 0),
+        out.append("  (:time %s :speed %s :pairs (%s) :positions %s :velocities %s :after %s)" % (
+            sx_number(ev["time"]), sx_number(ev["speed"]), pairs, sx_states(names, ev["q"], 0),
             sx_states(names, ev["v"], 0), sx_states(names, ev["after"], 0)))
     out.append(" )")
     out.append(" :end (:time %s :positions %s :velocities %s))" % (
