@@ -264,6 +264,7 @@ class Driver:
         self.dt = float(model.get("dt", min(0.01, self.t_end / 50.0)))
         self.events = []
         self.in_contact = set()
+        self.smooth_event = None
 
     def record(self, t, pairs, qs, vs, after, speed=0.0):
         if self.events and abs(self.events[-1]["time"] - t) <= 1e-9 * max(1.0, abs(t)):
@@ -332,17 +333,26 @@ class Driver:
                 if pairs:
                     self.record(t1, pairs, q1, v1, v2, speed)
                 else:
-                    self.lift_offs(active, t1, q1, v1, q2, v2)
-            self.in_contact = {c for c in active if self.touching(c, q2, v2)}
+                    self.smooth_event = (t1, q1, v1)
+            touching = {c for c in active if self.touching(c, q2, v2)}
+            self.lift_offs([c for c in active if c in self.in_contact and c not in touching], tp)
+            self.in_contact = touching
             tp, qp, vp = t1, q2, v2
             if t1 >= self.t_end - 1e-12:
                 break
         return tp, qp, vp
 
-    def lift_offs(self, active, t, q1, v1, q2, v2):
-        """A nonsmooth event without an impact: note it, so that a contact seen open at the
-        next step is said to have lifted off here."""
-        self.last_smooth_event = t
+    def lift_offs(self, opened, tp):
+        """The contacts OPENED (touching at the last step, apart now, with no impact) lifted
+        off at the nonsmooth event where Siconos's acceleration-level LCP let them go (the
+        last one, at or after TP); without one, at TP."""
+        if not opened:
+            return
+        t, q, v = self.smooth_event if self.smooth_event and self.smooth_event[0] >= tp - 1e-12 \
+            else (tp, None, None)
+        if q is None:
+            raise RuntimeError("a contact opened without a nonsmooth event")
+        self.record(t, [(":lift-off",) + pair_names(c, self.bodies) for c in opened], q, v, v)
 
     def extent_change(self, active, inactive, t0, q0, v0, t1, q1, v1):
         """The earliest time in (t0, t1] where an active contact's face stops covering its

@@ -120,10 +120,37 @@
                          "(body particle :mass mp :position ((/ b 2) (/ hh 2)) :velocity (0 0) :shape point)")
                    3)))
 
+(defun terrain-piece (name a)
+  "A random fixed convex piece of terrain named NAME standing on the floor from x = A:
+a step, a wedge rising either way, or a trapezoid; returns its clause and its width."
+  (let ((w (random-ratio 1/2 3)) (h (random-ratio 1/4 2)) (h2 (random-ratio 1/4 2)))
+    (values (format nil "(body ~A :fixed t :shape (polygon ~{(~A ~A)~^ ~}))" name
+                    (ecase (pick :step :up :down :trapezoid)
+                      (:step (list a 0 (+ a w) 0 (+ a w) h a h))
+                      (:up (list a 0 (+ a w) 0 (+ a w) h))
+                      (:down (list a 0 (+ a w) 0 a h))
+                      (:trapezoid (list a 0 (+ a w) 0 (+ a w) h a h2))))
+            w)))
+
+(defun family-terrain (name)
+  "A particle thrown over random polygonal terrain (one to three steps, wedges and
+trapezoids on the floor), Newton restitution 0, 1/2 or 1."
+  (let ((clauses (list (format nil "(restitution ~A)" (restitution-choice)) (floor-text)))
+        (x (random-ratio 1/2 2)))
+    (dotimes (k (pick 1 2 3))
+      (multiple-value-bind (clause width) (terrain-piece (format nil "piece~D" k) x)
+        (push clause clauses)
+        (setf x (+ x width (random-ratio 1/4 2)))))
+    (push (format nil "(body particle :mass 1 :position (0 ~A) :velocity (~A ~A) :shape point)"
+                  (random-ratio 5/2 5) (random-ratio 1/4 4) (random-ratio -2 3))
+          clauses)
+    (scenario-text name "A particle thrown over polygonal terrain."
+                   (parameters-text 'g (random-ratio 5 15)) (reverse clauses) 4)))
+
 (defparameter *families*
   '((:table . family-table) (:ramp . family-ramp) (:raised-ramp . family-raised-ramp)
     (:step . family-step) (:projectile . family-projectile) (:bounce . family-bounce)
-    (:chain . family-chain) (:wedge . family-wedge))
+    (:chain . family-chain) (:wedge . family-wedge) (:terrain . family-terrain))
   "The families of random scenarios: (KEYWORD . FUNCTION of the scenario's name).")
 
 (defun generator-families () (mapcar #'car *families*))
