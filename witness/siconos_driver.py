@@ -29,7 +29,17 @@ The model (every number a float, in one fixed frame, y up):
                "force": [FX, FY]}],                                  (constant, besides gravity)
    "obstacles": [{"name": N, "faces": [{"a": [X, Y], "b": [X, Y], "infinite": BOOL}]}],
                                                 (world frame; solid on the left of a -> b)
-   "restitution": [[A, B, E], ...], "default_restitution": E}
+   "restitution": [[A, B, E], ...], "default_restitution": E,
+   "springs": [{"name": N, "k": K, "rest": L0 or null, "a": POINT, "b": POINT}],
+   "ropes": [{"name": N, "length": L, "points": [POINT, ...]}]}
+  where POINT is {"body": INDEX, "offset": [X, Y]} (a free body's point, own frame) or
+  {"point": [X, Y]} (a fixed point: a fixed body's point or pulley).
+
+Springs and ropes are linear in the positions as long as each keeps the direction of its
+start (a spring along a line, a rope's pieces vertical or along an incline): the driver
+checks that at every step and answers :unsupported when one turns. A rope is the
+unilateral constraint L - (sum of its pieces) >= 0 with Newton's law e = 0: its closing is
+(:tightens ROPE ROPE), its opening (:slackens ROPE ROPE).
 
 Bodies translate (no rotation). Every possible contact is a face (of an obstacle or of a
 free polygon body) against the support point of another free body: its gap is linear in
@@ -120,6 +130,27 @@ class Contact:
         self.s = body.support(self.n)
         self.lo, self.hi = body.extent(self.t)
 
+    kinds = {"close": ":collision", "open": ":lift-off"}
+
+    def row(self, n):
+        h = np.zeros(2 * n)
+        h[2 * self.other:2 * self.other + 2] += self.n
+        if self.owner is not None:
+            h[2 * self.owner:2 * self.owner + 2] -= self.n
+        return h
+
+    def constant(self):
+        return self.offset()
+
+    def restitution(self, model, bodies):
+        return restitution(model, bodies[self.other].name, self.owner_name)
+
+    def names(self, bodies):
+        return (bodies[self.other].name, self.owner_name)
+
+    def check(self, qs):
+        pass
+
     def key(self):
         return (self.owner, self.other, round(float(self.n[0]), 12), round(float(self.n[1]), 12),
                 round(self.offset(), 12))
@@ -160,7 +191,7 @@ class Contact:
 
 
 def pair_names(contact, bodies):
-    return (bodies[contact.other].name, contact.owner_name)
+    return contact.names(bodies)
 
 
 def make_contacts(model, bodies):
@@ -217,42 +248,148 @@ def hermite(t0, q0, v0, t1, q1, v1, t):
 
 
 class Segment:
-    """One Siconos model, from a state, with a fixed set of active contacts."""
+    """One Siconos model, from a state, with a fixed set of active contacts: one Lagrangian
+    linear time-invariant system holding every free body (so that springs can couple them),
+    M q'' + K q = F, and one LagrangianLinearTIR (Newton's law) per contact."""
 
-    def __init__(self, model, bodies, contacts, t0, qs, vs, t_end, dt):
+    def __init__(self, model, bodies, contacts, t0, qs, vs, t_end, dt, springs):
         self.bodies, self.contacts = bodies, contacts
         g = float(model.get("gravity", 0.0))
+        n = len(bodies)
         nsds = sk.NonSmoothDynamicalSystem(t0, t_end)
-        self.ds = []
+        mass = np.zeros((2 * n, 2 * n))
+        force = np.zeros(2 * n)
         for k, body in enumerate(bodies):
-            ds = sk.LagrangianLinearTIDS(list(qs[k]), list(vs[k]), np.eye(2) * body.mass)
-            ds.setFExtPtr(np.array([body.force[0], body.force[1] - body.mass * g]))
-            nsds.insertDynamicalSystem(ds)
-            self.ds.append(ds)
+            mass[2 * k, 2 * k] = mass[2 * k + 1, 2 * k + 1] = body.mass
+            force[2 * k:2 * k + 2] = [body.force[0], body.force[1] - body.mass * g]
+        stiffness = np.zeros((2 * n, 2 * n))
+        for spring in springs:
+            spring.add_to(stiffness, force)
+        self.ds = sk.LagrangianLinearTIDS(list(np.concatenate(qs)), list(np.concatenate(vs)),
+                                          mass, stiffness, np.zeros((2 * n, 2 * n)))
+        self.ds.setFExtPtr(force)
+        nsds.insertDynamicalSystem(self.ds)
         for c in contacts:
-            e = restitution(model, bodies[c.other].name, c.owner_name)
-            if c.owner is None:
-                rel = sk.LagrangianLinearTIR(np.array([[c.n[0], c.n[1]]]),
-                                             np.array([c.offset()]))
-                inter = sk.Interaction(sk.NewtonImpactNSL(e), rel)
-                nsds.link(inter, self.ds[c.other])
-            else:
-                rel = sk.LagrangianLinearTIR(np.array([[-c.n[0], -c.n[1], c.n[0], c.n[1]]]),
-                                             np.array([c.offset()]))
-                inter = sk.Interaction(sk.NewtonImpactNSL(e), rel)
-                nsds.link(inter, self.ds[c.owner], self.ds[c.other])
+            rel = sk.LagrangianLinearTIR(np.array([c.row(n)]), np.array([c.constant()]))
+            inter = sk.Interaction(sk.NewtonImpactNSL(c.restitution(model, bodies)), rel)
+            nsds.link(inter, self.ds)
         td = sk.TimeDiscretisation(t0, dt)
         self.sim = sk.EventDriven(nsds, td)
         osi = sk.LsodarOSI()
-        osi.setTol(1, 1e-12, 1e-12) if hasattr(osi, "setTol") else None
         self.sim.insertIntegrator(osi)
         self.sim.insertNonSmoothProblem(sk.LCP(), sk.SICONOS_OSNSP_ED_IMPACT)
         self.sim.insertNonSmoothProblem(sk.LCP(), sk.SICONOS_OSNSP_ED_SMOOTH_ACC)
         self.em = self.sim.eventsManager()
+        self.n = n
 
     def state(self):
-        return ([np.array(d.q(), dtype=float) for d in self.ds],
-                [np.array(d.velocity(), dtype=float) for d in self.ds])
+        q = np.array(self.ds.q(), dtype=float)
+        v = np.array(self.ds.velocity(), dtype=float)
+        return ([q[2 * k:2 * k + 2] for k in range(self.n)],
+                [v[2 * k:2 * k + 2] for k in range(self.n)])
+
+
+def point_position(point, qs):
+    """A point of the model: {"body": INDEX, "offset": [X, Y]} or {"point": [X, Y]} (fixed)."""
+    if point.get("body") is None:
+        return np.array(point["point"], dtype=float)
+    return qs[point["body"]] + np.array(point["offset"], dtype=float)
+
+
+def point_constant(point):
+    return np.array(point["point"] if point.get("body") is None else point["offset"], dtype=float)
+
+
+def check_direction(what, d, u):
+    if abs(d[0] * u[1] - d[1] * u[0]) > 1e-7 * max(1.0, float(np.linalg.norm(d))) or \
+            float(np.dot(d, u)) <= 0:
+        raise Unsupported("%s leaves its initial line; the witness models only springs and "
+                          "ropes that keep their directions" % what)
+
+
+class Spring:
+    """A Hooke spring between two points, along the fixed direction U of its start: exact
+    while the spring keeps that direction (checked at every step)."""
+
+    def __init__(self, spec, qs):
+        self.name, self.k, self.a, self.b = spec["name"], float(spec["k"]), spec["a"], spec["b"]
+        d = point_position(self.b, qs) - point_position(self.a, qs)
+        self.u = d / np.linalg.norm(d)
+        self.rest = float(spec["rest"]) if spec.get("rest") is not None else float(np.linalg.norm(d))
+
+    def add_to(self, stiffness, force):
+        """F_b = -k (u.(P_b - P_a) - L0) u, F_a = -F_b, as K q and a constant force."""
+        uu = self.k * np.outer(self.u, self.u)
+        const = float(np.dot(self.u, point_constant(self.b) - point_constant(self.a))) - self.rest
+        for point, sign in ((self.a, -1.0), (self.b, 1.0)):
+            if point.get("body") is None:
+                continue
+            i = 2 * point["body"]
+            force[i:i + 2] += -sign * self.k * const * self.u
+            for other, osign in ((self.a, -1.0), (self.b, 1.0)):
+                if other.get("body") is None:
+                    continue
+                j = 2 * other["body"]
+                stiffness[i:i + 2, j:j + 2] += sign * osign * uu
+
+    def check(self, qs):
+        check_direction("spring " + self.name, point_position(self.b, qs) - point_position(self.a, qs),
+                        self.u)
+
+
+class Rope:
+    """An inextensible rope through points (attachments and pulleys), straight between them,
+    each piece along the fixed direction of its start (checked at every step): the
+    unilateral constraint L - sum of the pieces' lengths >= 0, linear in the positions."""
+
+    kinds = {"close": ":tightens", "open": ":slackens"}
+
+    def __init__(self, spec, qs):
+        self.name, self.length, self.points = spec["name"], float(spec["length"]), spec["points"]
+        self.e = float(spec.get("restitution", 0.0))
+        self.u = []
+        for p, q in zip(self.points, self.points[1:]):
+            d = point_position(q, qs) - point_position(p, qs)
+            self.u.append(d / np.linalg.norm(d))
+        m = len(self.u)
+        self.c = [(self.u[j - 1] if j > 0 else 0.0) - (self.u[j] if j < m else 0.0)
+                  for j in range(len(self.points))]
+
+    def row(self, n):
+        h = np.zeros(2 * n)
+        for point, c in zip(self.points, self.c):
+            if point.get("body") is not None:
+                h[2 * point["body"]:2 * point["body"] + 2] -= c
+        return h
+
+    def constant(self):
+        return self.length - sum(float(np.dot(c, point_constant(p))) for p, c in zip(self.points, self.c))
+
+    def gap(self, qs):
+        return float(np.dot(self.row(len(qs)), np.concatenate(qs))) + self.constant()
+
+    def rate(self, vs):
+        return float(np.dot(self.row(len(vs)), np.concatenate(vs)))
+
+    def restitution(self, model, bodies):
+        return self.e
+
+    def names(self, bodies):
+        return (self.name, self.name)
+
+    def covers(self, qs):
+        return True
+
+    def active(self, qs, vs):
+        return True
+
+    def margins(self, qs):
+        return (1.0, 1.0)
+
+    def check(self, qs):
+        for k, (p, q) in enumerate(zip(self.points, self.points[1:])):
+            check_direction("rope %s (piece %d)" % (self.name, k),
+                            point_position(q, qs) - point_position(p, qs), self.u[k])
 
 
 class Driver:
@@ -260,6 +397,10 @@ class Driver:
         self.model = model
         self.bodies = [Body(b) for b in model["bodies"]]
         self.contacts = make_contacts(model, self.bodies)
+        qs = [b.q.copy() for b in self.bodies]
+        self.springs = [Spring(spec, qs) for spec in model.get("springs", [])]
+        self.ropes = [Rope(spec, qs) for spec in model.get("ropes", [])]
+        self.contacts += self.ropes
         self.t_end = float(model["t_end"])
         self.dt = float(model.get("dt", min(0.01, self.t_end / 50.0)))
         self.events = []
@@ -296,7 +437,8 @@ class Driver:
     def segment(self, t0, qs, vs):
         active = [c for c in self.contacts if c.active(qs, vs)]
         inactive = [c for c in self.contacts if c not in active]
-        seg = Segment(self.model, self.bodies, active, t0, qs, vs, self.t_end, self.dt)
+        seg = Segment(self.model, self.bodies, active, t0, qs, vs, self.t_end, self.dt,
+                      self.springs)
         tp, qp, vp = t0, qs, vs
         count = 0
         while seg.sim.hasNextEvent():
@@ -308,6 +450,8 @@ class Driver:
             ns = nxt.getType() == 2
             t1 = nxt.getDoubleTimeOfEvent()
             q1, v1 = seg.state()
+            for line in self.springs + self.ropes:
+                line.check(q1)
             # has a contact's extent changed between tp and t1?
             change = self.extent_change(active, inactive, tp, qp, vp, t1, q1, v1)
             if change is not None:
@@ -326,7 +470,7 @@ class Driver:
                     if abs(c.gap(q1)) <= 1e-7:
                         before, after = c.rate(v1), c.rate(v2)
                         if before < -1e-9 and after > before + 1e-12:
-                            pairs.append((":collision",) + pair_names(c, self.bodies))
+                            pairs.append((c.kinds["close"],) + pair_names(c, self.bodies))
                             speed = max(speed, -before)
                         elif c not in self.in_contact and abs(before) <= 1e-9 and \
                                 tp > 0 and abs(after) <= 1e-9:
@@ -349,7 +493,7 @@ class Driver:
         """The contacts OPENED (touching at the last step, apart now, with no impact) lifted
         off at the nonsmooth event where Siconos's acceleration-level LCP let them go (the
         last one, at or after TP); without one, at TP."""
-        if not opened:
+        if not opened or tp <= 0.0:   # at the start: the initial modes, not an event
             return
         t, q, v = self.smooth_event if self.smooth_event and self.smooth_event[0] >= tp - 1e-12 \
             else (tp, None, None)
@@ -357,7 +501,7 @@ class Driver:
             if max(c.rate(vs) for c in opened) < 1e-4:
                 return   # the residue of a Zeno sequence's end (a rebound under Siconos's tolerance)
             raise RuntimeError("a contact opened without a nonsmooth event")
-        self.record(t, [(":lift-off",) + pair_names(c, self.bodies) for c in opened], q, v, v)
+        self.record(t, [(c.kinds["open"],) + pair_names(c, self.bodies) for c in opened], q, v, v)
 
     def extent_change(self, active, inactive, t0, q0, v0, t1, q1, v1):
         """The earliest time in (t0, t1] where an active contact's face stops covering its

@@ -58,16 +58,25 @@ the values set side by side: (STATE WHAT AMES WITNESS DIFFERENCE OK)."
     ((:collision :contact) (member witness-kind '(:collision :contact)))
     (:leaves (eq witness-kind :leaves))
     (:lift-off (member witness-kind '(:lift-off :leaves)))
+    ((:tightens :slackens) (eq witness-kind ames-kind))
     (t nil)))
 
+(defparameter +witnessed-events+ '(:collision :contact :leaves :lift-off :tightens :slackens)
+  "The kinds of end events the witness reports.")
+
+(defun event-head (event)
+  "EVENT's kind and the names that follow it (one or two), without its keyword data."
+  (cons (first event) (loop for x in (rest event) until (keywordp x) collect x)))
+
 (defun event-matches-p (ames-event witness-event)
-  "True when the witness's event has a pair of AMES's event's kind and bodies."
-  (destructuring-bind (kind a b &rest rest) ames-event
-    (declare (ignore rest))
+  "True when the witness's event has a pair of AMES's event's kind and names (a rope's
+event names the rope once, the witness twice)."
+  (destructuring-bind (kind &rest names) (event-head ames-event)
     (some (lambda (pair)
             (destructuring-bind (wkind x y) pair
               (and (witness-kind-matches-p kind wkind)
-                   (or (and (name= a x) (name= b y)) (and (name= a y) (name= b x))))))
+                   (every (lambda (name) (or (name= name x) (name= name y))) names)
+                   (every (lambda (w) (some (lambda (name) (name= name w)) names)) (list x y)))))
           (getf witness-event :pairs))))
 
 (defun number-of (expression bindings)
@@ -148,7 +157,7 @@ witness's horizon T-END. Returns a COMPARISON."
                    (compare-vectors "velocity at the witness's end" (evaluate-vectors (getf state :velocities) bindings)
                                     (getf end :velocities)))
                  (return))
-                ((not (and (consp event) (member (event-kind event) '(:collision :contact :leaves :lift-off))))
+                ((not (and (consp event) (member (event-kind event) +witnessed-events+)))
                  (return-from compare-results
                    (make-comparison :unsupported (format nil "state ~D ends with ~S, an event the witness does not model"
                                                          index event)
@@ -161,10 +170,10 @@ witness's horizon T-END. Returns a COMPARISON."
                    (compare-number "end time" (and (realp duration) (+ start duration))
                                    (getf witness-event :time) *value-tolerance*)
                    (unless (row "end event"
-                                (format nil "~(~{~A~^ ~}~)" (subseq event 0 3))
+                                (format nil "~(~{~A~^ ~}~)" (event-head event))
                                 (format nil "~(~{~{~A~^ ~}~^, ~}~)" (getf witness-event :pairs))
                                 (event-matches-p event witness-event))
-                     (wrong "AMES's end event ~S, the witness's ~S" (subseq event 0 3)
+                     (wrong "AMES's end event ~S, the witness's ~S" (event-head event)
                             (getf witness-event :pairs)))
                    (compare-vectors "final position" (getf numeric :final-positions)
                                     (getf witness-event :positions))

@@ -3,8 +3,9 @@
 ;;;; The model is the JSON object read by witness/siconos_driver.py (see its docstring):
 ;;;; the free bodies with their masses, shapes, initial state and constant forces, the
 ;;;; fixed bodies as faces (a half-plane one infinite face, a segment one finite face, a
-;;;; polygon its edges), gravity and the coefficients of restitution. What the witness
-;;;; cannot model (friction, springs, ropes, gravitation, arcs, rotation) is refused with
+;;;; polygon its edges), gravity, the coefficients of restitution, springs and ropes over
+;;;; pulleys (points given by body index and offset, or fixed points). What the witness
+;;;; cannot model (friction, bumpers, gravitation, arcs, rotation, drag) is refused with
 ;;;; WITNESS-UNSUPPORTED, never approximated.
 
 (in-package #:ames.witness)
@@ -18,8 +19,8 @@ thing; DETAIL says why."))
   (error 'witness-unsupported :datum datum :detail (apply #'format nil control arguments)))
 
 (defparameter +unsupported-words+
-  '(:inertia :driven :angle :angular-velocity :hinge :drag :friction :spring :rope
-    :pulley :gravitation :arc :outline)
+  '(:inertia :driven :angle :angular-velocity :hinge :drag :friction :toward
+    :gravitation :arc :outline)
   "Words of the scenario language that name what the witness does not model.")
 
 (defun check-modelled (form)
@@ -66,6 +67,7 @@ when it has none."
   (let ((shape (scenario-body-shape body))
         (origin (point-of (scenario-body-position body) values "a position")))
     (case (shape-kind shape)
+      (:point '())                      ; a fixed point (a pulley's support) has no face
       (:half-plane (list (face-model (offset-point (second shape) origin values)
                                      (offset-point (third shape) origin values) t)))
       (:segment (list (face-model (offset-point (second shape) origin values)
@@ -82,6 +84,36 @@ when it has none."
       (when (eq (scenario-force-body force) (scenario-body-name body))
         (destructuring-bind (x y) (point-of (scenario-force-value force) values "a force")
           (incf fx x) (incf fy y))))))
+
+(defun model-point (scenario body-name point values)
+  "The driver's POINT of BODY-NAME's point POINT (own frame): a free body's index and
+offset, or a fixed body's point in the world."
+  (let ((body (find-scenario-body body-name scenario))
+        (offset (point-of point values "an attachment point")))
+    (if (scenario-body-fixed-p body)
+        `(("point" . (:array ,@(mapcar #'+ offset (point-of (scenario-body-position body) values "a position")))))
+        `(("body" . ,(position body (scenario-moving-bodies scenario)))
+          ("offset" . (:array ,@offset))))))
+
+(defun springs-model (scenario values)
+  (loop for spring in (scenario-springs scenario)
+        for (a-body a-point) = (scenario-spring-from spring)
+        for (b-body b-point) = (scenario-spring-to spring)
+        collect `(("name" . ,(string-downcase (scenario-spring-name spring)))
+                  ("k" . ,(value-of (scenario-spring-stiffness spring) values "a stiffness"))
+                  ("rest" . ,(if (scenario-spring-rest-length spring)
+                                 (value-of (scenario-spring-rest-length spring) values "a rest length")
+                                 :null))
+                  ("a" . ,(model-point scenario a-body a-point values))
+                  ("b" . ,(model-point scenario b-body b-point values)))))
+
+(defun ropes-model (scenario values)
+  (loop for rope in (scenario-ropes scenario)
+        collect `(("name" . ,(string-downcase (scenario-rope-name rope)))
+                  ("length" . ,(value-of (scenario-rope-length rope) values "a rope's length"))
+                  ("points" . (:array ,@(loop for point in (scenario-rope-through rope)
+                                              for (body where) = (rope-point-position scenario point)
+                                              collect (model-point scenario body where values)))))))
 
 (defun scenario-model (scenario values t-end)
   "The witness's model (an alist for MODEL-JSON) of the validated SCENARIO with the
@@ -105,6 +137,8 @@ WITNESS-UNSUPPORTED for what the witness cannot model."
                                             ("v" . (:array ,@(point-of (scenario-body-velocity body) values "a velocity")))
                                             ("shape" . ,(shape-model body values))
                                             ("force" . (:array ,@(body-force scenario body values)))))))
+      ("springs" . (:array ,@(springs-model scenario values)))
+      ("ropes" . (:array ,@(ropes-model scenario values)))
       ("obstacles" . (:array ,@(loop for body in (scenario-fixed-bodies scenario)
                                      collect `(("name" . ,(string-downcase (scenario-body-name body)))
                                                ("faces" . (:array ,@(obstacle-faces body values))))))))))
@@ -113,6 +147,7 @@ WITNESS-UNSUPPORTED for what the witness cannot model."
   "Write VALUE as JSON: an alist with string keys is an object, (:ARRAY ...) an array,
 :TRUE/:FALSE booleans, strings and reals as themselves (reals as decimals)."
   (cond ((eq value :true) (write-string "true" stream))
+        ((eq value :null) (write-string "null" stream))
         ((eq value :false) (write-string "false" stream))
         ((stringp value)
          (write-char #\" stream)
@@ -120,6 +155,7 @@ WITNESS-UNSUPPORTED for what the witness cannot model."
                do (when (member c '(#\" #\\)) (write-char #\\ stream))
                   (write-char c stream))
          (write-char #\" stream))
+        ((integerp value) (format stream "~D" value))
         ((realp value)
          (let ((x (coerce value 'double-float)))
            (write-string (substitute #\e #\d (let ((*read-default-float-format* 'single-float))
