@@ -9,6 +9,7 @@ standard output:
   (:status :ok
    :events ((:time T :pairs ((KIND A B) ...) :positions ((BODY (X Y)) ...)
              :velocities ((BODY (VX VY)) ...) :after ((BODY (VX VY)) ...)) ...)
+   :truncated nil-or-"why the run was cut before T_END"
    :end (:time T :positions (...) :velocities (...)))
 or
   (:status :unsupported :message "...")   the model has what the witness cannot model
@@ -228,6 +229,10 @@ class Unsupported(Exception):
     pass
 
 
+class LineLeft(Exception):
+    """A spring or rope turned: the run is cut at the last step where it had not."""
+
+
 def restitution(model, a, b):
     for x, y, e in model.get("restitution", []):
         if {x, y} == {a, b}:
@@ -303,8 +308,8 @@ def point_constant(point):
 def check_direction(what, d, u):
     if abs(d[0] * u[1] - d[1] * u[0]) > 1e-7 * max(1.0, float(np.linalg.norm(d))) or \
             float(np.dot(d, u)) <= 0:
-        raise Unsupported("%s leaves its initial line; the witness models only springs and "
-                          "ropes that keep their directions" % what)
+        raise LineLeft("%s leaves its initial line; the witness models only springs and "
+                       "ropes that keep their directions" % what)
 
 
 class Spring:
@@ -406,6 +411,7 @@ class Driver:
         self.events = []
         self.in_contact = set()
         self.smooth_event = None
+        self.truncated = None
 
     def record(self, t, pairs, qs, vs, after, speed=0.0):
         if self.events and abs(self.events[-1]["time"] - t) <= 1e-9 * max(1.0, abs(t)):
@@ -427,7 +433,7 @@ class Driver:
         qs = [b.q.copy() for b in self.bodies]
         vs = [b.v.copy() for b in self.bodies]
         rebuilds = 0
-        while t < self.t_end - 1e-12:
+        while t < self.t_end - 1e-12 and not self.truncated:
             rebuilds += 1
             if rebuilds > 2000:
                 raise RuntimeError("too many changes of the active contacts")
@@ -450,8 +456,12 @@ class Driver:
             ns = nxt.getType() == 2
             t1 = nxt.getDoubleTimeOfEvent()
             q1, v1 = seg.state()
-            for line in self.springs + self.ropes:
-                line.check(q1)
+            try:
+                for line in self.springs + self.ropes:
+                    line.check(q1)
+            except LineLeft as e:
+                self.truncated = str(e)
+                return tp, qp, vp
             # has a contact's extent changed between tp and t1?
             change = self.extent_change(active, inactive, tp, qp, vp, t1, q1, v1)
             if change is not None:
@@ -571,6 +581,7 @@ def main():
             sx_number(ev["time"]), sx_number(ev["speed"]), pairs, sx_states(names, ev["q"], 0),
             sx_states(names, ev["v"], 0), sx_states(names, ev["after"], 0)))
     out.append(" )")
+    out.append(" :truncated %s" % (sx_string(driver.truncated) if driver.truncated else "nil"))
     out.append(" :end (:time %s :positions %s :velocities %s))" % (
         sx_number(t), sx_states(names, qs, 0), sx_states(names, vs, 0)))
     print("\n".join(out))

@@ -162,7 +162,14 @@ witness's horizon T-END. Returns a COMPARISON."
                    (make-comparison :unsupported (format nil "state ~D ends with ~S, an event the witness does not model"
                                                          index event)
                                     (reverse rows))))
-                ((null (setf events (member-if-not #'settling-p events)))
+                ((and (null (setf events (member-if-not #'settling-p events)))
+                      (getf witness :truncated))
+                 (return-from compare-results
+                   (make-comparison :unsupported (format nil "state ~D: the witness stopped at ~A: ~A"
+                                                         index (getf (witness-end witness) :time)
+                                                         (getf witness :truncated))
+                                    (reverse rows))))
+                ((null events)
                  (wrong "AMES ends the state with ~S at ~A; the witness has no more events"
                         event (and (realp duration) (+ start duration))))
                 (t
