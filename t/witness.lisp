@@ -145,14 +145,21 @@ that a fix shows up (then move the file to the agreeing cases).")
             "~A now gives ~(~A~): fixed? Move it out of *KNOWN-DISAGREEMENTS*."
             (first known) (getf result :verdict))))))
 
-(defparameter *sample-size* 36
-  "How many random scenarios the fixed-seed sample runs (the families in turn).")
+(defparameter *sample-families*
+  (remove :incline-pulley (ames.witness:generator-families))
+  "The families of the fixed-seed sample. Left out, with the reason: :INCLINE-PULLEY,
+whose scenarios AMES mostly refuses after a 20 s Maxima timeout (slow, not wrong; it is
+in `make crosscheck`).")
+
+(defparameter *sample-size* (* 4 (length *sample-families*))
+  "How many random scenarios the fixed-seed sample runs (4 per family, in turn).")
 
 (test witness-random-sample
-  "A fixed-seed sample of random scenarios (4 per family of 9, seed 1): AMES is never wrong
-and never crashes against the witness."
+  "A fixed-seed sample of random scenarios (4 per family of *SAMPLE-FAMILIES*, seed 1):
+AMES is never wrong and never crashes against the witness."
   (with-siconos
     (let ((counts (ames::crosscheck :n *sample-size* :seed 1 :verbose nil
+                                    :families *sample-families*
                                     :stream (make-broadcast-stream)
                                     :directory (uiop:ensure-directory-pathname
                                                 (uiop:default-temporary-directory)))))
