@@ -85,8 +85,44 @@ the face's extent is the driver's, the table's line does not hold the particle."
       (is (near (/ (- 1 (* 1/2 2)) 3) (first (second (assoc "block-a" after :test #'string=))) 1d-10))
       (is (near (/ (* 3/2 1 3) 3) (first (second (assoc "block-b" after :test #'string=))) 1d-10)))))
 
+(test witness-atwood
+  "The Atwood machine's heavier mass (m1 = 3, m2 = 1, h = 1) lands after
+sqrt(2 h (m1 + m2) / (g (m1 - m2))); the rope, slack after the landing, tightens again
+when the light mass comes back down, twice that time from the start (textbook)."
+  (with-siconos
+    (let* ((answer (witness-run (uiop:read-file-string
+                                 (asdf:system-relative-pathname "ames" "scenarios/atwood-machine.lisp"))
+                                1.5d0))
+           (t1 (sqrt (/ (* 2 1 4) (* 9.81d0 2))))
+           (events (ames.witness:witness-events answer)))
+      (is (equal '(:collision "heavy" "floor") (first (getf (first events) :pairs))))
+      (is (near t1 (getf (first events) :time) 1d-10))
+      (is (equal '(:tightens "rope" "rope") (first (getf (second events) :pairs))))
+      (is (near (* 2 t1) (getf (second events) :time) 1d-10)))))
+
+(test witness-two-masses-on-a-spring
+  "Two particles joined by a spring (k, rest length L0), the second pushed with v0: the
+centre of mass moves at m2 v0 / M, the stretch is (v0 / w) sin(w t) with
+w = sqrt(k M / (m1 m2)) (textbook); the witness's positions at its end agree to 1e-9."
+  (with-siconos
+    (let* ((answer (witness-run (uiop:read-file-string
+                                 (asdf:system-relative-pathname "ames" "scenarios/two-masses-on-a-spring.lisp"))
+                                2.5d0))
+           (m1 1) (m2 2) (k 3) (v0 1) (l0 1) (m (+ m1 m2))
+           (w (sqrt (/ (* k m) (* m1 m2) 1d0)))
+           (end (ames.witness:witness-end answer))
+           (time (getf end :time))
+           (stretch (* (/ v0 w) (sin (* w time))))
+           (centre (+ (/ (* m2 l0) m) (* (/ (* m2 v0) m) time)))
+           (positions (getf end :positions)))
+      (is (near 2.5d0 time 1d-9))
+      (is (near (- centre (* (/ m2 m) (+ l0 stretch)))
+                (first (second (assoc "first" positions :test #'string=))) 1d-9))
+      (is (near (+ centre (* (/ m1 m) (+ l0 stretch)))
+                (first (second (assoc "second" positions :test #'string=))) 1d-9)))))
+
 (test witness-refuses-what-it-cannot-model
-  "Friction, springs and arcs are refused by the translator, never approximated."
+  "Friction and bumpers are refused by the translator, never approximated."
   (dolist (clause '("(friction block floor :static 1/2)"
                     "(spring s :from (block (0 0)) :toward (1 0) :stiffness 3 :rest-length 1)"))
     (signals ames.witness:witness-unsupported
