@@ -79,11 +79,69 @@ event names the rope once, the witness twice)."
                    (every (lambda (w) (some (lambda (name) (name= name w)) names)) (list x y)))))
           (getf witness-event :pairs))))
 
+(defconstant +precise-digits+ 160
+  "The decimal digits kept by PRECISE-VALUE's roots: AMES's exact closed forms can be
+nested radicals whose terms, near 1e75, cancel down to order 1.")
+
+(defun integer-nth-root (n q)
+  "The largest integer r >= 0 with r^q <= n (n >= 0), by Newton's method."
+  (if (< n 2)
+      n
+      (let ((x (ash 1 (ceiling (integer-length n) q))))
+        (loop (let ((y (floor (+ (* (1- q) x) (floor n (expt x (1- q)))) q)))
+                (when (>= y x) (return x))
+                (setf x y))))))
+
+(defun precise-root (x q)
+  "The Q-th root of the rational X >= 0 to +PRECISE-DIGITS+ digits, as a rational."
+  (let ((scale (expt 10 +precise-digits+)))
+    (/ (integer-nth-root (floor (* x (expt scale q))) q) scale)))
+
+(defun precise-value (expression bindings)
+  "EXPRESSION's value under BINDINGS computed in rational arithmetic, roots to
++PRECISE-DIGITS+ digits (other functions in double precision on precise arguments), or
+NIL when it has none."
+  (labels ((value (x)
+             (cond ((rationalp x) x)
+                   ((floatp x) (rational x))
+                   ((symbolp x)
+                    (let ((entry (assoc x bindings)))
+                      (cond (entry (rational (cdr entry)))
+                            ((string-equal (symbol-name x) "PI") (rational pi))
+                            (t (return-from precise-value nil)))))
+                   ((not (consp x)) (return-from precise-value nil))
+                   (t (let ((arguments (mapcar #'value (rest x))))
+                        (case (first x)
+                          (+ (apply #'+ arguments))
+                          (- (apply #'- arguments))
+                          (* (apply #'* arguments))
+                          (/ (if (some #'zerop (rest arguments))
+                                 (return-from precise-value nil)
+                                 (apply #'/ arguments)))
+                          (sqrt (power (first arguments) 1/2))
+                          (expt (power (first arguments) (second arguments)))
+                          (t (let ((double (expression-value (cons (first x) (mapcar (lambda (a) (coerce a 'double-float)) arguments)))))
+                               (if double (rational double) (return-from precise-value nil)))))))))
+           (power (base exponent)
+             (cond ((integerp exponent)
+                    (if (and (zerop base) (minusp exponent)) (return-from precise-value nil) (expt base exponent)))
+                   ((and (rationalp exponent) (>= base 0) (< (denominator exponent) 100))
+                    (let ((root (precise-root (expt base (abs (numerator exponent))) (denominator exponent))))
+                      (cond ((plusp exponent) root)
+                            ((zerop root) (return-from precise-value nil))
+                            (t (/ root)))))
+                   (t (let ((double (expression-value (list 'expt (coerce base 'double-float)
+                                                            (coerce exponent 'double-float)))))
+                        (if double (rational double) (return-from precise-value nil)))))))
+    (value expression)))
+
 (defun number-of (expression bindings)
-  "EXPRESSION's value under BINDINGS as a double, EXPRESSION itself when it is a keyword
-(:FOREVER), NIL when it has none."
+  "EXPRESSION's value under BINDINGS as a double (computed by PRECISE-VALUE, so that
+the cancellations of AMES's nested radicals do not count against it), EXPRESSION itself
+when it is a keyword (:FOREVER), NIL when it has none."
   (cond ((keywordp expression) expression)
-        (t (let ((value (expression-value expression bindings)))
+        (t (let ((value (or (precise-value expression bindings)
+                            (expression-value expression bindings))))
              (and value (coerce value 'double-float))))))
 
 (defun evaluate-vectors (entries bindings)
