@@ -85,6 +85,21 @@ the face's extent is the driver's, the table's line does not hold the particle."
       (is (near (/ (- 1 (* 1/2 2)) 3) (first (second (assoc "block-a" after :test #'string=))) 1d-10))
       (is (near (/ (* 3/2 1 3) 3) (first (second (assoc "block-b" after :test #'string=))) 1d-10)))))
 
+(test witness-rough-floor
+  "A block sliding at v on a rough floor (mu) stops after v / (mu g), having gone
+v^2 / (2 mu g) (textbook); Moreau-Jean time stepping (step 1e-4 s) finds both within
+two steps."
+  (with-siconos
+    (let* ((answer (witness-run "(scenario f \"\" (gravity 981/100)
+                                   (body floor :fixed t :shape (half-plane (1 0) (0 0)))
+                                   (body block :mass 1 :position (0 0) :velocity (3 0) :shape (polygon (0 0) (1 0) (1 1) (0 1)))
+                                   (friction block floor :static 1/2) (simulate :states 2))" 1d0))
+           (event (first (ames.witness:witness-events answer))))
+      (is (eq :moreau-jean (getf answer :scheme)))
+      (is (equal '(:stops-sliding "block" "floor") (first (getf event :pairs))))
+      (is (< (abs (- (getf event :time) (/ 3 (* 1/2 9.81d0)))) 2d-4))
+      (is (< (abs (- (first (second (first (getf event :positions)))) (/ 9 (* 2 1/2 9.81d0)))) 1d-4)))))
+
 (test witness-atwood
   "The Atwood machine's heavier mass (m1 = 3, m2 = 1, h = 1) lands after
 sqrt(2 h (m1 + m2) / (g (m1 - m2))); the rope, slack after the landing, tightens again
@@ -122,9 +137,9 @@ w = sqrt(k M / (m1 m2)) (textbook); the witness's positions at its end agree to 
                 (first (second (assoc "second" positions :test #'string=))) 1d-9)))))
 
 (test witness-refuses-what-it-cannot-model
-  "Friction and bumpers are refused by the translator, never approximated."
-  (dolist (clause '("(friction block floor :static 1/2)"
-                    "(spring s :from (block (0 0)) :toward (1 0) :stiffness 3 :rest-length 1)"))
+  "Universal gravitation and bumpers are refused by the translator, never approximated."
+  (dolist (clause '("(gravitation 1)"
+                    "(spring s :from (floor (0 0)) :toward (1 0) :stiffness 3 :rest-length 1)"))
     (signals ames.witness:witness-unsupported
       (let ((scenario (witness-scenario
                        (format nil "(scenario f \"\" (gravity 10)

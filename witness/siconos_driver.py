@@ -53,7 +53,10 @@ the Siconos model is rebuilt from that state.
 
 import json
 import math
+import os
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 import numpy as np
 
@@ -574,7 +577,11 @@ def main():
     text = open(sys.argv[1]).read() if len(sys.argv) > 1 else sys.stdin.read()
     model = json.loads(text)
     try:
-        driver = Driver(model)
+        if model.get("friction"):
+            from siconos_friction import FrictionDriver
+            driver = FrictionDriver(model)
+        else:
+            driver = Driver(model)
         t, qs, vs = driver.run()
     except Unsupported as e:
         print("(:status :unsupported :message %s)" % sx_string(str(e)))
@@ -583,7 +590,7 @@ def main():
         print("(:status :error :message %s)" % sx_string("%s: %s" % (type(e).__name__, e)))
         return
     names = [b.name for b in driver.bodies]
-    out = ["(:status :ok", " :events ("]
+    out = ["(:status :ok", " :scheme :%s" % getattr(driver, "scheme", "event-driven"), " :events ("]
     for ev in driver.events:
         pairs = " ".join("(%s %s %s)" % (p[0], sx_string(p[1]), sx_string(p[2]))
                          for p in ev["pairs"])

@@ -18,6 +18,10 @@
 sequence are the residue of Siconos's end of such a sequence (a body left with a
 rebound speed under its tolerance), not events.")
 
+(defvar *first-order-tolerance* 5d-3
+  "Relative tolerance (absolute below 1) where the witness used Moreau-Jean time stepping
+(friction): its step is 1e-4 s and the scheme is first order.")
+
 (defvar *accumulation-tolerance* 1d-5
   "Relative tolerance of the time where a Zeno sequence of impacts accumulates.")
 
@@ -58,10 +62,11 @@ the values set side by side: (STATE WHAT AMES WITNESS DIFFERENCE OK)."
     ((:collision :contact) (member witness-kind '(:collision :contact)))
     (:leaves (eq witness-kind :leaves))
     (:lift-off (member witness-kind '(:lift-off :leaves)))
-    ((:tightens :slackens) (eq witness-kind ames-kind))
+    ((:tightens :slackens :stops-sliding :starts-sliding) (eq witness-kind ames-kind))
     (t nil)))
 
-(defparameter +witnessed-events+ '(:collision :contact :leaves :lift-off :tightens :slackens)
+(defparameter +witnessed-events+
+  '(:collision :contact :leaves :lift-off :tightens :slackens :stops-sliding :starts-sliding)
   "The kinds of end events the witness reports.")
 
 (defun event-head (event)
@@ -173,8 +178,11 @@ the end of its last state, or its start when it lasts forever; NIL when not nume
   "Compare AMES's s-expression answer AMES for one scenario with the witness's answer
 WITNESS (see RUN-WITNESS), the scenario's parameter VALUES (for closed forms) and the
 witness's horizon T-END. Returns a COMPARISON."
-  (let ((rows '()) (events (witness-events witness)) (time 0d0)
-        (time-tolerance *value-tolerance*) (index 0))
+  (let* ((*value-tolerance* (if (eq (getf witness :scheme) :moreau-jean)
+                                *first-order-tolerance*
+                                *value-tolerance*))
+         (rows '()) (events (witness-events witness)) (time 0d0)
+         (time-tolerance *value-tolerance*) (index 0))
     (labels ((row (what a w ok)
                (push (list index what a w (and (realp a) (realp w) (- a w)) ok) rows)
                ok)

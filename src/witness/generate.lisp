@@ -202,11 +202,47 @@ tied over a pulley on the slope's line, beyond its top, to a mass hanging below 
                                    (+ (* (- beyond f) c scale) hang)))
                      2))))
 
+(defun family-rough-floor (name)
+  "A block sliding on a rough floor (Coulomb friction, one coefficient), sometimes toward
+a wall it may reach (restitution 0, 1/2 or 1)."
+  (let ((wall (zerop (random 2 *random*))))
+    (scenario-text name "A block slides on a rough floor."
+                   (parameters-text 'g (random-ratio 5 15) 'm (random-ratio 1/2 3)
+                                    'v (random-ratio 1/2 6) 'mu (random-ratio 1/10 1 20))
+                   (remove nil
+                           (list (format nil "(restitution ~A)" (restitution-choice)) (floor-text)
+                                 (and wall (format nil "(body wall :fixed t :shape (polygon (~A 0) (~A 0) (~A 2) (~A 2)))"
+                                                   (let ((x (random-ratio 3/2 4))) (setf wall x))
+                                                   (+ wall 1) (+ wall 1) wall))
+                                 "(body block :mass m :position (0 0) :velocity (v 0) :shape (polygon (0 0) (1 0) (1 1) (0 1)))"
+                                 "(friction block floor :static mu)"))
+                   3)))
+
+(defun family-rough-incline (name)
+  "A particle on a rough fixed incline (a Pythagorean triangle), launched up it or left at
+rest: it sticks, slides down, or stops and then sticks or slides back."
+  (destructuring-bind (a b) (pick '(4 3) '(3 4) '(12 5) '(8 15) '(15 8))
+    (let* ((scale (random-ratio 1/2 1)) (l (* a scale)) (hh (* b scale)) (f (random-ratio 1/4 1/2)))
+      ;; the slope descends toward +x from (0 hh) to (l 0); up the slope is (-a, b)
+      (scenario-text name "A particle on a rough incline."
+                     (parameters-text 'g (random-ratio 5 15) 'mu (random-ratio 1/10 1 20)
+                                      'v (random-ratio 1/4 3))
+                     (list (format nil "(body incline :fixed t :shape (polygon (0 0) (~A 0) (0 ~A)))" l hh)
+                           (format nil "(body particle :mass 1 :position (~A ~A) :velocity ~A :shape point)"
+                                   (* (- 1 f) l) (* f hh)
+                                   (if (zerop (random 3 *random*))
+                                       "(0 0)"
+                                       (format nil "((* -~A v) (* ~A v))" (/ a (isqrt (+ (* a a) (* b b))))
+                                               (/ b (isqrt (+ (* a a) (* b b)))))))
+                           "(friction particle incline :static mu)")
+                     3))))
+
 (defparameter *families*
   '((:table . family-table) (:ramp . family-ramp) (:raised-ramp . family-raised-ramp)
     (:step . family-step) (:projectile . family-projectile) (:bounce . family-bounce)
     (:chain . family-chain) (:wedge . family-wedge) (:terrain . family-terrain)
-    (:spring . family-spring) (:atwood . family-atwood) (:incline-pulley . family-incline-pulley))
+    (:spring . family-spring) (:atwood . family-atwood) (:incline-pulley . family-incline-pulley)
+    (:rough-floor . family-rough-floor) (:rough-incline . family-rough-incline))
   "The families of random scenarios: (KEYWORD . FUNCTION of the scenario's name).")
 
 (defun generator-families () (mapcar #'car *families*))

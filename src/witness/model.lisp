@@ -5,7 +5,7 @@
 ;;;; fixed bodies as faces (a half-plane one infinite face, a segment one finite face, a
 ;;;; polygon its edges), gravity, the coefficients of restitution, springs and ropes over
 ;;;; pulleys (points given by body index and offset, or fixed points). What the witness
-;;;; cannot model (friction, bumpers, gravitation, arcs, rotation, drag) is refused with
+;;;; cannot model (bumpers, gravitation, arcs, rotation, drag) is refused with
 ;;;; WITNESS-UNSUPPORTED, never approximated.
 
 (in-package #:ames.witness)
@@ -19,7 +19,7 @@ thing; DETAIL says why."))
   (error 'witness-unsupported :datum datum :detail (apply #'format nil control arguments)))
 
 (defparameter +unsupported-words+
-  '(:inertia :driven :angle :angular-velocity :hinge :drag :friction :toward
+  '(:inertia :driven :angle :angular-velocity :hinge :drag :toward
     :gravitation :arc :outline)
   "Words of the scenario language that name what the witness does not model.")
 
@@ -138,6 +138,11 @@ WITNESS-UNSUPPORTED for what the witness cannot model."
                                             ("shape" . ,(shape-model body values))
                                             ("force" . (:array ,@(body-force scenario body values)))))))
       ("springs" . (:array ,@(springs-model scenario values)))
+      ("friction" . (:array ,@(loop for friction in (scenario-frictions scenario)
+                                    for (a b) = (scenario-friction-bodies friction)
+                                    collect `(:array ,(string-downcase a) ,(string-downcase b)
+                                                     ,(value-of (scenario-friction-static friction) values "a friction coefficient")
+                                                     ,(value-of (scenario-friction-kinetic friction) values "a friction coefficient")))))
       ("ropes" . (:array ,@(ropes-model scenario values)))
       ("obstacles" . (:array ,@(loop for body in (scenario-fixed-bodies scenario)
                                      collect `(("name" . ,(string-downcase (scenario-body-name body)))

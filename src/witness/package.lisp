@@ -17,7 +17,7 @@ AMES's geometry, knowledge base or simulator, so that its answers are independen
    #:witness-status #:witness-events #:witness-end
    ;; comparison (compare.lisp)
    #:compare-results #:comparison-verdict #:comparison-rows #:comparison-reason
-   #:print-comparison #:*time-tolerance* #:*value-tolerance* #:*accumulation-tolerance*
+   #:print-comparison #:*time-tolerance* #:*value-tolerance* #:*accumulation-tolerance* #:*first-order-tolerance*
    #:ames-end-time #:ames-path
    ;; generation (generate.lisp)
    #:*families* #:*random* #:*symbolic* #:random-scenario #:generator-families
