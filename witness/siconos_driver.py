@@ -9,7 +9,7 @@ standard output:
   (:status :ok
    :events ((:time T :pairs ((KIND A B) ...) :positions ((BODY (X Y)) ...)
              :velocities ((BODY (VX VY)) ...) :after ((BODY (VX VY)) ...)) ...)
-   :truncated nil-or-"why the run was cut before T_END"
+   [:truncated "why the run was cut before T_END"]
    :end (:time T :positions (...) :velocities (...)))
 or
   (:status :unsupported :message "...")   the model has what the witness cannot model
@@ -460,12 +460,12 @@ class Driver:
         tp, qp, vp = t0, qs, vs
         count = 0
         while seg.sim.hasNextEvent():
-            count += 1
-            if count > MAX_EVENTS:
-                raise RuntimeError("more than %d events in a segment" % MAX_EVENTS)
             seg.sim.advanceToEvent()
             nxt = seg.em.nextEvent()
             ns = nxt.getType() == 2
+            count += 1 if ns else 0
+            if count > MAX_EVENTS:
+                raise RuntimeError("more than %d nonsmooth events in a segment" % MAX_EVENTS)
             t1 = nxt.getDoubleTimeOfEvent()
             q1, v1 = seg.state()
             try:
@@ -598,7 +598,8 @@ def main():
             sx_number(ev["time"]), sx_number(ev["speed"]), pairs, sx_states(names, ev["q"], 0),
             sx_states(names, ev["v"], 0), sx_states(names, ev["after"], 0)))
     out.append(" )")
-    out.append(" :truncated %s" % (sx_string(driver.truncated) if driver.truncated else "nil"))
+    if driver.truncated:
+        out.append(" :truncated %s" % sx_string(driver.truncated))
     out.append(" :end (:time %s :positions %s :velocities %s))" % (
         sx_number(t), sx_states(names, qs, 0), sx_states(names, vs, 0)))
     print("\n".join(out))

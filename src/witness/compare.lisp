@@ -235,6 +235,14 @@ witness's horizon T-END. Returns a COMPARISON."
                                                          index (getf (witness-end witness) :time)
                                                          (getf witness :truncated))
                                     (reverse rows))))
+                ((and (eq (event-kind event) :contact)
+                      (not (and events (event-matches-p event (first events)))))
+                 ;; a contact reached with no approach speed is a double root of the gap,
+                 ;; which Lsodar's root finding (a change of sign) cannot see
+                 (return-from compare-results
+                   (make-comparison :unsupported (format nil "state ~D ends with ~S, a contact reached with no approach speed (a double root the witness cannot locate)"
+                                                         index (event-head event))
+                                    (reverse rows))))
                 ((null events)
                  (wrong "AMES ends the state with ~S at ~A; the witness has no more events"
                         event (and (realp duration) (+ start duration))))
