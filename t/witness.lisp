@@ -222,3 +222,15 @@ AMES is never wrong and never crashes against the witness."
       (let ((agreeing (loop for (nil . verdicts) in counts sum (or (cdr (assoc :agree verdicts)) 0))))
         (is (>= agreeing (* 2/3 *sample-size*))
             "only ~D of ~D scenarios agree: ~S" agreeing *sample-size* counts)))))
+
+(test witness-check-command
+  "bin/ames check parses like run, and its status is 0 when AMES and the witness agree and
+4 on a disagreement."
+  (is (eq :check (getf (ames::parse-command-line '("check" "a.lisp" "--set" "g=10")) :command)))
+  (with-siconos
+    (flet ((status (file)
+             (let ((*package* (find-package '#:ames-scenario)))
+               (ames::check-files (list (asdf:system-relative-pathname "ames" file))
+                                  :numeric t :stream (make-broadcast-stream)))))
+      (is (eql 0 (status "scenarios/blocks-colliding.lisp")))
+      (is (eql 4 (status "witness/disagreements/accumulated-bounce-numeric-start.lisp"))))))
