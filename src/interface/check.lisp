@@ -40,7 +40,7 @@ state that lasts forever."
     (when end
       (let ((last-event (getf (car (last states)) :end-event)))
         (if (eq last-event :none)
-            (+ end (max 1d0 (* 0.5d0 end)))
+            (+ end 1/2)
             (+ end (* 1d-6 (+ 1 end))))))))
 
 (defun witness-check (scenario &key settings numeric (limits *limits*))
