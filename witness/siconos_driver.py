@@ -463,6 +463,11 @@ class Driver:
         active = [c for c in self.contacts if c.active(qs, vs) and c not in self.excluded]
         self.last_left = []
         inactive = [c for c in self.contacts if c not in active]
+        # a body touching a face and at its very end, moving off it, leaves it now
+        leaving = [c for c in self.in_contact if c not in active and c.covers(qs)
+                   and self.touching(c, qs, vs)]
+        if leaving and t0 > 0:
+            self.record(t0, [(":leaves",) + pair_names(c, self.bodies) for c in leaving], qs, vs, vs)
         resting = {c for c in active if self.touching(c, qs, vs)}
         seg = Segment(self.model, self.bodies, active, t0, qs, vs, self.t_end, self.dt,
                       self.springs, resting)
