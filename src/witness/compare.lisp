@@ -174,104 +174,128 @@ the end of its last state, or its start when it lasts forever; NIL when not nume
           (+ (getf numeric :start) (getf numeric :duration))
           (getf numeric :start)))))
 
+;;; The walk along AMES's states and the witness's events
+
+(defstruct (walk (:constructor make-walk (witness values t-end events)))
+  "Where COMPARE-RESULTS is: the witness's answer, the parameter VALUES, the horizon, the
+witness's EVENTS not yet matched, the TIME the current state should start at (to
+TIME-TOLERANCE), the state's INDEX, and the ROWS set side by side so far (newest first)."
+  witness values t-end events (time 0d0) (time-tolerance *value-tolerance*) (index 0)
+  (rows '()))
+
+(defun finish (walk verdict &optional control &rest arguments)
+  "End the comparison with VERDICT (and a reason from CONTROL and ARGUMENTS, naming the
+state)."
+  (throw 'comparison
+    (make-comparison verdict
+                     (and control (format nil "state ~D: ~?" (walk-index walk) control arguments))
+                     (reverse (walk-rows walk)))))
+
+(defun compare-number (walk what a w &optional (tolerance *value-tolerance*))
+  "Set A (AMES) beside W (the witness) as WHAT; a disagreement ends the comparison."
+  (let ((ok (and (realp a) (realp w) (close-p a w tolerance))))
+    (push (list (walk-index walk) what a w (and (realp a) (realp w) (- a w)) ok) (walk-rows walk))
+    (unless ok (finish walk :ames-wrong "~A: AMES ~A, witness ~A" what a w))))
+
+(defun compare-vectors (walk what ames-entries witness-entries)
+  "Compare, body by body, the vectors (BODY (X Y)) the witness gives with AMES's."
+  (loop for (name (wx wy)) in witness-entries
+        for entry = (find name ames-entries :key #'first :test (lambda (n s) (name= s n)))
+        do (unless entry (finish walk :ames-wrong "~A: AMES has no ~A" what name))
+           (compare-number walk (format nil "~A x ~A" what name) (first (second entry)) wx)
+           (compare-number walk (format nil "~A y ~A" what name) (second (second entry)) wy)))
+
+(defun compare-last-state (walk state start)
+  "A state that lasts forever: the witness has no more events before its horizon, and
+AMES's closed forms at the witness's end give its positions and velocities."
+  (let ((late (find-if (lambda (e) (and (< (getf e :time) (- (walk-t-end walk) 1d-9))
+                                        (not (settling-p e))))
+                       (walk-events walk))))
+    (when late
+      (finish walk :ames-wrong "AMES has no more events; the witness has ~S at ~A"
+              (getf late :pairs) (getf late :time))))
+  (let* ((end (witness-end (walk-witness walk)))
+         (bindings (acons 'tau (- (getf end :time) start) (walk-values walk))))
+    (when (>= (- (getf end :time) start) 1d-6)
+      (compare-vectors walk "position at the witness's end"
+                       (evaluate-vectors (getf state :positions) bindings) (getf end :positions))
+      (compare-vectors walk "velocity at the witness's end"
+                       (evaluate-vectors (getf state :velocities) bindings) (getf end :velocities)))))
+
+(defun check-witnessable (walk event)
+  "End the comparison as :UNSUPPORTED when the witness cannot say anything of EVENT: a
+kind it does not model, a run it cut short, or a contact reached with no approach speed
+(a double root of the gap, which Lsodar's root finding, a change of sign, cannot see)."
+  (unless (and (consp event) (member (event-kind event) +witnessed-events+))
+    (finish walk :unsupported "it ends with ~S, an event the witness does not model" event))
+  (setf (walk-events walk) (member-if-not #'settling-p (walk-events walk)))
+  (let ((events (walk-events walk)) (witness (walk-witness walk)))
+    (when (and (null events) (getf witness :truncated))
+      (finish walk :unsupported "the witness stopped at ~A: ~A"
+              (getf (witness-end witness) :time) (getf witness :truncated)))
+    (when (and (eq (event-kind event) :contact)
+               (not (and events (event-matches-p event (first events)))))
+      (finish walk :unsupported "it ends with ~S, a contact reached with no approach speed (a double root the witness cannot locate)"
+              (event-head event)))))
+
+(defun compare-event-state (walk state numeric event end)
+  "A state that ends with EVENT at END: the witness's next event is at that time, of that
+kind and bodies, with AMES's final positions and velocities just before it."
+  (check-witnessable walk event)
+  (unless (walk-events walk)
+    (finish walk :ames-wrong "AMES ends the state with ~S at ~A; the witness has no more events"
+            (event-head event) end))
+  (let ((witness-event (pop (walk-events walk))))
+    (compare-number walk "end time" end (getf witness-event :time))
+    (let ((ok (event-matches-p event witness-event)))
+      (push (list (walk-index walk) "end event" (format nil "~(~{~A~^ ~}~)" (event-head event))
+                  (format nil "~(~{~{~A~^ ~}~^, ~}~)" (getf witness-event :pairs)) nil ok)
+            (walk-rows walk))
+      (unless ok
+        (finish walk :ames-wrong "AMES's end event ~S, the witness's ~S" (event-head event)
+                (getf witness-event :pairs))))
+    (compare-vectors walk "final position" (getf numeric :final-positions) (getf witness-event :positions))
+    (compare-vectors walk "final velocity" (getf numeric :final-velocities) (getf witness-event :velocities))
+    (setf (walk-time walk) (getf witness-event :time))
+    (when (getf state :accumulation)
+      (skip-accumulation walk event))))
+
+(defun skip-accumulation (walk event)
+  "After a state whose impacts AMES sums (a Zeno sequence), pass over the witness's own
+run of impacts of the same pair, to its end (its intervals shrink; a later one after a
+long pause is Siconos's residue); the next state's start is compared to
+*ACCUMULATION-TOLERANCE*."
+  (loop with interval = nil
+        for events = (walk-events walk)
+        while (and events (event-matches-p event (first events))
+                   (or (null interval)
+                       (<= (- (getf (first events) :time) (walk-time walk)) (* 2 interval))))
+        do (let ((next (getf (pop (walk-events walk)) :time)))
+             (setf interval (- next (walk-time walk)) (walk-time walk) next)))
+  (setf (walk-time-tolerance walk) *accumulation-tolerance*))
+
 (defun compare-results (ames witness values &key (t-end (ames-end-time ames values)))
   "Compare AMES's s-expression answer AMES for one scenario with the witness's answer
 WITNESS (see RUN-WITNESS), the scenario's parameter VALUES (for closed forms) and the
 witness's horizon T-END. Returns a COMPARISON."
-  (let* ((*value-tolerance* (if (eq (getf witness :scheme) :moreau-jean)
-                                *first-order-tolerance*
-                                *value-tolerance*))
-         (rows '()) (events (witness-events witness)) (time 0d0)
-         (time-tolerance *value-tolerance*) (index 0))
-    (labels ((row (what a w ok)
-               (push (list index what a w (and (realp a) (realp w) (- a w)) ok) rows)
-               ok)
-             (wrong (control &rest arguments)
-               (return-from compare-results
-                 (make-comparison :ames-wrong (format nil "state ~D: ~?" index control arguments)
-                                  (reverse rows))))
-             (compare-number (what a w tolerance)
-               (unless (row what a w (and (realp a) (realp w) (close-p a w tolerance)))
-                 (wrong "~A: AMES ~A, witness ~A" what a w)))
-             (compare-vectors (what ames-entries witness-entries)
-               (loop for (name (wx wy)) in witness-entries
-                     for entry = (find name ames-entries :key #'first :test (lambda (n s) (name= s n)))
-                     do (unless entry (wrong "~A: AMES has no ~A" what name))
-                        (compare-number (format nil "~A x ~A" what name) (first (second entry)) wx *value-tolerance*)
-                        (compare-number (format nil "~A y ~A" what name) (second (second entry)) wy *value-tolerance*))))
-      (dolist (state (ames-path (getf ames :states)))
-        (let* ((numeric (state-numbers state values))
-               (start (getf numeric :start))
-               (duration (getf numeric :duration))
-               (event (getf state :end-event)))
-          (setf index (getf state :index))
-          (compare-number "start" start time time-tolerance)
-          (setf time-tolerance *value-tolerance*)
-          (cond ((eq event :none)
-                 (let ((late (find-if (lambda (e) (and (< (getf e :time) (- t-end 1d-9))
-                                                       (not (settling-p e))))
-                                      events)))
-                   (when late
-                     (wrong "AMES has no more events; the witness has ~S at ~A"
-                            (getf late :pairs) (getf late :time))))
-                 (let* ((end (witness-end witness))
-                        (bindings (acons 'tau (- (getf end :time) start) values)))
-                   (when (< (- (getf end :time) start) 1d-6)
-                     (return))
-                   (compare-vectors "position at the witness's end" (evaluate-vectors (getf state :positions) bindings)
-                                    (getf end :positions))
-                   (compare-vectors "velocity at the witness's end" (evaluate-vectors (getf state :velocities) bindings)
-                                    (getf end :velocities)))
-                 (return))
-                ((not (and (consp event) (member (event-kind event) +witnessed-events+)))
-                 (return-from compare-results
-                   (make-comparison :unsupported (format nil "state ~D ends with ~S, an event the witness does not model"
-                                                         index event)
-                                    (reverse rows))))
-                ((and (null (setf events (member-if-not #'settling-p events)))
-                      (getf witness :truncated))
-                 (return-from compare-results
-                   (make-comparison :unsupported (format nil "state ~D: the witness stopped at ~A: ~A"
-                                                         index (getf (witness-end witness) :time)
-                                                         (getf witness :truncated))
-                                    (reverse rows))))
-                ((and (eq (event-kind event) :contact)
-                      (not (and events (event-matches-p event (first events)))))
-                 ;; a contact reached with no approach speed is a double root of the gap,
-                 ;; which Lsodar's root finding (a change of sign) cannot see
-                 (return-from compare-results
-                   (make-comparison :unsupported (format nil "state ~D ends with ~S, a contact reached with no approach speed (a double root the witness cannot locate)"
-                                                         index (event-head event))
-                                    (reverse rows))))
-                ((null events)
-                 (wrong "AMES ends the state with ~S at ~A; the witness has no more events"
-                        event (and (realp duration) (+ start duration))))
-                (t
-                 (let ((witness-event (pop events)))
-                   (compare-number "end time" (and (realp duration) (+ start duration))
-                                   (getf witness-event :time) *value-tolerance*)
-                   (unless (row "end event"
-                                (format nil "~(~{~A~^ ~}~)" (event-head event))
-                                (format nil "~(~{~{~A~^ ~}~^, ~}~)" (getf witness-event :pairs))
-                                (event-matches-p event witness-event))
-                     (wrong "AMES's end event ~S, the witness's ~S" (event-head event)
-                            (getf witness-event :pairs)))
-                   (compare-vectors "final position" (getf numeric :final-positions)
-                                    (getf witness-event :positions))
-                   (compare-vectors "final velocity" (getf numeric :final-velocities)
-                                    (getf witness-event :velocities))
-                   (setf time (getf witness-event :time))
-                   (when (getf state :accumulation)
-                     ;; the witness's own run of impacts of the same pair, to its end
-                     ;; (its intervals shrink; a later one after a long pause is residue)
-                     (loop with interval = nil
-                           while (and events (event-matches-p event (first events))
-                                      (or (null interval)
-                                          (<= (- (getf (first events) :time) time) (* 2 interval))))
-                           do (let ((next (getf (pop events) :time)))
-                                (setf interval (- next time) time next)))
-                     (setf time-tolerance *accumulation-tolerance*)))))))
-      (make-comparison :agree nil (reverse rows)))))
+  (let ((*value-tolerance* (if (eq (getf witness :scheme) :moreau-jean)
+                               *first-order-tolerance*
+                               *value-tolerance*)))
+    (catch 'comparison
+      (let ((walk (make-walk witness values t-end (witness-events witness))))
+        (dolist (state (ames-path (getf ames :states)))
+          (let* ((numeric (state-numbers state values))
+                 (start (getf numeric :start))
+                 (duration (getf numeric :duration))
+                 (event (getf state :end-event)))
+            (setf (walk-index walk) (getf state :index))
+            (compare-number walk "start" start (walk-time walk) (walk-time-tolerance walk))
+            (setf (walk-time-tolerance walk) *value-tolerance*)
+            (when (eq event :none)
+              (compare-last-state walk state start)
+              (return))
+            (compare-event-state walk state numeric event (and (realp duration) (+ start duration)))))
+        (finish walk :agree)))))
 
 (defun print-comparison (comparison stream)
   "Print COMPARISON's rows side by side, then its verdict, on STREAM."
