@@ -154,11 +154,11 @@ when it is a keyword (:FOREVER), NIL when it has none."
   (loop for (body (x y)) in entries
         collect (list body (list (number-of x bindings) (number-of y bindings)))))
 
-(defun state-numbers (state bindings)
+(defun state-numbers (state bindings &key closed-form)
   "The numbers AMES gives for STATE: its :NUMERIC plist (:START :DURATION
 :FINAL-POSITIONS :FINAL-VELOCITIES) when it printed one (a run with parameter values),
-else its exact closed forms evaluated (a scenario written with numbers)."
-  (or (getf state :numeric)
+else (or when CLOSED-FORM) its exact closed forms evaluated."
+  (or (and (not closed-form) (getf state :numeric))
       (list :start (number-of (getf state :start) bindings)
             :duration (number-of (getf state :duration) bindings)
             :final-positions (evaluate-vectors (getf state :final-positions) bindings)
@@ -166,13 +166,18 @@ else its exact closed forms evaluated (a scenario written with numbers)."
 
 (defun ames-end-time (ames &optional bindings)
   "The time where AMES's run (its s-expression ANSWER) ends along its selected branch:
-the end of its last state, or its start when it lasts forever; NIL when not numeric."
-  (let* ((last (car (last (ames-path (getf ames :states)))))
-         (numeric (state-numbers last bindings)))
-    (when (realp (getf numeric :start))
-      (if (realp (getf numeric :duration))
-          (+ (getf numeric :start) (getf numeric :duration))
-          (getf numeric :start)))))
+the end of its last state, or its start when it lasts forever (the later of its printed
+number and its closed form, so that a wrong number does not cut the witness short); NIL
+when not numeric."
+  (let ((last (car (last (ames-path (getf ames :states))))))
+    (flet ((end (numbers)
+             (and (realp (getf numbers :start))
+                  (if (realp (getf numbers :duration))
+                      (+ (getf numbers :start) (getf numbers :duration))
+                      (getf numbers :start)))))
+      (let ((ends (remove nil (list (end (state-numbers last bindings))
+                                    (end (state-numbers last bindings :closed-form t))))))
+        (and ends (reduce #'max ends))))))
 
 ;;; The walk along AMES's states and the witness's events
 
