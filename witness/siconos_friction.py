@@ -18,7 +18,10 @@ from siconos_driver import Driver, LineLeft, Unsupported, pair_names, restitutio
 
 STEP = 1e-4
 GAP_TOL = 1e-6
-SPEED_TOL = 1e-6
+SPEED_TOL = 1e-6    # tangential speeds: sliding or not
+NORMAL_TOL = 5e-3   # normal speeds of a contact that holds: Moreau-Jean lets them swing by
+                    # about g STEP from one step to the next (the contact in one step, out
+                    # the next), so a touching contact is judged to a few g STEP
 JUMP = 1e-2         # a normal speed changing more than this in one step: an impulse
 
 
@@ -32,7 +35,7 @@ def friction_coefficient(model, a, b):
 class FrictionSegment:
     """One Moreau-Jean model from a state with a fixed set of active contacts."""
 
-    def __init__(self, model, bodies, contacts, t0, qs, vs, t_end, springs):
+    def __init__(self, model, bodies, contacts, t0, qs, vs, t_end, springs, resting=()):
         n = len(bodies)
         g = float(model.get("gravity", 0.0))
         nsds = sk.NonSmoothDynamicalSystem(t0, t_end)
@@ -51,8 +54,10 @@ class FrictionSegment:
             a, b = c.names(bodies)
             rows = np.array([c.row(n), tangent_row(c, n)])
             rel = sk.LagrangianLinearTIR(rows, np.array([c.constant(), 0.0]))
-            law = sk.NewtonImpactFrictionNSL(restitution(model, a, b), 0.0,
-                                             friction_coefficient(model, a, b), 2)
+            # resting at the start: e = 0 (no approach speed, so no rebound whatever e;
+            # e = 1 would make Moreau-Jean's round-off bounce the body and lose its friction)
+            e = 0.0 if c in resting else restitution(model, a, b)
+            law = sk.NewtonImpactFrictionNSL(e, 0.0, friction_coefficient(model, a, b), 2)
             nsds.link(sk.Interaction(law, rel), self.ds)
         self.sim = sk.TimeStepping(nsds, sk.TimeDiscretisation(t0, STEP))
         self.sim.insertIntegrator(sk.MoreauJeanOSI(0.5))
@@ -100,7 +105,8 @@ class FrictionDriver(Driver):
                                   "static coefficients differ")
 
     def sticking(self, c, qs, vs):
-        return abs(c.gap(qs)) <= GAP_TOL and abs(c.rate(vs)) <= SPEED_TOL
+        """Whether contact C holds (touching, no normal speed to Moreau-Jean's swing)."""
+        return abs(c.gap(qs)) <= GAP_TOL and abs(c.rate(vs)) <= NORMAL_TOL
 
     def segment(self, t0, qs, vs):
         if self.t_end - t0 < 2 * STEP:   # less than a step left: the run ends here
@@ -108,7 +114,9 @@ class FrictionDriver(Driver):
         active = [c for c in self.contacts if c.active(qs, vs) and c not in self.excluded]
         self.last_left = []
         inactive = [c for c in self.contacts if c not in active]
-        seg = FrictionSegment(self.model, self.bodies, active, t0, qs, vs, self.t_end, self.springs)
+        resting = {c for c in active if self.sticking(c, qs, vs)}
+        seg = FrictionSegment(self.model, self.bodies, active, t0, qs, vs, self.t_end, self.springs,
+                              resting)
         tp, qp, vp = t0, qs, vs
         while seg.sim.hasNextEvent():
             seg.sim.computeOneStep()
@@ -133,7 +141,10 @@ class FrictionDriver(Driver):
                 return t1, q1, v1
             self.step_events(active, tp, qp, vp, t1, q1, v1)
             seg.sim.nextStep()
+            opened = [c for c in resting if not self.sticking(c, q1, v1)]
             tp, qp, vp = t1, q1, v1
+            if opened:   # give it its own e again
+                return tp, qp, vp
             if t1 >= self.t_end - 1e-12:
                 break
         return tp, qp, vp
@@ -142,9 +153,11 @@ class FrictionDriver(Driver):
         """The events of one step, located inside it by linear interpolation."""
         impacts = False
         for c in active:
-            g0, g1, vn0 = c.gap(q0), c.gap(q1), c.rate(v0)
-            if g0 > GAP_TOL and g1 <= GAP_TOL and vn0 < -SPEED_TOL:
-                ti = min(t1, t0 + g0 / -vn0)
+            g0, vn0, vn1 = c.gap(q0), c.rate(v0), c.rate(v1)
+            # an impulse: the approach speed jumps within a step of the gap's closing (the
+            # scheme acts on the predicted gap, so the gap itself need not reach 0)
+            if vn0 < -NORMAL_TOL and vn1 - vn0 > JUMP and g0 <= -vn0 * 2 * STEP + GAP_TOL:
+                ti = min(t1, t0 + max(g0, 0.0) / -vn0)
                 qi = [q + v * (ti - t0) for q, v in zip(q0, v0)]
                 self.record(ti, [(":collision",) + pair_names(c, self.bodies)], qi, v0, v1, -vn0)
                 impacts = True
@@ -156,7 +169,7 @@ class FrictionDriver(Driver):
         for c in active:
             names = pair_names(c, self.bodies)
             before, after = self.sticking(c, q0, v0), self.sticking(c, q1, v1)
-            if before and not after and c.rate(v1) > SPEED_TOL and t0 > 0:
+            if before and not after and c.rate(v1) > NORMAL_TOL and t0 > 0:
                 self.record(t0, [(":lift-off",) + names], q0, v0, v0)
             elif before and after and t0 > 0:
                 s0, s1 = tangential(c, v0), tangential(c, v1)
