@@ -445,8 +445,13 @@ class Driver:
             if not c.covers(q1):
                 best = self.earliest(best, c, t0, q0, v0, t1, q1, v1, True)
         for c in inactive:
-            if c.covers(q1) and c.gap(q1) >= -1e-6 and not c.covers(q0):
-                best = self.earliest(best, c, t0, q0, v0, t1, q1, v1, False)
+            # entering a face's extent in front of it (judged where it enters: by the end
+            # of the step the body may already be below the face's line, about to hit it)
+            if c.covers(q1) and not c.covers(q0):
+                tc = self.crossing(c, t0, q0, v0, t1, q1, v1)
+                qc, _ = hermite(t0, np.array(q0), np.array(v0), t1, np.array(q1), np.array(v1), tc)
+                if c.gap(list(qc)) >= -1e-6:
+                    best = self.earliest(best, c, t0, q0, v0, t1, q1, v1, False)
         if best is None:
             return None
         tc = best[0]

@@ -171,7 +171,7 @@ class FrictionDriver(Driver):
             before, after = self.sticking(c, q0, v0), self.sticking(c, q1, v1)
             if before and not after and c.rate(v1) > NORMAL_TOL and t0 > 0:
                 self.record(t0, [(":lift-off",) + names], q0, v0, v0)
-            elif before and after and t0 > 0:
+            elif before and after and t0 > 2 * STEP:   # the first steps settle the initial modes
                 s0, s1 = tangential(c, v0), tangential(c, v1)
                 if abs(s0) > SPEED_TOL and (abs(s1) <= SPEED_TOL or s0 * s1 < 0):
                     ts = between(t0, t1, s0, s1)
