@@ -2,15 +2,21 @@
 #   make demo   install missing Debian packages, then run the main job: bin/ames on the wedge
 #   make test   install missing Debian packages, then run every FiveAM suite
 #   make bench  run the benchmarks (they print numbers)
+#   make crosscheck  N random scenarios (default 1000; N=, SEED= settable) through AMES and
+#               the witness (Siconos), counts per family and verdict printed; disagreements
+#               written under witness/disagreements/
 #   make fuzz   the nightly-size fuzz: 10,000 whole-path cases and 500 runs with a kill -9 of
 #               Maxima, figures printed (FUZZ_FORMS, FUZZ_CRASH_RUNS, FUZZ_SEED size it)
 
 DEBS  = sbcl maxima maxima-share cl-alexandria cl-fiveam cl-ppcre \
-        cl-yason cl-trivial-gray-streams libjs-katex
+        cl-yason cl-trivial-gray-streams libjs-katex python3-siconos
 SBCL ?= sbcl
 LISP  = $(SBCL) --noinform --non-interactive --no-sysinit --no-userinit
 
-.PHONY: deps demo test bench fuzz clean
+N    ?= 1000
+SEED ?= 1
+
+.PHONY: deps demo test bench fuzz crosscheck clean
 
 deps:
 	@missing=""; for p in $(DEBS); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
@@ -35,6 +41,9 @@ bench: deps
 
 fuzz: deps
 	$(LISP) --load t/fuzz.lisp
+
+crosscheck: deps
+	N=$(N) SEED=$(SEED) $(LISP) --load t/crosscheck.lisp
 
 clean:
 	rm -rf build

@@ -4,6 +4,8 @@
 ;;;;   base  <-  maxima-bridge, tms  <-  geometry  <-  engine  <-  kb
 ;;;;   geometry, maxima-bridge  <-  scenario;   kb, scenario  <-  simulator  <-  report, check
 ;;;;   <-  interface (package AMES: the REPL API and bin/ames)
+;;;;   base, scenario  <-  witness (Siconos as an independent witness; knows no geometry,
+;;;;   kb or simulator)  <-  interface
 ;;;; Only Debian's CL packages are used (cl-alexandria, cl-fiveam, cl-ppcre, cl-yason).
 
 (defsystem "ames"
@@ -175,10 +177,18 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "picture")
                  (:file "html")
                  (:file "output")))
+   (:module "witness" :pathname "src/witness/" :serial t
+    :depends-on ("base" "scenario")
+    :components ((:file "package")
+                 (:file "model")
+                 (:file "driver")
+                 (:file "compare")
+                 (:file "generate")))
    (:module "interface" :pathname "src/interface/" :serial t
-    :depends-on ("report" "check")
+    :depends-on ("report" "check" "witness")
     :components ((:file "package")
                  (:file "runs")
+                 (:file "check")
                  (:file "cli")
                  (:file "set-values")
                  (:file "jobs")
@@ -226,6 +236,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "friction-scenarios")
                (:file "springs-ropes-gravitation")
                (:file "failure-classes")
+               (:file "witness")
                (:file "simulator-fuzz")
                (:file "truth-scenarios")
                (:file "truth-branches")

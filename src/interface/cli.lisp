@@ -35,6 +35,7 @@
                  [--set PARAM=VALUE ...] [--time-limit SECONDS] [--maxima-timeout SECONDS]
                  [--all-branches] [--verbose] [--jobs N]
        ames explain FILE... [--state N] [--numeric] [--set PARAM=VALUE ...]
+       ames check FILE... [--numeric] [--set PARAM=VALUE ...]
   Simulate every scenario in each FILE and print a report.
   --format text   a report for people, state by state (the default)
   --format sexp   one readable s-expression per scenario (see the scenario language page)
@@ -57,6 +58,9 @@
   --verbose       print error messages in full (long ones are otherwise cut short)
   --jobs N        run the files in N processes at once (each with its own Maxima);
                   reports in the files' order, the exit code the worst of them
+  check           run each scenario through AMES and through the witness (Siconos,
+                  witness/siconos_driver.py) and print both side by side with a verdict
+                  (exit 0 agree, 4 a disagreement or a crash, 1 refused or not witnessed)
   explain         why each state's contacts and modes hold, where its equations
                   come from, and why it ends when it does (or only state N)
 Exit codes: 0 complete, 1 a scenario error, 2 usage, 3 a run (or a branch) that ended
@@ -119,7 +123,7 @@ limits are NIL when not given. Signals USAGE-ERROR on anything malformed."
     (cond ((null command) (error 'usage-error :detail "no command given"))
           ((member command '("help" "--help" "-h") :test #'string=)
            (return-from parse-command-line (list :command :help)))
-          ((not (member command '("run" "explain") :test #'string=))
+          ((not (member command '("run" "explain" "check") :test #'string=))
            (error 'usage-error :datum command :detail "unknown command")))
     (loop with rest = (rest arguments)
           while rest
@@ -160,7 +164,9 @@ limits are NIL when not given. Signals USAGE-ERROR on anything malformed."
                       (error 'usage-error :datum argument :detail "unknown option"))
                      (t (push argument files)))))
     (when (null files) (error 'usage-error :detail "run needs at least one scenario file"))
-    (list :command (if (string= command "explain") :explain :run)
+    (list :command (cond ((string= command "explain") :explain)
+                         ((string= command "check") :check)
+                         (t :run))
           :files (nreverse files) :format format
           :settings (nreverse settings) :svg svg :state state :numeric numeric
           :time-limit time-limit :maxima-timeout maxima-timeout :verbose verbose
@@ -198,6 +204,9 @@ child processes (RUN-JOBS). When the standard output is a pipe whose reader went
                                              :settings (getf options :settings)
                                              :numeric (getf options :numeric)
                                              :limits (command-line-limits options)))
+                    (:check (check-files (getf options :files) :settings (getf options :settings)
+                                         :numeric (getf options :numeric)
+                                         :limits (command-line-limits options)))
                     (:run (if jobs
                               (run-jobs jobs options)
                               (let ((*package* (find-package '#:ames-scenario))

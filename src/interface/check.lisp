@@ -1,0 +1,136 @@
+;;;; src/interface/check.lisp -- bin/ames check: AMES's run beside the witness's (Siconos).
+;;;;
+;;;; WITNESS-CHECK runs one scenario through AMES (in this process, its s-expression
+;;;; report read back as data) and through the witness (src/witness/, Siconos), and gives a
+;;;; verdict: :AGREE, :AMES-WRONG (a disagreement), :REFUSED (AMES stopped with a message:
+;;;; a scenario error, a budget, an undecided run), :CRASH (a defect of AMES: a Lisp error
+;;;; that is no AMES-ERROR), :UNSUPPORTED (the witness cannot model the scenario) or
+;;;; :WITNESS-FAILED (the driver did not answer). CROSSCHECK runs random scenarios.
+
+(in-package #:ames)
+
+(defun read-ames-answer (text)
+  "The first s-expression of TEXT (AMES's own sexp report), read as data."
+  (with-standard-io-syntax
+    (let ((*read-eval* nil) (*package* (find-package '#:ames-scenario))
+          (*read-default-float-format* 'double-float))
+      (read-from-string text))))
+
+(defun ames-answer (scenario &key settings numeric (limits *limits*))
+  "Run SCENARIO through AMES. Returns (values ANSWER FAILURE MESSAGE): ANSWER the
+s-expression report as data, or NIL with FAILURE :REFUSED or :CRASH and MESSAGE."
+  (handler-case
+      (let ((history (run-scenario scenario :settings settings :numeric numeric :limits limits)))
+        (if (undecided-history-p history)
+            (values nil :refused "the run ended ambiguous or undecided")
+            (values (read-ames-answer
+                     (with-output-to-string (stream)
+                       (let ((output (make-report-output :sexp stream)))
+                         (report-history output history)
+                         (finish-report output))))
+                    nil nil)))
+    (ames-error (condition) (values nil :refused (princ-to-string condition)))
+    (error (condition) (values nil :crash (format nil "~A: ~A" (type-of condition) condition)))))
+
+(defun witness-horizon (answer values)
+  "How far the witness runs: a little past AMES's last event, or a while into a last
+state that lasts forever."
+  (let ((states (ames.witness:ames-path (getf answer :states)))
+        (end (ames.witness:ames-end-time answer values)))
+    (when end
+      (let ((last-event (getf (car (last states)) :end-event)))
+        (if (eq last-event :none)
+            (+ end 1/2)
+            (+ end (* 1d-6 (+ 1 end))))))))
+
+(defun witness-check (scenario &key settings numeric (limits *limits*))
+  "Run SCENARIO through AMES and the witness; a plist (:VERDICT V :REASON TEXT
+:COMPARISON C :ANSWER A :WITNESS W)."
+  (multiple-value-bind (answer failure message)
+      (ames-answer scenario :settings settings :numeric numeric :limits limits)
+    (when failure
+      (return-from witness-check (list :verdict failure :reason message)))
+    (let* ((values (run-parameter-values scenario :settings settings :numeric numeric))
+           (horizon (witness-horizon answer values)))
+      (unless horizon
+        (return-from witness-check
+          (list :verdict :unsupported :answer answer
+                :reason "AMES's run has no numeric end time (values missing?)")))
+      (handler-case
+          (let ((witness (ames.witness:run-witness
+                          (ames.witness:scenario-model scenario values horizon))))
+            (case (ames.witness:witness-status witness)
+              (:ok (let ((comparison (ames.witness:compare-results answer witness values
+                                                                   :t-end horizon)))
+                     (list :verdict (ames.witness:comparison-verdict comparison)
+                           :reason (ames.witness:comparison-reason comparison)
+                           :comparison comparison :answer answer :witness witness)))
+              (:unsupported (list :verdict :unsupported :reason (getf witness :message)
+                                  :answer answer :witness witness))
+              (t (list :verdict :witness-failed :reason (getf witness :message)
+                       :answer answer :witness witness))))
+        (ames.witness:witness-unsupported (condition)
+          (list :verdict :unsupported :reason (princ-to-string condition) :answer answer))))))
+
+(defun check-files (files &key settings numeric (stream *standard-output*) (limits *limits*))
+  "bin/ames check: for every scenario of FILES, print AMES's and the witness's values
+side by side and the verdict. Returns the exit status: 0 when every scenario agrees, 4
+when one disagrees (or AMES crashed), else 1 (refused, not witnessed)."
+  (unless (ames.witness:siconos-available-p)
+    (format *error-output* "ames: the witness needs ~A with Siconos (Debian's python3-siconos)~%"
+            ames.witness:*python*)
+    (return-from check-files 1))
+  (let ((status 0))
+    (dolist (file files status)
+      (dolist (scenario (read-scenario-file file))
+        (let* ((result (witness-check scenario :settings settings :numeric numeric :limits limits))
+               (verdict (getf result :verdict)))
+          (format stream "~&scenario ~(~A~) (~A)~%" (scenario-name scenario) file)
+          (if (getf result :comparison)
+              (ames.witness:print-comparison (getf result :comparison) stream)
+              (format stream "verdict: ~(~A~)~@[: ~A~]~%" verdict (getf result :reason)))
+          (setf status (max status (case verdict
+                                     (:agree 0)
+                                     ((:ames-wrong :crash) 4)
+                                     (t 1)))))))))
+
+(defun crosscheck-scenario-text (family seed index)
+  "The text of the INDEXth random scenario of FAMILY for SEED (the same each time)."
+  (let ((ames.witness:*random* (sb-ext:seed-random-state (+ (* 1000003 seed) index))))
+    (ames.witness:random-scenario family index)))
+
+(defun crosscheck (&key (n 1000) (seed 1) (families (ames.witness:generator-families))
+                     (directory "witness/disagreements/") (stream *standard-output*)
+                     (limits (change-limits *limits* :time-limit 120)) (verbose t))
+  "Run N random scenarios (the families in turn, from SEED) through AMES and the witness,
+print one line per scenario when VERBOSE and the counts per family and verdict at the
+end. Every disagreement, crash and witness failure is written under DIRECTORY (see
+WRITE-DISAGREEMENT). Returns the counts: an alist ((FAMILY . ((VERDICT . COUNT) ...)) ...)."
+  (let ((counts '()) (*package* (find-package '#:ames-scenario)))
+    (dotimes (index n)
+      (let* ((family (nth (mod index (length families)) families))
+             (text (crosscheck-scenario-text family seed index))
+             (result (handler-case
+                         (witness-check (first (read-scenarios-from-string text)) :numeric t
+                                                                                  :limits limits)
+                       (ames-error (condition) (list :verdict :refused :reason (princ-to-string condition)))
+                       (error (condition) (list :verdict :crash :reason (princ-to-string condition)))))
+             (verdict (getf result :verdict))
+             (entry (or (assoc family counts) (first (push (list family) counts)))))
+        (incf (cdr (or (assoc verdict (cdr entry))
+                       (first (push (cons verdict 0) (cdr entry))))))
+        (when (member verdict '(:ames-wrong :crash :witness-failed))
+          (ames.witness:write-disagreement directory (format nil "~(~A-~A-~D-~D~)" verdict family seed index)
+                                           text result))
+        (when verbose
+          (format stream "~&~5D ~12A ~14A ~@[~A~]~%" index (string-downcase family)
+                  (string-downcase verdict)
+                  (let ((reason (getf result :reason)))
+                    (and reason (not (eq verdict :agree))
+                         (subseq (substitute #\Space #\Newline reason) 0 (min 160 (length reason))))))
+          (finish-output stream))))
+    (format stream "~&~%Crosscheck of ~D random scenarios (seed ~D):~%" n seed)
+    (dolist (entry (reverse counts))
+      (format stream "  ~14A~{ ~(~A~) ~D~^,~}~%" (string-downcase (car entry))
+              (loop for (verdict . count) in (reverse (cdr entry)) append (list verdict count))))
+    (reverse counts)))

@@ -1,0 +1,316 @@
+;;;; src/witness/compare.lisp -- the comparator: AMES's states beside the witness's events.
+;;;;
+;;;; AMES's side is its s-expression output (bin/ames run --format sexp with values), read
+;;;; as data; only the numbers it prints are compared (the :numeric plist of each state, and
+;;;; for a last state that lasts forever its closed forms evaluated at the witness's end).
+;;;; Per state: the start time, the end event (kind and bodies), the positions and the
+;;;; velocities at its end (just before its event), to *VALUE-TOLERANCE* relative. The
+;;;; witness finds events by Lsodar's root finding (about 1e-12 here); where AMES sums a
+;;;; Zeno sequence of impacts, Siconos stops the sequence when the rebound speed falls
+;;;; under its own tolerance, so the accumulation time is compared to
+;;;; *ACCUMULATION-TOLERANCE* only.
+
+(in-package #:ames.witness)
+
+(defvar *value-tolerance* 1d-7 "Relative tolerance of times, positions and velocities.")
+(defvar *settle-speed* 1d-4
+  "Impacts slower than this (m/s, the models' speeds are of order 1) outside a Zeno
+sequence are the residue of Siconos's end of such a sequence (a body left with a
+rebound speed under its tolerance), not events.")
+
+(defvar *first-order-tolerance* 5d-3
+  "Relative tolerance (absolute below 1) where the witness used Moreau-Jean time stepping
+(friction): its step is 1e-4 s and the scheme is first order.")
+
+(defvar *accumulation-tolerance* 1d-5
+  "Relative tolerance of the time where a Zeno sequence of impacts accumulates.")
+
+(defstruct (comparison (:constructor make-comparison (verdict reason rows)))
+  "The result of COMPARE-RESULTS: VERDICT is :AGREE or :AMES-WRONG (a disagreement; the
+witness has been checked on textbook cases, so it is taken as the reference), or
+:UNSUPPORTED (an event the witness does not model); REASON the first disagreement, ROWS
+the values set side by side: (STATE WHAT AMES WITNESS DIFFERENCE OK)."
+  verdict reason rows)
+
+(defun close-p (a b tolerance)
+  "True when the reals A and B agree to TOLERANCE relative (absolute below 1)."
+  (<= (abs (- a b)) (* tolerance (max 1d0 (abs a) (abs b)))))
+
+(defun name= (symbol string)
+  (string-equal (if (stringp symbol) symbol (symbol-name symbol)) string))
+
+(defun settling-p (event)
+  "True for the witness's impacts slower than *SETTLE-SPEED* (see there)."
+  (let ((speed (getf event :speed)))
+    (and speed (plusp speed) (< speed *settle-speed*))))
+
+(defun ames-path (states)
+  "The states of AMES's run along the branch its values select: a fork (end event
+(:BRANCH)) is replaced by its selected branch's states."
+  (loop for state in states
+        for branches = (getf state :branches)
+        append (if branches
+                   (let ((chosen (or (find-if (lambda (b) (getf b :selected)) branches)
+                                     (and (= 1 (length branches)) (first branches)))))
+                     (and chosen (ames-path (getf chosen :states))))
+                   (list state))))
+
+(defun event-kind (event) (if (consp event) (first event) event))
+
+(defun witness-kind-matches-p (ames-kind witness-kind)
+  (case ames-kind
+    ((:collision :contact) (member witness-kind '(:collision :contact)))
+    (:leaves (eq witness-kind :leaves))
+    (:lift-off (member witness-kind '(:lift-off :leaves)))
+    ((:tightens :slackens :stops-sliding :starts-sliding) (eq witness-kind ames-kind))
+    (t nil)))
+
+(defparameter +witnessed-events+
+  '(:collision :contact :leaves :lift-off :tightens :slackens :stops-sliding :starts-sliding)
+  "The kinds of end events the witness reports.")
+
+(defun event-head (event)
+  "EVENT's kind and the names that follow it (one or two), without its keyword data."
+  (cons (first event) (loop for x in (rest event) until (keywordp x) collect x)))
+
+(defun event-matches-p (ames-event witness-event)
+  "True when the witness's event has a pair of AMES's event's kind and names (a rope's
+event names the rope once, the witness twice)."
+  (destructuring-bind (kind &rest names) (event-head ames-event)
+    (some (lambda (pair)
+            (destructuring-bind (wkind x y) pair
+              (and (witness-kind-matches-p kind wkind)
+                   (every (lambda (name) (or (name= name x) (name= name y))) names)
+                   (every (lambda (w) (some (lambda (name) (name= name w)) names)) (list x y)))))
+          (getf witness-event :pairs))))
+
+(defconstant +precise-digits+ 160
+  "The decimal digits kept by PRECISE-VALUE's roots: AMES's exact closed forms can be
+nested radicals whose terms, near 1e75, cancel down to order 1.")
+
+(defun integer-nth-root (n q)
+  "The largest integer r >= 0 with r^q <= n (n >= 0), by Newton's method."
+  (if (< n 2)
+      n
+      (let ((x (ash 1 (ceiling (integer-length n) q))))
+        (loop (let ((y (floor (+ (* (1- q) x) (floor n (expt x (1- q)))) q)))
+                (when (>= y x) (return x))
+                (setf x y))))))
+
+(defun precise-root (x q)
+  "The Q-th root of the rational X >= 0 to +PRECISE-DIGITS+ digits, as a rational."
+  (let ((scale (expt 10 +precise-digits+)))
+    (/ (integer-nth-root (floor (* x (expt scale q))) q) scale)))
+
+(defun precise-value (expression bindings)
+  "EXPRESSION's value under BINDINGS computed in rational arithmetic, roots to
++PRECISE-DIGITS+ digits (other functions in double precision on precise arguments), or
+NIL when it has none."
+  (labels ((value (x)
+             (cond ((rationalp x) x)
+                   ((floatp x) (rational x))
+                   ((symbolp x)
+                    (let ((entry (assoc x bindings)))
+                      (cond (entry (rational (cdr entry)))
+                            ((string-equal (symbol-name x) "PI") (rational pi))
+                            (t (return-from precise-value nil)))))
+                   ((not (consp x)) (return-from precise-value nil))
+                   (t (let ((arguments (mapcar #'value (rest x))))
+                        (case (first x)
+                          (+ (apply #'+ arguments))
+                          (- (apply #'- arguments))
+                          (* (apply #'* arguments))
+                          (/ (if (some #'zerop (rest arguments))
+                                 (return-from precise-value nil)
+                                 (apply #'/ arguments)))
+                          (sqrt (power (first arguments) 1/2))
+                          (expt (power (first arguments) (second arguments)))
+                          (t (let ((double (expression-value (cons (first x) (mapcar (lambda (a) (coerce a 'double-float)) arguments)))))
+                               (if double (rational double) (return-from precise-value nil)))))))))
+           (power (base exponent)
+             (cond ((integerp exponent)
+                    (if (and (zerop base) (minusp exponent)) (return-from precise-value nil) (expt base exponent)))
+                   ((and (rationalp exponent) (>= base 0) (< (denominator exponent) 100))
+                    (let ((root (precise-root (expt base (abs (numerator exponent))) (denominator exponent))))
+                      (cond ((plusp exponent) root)
+                            ((zerop root) (return-from precise-value nil))
+                            (t (/ root)))))
+                   (t (let ((double (expression-value (list 'expt (coerce base 'double-float)
+                                                            (coerce exponent 'double-float)))))
+                        (if double (rational double) (return-from precise-value nil)))))))
+    (value expression)))
+
+(defun number-of (expression bindings)
+  "EXPRESSION's value under BINDINGS as a double (computed by PRECISE-VALUE, so that
+the cancellations of AMES's nested radicals do not count against it), EXPRESSION itself
+when it is a keyword (:FOREVER), NIL when it has none."
+  (cond ((keywordp expression) expression)
+        (t (let ((value (or (precise-value expression bindings)
+                            (expression-value expression bindings))))
+             (and value (coerce value 'double-float))))))
+
+(defun evaluate-vectors (entries bindings)
+  "ENTRIES ((BODY (X Y)) ...) with X and Y closed forms, evaluated under BINDINGS."
+  (loop for (body (x y)) in entries
+        collect (list body (list (number-of x bindings) (number-of y bindings)))))
+
+(defun state-numbers (state bindings &key closed-form)
+  "The numbers AMES gives for STATE: its :NUMERIC plist (:START :DURATION
+:FINAL-POSITIONS :FINAL-VELOCITIES) when it printed one (a run with parameter values),
+else (or when CLOSED-FORM) its exact closed forms evaluated."
+  (or (and (not closed-form) (getf state :numeric))
+      (list :start (number-of (getf state :start) bindings)
+            :duration (number-of (getf state :duration) bindings)
+            :final-positions (evaluate-vectors (getf state :final-positions) bindings)
+            :final-velocities (evaluate-vectors (getf state :final-velocities) bindings))))
+
+(defun ames-end-time (ames &optional bindings)
+  "The time where AMES's run (its s-expression ANSWER) ends along its selected branch:
+the end of its last state, or its start when it lasts forever (the later of its printed
+number and its closed form, so that a wrong number does not cut the witness short); NIL
+when not numeric."
+  (let ((last (car (last (ames-path (getf ames :states))))))
+    (flet ((end (numbers)
+             (and (realp (getf numbers :start))
+                  (if (realp (getf numbers :duration))
+                      (+ (getf numbers :start) (getf numbers :duration))
+                      (getf numbers :start)))))
+      (let ((ends (remove nil (list (end (state-numbers last bindings))
+                                    (end (state-numbers last bindings :closed-form t))))))
+        (and ends (reduce #'max ends))))))
+
+;;; The walk along AMES's states and the witness's events
+
+(defstruct (walk (:constructor make-walk (witness values t-end events)))
+  "Where COMPARE-RESULTS is: the witness's answer, the parameter VALUES, the horizon, the
+witness's EVENTS not yet matched, the TIME the current state should start at (to
+TIME-TOLERANCE), the state's INDEX, and the ROWS set side by side so far (newest first)."
+  witness values t-end events (time 0d0) (time-tolerance *value-tolerance*) (index 0)
+  (rows '()))
+
+(defun finish (walk verdict &optional control &rest arguments)
+  "End the comparison with VERDICT (and a reason from CONTROL and ARGUMENTS, naming the
+state)."
+  (throw 'comparison
+    (make-comparison verdict
+                     (and control (format nil "state ~D: ~?" (walk-index walk) control arguments))
+                     (reverse (walk-rows walk)))))
+
+(defun compare-number (walk what a w &optional (tolerance *value-tolerance*))
+  "Set A (AMES) beside W (the witness) as WHAT; a disagreement ends the comparison."
+  (let ((ok (and (realp a) (realp w) (close-p a w tolerance))))
+    (push (list (walk-index walk) what a w (and (realp a) (realp w) (- a w)) ok) (walk-rows walk))
+    (unless ok (finish walk :ames-wrong "~A: AMES ~A, witness ~A" what a w))))
+
+(defun compare-vectors (walk what ames-entries witness-entries)
+  "Compare, body by body, the vectors (BODY (X Y)) the witness gives with AMES's."
+  (loop for (name (wx wy)) in witness-entries
+        for entry = (find name ames-entries :key #'first :test (lambda (n s) (name= s n)))
+        do (unless entry (finish walk :ames-wrong "~A: AMES has no ~A" what name))
+           (compare-number walk (format nil "~A x ~A" what name) (first (second entry)) wx)
+           (compare-number walk (format nil "~A y ~A" what name) (second (second entry)) wy)))
+
+(defun compare-last-state (walk state start)
+  "A state that lasts forever: the witness has no more events before its horizon, and
+AMES's closed forms at the witness's end give its positions and velocities."
+  (let ((late (find-if (lambda (e) (and (< (getf e :time) (- (walk-t-end walk) 1d-9))
+                                        (not (settling-p e))))
+                       (walk-events walk))))
+    (when late
+      (finish walk :ames-wrong "AMES has no more events; the witness has ~S at ~A"
+              (getf late :pairs) (getf late :time))))
+  (let* ((end (witness-end (walk-witness walk)))
+         (bindings (acons 'tau (- (getf end :time) start) (walk-values walk))))
+    (when (>= (- (getf end :time) start) 1d-6)
+      (compare-vectors walk "position at the witness's end"
+                       (evaluate-vectors (getf state :positions) bindings) (getf end :positions))
+      (compare-vectors walk "velocity at the witness's end"
+                       (evaluate-vectors (getf state :velocities) bindings) (getf end :velocities)))))
+
+(defun check-witnessable (walk event)
+  "End the comparison as :UNSUPPORTED when the witness cannot say anything of EVENT: a
+kind it does not model, a run it cut short, or a contact reached with no approach speed
+(a double root of the gap, which Lsodar's root finding, a change of sign, cannot see)."
+  (unless (and (consp event) (member (event-kind event) +witnessed-events+))
+    (finish walk :unsupported "it ends with ~S, an event the witness does not model" event))
+  (setf (walk-events walk) (member-if-not #'settling-p (walk-events walk)))
+  (let ((events (walk-events walk)) (witness (walk-witness walk)))
+    (when (and (null events) (getf witness :truncated))
+      (finish walk :unsupported "the witness stopped at ~A: ~A"
+              (getf (witness-end witness) :time) (getf witness :truncated)))
+    (when (and (eq (event-kind event) :contact)
+               (not (and events (event-matches-p event (first events)))))
+      (finish walk :unsupported "it ends with ~S, a contact reached with no approach speed (a double root the witness cannot locate)"
+              (event-head event)))))
+
+(defun compare-event-state (walk state numeric event end)
+  "A state that ends with EVENT at END: the witness's next event is at that time, of that
+kind and bodies, with AMES's final positions and velocities just before it."
+  (check-witnessable walk event)
+  (unless (walk-events walk)
+    (finish walk :ames-wrong "AMES ends the state with ~S at ~A; the witness has no more events"
+            (event-head event) end))
+  (let ((witness-event (pop (walk-events walk))))
+    (compare-number walk "end time" end (getf witness-event :time))
+    (let ((ok (event-matches-p event witness-event)))
+      (push (list (walk-index walk) "end event" (format nil "~(~{~A~^ ~}~)" (event-head event))
+                  (format nil "~(~{~{~A~^ ~}~^, ~}~)" (getf witness-event :pairs)) nil ok)
+            (walk-rows walk))
+      (unless ok
+        (finish walk :ames-wrong "AMES's end event ~S, the witness's ~S" (event-head event)
+                (getf witness-event :pairs))))
+    (compare-vectors walk "final position" (getf numeric :final-positions) (getf witness-event :positions))
+    (compare-vectors walk "final velocity" (getf numeric :final-velocities) (getf witness-event :velocities))
+    (setf (walk-time walk) (getf witness-event :time))
+    (when (getf state :accumulation)
+      (skip-accumulation walk event))))
+
+(defun skip-accumulation (walk event)
+  "After a state whose impacts AMES sums (a Zeno sequence), pass over the witness's own
+run of impacts of the same pair, to its end (its intervals shrink; a later one after a
+long pause is Siconos's residue); the next state's start is compared to
+*ACCUMULATION-TOLERANCE*."
+  (loop with interval = nil
+        for events = (walk-events walk)
+        while (and events (event-matches-p event (first events))
+                   (or (null interval)
+                       (<= (- (getf (first events) :time) (walk-time walk)) (* 2 interval))))
+        do (let ((next (getf (pop (walk-events walk)) :time)))
+             (setf interval (- next (walk-time walk)) (walk-time walk) next)))
+  (setf (walk-time-tolerance walk) *accumulation-tolerance*))
+
+(defun compare-results (ames witness values &key (t-end (ames-end-time ames values)))
+  "Compare AMES's s-expression answer AMES for one scenario with the witness's answer
+WITNESS (see RUN-WITNESS), the scenario's parameter VALUES (for closed forms) and the
+witness's horizon T-END. Returns a COMPARISON."
+  (let ((*value-tolerance* (if (eq (getf witness :scheme) :moreau-jean)
+                               *first-order-tolerance*
+                               *value-tolerance*)))
+    (catch 'comparison
+      (let ((walk (make-walk witness values t-end (witness-events witness))))
+        (dolist (state (ames-path (getf ames :states)))
+          (let* ((numeric (state-numbers state values))
+                 (start (getf numeric :start))
+                 (duration (getf numeric :duration))
+                 (event (getf state :end-event)))
+            (setf (walk-index walk) (getf state :index))
+            (compare-number walk "start" start (walk-time walk) (walk-time-tolerance walk))
+            (setf (walk-time-tolerance walk) *value-tolerance*)
+            (when (eq event :none)
+              (compare-last-state walk state start)
+              (return))
+            (compare-event-state walk state numeric event (and (realp duration) (+ start duration)))))
+        (finish walk :agree)))))
+
+(defun print-comparison (comparison stream)
+  "Print COMPARISON's rows side by side, then its verdict, on STREAM."
+  (format stream "~&~5A ~38A ~22A ~22A ~10A~%" "state" "what" "AMES" "witness" "difference")
+  (dolist (row (comparison-rows comparison))
+    (destructuring-bind (state what a w difference ok) row
+      (format stream "~5D ~38A ~22A ~22A ~10A~A~%" state what
+              (if (realp a) (format nil "~,12G" a) (format nil "~(~A~)" a))
+              (if (realp w) (format nil "~,12G" w) (format nil "~(~A~)" w))
+              (if difference (format nil "~,2E" difference) "")
+              (if ok "" "  <-- differs"))))
+  (format stream "verdict: ~(~A~)~@[ (~A)~]~%" (comparison-verdict comparison)
+          (comparison-reason comparison)))
