@@ -176,15 +176,23 @@ velocity off by 1e-5, or another event, is a disagreement."
         (is (eq :ames-wrong
                 (planted (lambda (state) (setf (first (getf state :end-event)) :leaves)))))))))
 
-(defparameter *known-disagreements*
-  '(("accumulated-bounce-numeric-start.lisp"
-     "After a summed Zeno sequence of impacts, the :numeric :start of the state at rest is
-the start of the last simulated impact's state plus its duration (0.903 s for the
-bouncing ball), not the accumulation time 3 sqrt(2 h / g) = 1.3546 s that the closed
-form :start gives."))
+(defparameter *known-disagreements* '()
   "Disagreements AMES has today, each kept as a scenario file under
 witness/disagreements/ with the reason; a test checks that each still disagrees, so
-that a fix shows up (then move the file to the agreeing cases).")
+that a fix shows up (then move the file to *WITNESSED-FIXES*). None is known now.")
+
+(defparameter *witnessed-fixes*
+  '(("accumulated-bounce-numeric-start.lisp"
+     "After a summed Zeno sequence of impacts, the :numeric :start of the state at rest was
+the start of the last simulated impact's state plus its duration (0.903 s for the
+bouncing ball), not the accumulation time 3 sqrt(2 h / g) = 1.3546 s that the closed
+form :start gives. Fixed: a state's start number is its start formula's value.")
+    ("refused-ramp-foot-impact.lisp"
+     "A particle sliding off the foot of a ramp onto the floor with e > 0 was refused ('no
+set of contacts and modes is consistent'). Fixed: a face a non-concave corner excuses is
+no constraint of the impact."))
+  "Disagreements the witness found and AMES has since fixed: each must now agree, with
+its file under witness/disagreements/ kept as the regression case.")
 
 (test witness-known-disagreements
   "Each known disagreement still disagrees (an expected failure, listed with its file)."
@@ -193,8 +201,17 @@ that a fix shows up (then move the file to the agreeing cases).")
       (let* ((path (asdf:system-relative-pathname "ames" (format nil "witness/disagreements/~A" (first known))))
              (result (check-text (uiop:read-file-string path) :numeric t)))
         (is (eq :ames-wrong (getf result :verdict))
-            "~A now gives ~(~A~): fixed? Move it out of *KNOWN-DISAGREEMENTS*."
+            "~A now gives ~(~A~): fixed? Move it to *WITNESSED-FIXES*."
             (first known) (getf result :verdict))))))
+
+(test witness-fixed-disagreements-agree
+  "Each disagreement the witness once found, since fixed, agrees with Siconos."
+  (with-siconos
+    (dolist (fixed *witnessed-fixes*)
+      (let* ((path (asdf:system-relative-pathname "ames" (format nil "witness/disagreements/~A" (first fixed))))
+             (result (check-text (uiop:read-file-string path) :numeric t)))
+        (is (eq :agree (getf result :verdict))
+            "~A gives ~(~A~) again: ~A" (first fixed) (getf result :verdict) (second fixed))))))
 
 (defparameter *sample-families*
   (remove :incline-pulley (ames.witness:generator-families))
