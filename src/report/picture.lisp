@@ -44,13 +44,15 @@
     (if (consp end) (or (getf (state-notes state) :events) (list end)) '())))
 
 (defun picture-path (history bindings)
-  "The states the picture follows: HISTORY's states and, at each fork, the branch the
-given values select, else the first whose fact holds at the picture's BINDINGS, else
+  "The states the picture follows: HISTORY's states (a fork, which has no period of
+motion, left out) and, at each fork, the branch the given values select, else the first whose fact holds at the picture's BINDINGS, else
 none (the path stops at the fork). Returns a second value: the branch labels taken."
   (let ((taken '()))
     (labels ((follow (states prefix)
                (loop for state in states
-                     append (cons state
+                     ;; a fork is no period of motion: its selected branch is drawn instead
+                     append (append
+                             (unless (getf (state-notes state) :fork) (list state))
                                   (let* ((branches (state-branches state))
                                          (k (or (position-if (lambda (b) (getf b :selected)) branches)
                                                 (position-if (lambda (b)
