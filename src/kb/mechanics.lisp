@@ -177,7 +177,7 @@ curvature (section 2.5.3, with the velocity constraint differentiated)."
 (defcomponent driven-body (:knowledge-base *mechanics*)
   "A driven body (a conveyor belt) moves at its prescribed constant velocity whatever acts
 on it: no acceleration, and a drive that supplies the force balancing every other force
-on it (the drive's reaction, reported as (:drive BODY (FX FY)))."
+on it (the drive's reaction, reported among the forces as the drive on the body)."
   (:arguments (?body :entity body :where (:driven t)))
   (:assert (force (drive ?body) :type drive :from environment :on ?body)
            (reported :forces (:drive ?body ((fx drive ?body) (fy drive ?body)))))
