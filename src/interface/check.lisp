@@ -89,10 +89,15 @@ when one disagrees (or AMES crashed), else 1 (refused, not witnessed)."
           (if (getf result :comparison)
               (ames.witness:print-comparison (getf result :comparison) stream)
               (format stream "verdict: ~(~A~)~@[: ~A~]~%" verdict (getf result :reason)))
-          (setf status (max status (case verdict
-                                     (:agree 0)
-                                     ((:ames-wrong :crash) 4)
-                                     (t 1)))))))))
+          (setf status (max status (verdict-status verdict))))))))
+
+(defun verdict-status (verdict)
+  "The exit status of bin/ames check for one scenario's VERDICT: 0 agree, 4 AMES wrong or
+crashed, 1 anything else (refused, unsupported, the witness failed)."
+  (case verdict
+    (:agree 0)
+    ((:ames-wrong :crash) 4)
+    (t 1)))
 
 (defun crosscheck-scenario-text (family seed index)
   "The text of the INDEXth random scenario of FAMILY for SEED (the same each time)."
