@@ -113,6 +113,7 @@ frictionless translating rigid bodies evolve (after Leon Wong's 1994 MIT thesis)
                  (:file "spans")
                  (:file "reader")
                  (:file "semantics")
+                 (:file "ranges")
                  (:file "values")))
    (:module "simulator" :pathname "src/simulator/" :serial t
     :depends-on ("kb" "scenario")

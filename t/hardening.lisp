@@ -57,3 +57,89 @@ the next state has the second at rest at (l0, 0). This crashed with NIL is not R
     (is (equal `(0 (- ,v0)) (second (assoc "SECOND" (ames:state-final-velocities first-state)
                                            :key #'symbol-name :test #'string=))))
     (is (member (ames:history-outcome history) '(:complete :stopped)))))
+
+;;; Physical ranges of the coefficients: on the clause, under the assumptions, and on values
+
+(defun block-on-floor-text (parameters &rest clauses)
+  "A block on a rough floor with the PARAMETERS (a string) and the extra CLAUSES (strings)."
+  (format nil "(scenario block \"A block on a floor.\"
+  (parameters (m :positive) (g :positive) (v0 :positive) ~A)
+  (gravity g)
+  (body floor :fixed t :shape (half-plane (1 0) (0 0)))
+  (body block :mass m :position (0 0) :velocity (v0 0) :shape (polygon (-1 0) (1 0) (1 1) (-1 1)))
+  ~{~A~^~%  ~}
+  (simulate :states 2))" parameters clauses))
+
+(defun is-refused-at (condition type location &optional (text ""))
+  "Check that CONDITION is of TYPE, at LOCATION, and that its message says TEXT."
+  (is (typep condition type) "~S is no ~S" condition type)
+  (when (typep condition 'ames:scenario-error)
+    (is (equal location (ames.scenario::scenario-error-location condition))
+        "~S is at ~S, not ~S" condition (ames.scenario::scenario-error-location condition) location))
+  (is (search text (princ-to-string condition)) "~S does not say ~S" (princ-to-string condition) text))
+
+(test friction-coefficients-have-their-physical-range
+  "A friction coefficient is not negative and the kinetic does not exceed the static: a
+literal, a parameter whose assumptions allow otherwise, a default and a --set value are
+each refused, naming the friction clause."
+  (let ((negative (hardening-error (block-on-floor-text "(mu (:value -1/2))"
+                                                        "(friction block floor :static mu)"))))
+    (is-refused-at negative 'ames:missing-assumption-error "friction BLOCK FLOOR" "(>= MU 0)"))
+  (is-refused-at (hardening-error (block-on-floor-text "(mu (:value -1/2))"
+                                                       "(friction block floor :static mu)")
+                                  :numeric t)
+                 'ames.scenario:parameter-value-error "friction BLOCK FLOOR" "MU = -1/2")
+  (is-refused-at (hardening-error (block-on-floor-text "(mu :positive)"
+                                                       "(friction block floor :static mu :kinetic (* 2 mu))"))
+                 'ames:scenario-expression-error "friction BLOCK FLOOR" "does not exceed")
+  (is-refused-at (hardening-error (block-on-floor-text "(mu (>= mu 0)) (muk (>= muk 0))"
+                                                       "(friction block floor :static mu :kinetic muk)")
+                                  :settings '(("mu" . 1/2) ("muk" . 1)))
+                 'ames.scenario:parameter-value-error "friction BLOCK FLOOR" "MUK = 1"))
+
+(test restitution-stiffness-and-gravitation-have-their-physical-range
+  "0 <= e <= 1 through --set as through a literal; a stiffness and a gravitational
+constant are positive, under the assumptions and at the values."
+  (is-refused-at (hardening-error (block-on-floor-text "(e :positive)" "(restitution e)")
+                                  :settings '(("e" . 2)))
+                 'ames.scenario:parameter-value-error "clause RESTITUTION" "E = 2")
+  (is-refused-at (hardening-error (block-on-floor-text "(e :positive)" "(restitution e)"))
+                 'ames:missing-assumption-error "clause RESTITUTION" "(<= E 1)")
+  (is-refused-at (hardening-error (block-on-floor-text "(k (:value -3))"
+                                                       "(body wall :fixed t :position (-3 0) :shape point)"
+                                                       "(spring s :from (wall (0 0)) :to (block (0 0)) :stiffness k)")
+                                  :numeric t)
+                 'ames.scenario:parameter-value-error "spring S" "K = -3")
+  (is-refused-at (hardening-error (block-on-floor-text "(k (< k 0))"
+                                                       "(body wall :fixed t :position (-3 0) :shape point)"
+                                                       "(spring s :from (wall (0 0)) :to (block (0 0)) :stiffness k)"))
+                 'ames:scenario-expression-error "spring S" "stiffness is positive")
+  (is-refused-at (hardening-error (block-on-floor-text "(big-g (:value -1))" "(gravitation big-g)")
+                                  :numeric t)
+                 'ames.scenario:parameter-value-error "clause GRAVITATION" "BIG-G = -1"))
+
+(test a-rope-is-at-least-as-long-as-its-path-at-the-start
+  "A rope of length 1/10 whose ends are 4 apart could not be tied; one of length 4 starts
+taut and runs; one whose length is a parameter is checked at its value."
+  (flet ((rope-text (length &optional (parameter ""))
+           (format nil "(scenario hang \"A weight on a rope.\"
+  (parameters (m :positive) (g :positive) ~A)
+  (gravity g)
+  (body ceiling :fixed t :position (0 5) :shape point)
+  (body bob :mass m :position (0 1) :velocity (0 0) :shape point)
+  (rope cord :length ~A :through ((ceiling (0 0)) (bob (0 0))))
+  (simulate :states 1))" parameter length)))
+    (is-refused-at (hardening-error (rope-text "1/10")) 'ames:scenario-expression-error
+                   "rope CORD" "at least as long")
+    (is-refused-at (hardening-error (rope-text "l" "(l :positive)") :settings '(("l" . 3)))
+                   'ames.scenario:parameter-value-error "rope CORD" "L = 3")
+    (is (null (hardening-error (rope-text "l" "(l :positive)") :settings '(("l" . 4))
+                               :limits (ames.base:change-limits ames.base:*limits* :time-limit 60))))))
+
+(test queries-have-names-of-their-own
+  "Two queries of one name, or a query named like a body, are refused naming the query."
+  (is-refused-at (hardening-error (block-on-floor-text "" "(query block (value (x block) :at (:start 0)))"))
+                 'ames:duplicate-name-error "clause QUERY" "named like the body")
+  (is-refused-at (hardening-error (block-on-floor-text "" "(query where (value (x block) :at (:start 0)))"
+                                                       "(query where (value (y block) :at (:start 0)))"))
+                 'ames:duplicate-name-error "clause QUERY" "two queries"))

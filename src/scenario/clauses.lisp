@@ -273,8 +273,7 @@ CHECK-SCENARIO-GEOMETRY, which the caller runs when it has those layers."
                                :parameters parameters :gravity gravity
                                :bodies bodies :forces forces :frictions frictions
                                :states states :until until :branch branch
-                               :queries (mapcar (lambda (clause) (checked-query validation clause))
-                                                (clauses 'ames-scenario:query))
+                               :queries (checked-queries validation (clauses 'ames-scenario:query))
                                :restitutions (checked-restitutions
                                               validation (clauses 'ames-scenario:restitution))
                                :extensions (checked-extensions validation sorted bodies)
