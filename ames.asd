@@ -141,6 +141,7 @@ frictionless translating rigid bodies evolve (after Leon Wong's 1994 MIT thesis)
    (:module "report" :pathname "src/report/" :serial t
     :depends-on ("simulator")
     :components ((:file "package")
+                 (:file "numbers")
                  (:file "infix")
                  (:file "forms")
                  (:file "presentation")

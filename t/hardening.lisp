@@ -143,3 +143,42 @@ taut and runs; one whose length is a parameter is checked at its value."
   (is-refused-at (hardening-error (block-on-floor-text "" "(query where (value (x block) :at (:start 0)))"
                                                        "(query where (value (y block) :at (:start 0)))"))
                  'ames:duplicate-name-error "clause QUERY" "two queries"))
+
+;;; Numbers beyond double precision in the reports
+
+(defun report-in-format (text format &rest arguments &key settings numeric (limits ames.base:*limits*))
+  "Run TEXT's scenarios by AMES:RUN-FILES in FORMAT; (values STATUS OUTPUT ERRORS)."
+  (declare (ignore arguments))
+  (let ((path (write-scenario-text text))
+        (output (make-string-output-stream))
+        (errors (make-string-output-stream)))
+    (unwind-protect
+         (let ((status (let ((*error-output* errors)
+                             (*package* (find-package '#:ames-scenario)))
+                         (ames:run-files (list path) :format format :settings settings
+                                                     :numeric numeric :limits limits
+                                                     :stream output))))
+           (values status (get-output-stream-string output) (get-output-stream-string errors)))
+      (delete-file path))))
+
+(defparameter *huge-drop*
+  (format nil "(scenario huge-drop \"A ball dropped from 10^400.\"
+  (parameters (m :positive (:value 1)) (g :positive (:value 10)) (h :positive (:value ~D)))
+  (gravity g)
+  (body floor :fixed t :shape (half-plane (1 0) (0 0)))
+  (body ball :mass m :position (0 h) :velocity (0 0) :shape point)
+  (simulate :states 2))" (expt 10 400))
+  "A scenario whose default height has no double-float.")
+
+(test numbers-beyond-double-precision-do-not-end-any-report
+  "A default of 10^400 leaves the closed forms alone in every format (no
+FLOATING-POINT-OVERFLOW, no lost HTML page); the numbers that do fit are still printed."
+  (dolist (format ames.report:*report-formats*)
+    (multiple-value-bind (status output errors) (report-in-format *huge-drop* format :numeric t)
+      (is (eql 0 status) "~A: status ~A, ~A" format status errors)
+      (is (search "huge-drop" (string-downcase output)) "~A: no report" format)
+      (is (zerop (length errors)) "~A: ~A" format errors)
+      (when (eq format :text)
+        (is (search "a_y = -g = -10" output) "the acceleration's number is printed"))))
+  (is (null (ames.report::report-float (expt 10 400))))
+  (is (eql 1d300 (ames.report::report-float (expt 10 300)))))

@@ -62,7 +62,7 @@ come from ILLUSTRATION-VALUES. Every moving body has one <path class=\"trajector
 per state (a zero-length one where its trajectory cannot be drawn)."
   (multiple-value-bind (bindings chosen) (illustration-values history)
     (let* ((scenario (history-scenario history))
-           (bindings (mapcar (lambda (e) (cons (car e) (float (cdr e) 1d0))) bindings))
+           (bindings (report-floats bindings))
            (bodies (scenario-bodies scenario))
            (moving (mapcar #'scenario-body-name (remove-if #'scenario-body-fixed-p bodies)))
            (colours (loop for body in moving for i from 0

@@ -163,8 +163,9 @@ assumptions (checked numerically), with tau and s in (0, 2): the given values fi
                               point)))
                 (let ((given (append (presenter-values presenter) (scenario-parameter-values scenario))))
                   (when (every (lambda (n) (assoc n given)) names)
-                    (let ((point (mapcar (lambda (n) (cons n (coerce (cdr (assoc n given)) 'double-float))) names)))
-                      (when (admissible-p point) (push (extended point) points)))))
+                    (let ((point (report-floats (mapcar (lambda (n) (assoc n given)) names))))
+                      (when (and (= (length point) (length names)) (admissible-p point))
+                        (push (extended point) points)))))
                 (loop repeat 200 while (< (length points) 4)
                       do (let ((point (mapcar (lambda (n) (cons n (+ 0.05d0 (random 1.5d0 state)))) names)))
                            (when (admissible-p point) (push (extended point) points))))
@@ -253,7 +254,7 @@ in VARIABLE or the best candidate."
     (and values (valid-expression-p expression :kind :arithmetic)
          (let ((value (expression-value expression values)))
            (cond ((integerp value) value)
-                 ((realp value) (float value 1d0)))))))
+                 (t (report-float value)))))))
 
 (defun numeric-polynomial (presenter expression &optional (variable 'tau))
   "EXPRESSION under the presenter's values as an arranged polynomial in VARIABLE with
@@ -267,9 +268,9 @@ numeric coefficients (0.9152 + 2.1 tau^2), a number when it is free of VARIABLE,
                                 (ames.maxima:maxima-condition () nil))))
             (when coefficients
               (let ((numbers (mapcar (lambda (c) (numeric presenter c)) coefficients)))
-                (when (every #'realp numbers)
+                (when (every #'report-float numbers)
                   (arrange (cons '+ (loop for n in numbers for degree from 0
                                           unless (zerop n)
-                                            collect (list '* (float n 1d0)
+                                            collect (list '* (report-float n)
                                                           (list 'expt variable degree))))
                            (presenter-arrangement presenter variable))))))))))
