@@ -182,3 +182,63 @@ FLOATING-POINT-OVERFLOW, no lost HTML page); the numbers that do fit are still p
         (is (search "a_y = -g = -10" output) "the acceleration's number is printed"))))
   (is (null (ames.report::report-float (expt 10 400))))
   (is (eql 1d300 (ames.report::report-float (expt 10 300)))))
+
+;;; Output that cannot be injected
+
+(defparameter *hostile-names*
+  (format nil "(scenario |evil~%\\\\input{/etc/passwd}~C[31m~C| \"A description with ~C[2J, ~C and~%\\\\input{x}.\"
+  (parameters (m :positive (:value 1)) (g :positive (:value 10)) (h :positive (:value 1)))
+  (gravity g)
+  (body floor :fixed t :shape (half-plane (1 0) (0 0)))
+  (body |ba~Cll| :mass m :position (0 h) :velocity (0 0) :shape point)
+  (simulate :states 2))"
+          (code-char 27) (code-char 7) (code-char 27) (code-char 7) (code-char 27))
+  "A scenario whose name holds a line break, a LaTeX command, ESC and BEL.")
+
+(defun python-accepts-p (kind text)
+  "True when Debian's Python parses TEXT as KIND: :json (every non-empty line, strictly)
+or :xml."
+  (let ((program (ecase kind
+                   (:json "import json,sys
+for line in sys.stdin.read().splitlines():
+    line.strip() and json.loads(line)")
+                   (:xml "import sys, xml.dom.minidom as m; m.parseString(sys.stdin.buffer.read())"))))
+    (zerop (nth-value 2 (uiop:run-program (list "/usr/bin/python3" "-c" program)
+                                          :input (make-string-input-stream text)
+                                          :output nil :error-output nil
+                                          :ignore-error-status t)))))
+
+(defun raw-control-characters-p (text)
+  "True when TEXT has a control character other than a line break or a tab."
+  (some (lambda (c) (and (ames.report::control-character-p c)
+                         (not (member c '(#\Newline #\Tab)))))
+        text))
+
+(defun latex-user-command-p (text)
+  "True when TEXT has an active \\input (the user's command), or when the name in its
+header comment goes on past the comment's line."
+  (let* ((comment (search "% AMES report" text))
+         (line-end (and comment (position #\Newline text :start comment))))
+    (or (search "\\input" text)
+        (null line-end)
+        (not (search "passwd" text :start2 comment :end2 line-end)))))
+
+(test user-text-cannot-break-out-of-any-format
+  "A name with a line break and \\input, ESC and BEL: the LaTeX has no active command of
+the user's, the JSON parses, the SVG is well-formed XML, and no format (nor the picture,
+nor the text report) carries a raw control character."
+  (dolist (format ames.report:*report-formats*)
+    (multiple-value-bind (status output errors) (report-in-format *hostile-names* format :numeric t)
+      (is (eql 0 status) "~A: ~A" format errors)
+      ;; the s-expression report carries the names exactly, to be read back by programs
+      (unless (eq format :sexp)
+        (is (not (raw-control-characters-p output)) "~A has a raw control character" format))
+      (case format
+        (:latex (is (not (latex-user-command-p output)) "the LaTeX runs the user's \\input"))
+        (:json (is (python-accepts-p :json output) "the JSON does not parse"))
+        (:html (is (not (search "<script>alert" output)))))))
+  (let ((history (first (hardening-run *hostile-names* :numeric t))))
+    (let ((svg (with-output-to-string (out) (ames.report:print-history-svg history out))))
+      (is (python-accepts-p :xml svg) "the SVG is not well-formed")
+      (is (not (raw-control-characters-p svg)))))
+  (is (string= "a^[b^G" (ames.report:visible-text (format nil "a~Cb~C" (code-char 27) (code-char 7))))))

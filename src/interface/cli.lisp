@@ -211,14 +211,13 @@ RUN-FILES. Returns the exit status: 0, or 1 when a scenario could not be explain
             (explain history :state state :stream stream))
         (ames-error (condition)
           (setf status 1)
-          (format *error-output* "~&ames: ~A~%" condition))
+          (print-error-message condition))
         ;; the output is gone (a closed pipe): nothing more can be reported
         (stream-error (condition) (error condition))
         ;; a defect of AMES is reported as RUN-FILES reports it, not as a backtrace
         (error (condition)
           (setf status 1)
-          (format *error-output* "~&ames: ~A~%"
-                  (make-condition 'internal-error :datum condition)))))))
+          (print-error-message (make-condition 'internal-error :datum condition)))))))
 
 (defun undecided-history-p (history)
   "True when HISTORY, or a branch of one of its forks, ended without deciding what
@@ -260,8 +259,7 @@ undecided."
         (output (make-report-output format stream :svg svg :bridge bridge)))
     (flet ((report-error (condition)
              (setf error-seen t)
-             (format *error-output* "~&ames: ~A~%" condition)
-             (finish-output *error-output*)))
+             (print-error-message condition)))
       (dolist (file files)
         (multiple-value-bind (scenarios conditions) (read-scenario-file file :on-error :collect)
           (mapc #'report-error conditions)
