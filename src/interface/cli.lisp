@@ -166,7 +166,10 @@ a process ended by SIGPIPE).")
 with the status RUN-FILES returns (0 complete, 1 a scenario error, 3 a run ended
 ambiguous or undecided), or 2 on a usage error; with --jobs N, the worst status of the
 child processes (RUN-JOBS). When the standard output is a pipe whose reader went away
-(bin/ames run x | head), stop quietly with status +BROKEN-PIPE-STATUS+."
+(bin/ames run x | head), stop quietly with status +BROKEN-PIPE-STATUS+. SIGINT and
+SIGTERM stop the run with the states that finished printed, and status 130 or 143 (see
+signals.lisp)."
+  (install-stop-handlers)
   (let ((status
           (handler-case
               (multiple-value-bind (jobs arguments) (jobs-option arguments)
@@ -197,7 +200,7 @@ child processes (RUN-JOBS). When the standard output is a pipe whose reader went
                          (finish-output *error-output*))
       (sb-int:broken-pipe ()
         (sb-ext:exit :code +broken-pipe-status+ :abort t)))
-    (uiop:quit status)))
+    (uiop:quit (finish-stopped-process status))))
 
 (defun explain-files (files &key state settings numeric (stream *standard-output*)
                                (limits *limits*))
@@ -261,15 +264,25 @@ undecided."
              (setf error-seen t)
              (print-error-message condition)))
       (dolist (file files)
+        (when *stop-requested* (return))
         (multiple-value-bind (scenarios conditions) (read-scenario-file file :on-error :collect)
           (mapc #'report-error conditions)
           (dolist (scenario scenarios)
+            (when *stop-requested* (return))
             (handler-case
-                (let ((history (run-scenario scenario :bridge bridge :settings settings
-                                                      :numeric numeric :limits limits)))
-                  (when (undecided-history-p history)
+                (let* ((start (get-internal-real-time))
+                       (history (run-scenario scenario :bridge bridge :settings settings
+                                                       :numeric numeric :limits limits))
+                       (stopped (stopped-by-time history)))
+                  (when (or stopped (undecided-history-p history))
                     (setf undecided-seen t))
-                  (report-history output history)
+                  (when (and stopped (not *stop-requested*))
+                    (print-error-message
+                     (format nil "~@[~A: ~]the time limit of ~A s was exceeded; the ~D state~:P that finished ~:*~[are~;is~:;are~] printed"
+                             (scenario-name scenario) (budget-exceeded-limit stopped)
+                             (length (history-states history)))))
+                  (call-within-time-left (lambda () (report-history output history))
+                                         limits start (scenario-name scenario))
                   (finish-output stream))
               (ames-error (condition) (report-error condition))
               ;; the output is gone (a closed pipe): nothing more can be reported
@@ -280,7 +293,8 @@ undecided."
                   (setf (ames-error-context internal)
                         (run-error-context scenario internal))
                   (report-error internal)))))))
-      (handler-case (finish-report output)
+      (handler-case (call-within-time-left (lambda () (finish-report output))
+                                           limits (get-internal-real-time) nil)
         (ames-error (condition) (report-error condition))))
     (cond (error-seen +exit-scenario-error+)
           (undecided-seen +exit-undecided+)

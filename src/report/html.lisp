@@ -215,10 +215,12 @@ defect of AMES), write a section saying so instead, so that the page keeps every
 scenario, and return (SCENARIO-NAME . MESSAGE); else NIL."
   (let* ((failure nil)
          (section (handler-case (with-output-to-string (out) (scenario-html history out bridge))
+                    ;; out of time: the caller makes the page again without Maxima
+                    (budget-exceeded (condition) (error condition))
                     (error (condition)
                       (setf failure (handler-case (princ-to-string condition)
                                       (error () (string (type-of condition)))))
-                      nil)))
+                      "")))
          (name (scenario-name (history-scenario history))))
     (if failure
         (progn

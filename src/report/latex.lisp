@@ -91,8 +91,11 @@ written by NUMBER-TEXT: 0.7483 + 1.692\\,\\tau - 4.905\\,\\tau^{2}."
 Numbers, and numeric forms such as 0.7483 + 1.692 tau, are written by NUMBER-TEXT."
   (cond ((realp expression) (number-latex expression))
         ((contains-float-p expression) (numeric-form-latex expression))
-        (t (ames.maxima:presentation-latex (presenter-bridge presenter) expression
-                                           :name-function #'latex-name))))
+        (t (handler-case (ames.maxima:presentation-latex (presenter-bridge presenter) expression
+                                                         :name-function #'latex-name)
+             ;; no time left (or Maxima failed): the form as solved, in typewriter type
+             (ames.maxima:maxima-condition ()
+               (format nil "\\mbox{\\texttt{~A}}" (latex-escape (text-form expression))))))))
 
 (defun phrase-latex (presenter phrase)
   "PHRASE as LaTeX running text, its formulas as inline math."

@@ -31,13 +31,16 @@ for an unknown format."
 
 (defun report-history (output history)
   "Write HISTORY's report to OUTPUT now, or keep it for FINISH-REPORT (HTML, pictures)."
-  (let ((stream (output-stream output)) (bridge (output-bridge output)))
-    (ecase (output-format output)
-      (:text (print-history-text history stream :bridge bridge))
-      (:sexp (print-history-sexp history stream))
-      (:latex (print-history-latex history stream :bridge bridge))
-      (:json (print-history-json history stream))
-      (:html nil))
+  (let ((bridge (output-bridge output)))
+    ;; made whole first: a report that fails half-way writes nothing
+    (write-string (with-output-to-string (stream)
+                    (ecase (output-format output)
+                      (:text (print-history-text history stream :bridge bridge))
+                      (:sexp (print-history-sexp history stream))
+                      (:latex (print-history-latex history stream :bridge bridge))
+                      (:json (print-history-json history stream))
+                      (:html nil)))
+                  (output-stream output))
     (when (or (eq (output-format output) :html) (output-svg output))
       (push history (output-histories output)))
     history))
@@ -56,7 +59,10 @@ file (see PICTURE-PATHNAME). Returns the pathnames written. Signals REPORT-ERROR
 picture cannot be written."
   (let ((histories (reverse (output-histories output))))
     (when (and (eq (output-format output) :html) histories)
-      (print-history-html histories (output-stream output) :bridge (output-bridge output)))
+      ;; made whole first: a page that fails half-way writes nothing
+      (write-string (with-output-to-string (stream)
+                      (print-history-html histories stream :bridge (output-bridge output)))
+                    (output-stream output)))
     (when (output-svg output)
       (loop for history in histories
             for name = (scenario-name (history-scenario history))

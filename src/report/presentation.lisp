@@ -52,9 +52,19 @@ already has that name."
                                     (cons +arc-speed+ (display-symbol "S'" scenario))))))
 
 (defun call-with-presenter (history bridge function)
-  "Call FUNCTION with a PRESENTER for HISTORY, within the scenario's assumptions in BRIDGE."
-  (ames.maxima:with-assumptions (bridge (scenario-assumption-relations (history-scenario history)))
-    (funcall function (make-presenter history bridge))))
+  "Call FUNCTION with a PRESENTER for HISTORY, within the scenario's assumptions in BRIDGE.
+When the run's time is up (its budget's, or a signal's: see AMES.BASE:BUDGET-TIME-LEFT)
+Maxima is not asked: FUNCTION is called outside the assumptions, and the presenter's
+requests fall back to the forms as solved."
+  (flet ((without-maxima () (funcall function (make-presenter history bridge))))
+    (let ((left (budget-time-left)))
+      (if (and left (<= left 0))
+          (without-maxima)
+          (handler-case
+              (ames.maxima:with-assumptions (bridge (scenario-assumption-relations
+                                                     (history-scenario history)))
+                (funcall function (make-presenter history bridge)))
+            (ames.maxima:maxima-budget-exceeded () (without-maxima)))))))
 
 (defun arc-length-symbol (presenter)
   "The symbol that names the arc length in PRESENTER's reports."

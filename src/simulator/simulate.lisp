@@ -265,9 +265,11 @@ parameter's declaration to them."
           (setf (getf (history-notes history) :decided-by-values) (reverse (run-assumed run))))
         (setf (getf (history-notes history) :model-sizes) (run-statistics run))
         (setf (history-rederived history) (reverse (run-rederived run))))
-      (add-numeric-values history bridge)
-      (when (and (scenario-queries scenario) (null *branching*))
-        (setf (history-answers history) (answer-queries history bridge)))
+      ;; a run stopped by its time (or a signal) has no time left to ask Maxima more
+      (unless (typep (getf (history-notes history) :stopped-by) 'budget-exceeded)
+        (add-numeric-values history bridge)
+        (when (and (scenario-queries scenario) (null *branching*))
+          (setf (history-answers history) (answer-queries history bridge))))
       history)))
 
 ;;; Numbers beside the formulas
