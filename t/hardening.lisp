@@ -242,3 +242,108 @@ nor the text report) carries a raw control character."
       (is (python-accepts-p :xml svg) "the SVG is not well-formed")
       (is (not (raw-control-characters-p svg)))))
   (is (string= "a^[b^G" (ames.report:visible-text (format nil "a~Cb~C" (code-char 27) (code-char 7))))))
+
+;;; Limits that hold for the whole run
+
+(defun scenario-path (name)
+  "The namestring of scenarios/NAME.lisp."
+  (namestring (merge-pathnames (format nil "scenarios/~A.lisp" name)
+                               (asdf:system-source-directory "ames"))))
+
+(test the-maxima-timeout-reaches-the-simulation
+  "--maxima-timeout (the limits' MAXIMA-TIMEOUT) is the timeout every request of the run
+gets (it was the bridge's own 20 s: the simulation ran under the default limits)."
+  (let ((seen '()))
+    (sb-int:encapsulate 'ames.maxima::configured-timeout 'hardening-spy
+                        (lambda (function bridge)
+                          (let ((timeout (funcall function bridge)))
+                            (pushnew timeout seen)
+                            timeout)))
+    (unwind-protect
+         (hardening-run *spring-pushed-into-floor*
+                        :limits (ames.base:make-limits :time-limit 60 :maxima-timeout 17))
+      (sb-int:unencapsulate 'ames.maxima::configured-timeout 'hardening-spy))
+    (is (equal '(17) seen) "the requests had the timeouts ~A" seen)))
+
+(test a-time-limit-covers-the-report-and-keeps-the-finished-states
+  "The particle on a sphere on the floor needs far more than 3 s (simulation and
+report): with --time-limit 3 the run ends within the limit and a few seconds, prints the
+states that finished, says so on the standard error, and the status is 3."
+  (let ((start (get-internal-real-time)))
+    (multiple-value-bind (status output errors)
+        (report-in-format (uiop:read-file-string (scenario-path "particle-on-sphere-on-floor"))
+                          :text :limits (ames.base:make-limits :time-limit 3))
+      (let ((seconds (ames::seconds-since start)))
+        (is (< seconds 9) "the run took ~,1F s" seconds))
+      (is (eql 3 status))
+      (is (search "State 0" output))
+      (is (search "Outcome: stopped" output))
+      (is (search "time limit of 3 s was exceeded" errors) "~A" errors)
+      (is (search "that finished" errors)))))
+
+;;; Signals: the run stops with its finished states, its status, and no process left
+
+(defun process-children (pid)
+  "The process ids whose parent is PID."
+  (let ((text (uiop:run-program (list "pgrep" "-P" (princ-to-string pid))
+                                :output :string :ignore-error-status t)))
+    (mapcar #'parse-integer (uiop:split-string (string-trim '(#\Newline #\Space) text)
+                                               :separator '(#\Newline)))))
+
+(defun process-alive-p (pid)
+  "True when a process PID exists (and is no zombie)."
+  (let ((stat (format nil "/proc/~D/stat" pid)))
+    (and (probe-file stat)
+         (not (search ") Z" (ignore-errors (uiop:read-file-string stat)))))))
+
+(defun run-and-signal (signal seconds &rest arguments)
+  "Run bin/ames with ARGUMENTS, send it SIGNAL (a number) after SECONDS; return its exit
+code, its standard output, its standard error, and the processes it had started
+(its children and theirs) at the time of the signal."
+  (let* ((program (namestring (merge-pathnames "bin/ames" (asdf:system-source-directory "ames"))))
+         (out (uiop:tmpize-pathname (merge-pathnames "ames-signal-out" (uiop:temporary-directory))))
+         (err (uiop:tmpize-pathname (merge-pathnames "ames-signal-err" (uiop:temporary-directory))))
+         (process (sb-ext:run-program program arguments :wait nil :output out :error err
+                                                        :if-output-exists :supersede
+                                                        :if-error-exists :supersede)))
+    (unwind-protect
+         (progn
+           (sleep seconds)
+           (let* ((pid (sb-ext:process-pid process))
+                  (children (process-children pid))
+                  (descendants (append children (mapcan #'process-children children))))
+             (sb-ext:process-kill process signal)
+             (sb-ext:process-wait process)
+             (values (sb-ext:process-exit-code process)
+                     (uiop:read-file-string out) (uiop:read-file-string err)
+                     descendants)))
+      (sb-ext:process-close process)
+      (uiop:delete-file-if-exists out)
+      (uiop:delete-file-if-exists err))))
+
+(test sigterm-and-sigint-stop-the-run-with-its-finished-states
+  "SIGTERM ends a run with 143, SIGINT with 130: one line says so, the states that
+finished are printed, and no process of the run (Maxima) is left."
+  (dolist (case '((15 143 "SIGTERM") (2 130 "SIGINT")))
+    (destructuring-bind (signal expected name) case
+      (multiple-value-bind (code output errors descendants)
+          (run-and-signal signal 3 "run" (scenario-path "particle-on-sphere-on-floor"))
+        (is (eql expected code) "~A: status ~A, ~A" name code errors)
+        (is (search (format nil "stopped by ~A" name) errors) "~A" errors)
+        (is (= 1 (count #\Newline errors)) "more than one line: ~A" errors)
+        (is (search "State 0" output))
+        (is (plusp (length descendants)) "no Maxima was running")
+        (sleep 0.5)
+        (is (notany #'process-alive-p descendants) "processes left: ~A" descendants)))))
+
+(test sigterm-under-jobs-stops-the-workers-and-their-maxima
+  "Under --jobs 2, SIGTERM to the parent stops both workers and their Maxima; the status
+is 143 and the workers' finished states are printed."
+  (multiple-value-bind (code output errors descendants)
+      (run-and-signal 15 4 "run" (scenario-path "particle-on-sphere-on-floor")
+                      (scenario-path "particle-on-sphere") "--jobs" "2")
+    (is (eql 143 code) "status ~A, ~A" code errors)
+    (is (search "State 0" output))
+    (is (>= (length descendants) 2) "the workers were not running: ~A" descendants)
+    (sleep 0.5)
+    (is (notany #'process-alive-p descendants) "processes left: ~A" descendants)))
