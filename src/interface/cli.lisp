@@ -265,7 +265,7 @@ undecided."
              (print-error-message condition)))
       (dolist (file files)
         (when *stop-requested* (return))
-        (multiple-value-bind (scenarios conditions) (read-scenario-file file :on-error :collect)
+        (multiple-value-bind (scenarios conditions) (read-file-within-time file limits)
           (mapc #'report-error conditions)
           (dolist (scenario scenarios)
             (when *stop-requested* (return))

@@ -113,6 +113,15 @@ CALL-WITHOUT-MAXIMA). THUNK must write nothing until it has succeeded."
                      (call-without-maxima thunk)
                      (error condition))))))))
 
+(defun read-file-within-time (file limits)
+  "READ-SCENARIO-FILE of FILE, collecting its errors, within the time limit of LIMITS (a
+named pipe without a writer waits no longer): (values SCENARIOS CONDITIONS), a
+BUDGET-EXCEEDED among the conditions when the time ran out."
+  (handler-case
+      (call-with-budget (lambda () (read-scenario-file file :on-error :collect))
+                        :limits limits :subject file)
+    (budget-exceeded (condition) (values '() (list condition)))))
+
 (defun stopped-by-time (history)
   "The BUDGET-EXCEEDED that stopped HISTORY's run (its time limit, or a signal), or NIL."
   (let ((condition (getf (history-notes history) :stopped-by)))
