@@ -347,3 +347,46 @@ is 143 and the workers' finished states are printed."
     (is (>= (length descendants) 2) "the workers were not running: ~A" descendants)
     (sleep 0.5)
     (is (notany #'process-alive-p descendants) "processes left: ~A" descendants)))
+
+;;; Inputs that are not plain files
+
+(defun bin-ames-shell (command)
+  "Run the shell COMMAND with $AMES the checkout's bin/ames and $DROP a quick scenario
+file; return its exit code (the last command's), its standard output and error."
+  (let ((drop (write-scenario-text *drop-text*)))
+    (unwind-protect
+         (multiple-value-bind (output errors code)
+             (uiop:run-program (list "bash" "-c" command)
+                               :output :string :error-output :string :ignore-error-status t
+                               :environment (list (format nil "AMES=~A" (namestring (merge-pathnames "bin/ames" (asdf:system-source-directory "ames"))))
+                                                  (format nil "DROP=~A" drop)
+                                                  (format nil "PATH=~A" (uiop:getenv "PATH"))
+                                                  (format nil "HOME=~A" (uiop:getenv "HOME"))))
+           (values code output errors))
+      (delete-file drop))))
+
+(test pipes-devices-and-the-standard-input-are-read-to-their-end
+  "A scenario read from -, /dev/stdin or a pipe (<(cat f)) runs as the file does; empty
+input, a directory and a missing file are errors (status 1); /dev/zero is refused
+naming the limit of scenario text; a named pipe without a writer waits no longer than
+--time-limit."
+  (dolist (command '("$AMES run - < $DROP" "$AMES run /dev/stdin < $DROP"
+                     "$AMES run <(cat $DROP)" "cat $DROP | $AMES run -"))
+    (multiple-value-bind (code output errors) (bin-ames-shell command)
+      (is (eql 0 code) "~A: ~A ~A" command code errors)
+      (is (search "Scenario drop" output) "~A: ~A" command output)))
+  (dolist (case '(("$AMES run - < /dev/null" "empty") ("$AMES run /tmp" "Is a directory")
+                  ("$AMES run /nonexistent/x.lisp" "No such file")
+                  ("$AMES run /dev/zero" "4,194,304 characters")))
+    (destructuring-bind (command text) case
+      (multiple-value-bind (code output errors) (bin-ames-shell command)
+        (declare (ignore output))
+        (is (eql 1 code) "~A: ~A" command code)
+        (is (search text errors) "~A: ~A" command errors))))
+  (let ((start (get-internal-real-time)))
+    (multiple-value-bind (code output errors)
+        (bin-ames-shell "d=$(mktemp -d); mkfifo $d/p; $AMES run $d/p --time-limit 1; s=$?; rm -r $d; exit $s")
+      (declare (ignore output))
+      (is (eql 1 code))
+      (is (search "within the time limit" errors) "~A" errors)
+      (is (< (ames::seconds-since start) 8)))))
