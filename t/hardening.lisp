@@ -390,3 +390,28 @@ naming the limit of scenario text; a named pipe without a writer waits no longer
       (is (eql 1 code))
       (is (search "within the time limit" errors) "~A" errors)
       (is (< (ames::seconds-since start) 8)))))
+
+;;; The command line: --version, run --help, progress on a terminal
+
+(test version-help-and-progress
+  "--version prints AMES's version (status 0); run --help and explain -h print the usage
+(status 0); with progress on (a terminal), each finished state gets one line on the
+standard error."
+  (is (eq :version (getf (ames::parse-command-line '("--version")) :command)))
+  (is (eq :help (getf (ames::parse-command-line '("run" "x.lisp" "--help")) :command)))
+  (is (eq :help (getf (ames::parse-command-line '("explain" "-h")) :command)))
+  (multiple-value-bind (code output) (run-bin-ames "--version")
+    (is (eql 0 code))
+    (is (search (format nil "AMES ~A" (asdf:component-version (asdf:find-system "ames"))) output)))
+  (multiple-value-bind (code output) (run-bin-ames "run" "--help")
+    (is (eql 0 code))
+    (is (search "Usage: ames run" output)))
+  (let* ((errors (make-string-output-stream))
+         (histories (let ((*error-output* errors))
+                      (ames::call-with-progress
+                       (lambda () (hardening-run *spring-pushed-into-floor*)) :progress t)))
+         (lines (remove "" (uiop:split-string (get-output-stream-string errors)
+                                              :separator '(#\Newline))
+                        :test #'string=)))
+    (is (= (length (ames:history-states (first histories))) (length lines)) "~A" lines)
+    (is (search "pushed-into-floor: state 0 finished" (first lines)) "~A" lines)))

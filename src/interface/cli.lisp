@@ -7,7 +7,9 @@
 ;;;;   2  a usage error (nothing is run);
 ;;;;   3  every scenario was valid, but a run (or a branch of it) ended ambiguous or
 ;;;;      undecided: the assumptions (and the values, if any) did not decide what comes next.
+;;;;      A run stopped by its --time-limit counts as undecided (its finished states printed).
 ;;;; When a run has both an error and an undecided scenario, the status is 1.
+;;;;   130, 143  SIGINT, SIGTERM stopped the run (see signals.lisp).
 ;;;;   141  the reader of the standard output went away (bin/ames run x | head).
 
 (in-package #:ames)
@@ -29,7 +31,9 @@
                  [--set PARAM=VALUE ...] [--time-limit SECONDS] [--maxima-timeout SECONDS]
                  [--verbose] [--jobs N]
        ames explain FILE... [--state N] [--numeric] [--set PARAM=VALUE ...]
-  Simulate every scenario in each FILE and print a report.
+       ames --version | ames help | ames run --help
+  Simulate every scenario in each FILE (- for the standard input; a pipe or a device
+  too) and print a report. On a terminal, a line on the standard error per state done.
   --format text   a report for people, state by state (the default)
   --format sexp   one readable s-expression per scenario (see the scenario language page)
   --format latex  a LaTeX fragment per scenario (formulas through Maxima's tex)
@@ -41,7 +45,8 @@
                   default; numeric values are then printed beside the closed forms, and
                   a fact the assumptions leave open but the values decide is used and
                   reported. Values that break a declared assumption are an error.
-  --time-limit S  the wall time one scenario may take, in seconds (default 300)
+  --time-limit S  the wall time one scenario and its report may take, in seconds
+                  (default 300); a run over it prints the states that finished (exit 3)
   --maxima-timeout S  the time one Maxima request may take, in seconds (default 20)
   --verbose       print error messages in full (long ones are otherwise cut short)
   --jobs N        run the files in N processes at once (each with its own Maxima);
@@ -49,7 +54,8 @@
   explain         why each state's contacts and modes hold, where its equations
                   come from, and why it ends when it does (or only state N)
 Exit codes: 0 complete, 1 a scenario error, 2 usage, 3 a run (or a branch) that ended
-ambiguous or undecided (1 wins when both happen)."
+ambiguous or undecided, or stopped by its time limit (1 wins when both happen); 130 and
+143 when SIGINT or SIGTERM stopped the run (the states that finished are printed)."
   "The text printed for `ames help` and after a usage error.")
 
 (defun parse-decimal (text)
@@ -104,6 +110,11 @@ limits are NIL when not given. Signals USAGE-ERROR on anything malformed."
         (state nil) (numeric nil) (time-limit nil) (maxima-timeout nil) (verbose nil))
     (cond ((null command) (error 'usage-error :detail "no command given"))
           ((member command '("help" "--help" "-h") :test #'string=)
+           (return-from parse-command-line (list :command :help)))
+          ((member command '("version" "--version") :test #'string=)
+           (return-from parse-command-line (list :command :version)))
+          ((intersection (rest arguments) '("--help" "-h") :test #'string=)
+           ;; run --help, explain -h: the usage, whatever else is given
            (return-from parse-command-line (list :command :help)))
           ((not (member command '("run" "explain") :test #'string=))
            (error 'usage-error :datum command :detail "unknown command")))
@@ -176,6 +187,7 @@ signals.lisp)."
                 (let ((options (parse-command-line arguments)))
                   (case (getf options :command)
                     (:help (write-string *usage*) (terpri) +exit-complete+)
+                    (:version (write-line (version-text)) +exit-complete+)
                     (:explain (explain-files (getf options :files) :state (getf options :state)
                                              :settings (getf options :settings)
                                              :numeric (getf options :numeric)
@@ -183,14 +195,16 @@ signals.lisp)."
                     (:run (if jobs
                               (run-jobs jobs options)
                               (let ((*package* (find-package '#:ames-scenario)))
-                                (run-files (getf options :files)
+                                (call-with-progress
+                                 (lambda ()
+                                  (run-files (getf options :files)
                                            :format (getf options :format)
                                            :settings (getf options :settings)
                                            :numeric (getf options :numeric)
                                            :svg (getf options :svg)
                                            :limits (command-line-limits options)
                                            :verbose (getf options :verbose)
-                                           :stream *standard-output*)))))))
+                                           :stream *standard-output*)))))))))
             (usage-error (condition)
               (format *error-output* "ames: ~A~%~A~%" condition *usage*)
               +exit-usage+)

@@ -15,6 +15,10 @@
   "The current Maxima bridge, made on first use."
   (or *bridge* (setf *bridge* (ames.maxima:make-bridge))))
 
+(defvar *state-hook* nil
+  "NIL, or a function of a SIMULATION-HISTORY and the QUALITATIVE-STATE just appended to
+it, called as each state's analysis is done (the command line's progress report).")
+
 (defparameter *default-state-limit* 12
   "How many states a scenario runs when its (simulate ...) clause sets no :states.")
 
@@ -151,6 +155,7 @@ noted in the history) for the rest of the run."
                        (ames.maxima:with-assumptions ((run-bridge run) (list fact))
                          (run-states run history index limit check-incremental))))))
              (setf (history-states history) (append (history-states history) (list state)))
+             (when *state-hook* (funcall *state-hook* history state))
              (cond ((null fired)
                     (setf (history-outcome history) :complete)
                     (return))

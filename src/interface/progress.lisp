@@ -1,0 +1,39 @@
+;;;; src/interface/progress.lisp -- what bin/ames says while it works: its version, and, on a
+;;;; terminal, one line per state finished (a long run is not silent for a minute).
+
+(in-package #:ames)
+
+(defparameter *version*
+  #.(let ((system (asdf:find-system "ames" nil)))
+      (or (and system (asdf:component-version system)) "unknown"))
+  "AMES's version, from ames.asd.")
+
+(defun version-text ()
+  "The line `ames --version` prints: AMES's version and the Lisp it runs on."
+  (format nil "AMES ~A (the Algebraic MEchanics Simulator), ~A ~A"
+          *version* (lisp-implementation-type) (lisp-implementation-version)))
+
+(defun error-output-terminal-p ()
+  "True when the standard error (file descriptor 2) is a terminal."
+  (ignore-errors (sb-unix:unix-isatty 2)))
+
+(defun report-progress (history state)
+  "Write on the standard error one line saying that STATE of HISTORY's run has finished."
+  (ignore-errors
+   (format *error-output* "~&ames: ~A: state ~D finished~@[ (~A)~]~%"
+           (visible-text (string-downcase (princ-to-string
+                                           (scenario-name (history-scenario history)))))
+           (state-index state)
+           (let ((event (state-end-event state)))
+             (cond ((null event) nil)
+                   ((keywordp event) (string-downcase (substitute #\Space #\- (symbol-name event))))
+                   ((and (consp event) (keywordp (first event)))
+                    (string-downcase (substitute #\Space #\- (symbol-name (first event)))))
+                   (t nil))))
+   (finish-output *error-output*)))
+
+(defun call-with-progress (thunk &key (progress (error-output-terminal-p)))
+  "Call THUNK; when PROGRESS (by default, when the standard error is a terminal), with
+a line on the standard error as each state finishes (REPORT-PROGRESS)."
+  (let ((*state-hook* (if progress #'report-progress *state-hook*)))
+    (funcall thunk)))
