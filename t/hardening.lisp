@@ -415,3 +415,30 @@ standard error."
                         :test #'string=)))
     (is (= (length (ames:history-states (first histories))) (length lines)) "~A" lines)
     (is (search "pushed-into-floor: state 0 finished" (first lines)) "~A" lines)))
+
+;;; Error messages that help: did you mean, where a form should have ended, the vertices
+
+(defun read-error-of (text)
+  "The first condition reading and validating TEXT collects, or NIL."
+  (let ((*package* (find-package '#:ames-scenario)))
+    (first (nth-value 1 (ames:read-scenarios-from-string text :on-error :collect)))))
+
+(test messages-say-what-was-meant
+  "A misspelled clause or keyword gets \"did you mean\"; an unclosed ( is reported where
+the form should have ended (by the indentation when a clause lacks its )); a clockwise
+polygon is answered with its vertices counter-clockwise, numbers or not."
+  (is (search "(did you mean gravity?)"
+              (princ-to-string (read-error-of (block-on-floor-text "" "(gravty g)")))))
+  (is (search "(did you mean :position?)"
+              (princ-to-string (read-error-of "(scenario s (body b :mass 1 :positon (0 0) :velocity (0 0) :shape point))"))))
+  (is (null (ames.scenario::closest-word "zzzzzz" '("gravity" "body"))))
+  (let ((condition (read-error-of (format nil "(scenario s \"x\"~% (parameters (g :positive))~% (gravity g~% (body b :mass 1 :position (0 0) :velocity (0 0) :shape point))~%"))))
+    (is (eql 3 (ames.scenario:scenario-read-error-line condition)) "~A" condition)
+    (is (search "closed by the end of line 3" (princ-to-string condition))))
+  (let ((condition (read-error-of (format nil "(scenario s \"x\"~% (gravity 1)~% (body b :mass 1 :position (0 0) :velocity (0 0) :shape point)~%~%(scenario t \"y\" (body c :mass 1 :position (0 0) :velocity (0 0) :shape point))~%"))))
+    (is (search "closed by the end of line 3" (princ-to-string condition)) "~A" condition))
+  (is (search "(POLYGON (0 0) (4 0) (4 3))"
+              (princ-to-string (read-error-of (block-on-floor-text "" "(body w :fixed t :shape (polygon (0 0) (4 3) (4 0)))")))))
+  (let ((condition (hardening-error (block-on-floor-text "(a :positive)" "(body w :fixed t :position (10 0) :shape (polygon (0 0) (a 3) (a 0)))"))))
+    (is (typep condition 'ames:scenario-shape-error))
+    (is (search "(POLYGON (0 0) (A 0) (A 3))" (princ-to-string condition)) "~A" condition)))

@@ -186,10 +186,14 @@ order."
              (reject validation 'scenario-syntax-error clause "the clause is not a proper list"))
             ((not (clause-word clause))
              (reject validation 'unknown-clause-error clause
-                     "~A is not a clause of the scenario language; the clauses are ~
+                     "~A is not a clause of the scenario language~A; the clauses are ~
                       parameters, gravity, body, force, simulate, query, restitution, ~
                       friction, spring, pulley, rope and gravitation"
-                     (show (car clause))))
+                     (show (car clause))
+                     (if (symbolp (car clause))
+                         (did-you-mean (symbol-name (car clause))
+                                       (mapcar #'symbol-name +clause-words+))
+                         "")))
             (t (push clause (cdr (assoc (clause-word clause) sorted))))))
     (dolist (entry sorted sorted)
       (setf (cdr entry) (nreverse (cdr entry))))))

@@ -85,10 +85,9 @@ rest length leniently when it defaults to the distance of the ends at the start)
                 "the spring's stiffness is positive" 'scenario-expression-error)
           (list location `(> ,(scenario-spring-rest-length spring) 0)
                 "the spring's rest length is positive" 'scenario-expression-error
-                (and (scenario-spring-to spring)
-                     (not (atom (scenario-spring-rest-length spring)))
-                     (eq (first (scenario-spring-rest-length spring)) 'sqrt)
-                     :lenient)))))
+                :lenient (and (scenario-spring-to spring)
+                              (not (atom (scenario-spring-rest-length spring)))
+                              (eq (first (scenario-spring-rest-length spring)) 'sqrt))))))
 
 (defun rope-facts (scenario rope)
   "The facts of one SCENARIO-ROPE: its length is positive, and (leniently) at least the
@@ -99,11 +98,11 @@ length of its path at the start."
                 'scenario-expression-error)
           (list location `(>= ,length ,(rope-start-path-length scenario rope))
                 "the rope is at least as long as its path through its ends and pulleys at the start"
-                'scenario-expression-error :lenient))))
+                'scenario-expression-error :lenient t))))
 
 (defun coefficient-facts (scenario)
   "Every physical range SCENARIO's clauses need, as a list of (LOCATION RELATION WHAT
-CLASS [:LENIENT]) like SCENARIO-FACTS (see this file's header)."
+CLASS . OPTIONS) like SCENARIO-FACTS (see this file's header)."
   (append (mapcan #'friction-facts (scenario-frictions scenario))
           (mapcan #'restitution-facts (scenario-restitutions scenario))
           (mapcan #'spring-facts (scenario-springs scenario))

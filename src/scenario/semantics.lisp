@@ -118,11 +118,17 @@ vertices run counter-clockwise."
                         append (arc-facts piece)))
       (:polygon (list (list `(> ,(polygon-signed-area shape) 0)
                             "the polygon's vertices run counter-clockwise"
-                            'scenario-shape-error))))))
+                            'scenario-shape-error
+                            :datum shape
+                            :if-false (format nil "they run clockwise; list them counter-clockwise: ~A"
+                                              (short-form-string (counter-clockwise-polygon shape)
+                                                                 (form-package shape)))))))))
 
 (defun scenario-facts (scenario)
-  "Every fact SCENARIO needs, as a list of (LOCATION RELATION WHAT CLASS [:LENIENT]): a
-lenient fact is only checked where the assumptions decide it."
+  "Every fact SCENARIO needs, as a list of (LOCATION RELATION WHAT CLASS . OPTIONS), the
+OPTIONS a plist: :LENIENT true for a fact checked only where the assumptions decide it,
+:DATUM the form at fault (else RELATION), :IF-FALSE what the message adds when it is
+false (the vertices in the right order, say)."
   (append
    (loop for body in (scenario-bodies scenario)
          for location = (format nil "body ~A" (symbol-name (scenario-body-name body)))
@@ -184,14 +190,16 @@ finds the assumptions inconsistent (the bridge's INCONSISTENT-ASSUMPTIONS is its
 (defun check-facts (scenario bridge)
   "Decide every fact SCENARIO needs (see SCENARIO-FACTS) under the assumptions in
 force; signal for the first that is false or undecided."
-  (loop for (location relation what class lenient) in (scenario-facts scenario)
+  (loop for (location relation what class . options) in (scenario-facts scenario)
+        for lenient = (getf options :lenient)
         do (ecase (if (and lenient (not (expression-variables relation)))
                       ;; a number: decided exactly, never asked of Maxima's sign rules
                       (or (ames.maxima:value-truth relation '((nil . 0))) :unknown)
                       (decide-fact bridge relation))
              (:true)
-             (:false (semantic-reject scenario class location relation
-                                      "it is false that ~A" what))
+             (:false (semantic-reject scenario class location (or (getf options :datum) relation)
+                                      "it is false that ~A~@[; ~A~]" what
+                                      (getf options :if-false)))
              (:unknown
               (unless lenient
                (error 'missing-assumption-error
