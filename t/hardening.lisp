@@ -442,3 +442,26 @@ polygon is answered with its vertices counter-clockwise, numbers or not."
   (let ((condition (hardening-error (block-on-floor-text "(a :positive)" "(body w :fixed t :position (10 0) :shape (polygon (0 0) (a 3) (a 0)))"))))
     (is (typep condition 'ames:scenario-shape-error))
     (is (search "(POLYGON (0 0) (A 0) (A 3))" (princ-to-string condition)) "~A" condition)))
+
+;;; Messages name no internal package
+
+(test messages-show-no-internal-package
+  "A condition quoting AMES's own symbols (AMES.KB::CONTACT, ames.simulator::contact-5,
+#:L1-EXCESS) is written with their names alone; the message's own \"ames: \" and paths
+stay."
+  (let ((text (with-output-to-string (out)
+                (ames::print-error-message
+                 (make-condition 'ames:scenario-syntax-error
+                                 :scenario 'ames-scenario::demo
+                                 :datum (list (intern "CONTACT" '#:ames.kb)
+                                              (intern "CONTACT-5" '#:ames.simulator)
+                                              (make-symbol "L1-EXCESS"))
+                                 :detail "a test")
+                 out))))
+    (is (eql 0 (search "ames: " text)))
+    (is (not (search "AMES.KB" text)) "~A" text)
+    (is (not (search "AMES.SIMULATOR" text)) "~A" text)
+    (is (not (search "#:" text)) "~A" text)
+    (is (search "CONTACT-5" text)))
+  (is (string= "/work/ames/x.lisp: (POS FIRST :X)"
+               (ames::without-package-prefixes "/work/ames/x.lisp: (AMES.KB:POS AMES-SCENARIO::FIRST :X)"))))
