@@ -465,3 +465,18 @@ stay."
     (is (search "CONTACT-5" text)))
   (is (string= "/work/ames/x.lisp: (POS FIRST :X)"
                (ames::without-package-prefixes "/work/ames/x.lisp: (AMES.KB:POS AMES-SCENARIO::FIRST :X)"))))
+
+;;; Too little memory
+
+(test too-little-virtual-memory-is-said-plainly
+  "Under ulimit -v 1.2 GB, bin/ames says which limit is too low and exits 4 (SBCL alone
+would stop with \"Can't allocate\"); the condition that reports an exhausted heap says
+so (exhausting the heap itself is too slow for the suite)."
+  (multiple-value-bind (code output errors) (bin-ames-shell "ulimit -v 1200000; $AMES run $DROP")
+    (declare (ignore output))
+    (is (eql 4 code))
+    (is (search "ulimit -v 1200000" errors) "~A" errors)
+    (is (not (search "Can't allocate" errors))))
+  (let ((message (princ-to-string (make-condition 'ames::memory-exhausted
+                                                  :datum (make-condition 'storage-condition)))))
+    (is (search "ran out of memory" message))))

@@ -301,6 +301,11 @@ undecided."
               (ames-error (condition) (report-error condition))
               ;; the output is gone (a closed pipe): nothing more can be reported
               (stream-error (condition) (error condition))
+              ;; the heap is exhausted: say so, and go on (the run's garbage is freed)
+              (storage-condition (condition)
+                (let ((exhausted (make-condition 'memory-exhausted :datum condition)))
+                  (setf (ames-error-context exhausted) (run-error-context scenario exhausted))
+                  (report-error exhausted)))
               ;; a defect of AMES in one scenario does not lose the others
               (error (condition)
                 (let ((internal (make-condition 'internal-error :datum condition)))

@@ -8,6 +8,15 @@
 
 (in-package #:ames)
 
+(define-condition memory-exhausted (ames-error) ()
+  (:documentation "A scenario run needed more memory than AMES's heap holds (SBCL's
+STORAGE-CONDITION, DATUM). RUN-FILES reports it and goes on with the next scenario.")
+  (:report (lambda (condition stream)
+             (declare (ignore condition))
+             (format-report stream "AMES ran out of memory (its heap holds ~:D MB) while running this scenario; ~
+                                    ask for fewer states (simulate :states N) or use smaller numbers"
+                            (floor (sb-ext:dynamic-space-size) (* 1024 1024))))))
+
 (defun without-package-prefixes (text)
   "TEXT with the package prefixes of AMES's packages (AMES.KB::, ames-scenario:...) and
 the #: of uninterned symbols taken off the symbols it quotes."

@@ -15,7 +15,7 @@
 
 (defun error-output-terminal-p ()
   "True when the standard error (file descriptor 2) is a terminal."
-  (ignore-errors (sb-unix:unix-isatty 2)))
+  (eql 1 (ignore-errors (sb-unix:unix-isatty 2))))
 
 (defun report-progress (history state)
   "Write on the standard error one line saying that STATE of HISTORY's run has finished."
