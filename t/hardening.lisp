@@ -480,3 +480,15 @@ so (exhausting the heap itself is too slow for the suite)."
   (let ((message (princ-to-string (make-condition 'ames::memory-exhausted
                                                   :datum (make-condition 'storage-condition)))))
     (is (search "ran out of memory" message))))
+
+(test numeric-without-defaults-says-so
+  "--numeric on a scenario whose parameters have no (:value N) default names those that
+stay symbolic (a --set value counts as a value)."
+  (let* ((*package* (find-package '#:ames-scenario))
+         (scenario (first (ames:read-scenarios-from-string *drop-text*)))
+         (text (with-output-to-string (*error-output*)
+                 (ames::note-symbolic-parameters scenario '(("g" . 10))))))
+    (is (search "m, h have no (:value N) default" text) "~A" text)
+    (is (not (search " g," text)))
+    (is (string= "" (with-output-to-string (*error-output*)
+                      (ames::note-symbolic-parameters scenario '(("g" . 10) ("m" . 1) ("h" . 2))))))))

@@ -283,6 +283,7 @@ undecided."
           (mapc #'report-error conditions)
           (dolist (scenario scenarios)
             (when *stop-requested* (return))
+            (when numeric (note-symbolic-parameters scenario settings))
             (handler-case
                 (let* ((start (get-internal-real-time))
                        (history (run-scenario scenario :bridge bridge :settings settings

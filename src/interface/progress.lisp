@@ -32,6 +32,22 @@
                    (t nil))))
    (finish-output *error-output*)))
 
+(defun note-symbolic-parameters (scenario settings)
+  "Under --numeric: say on the standard error which parameters of SCENARIO have neither a
+(:value N) default nor a --set value in SETTINGS (an alist (NAME . NUMBER)), and so stay
+symbolic in the report."
+  (let ((bare (loop for parameter in (scenario-parameters scenario)
+                    for name = (scenario-parameter-name parameter)
+                    unless (or (scenario-parameter-value parameter)
+                               (assoc (symbol-name name) settings
+                                      :test (lambda (a b) (string-equal a (string b)))))
+                      collect (string-downcase (symbol-name name)))))
+    (when bare
+      (format *error-output* "~&ames: note: ~A: --numeric, but ~{~A~^, ~} ~A no (:value N) default ~
+                              and no --set value: ~A symbolic~%"
+              (visible-text (string-downcase (princ-to-string (scenario-name scenario))))
+              bare (if (rest bare) "have" "has") (if (rest bare) "they stay" "it stays")))))
+
 (defun call-with-progress (thunk &key (progress (error-output-terminal-p)))
   "Call THUNK; when PROGRESS (by default, when the standard error is a terminal), with
 a line on the standard error as each state finishes (REPORT-PROGRESS)."
