@@ -119,14 +119,20 @@ Maxima and prints its finished states), wait up to 10 s for them, then kill thos
         (ignore-errors (sb-ext:process-kill process 9))
         (ignore-errors (sb-ext:process-wait process))))))
 
-(defun copy-file-to-stream (path stream)
-  "Write the contents of the file PATH to STREAM, and delete it."
+(defun copy-file-to-stream (path stream &key skip)
+  "Write the contents of the file PATH to STREAM, and delete it; with SKIP (a string),
+leave out the lines that begin with it."
   (when (and path (probe-file path))
     (with-open-file (in path :external-format :utf-8)
-      (let ((buffer (make-string 8192)))
-        (loop for count = (read-sequence buffer in)
-              while (plusp count)
-              do (write-string buffer stream :end count))))
+      (if skip
+          (loop for line = (read-line in nil)
+                while line
+                unless (eql 0 (search skip line))
+                  do (write-line line stream))
+          (let ((buffer (make-string 8192)))
+            (loop for count = (read-sequence buffer in)
+                  while (plusp count)
+                  do (write-string buffer stream :end count)))))
     (delete-file path))
   (finish-output stream))
 
@@ -157,7 +163,11 @@ USAGE-ERROR for the options --jobs cannot split (see CHECK-JOBS-OPTIONS)."
                               (not (member (first queue) running)))
                    do (let ((job (pop queue)))
                         (copy-file-to-stream (job-output job) stream)
-                        (copy-file-to-stream (job-errors job) error-stream)
+                        (if *stop-requested*
+                            ;; the parent says it once for the whole run
+                            (copy-file-to-stream (job-errors job) error-stream
+                                                 :skip "ames: stopped by ")
+                            (copy-file-to-stream (job-errors job) error-stream))
                         (setf worst (worse-status worst (job-status job)))))
              (when (and running (or queue pending))
                (sleep 0.02)))

@@ -28,12 +28,24 @@
   "The exit status of a process stopped by the signal NAME: 128 + its number."
   (+ 128 (cdr (assoc name *stop-signals*))))
 
+(define-condition run-stopped (budget-exceeded) ()
+  (:documentation "A signal (*STOP-REQUESTED*) stopped the scenario run in progress: a
+BUDGET-EXCEEDED of its time, so that the run ends as its time limit would end it. DETAIL
+names the signal.")
+  (:report (lambda (condition stream)
+             (format-report stream "~@[The run of ~A: ~]~A"
+                            (let ((subject (budget-exceeded-subject condition)))
+                              (and subject (not (ames-error-context condition))
+                                   (princ-to-string subject)))
+                            (ames-error-detail condition)))))
+
 (defun stop-running-scenario ()
   "In the main thread, when a scenario run is in progress (a budget is running), end it
-as its time limit would."
+as its time limit would (with a RUN-STOPPED)."
   (when *budget*
-    (signal-budget-exceeded :time (current-time-limit) :asynchronous t
-                            :detail (format nil "stopped by ~A" *stop-requested*))))
+    (error 'run-stopped :quantity :time :limit (current-time-limit) :asynchronous t
+                        :subject (budget-subject *budget*)
+                        :detail (format nil "stopped by ~A" *stop-requested*))))
 
 (defun exit-at-once (name)
   "Stop Maxima and end the process with NAME's status, now (a second signal)."
