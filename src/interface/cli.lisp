@@ -293,7 +293,9 @@ undecided."
                     (setf undecided-seen t))
                   (when (and stopped (not *stop-requested*))
                     (print-error-message
-                     (format nil "~@[~A: ~]the time limit of ~A s was exceeded; the ~D state~:P that finished ~:*~[are~;is~:;are~] printed"
+                     (format nil "~@[~A: ~]the time limit of ~A s was exceeded; ~[no state had finished~;~
+                                  the 1 state that finished is printed~:;the ~:*~D states that ~
+                                  finished are printed~]"
                              (scenario-name scenario) (budget-exceeded-limit stopped)
                              (length (history-states history)))))
                   (call-within-time-left (lambda () (report-history output history))
