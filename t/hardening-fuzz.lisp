@@ -279,7 +279,7 @@ for Python (as two more values)."
     "block-sliding-on-rough-floor")
   "Scenario files that run in seconds: the process fuzz reads them through pipes.")
 
-(defparameter *slow-scenario-names* '("particle-on-sphere-on-floor" "particle-on-sphere")
+(defparameter *slow-scenario-names* '("two-blocks-in-corner" "two-blocks-in-corner-segment-wall")
   "Scenario files that run long: the process fuzz stops them with a signal.")
 
 (defun process-fuzz-case (state expected)

@@ -299,9 +299,13 @@ undecided."
                              (scenario-name scenario) (budget-exceeded-limit stopped)
                              (length (history-states history)))))
                   (call-within-time-left (lambda () (report-history output history))
-                                         limits start (scenario-name scenario))
+                                         limits start (scenario-name scenario)
+                                         :quiet stopped)
                   (finish-output stream))
-              (ames-error (condition) (report-error condition))
+              (ames-error (condition)
+                ;; a run a signal stopped before its first state: MAIN says so, once
+                (unless (typep condition 'run-stopped)
+                  (report-error condition)))
               ;; the output is gone (a closed pipe): nothing more can be reported
               (stream-error (condition) (error condition))
               ;; the heap is exhausted: say so, and go on (the run's garbage is freed)

@@ -108,22 +108,29 @@ return the signal's status."
   (let ((*stop-requested* (or *stop-requested* :time-limit)))
     (funcall thunk)))
 
-(defun call-within-time-left (thunk limits start subject)
+(defun call-within-time-left (thunk limits start subject &key quiet)
   "Call THUNK within what is left, since the internal real time START, of the time limit
 of LIMITS; when nothing is left, or it runs out, call THUNK again without Maxima (see
-CALL-WITHOUT-MAXIMA). THUNK must write nothing until it has succeeded."
+CALL-WITHOUT-MAXIMA), and, unless QUIET, say so on the standard error, naming SUBJECT.
+THUNK must write nothing until it has succeeded."
   (let* ((time-limit (limits-time-limit limits))
          (left (and time-limit (- time-limit (seconds-since start)))))
-    (cond ((or *stop-requested* (and left (<= left 0)))
-           (call-without-maxima thunk))
-          ((null left) (funcall thunk))
-          (t (handler-case
-                 (call-with-budget thunk :limits (change-limits limits :time-limit left)
-                                         :subject subject)
-               (budget-exceeded (condition)
-                 (if (eq (budget-exceeded-quantity condition) :time)
-                     (call-without-maxima thunk)
-                     (error condition))))))))
+    (flet ((fall-back ()
+             (unless (or quiet *stop-requested*)
+               (print-error-message
+                (format nil "note: ~@[~A: ~]the time limit of ~A s ran out while the report was ~
+                             written; its formulas are written as solved, not rearranged for print"
+                        subject time-limit)))
+             (call-without-maxima thunk)))
+      (cond ((or *stop-requested* (and left (<= left 0))) (fall-back))
+            ((null left) (funcall thunk))
+            (t (handler-case
+                   (call-with-budget thunk :limits (change-limits limits :time-limit left)
+                                           :subject subject)
+                 (budget-exceeded (condition)
+                   (if (eq (budget-exceeded-quantity condition) :time)
+                       (fall-back)
+                       (error condition)))))))))
 
 (defun read-file-within-time (file limits)
   "READ-SCENARIO-FILE of FILE, collecting its errors, within the time limit of LIMITS (a
