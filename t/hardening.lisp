@@ -171,8 +171,9 @@ taut and runs; one whose length is a parameter is checked at its value."
   "A scenario whose default height has no double-float.")
 
 (test numbers-beyond-double-precision-do-not-end-any-report
-  "A default of 10^400 leaves the closed forms alone in every format (no
-FLOATING-POINT-OVERFLOW, no lost HTML page); the numbers that do fit are still printed."
+  "A default of 10^400, or a friction coefficient of 10^308, leaves the closed forms alone
+in every format (no FLOATING-POINT-OVERFLOW, no lost HTML page); the numbers that do fit
+are still printed."
   (dolist (format ames.report:*report-formats*)
     (multiple-value-bind (status output errors) (report-in-format *huge-drop* format :numeric t)
       (is (eql 0 status) "~A: status ~A, ~A" format status errors)
@@ -180,6 +181,13 @@ FLOATING-POINT-OVERFLOW, no lost HTML page); the numbers that do fit are still p
       (is (zerop (length errors)) "~A: ~A" format errors)
       (when (eq format :text)
         (is (search "a_y = -g = -10" output) "the acceleration's number is printed"))))
+  ;; a friction coefficient of 10^308: its squares overflow a double in every printer
+  (dolist (format ames.report:*report-formats*)
+    (multiple-value-bind (status output errors)
+        (report-in-format (uiop:read-file-string (scenario-path "block-sliding-on-rough-floor")) format
+                          :settings `(("m" . 1) ("g" . 10) ("b" . 1) ("v0" . 1) ("mu" . ,(expt 10 308))))
+      (is (eql 0 status) "~A: status ~A, ~A" format status errors)
+      (is (search "block-sliding-on-rough-floor" (string-downcase output)))))
   (is (null (ames.report::report-float (expt 10 400))))
   (is (eql 1d300 (ames.report::report-float (expt 10 300)))))
 
