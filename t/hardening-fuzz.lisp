@@ -143,7 +143,7 @@ text (or the condition a format ended in): :TEXT :SEXP :LATEX :JSON :HTML :SVG."
            (handler-case
                (ames::call-within-time-left
                 (lambda () (with-output-to-string (out) (funcall function out)))
-                limits (get-internal-real-time) nil)
+                limits (get-internal-real-time) nil :quiet t)
              (error (condition) condition))))
     (list :text (render (lambda (out) (ames.report:print-history-text history out :bridge bridge)))
           :sexp (render (lambda (out) (ames.report:print-history-sexp history out)))
