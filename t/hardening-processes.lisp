@@ -220,3 +220,16 @@ stay symbolic (a --set value counts as a value)."
     (is (not (search " g," text)))
     (is (string= "" (with-output-to-string (*error-output*)
                       (ames::note-symbolic-parameters scenario '(("g" . 10) ("m" . 1) ("h" . 2))))))))
+
+(test jobs-workers-do-not-outlive-a-killed-parent
+  "Under --jobs 2, a parent killed with SIGKILL (no handler runs) leaves no worker and no
+Maxima behind: each worker watches its parent and stops when it is gone."
+  (multiple-value-bind (code output errors descendants)
+      (run-and-signal 9 4 "run" (scenario-path "two-blocks-in-corner")
+                      (scenario-path "two-blocks-in-corner-segment-wall") "--jobs" "2")
+    (declare (ignore code output errors))
+    (is (>= (length descendants) 2) "the workers were not running: ~A" descendants)
+    (loop repeat 80 while (some #'process-alive-p descendants) do (sleep 0.1))
+    (is (notany #'process-alive-p descendants) "processes left: ~A" descendants)
+    (dolist (pid (remove-if-not #'process-alive-p descendants))
+      (ignore-errors (sb-unix:unix-kill pid 9)))))

@@ -80,6 +80,11 @@ ERRORS, and its exit STATUS once it has finished."
         (setf (job-process job)
               (sb-ext:run-program program (child-arguments (job-file job) options)
                                   :wait nil :search nil :input nil
+                                  :environment (cons (format nil "~A=~D" *job-parent-variable*
+                                                             (sb-unix:unix-getpid))
+                                                     (remove-if (lambda (entry)
+                                                                  (eql 0 (search *job-parent-variable* entry)))
+                                                                (sb-ext:posix-environ)))
                                   :output output :if-output-exists :supersede
                                   :error errors :if-error-exists :supersede))
       (error (condition)

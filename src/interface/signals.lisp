@@ -72,8 +72,10 @@ terminal's Ctrl-C and from its parent)."
             (sb-thread:interrupt-thread thread #'stop-running-scenario))))))
 
 (defun install-stop-handlers ()
-  "Make SIGINT and SIGTERM stop the run (REQUEST-STOP), from the current thread."
+  "Make SIGINT and SIGTERM stop the run (REQUEST-STOP), from the current thread; in a
+--jobs worker, the parent's end too (WATCH-JOB-PARENT)."
   (setf *main-thread* sb-thread:*current-thread*)
+  (watch-job-parent)
   (sb-sys:enable-interrupt sb-unix:sigint
                            (lambda (signal info context)
                              (declare (ignore signal info context))
@@ -82,6 +84,28 @@ terminal's Ctrl-C and from its parent)."
                            (lambda (signal info context)
                              (declare (ignore signal info context))
                              (request-stop :sigterm))))
+
+(defparameter *job-parent-variable* "AMES_JOB_PARENT"
+  "The environment variable that tells a --jobs worker its parent's process id.")
+
+(defun parent-process-id ()
+  "The process id of this process's parent (getppid(2))."
+  (sb-alien:alien-funcall (sb-alien:extern-alien "getppid" (function sb-alien:int))))
+
+(defun watch-job-parent ()
+  "In a --jobs worker (see *JOB-PARENT-VARIABLE*), a thread that stops the run as SIGTERM
+would when the parent is gone (killed with SIGKILL, say), so that no worker and no
+Maxima outlive it."
+  (let* ((text (sb-ext:posix-getenv *job-parent-variable*))
+         (parent (and text (parse-integer text :junk-allowed t))))
+    (when parent
+      (sb-thread:make-thread
+       (lambda ()
+         (loop (sleep 1)
+               (unless (eql (parent-process-id) parent)
+                 (request-stop :sigterm)
+                 (return))))
+       :name "AMES job parent watch"))))
 
 (defun finish-stopped-process (status)
   "STATUS, or, when a signal asked the run to stop, say so in one line, stop Maxima and
