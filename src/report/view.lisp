@@ -367,4 +367,6 @@ the forces are conservative and nothing is lost."
                                                     (present-relation presenter (first more)))
                                             (cons ", at t = " (time-phrase presenter time)))))))
           :stopped (and stopped (not (typep stopped 'ambiguous-transition))
-                        (list (remove #\Newline (princ-to-string stopped)))))))
+                        ;; its first line: what stopped the run (not the Lisp form at fault)
+                        (let ((text (princ-to-string stopped)))
+                          (list (subseq text 0 (position #\Newline text))))))))
