@@ -107,6 +107,11 @@ countdown to the next reading of the clock."
 (defvar *budget* nil
   "The budget of the scenario run in progress (see CALL-WITH-BUDGET), or NIL.")
 
+(defvar *stop-requested* nil
+  "NIL, or what asked the process to stop (:SIGTERM, :SIGINT; set by the command line's
+signal handlers): every budget's deadline has then passed, so that a run stops where a
+time limit would stop it and what remains is done without waiting for Maxima.")
+
 (define-condition budget-exceeded (ames-error)
   ((quantity :initarg :quantity :reader budget-exceeded-quantity
              :documentation ":TIME, :INTEGER-BITS, :EXPRESSION-SIZE, or another quantity a
@@ -160,11 +165,12 @@ expression or operation), when known.")
 
 (defun budget-time-left ()
   "Seconds (a double-float, possibly zero or negative) left before the running budget's
-deadline, or NIL when no budget with a deadline is running."
+deadline, or NIL when no budget with a deadline is running; 0 whenever a stop is
+requested (*STOP-REQUESTED*), in a budget or not."
   (let ((deadline (and *budget* (budget-deadline *budget*))))
-    (and deadline
-         (/ (- deadline (get-internal-real-time))
-            (coerce internal-time-units-per-second 'double-float)))))
+    (cond (*stop-requested* 0d0)
+          (deadline (/ (- deadline (get-internal-real-time))
+                       (coerce internal-time-units-per-second 'double-float))))))
 
 (defun signal-budget-exceeded (quantity limit &key amount datum detail asynchronous)
   "Signal BUDGET-EXCEEDED for QUANTITY over LIMIT, naming the running budget's subject."
@@ -180,7 +186,7 @@ loops instead."
     (when budget
       (setf (budget-countdown budget) +budget-check-interval+)
       (let ((deadline (budget-deadline budget)))
-        (when (and deadline (> (get-internal-real-time) deadline))
+        (when (and deadline (or *stop-requested* (> (get-internal-real-time) deadline)))
           (signal-budget-exceeded :time (budget-time-limit budget)
                                   :datum datum :detail detail))))))
 

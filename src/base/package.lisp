@@ -20,6 +20,7 @@ bridge translates the algebra to anything else.")
    #:limits-maxima-timeout #:limits-integer-bits #:limits-expression-size
    #:*limits* #:current-limits #:invalid-limit
    #:call-with-budget #:with-budget #:*budget* #:budget-subject #:budget-time-left #:current-time-limit
+   #:*stop-requested* #:signal-budget-exceeded
    #:check-budget #:check-deadline #:check-number-size #:check-rational-size
    #:rational-bits #:check-expression-size
    #:budget-exceeded #:budget-exceeded-quantity #:budget-exceeded-limit

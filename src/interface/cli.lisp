@@ -7,11 +7,13 @@
 ;;;;   2  a usage error (nothing is run);
 ;;;;   3  every scenario was valid, but a run (or a branch of it) ended ambiguous or
 ;;;;      undecided: the assumptions (and the values, if any) did not decide what comes next.
+;;;;      A run stopped by its --time-limit counts as undecided (its finished states printed).
 ;;;;   5  a self-check failed: under parameter values a claim AMES was about to print (a
 ;;;;      closed form, a state's end, a number beside its formula) disagrees with AMES's
 ;;;;      independent numeric check (see src/check/); the report names the claim. A defect.
 ;;;; When a run has both an error and an undecided scenario, the status is 1; 1 wins over
 ;;;; 5, and 5 over 3.
+;;;;   130, 143  SIGINT, SIGTERM stopped the run (see signals.lisp).
 ;;;;   141  the reader of the standard output went away (bin/ames run x | head).
 
 (in-package #:ames)
@@ -36,7 +38,9 @@
                  [--all-branches] [--verbose] [--jobs N]
        ames explain FILE... [--state N] [--numeric] [--set PARAM=VALUE ...]
        ames check FILE... [--numeric] [--set PARAM=VALUE ...]
-  Simulate every scenario in each FILE and print a report.
+       ames --version | ames help | ames run --help
+  Simulate every scenario in each FILE (- for the standard input; a pipe or a device
+  too) and print a report. On a terminal, a line on the standard error per state done.
   --format text   a report for people, state by state (the default)
   --format sexp   one readable s-expression per scenario (see the scenario language page)
   --format latex  a LaTeX fragment per scenario (formulas through Maxima's tex)
@@ -50,7 +54,8 @@
                   default; numeric values are then printed beside the closed forms, and
                   a fact the assumptions leave open but the values decide is used and
                   reported. Values that break a declared assumption are an error.
-  --time-limit S  the wall time one scenario may take, in seconds (default 300)
+  --time-limit S  the wall time one scenario and its report may take, in seconds
+                  (default 300); a run over it prints the states that finished (exit 3)
   --maxima-timeout S  the time one Maxima request may take, in seconds (default 20)
   --no-check      skip the self-check (under values, every state's closed form, end and
                   printed numbers are checked numerically before printing; the report
@@ -64,7 +69,9 @@
   explain         why each state's contacts and modes hold, where its equations
                   come from, and why it ends when it does (or only state N)
 Exit codes: 0 complete, 1 a scenario error, 2 usage, 3 a run (or a branch) that ended
-ambiguous or undecided, 5 a self-check failed (1 wins over 5, 5 over 3)."
+ambiguous or undecided, or stopped by its time limit, 5 a self-check failed (1 wins
+over 5, 5 over 3); 130 and 143 when SIGINT or SIGTERM stopped the run (the states that
+finished are printed)."
   "The text printed for `ames help` and after a usage error.")
 
 (defun parse-decimal (text)
@@ -122,6 +129,11 @@ limits are NIL when not given. Signals USAGE-ERROR on anything malformed."
         (standalone nil) (no-check nil) (all-branches nil))
     (cond ((null command) (error 'usage-error :detail "no command given"))
           ((member command '("help" "--help" "-h") :test #'string=)
+           (return-from parse-command-line (list :command :help)))
+          ((member command '("version" "--version") :test #'string=)
+           (return-from parse-command-line (list :command :version)))
+          ((intersection (rest arguments) '("--help" "-h") :test #'string=)
+           ;; run --help, explain -h: the usage, whatever else is given
            (return-from parse-command-line (list :command :help)))
           ((not (member command '("run" "explain" "check") :test #'string=))
            (error 'usage-error :datum command :detail "unknown command")))
@@ -191,7 +203,10 @@ a process ended by SIGPIPE).")
 with the status RUN-FILES returns (0 complete, 1 a scenario error, 3 a run ended
 ambiguous or undecided), or 2 on a usage error; with --jobs N, the worst status of the
 child processes (RUN-JOBS). When the standard output is a pipe whose reader went away
-(bin/ames run x | head), stop quietly with status +BROKEN-PIPE-STATUS+."
+(bin/ames run x | head), stop quietly with status +BROKEN-PIPE-STATUS+. SIGINT and
+SIGTERM stop the run with the states that finished printed, and status 130 or 143 (see
+signals.lisp)."
+  (install-stop-handlers)
   (let ((status
           (handler-case
               (multiple-value-bind (jobs arguments) (jobs-option arguments)
@@ -200,6 +215,7 @@ child processes (RUN-JOBS). When the standard output is a pipe whose reader went
                        (*all-branches* (getf options :all-branches)))
                   (case (getf options :command)
                     (:help (write-string *usage*) (terpri) +exit-complete+)
+                    (:version (write-line (version-text)) +exit-complete+)
                     (:explain (explain-files (getf options :files) :state (getf options :state)
                                              :settings (getf options :settings)
                                              :numeric (getf options :numeric)
@@ -211,14 +227,16 @@ child processes (RUN-JOBS). When the standard output is a pipe whose reader went
                               (run-jobs jobs options)
                               (let ((*package* (find-package '#:ames-scenario))
                                     (*latex-standalone* (getf options :standalone)))
-                                (run-files (getf options :files)
+                                (call-with-progress
+                                 (lambda ()
+                                  (run-files (getf options :files)
                                            :format (getf options :format)
                                            :settings (getf options :settings)
                                            :numeric (getf options :numeric)
                                            :svg (getf options :svg)
                                            :limits (command-line-limits options)
                                            :verbose (getf options :verbose)
-                                           :stream *standard-output*)))))))
+                                           :stream *standard-output*)))))))))
             (usage-error (condition)
               (format *error-output* "ames: ~A~%~A~%" condition *usage*)
               +exit-usage+)
@@ -228,7 +246,7 @@ child processes (RUN-JOBS). When the standard output is a pipe whose reader went
                          (finish-output *error-output*))
       (sb-int:broken-pipe ()
         (sb-ext:exit :code +broken-pipe-status+ :abort t)))
-    (uiop:quit status)))
+    (uiop:quit (finish-stopped-process status))))
 
 (defun explain-files (files &key state settings numeric (stream *standard-output*)
                                (limits *limits*))
@@ -242,7 +260,13 @@ RUN-FILES. Returns the exit status: 0, or 1 when a scenario could not be explain
             (explain history :state state :stream stream))
         (ames-error (condition)
           (setf status 1)
-          (format *error-output* "~&ames: ~A~%" condition))))))
+          (print-error-message condition))
+        ;; the output is gone (a closed pipe): nothing more can be reported
+        (stream-error (condition) (error condition))
+        ;; a defect of AMES is reported as RUN-FILES reports it, not as a backtrace
+        (error (condition)
+          (setf status 1)
+          (print-error-message (make-condition 'internal-error :datum condition)))))))
 
 (defun undecided-history-p (history)
   "True when HISTORY, or a branch of one of its forks, ended without deciding what
@@ -284,33 +308,55 @@ error, else +EXIT-CHECK-FAILED+ (5) when a self-check found a wrong claim, else
         (output (make-report-output format stream :svg svg :bridge bridge)))
     (flet ((report-error (condition)
              (setf error-seen t)
-             (format *error-output* "~&ames: ~A~%" condition)
-             (finish-output *error-output*)))
+             (print-error-message condition)))
       (dolist (file files)
-        (multiple-value-bind (scenarios conditions) (read-scenario-file file :on-error :collect)
+        (when *stop-requested* (return))
+        (multiple-value-bind (scenarios conditions) (read-file-within-time file limits)
           (mapc #'report-error conditions)
           (dolist (scenario scenarios)
+            (when *stop-requested* (return))
+            (when numeric (note-symbolic-parameters scenario settings))
             (handler-case
-                (let ((history (run-scenario scenario :bridge bridge :settings settings
-                                                      :numeric numeric :limits limits)))
-                  (when (undecided-history-p history)
+                (let* ((start (get-internal-real-time))
+                       (history (run-scenario scenario :bridge bridge :settings settings
+                                                       :numeric numeric :limits limits))
+                       (stopped (stopped-by-time history)))
+                  (when (or stopped (undecided-history-p history))
                     (setf undecided-seen t))
                   (when (ames.check:self-check-failed-p history)
                     (setf check-failed t)
                     (format *error-output* "~&ames: ~A: the self-check found a wrong claim (a defect of AMES; see the report's SELF-CHECK FAILED lines)~%"
                             (string-downcase (symbol-name (scenario-name scenario)))))
-                  (report-history output history)
+                  (when (and stopped (not *stop-requested*))
+                    (print-error-message
+                     (format nil "~@[~A: ~]the time limit of ~A s was exceeded; ~[no state had finished~;~
+                                  the 1 state that finished is printed~:;the ~:*~D states that ~
+                                  finished are printed~]"
+                             (scenario-name scenario) (budget-exceeded-limit stopped)
+                             (length (history-states history)))))
+                  (call-within-time-left (lambda () (report-history output history))
+                                         limits start (scenario-name scenario)
+                                         :quiet stopped)
                   (finish-output stream))
-              (ames-error (condition) (report-error condition))
+              (ames-error (condition)
+                ;; a run a signal stopped before its first state: MAIN says so, once
+                (unless (typep condition 'run-stopped)
+                  (report-error condition)))
               ;; the output is gone (a closed pipe): nothing more can be reported
               (stream-error (condition) (error condition))
+              ;; the heap is exhausted: say so, and go on (the run's garbage is freed)
+              (storage-condition (condition)
+                (let ((exhausted (make-condition 'memory-exhausted :datum condition)))
+                  (setf (ames-error-context exhausted) (run-error-context scenario exhausted))
+                  (report-error exhausted)))
               ;; a defect of AMES in one scenario does not lose the others
               (error (condition)
                 (let ((internal (make-condition 'internal-error :datum condition)))
                   (setf (ames-error-context internal)
                         (run-error-context scenario internal))
                   (report-error internal)))))))
-      (handler-case (finish-report output)
+      (handler-case (call-within-time-left (lambda () (finish-report output))
+                                           limits (get-internal-real-time) nil)
         (ames-error (condition) (report-error condition))))
     (cond (error-seen +exit-scenario-error+)
           (check-failed +exit-check-failed+)

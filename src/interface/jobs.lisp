@@ -86,6 +86,11 @@ ERRORS, and its exit STATUS once it has finished."
         (setf (job-process job)
               (sb-ext:run-program program (child-arguments (job-file job) options)
                                   :wait nil :search nil :input nil
+                                  :environment (cons (format nil "~A=~D" *job-parent-variable*
+                                                             (sb-unix:unix-getpid))
+                                                     (remove-if (lambda (entry)
+                                                                  (eql 0 (search *job-parent-variable* entry)))
+                                                                (sb-ext:posix-environ)))
                                   :output output :if-output-exists :supersede
                                   :error errors :if-error-exists :supersede))
       (error (condition)
@@ -107,14 +112,38 @@ ERRORS, and its exit STATUS once it has finished."
           (sb-ext:process-close process)
           t))))
 
-(defun copy-file-to-stream (path stream)
-  "Write the contents of the file PATH to STREAM, and delete it."
-  (when (probe-file path)
+(defun stop-jobs (jobs)
+  "Send SIGTERM to the process of each of JOBS still running (each then stops its
+Maxima and prints its finished states), wait up to 10 s for them, then kill those left."
+  (let ((processes (loop for job in jobs
+                         for process = (job-process job)
+                         when (and process (sb-ext:process-alive-p process))
+                           collect process)))
+    (dolist (process processes)
+      (ignore-errors (sb-ext:process-kill process 15)))
+    (let ((deadline (+ (get-internal-real-time) (* 10 internal-time-units-per-second))))
+      (loop while (and (some #'sb-ext:process-alive-p processes)
+                       (< (get-internal-real-time) deadline))
+            do (sleep 0.02)))
+    (dolist (process processes)
+      (when (sb-ext:process-alive-p process)
+        (ignore-errors (sb-ext:process-kill process 9))
+        (ignore-errors (sb-ext:process-wait process))))))
+
+(defun copy-file-to-stream (path stream &key skip)
+  "Write the contents of the file PATH to STREAM, and delete it; with SKIP (a string),
+leave out the lines that begin with it."
+  (when (and path (probe-file path))
     (with-open-file (in path :external-format :utf-8)
-      (let ((buffer (make-string 8192)))
-        (loop for count = (read-sequence buffer in)
-              while (plusp count)
-              do (write-string buffer stream :end count))))
+      (if skip
+          (loop for line = (read-line in nil)
+                while line
+                unless (eql 0 (search skip line))
+                  do (write-line line stream))
+          (let ((buffer (make-string 8192)))
+            (loop for count = (read-sequence buffer in)
+                  while (plusp count)
+                  do (write-string buffer stream :end count)))))
     (delete-file path))
   (finish-output stream))
 
@@ -130,7 +159,12 @@ USAGE-ERROR for the options --jobs cannot split (see CHECK-JOBS-OPTIONS)."
          (running '())
          (worst 0))
     (loop while (or queue running)
-          do (loop while (and pending (< (length running) jobs))
+          do (when (and *stop-requested* (or running pending))
+               ;; a signal: no new worker; the running ones stop and print what finished
+               (setf pending '())
+               (stop-jobs running)
+               (dolist (job queue) (unless (job-process job) (setf (job-status job) 1))))
+             (loop while (and pending (< (length running) jobs))
                    do (let ((job (pop pending)))
                         (start-job job program options)
                         (unless (job-status job) (push job running))))
@@ -140,7 +174,11 @@ USAGE-ERROR for the options --jobs cannot split (see CHECK-JOBS-OPTIONS)."
                               (not (member (first queue) running)))
                    do (let ((job (pop queue)))
                         (copy-file-to-stream (job-output job) stream)
-                        (copy-file-to-stream (job-errors job) error-stream)
+                        (if *stop-requested*
+                            ;; the parent says it once for the whole run
+                            (copy-file-to-stream (job-errors job) error-stream
+                                                 :skip "ames: stopped by ")
+                            (copy-file-to-stream (job-errors job) error-stream))
                         (setf worst (worse-status worst (job-status job)))))
              (when (and running (or queue pending))
                (sleep 0.02)))

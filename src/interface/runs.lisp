@@ -94,7 +94,10 @@ scenario's context. The facts the values decided outside the simulator's own tra
 (geometric checks) are added to the history's notes as :ASSUMED, with :STATE NIL.
 Signals PARAMETER-VALUES-ERROR or UNDECLARED-SYMBOL-ERROR for malformed SETTINGS,
 PARAMETER-VALUE-ERROR for values that break an assumption, INVALID-LIMIT for bad LIMITS,
-BUDGET-EXCEEDED when the run goes over its budget, and whatever SIMULATE signals."
+BUDGET-EXCEEDED when the run goes over its budget before its first state (or over a size
+limit), and whatever SIMULATE signals. A run that goes over its time limit after that
+(or that a signal stops, see *STOP-REQUESTED*) returns the states that finished: its
+outcome is :STOPPED and its notes' :STOPPED-BY is the BUDGET-EXCEEDED."
   (check-parameter-values settings scenario)
   (let ((values (run-parameter-values scenario :settings settings :numeric numeric))
         (out-of-time nil))
@@ -106,12 +109,16 @@ BUDGET-EXCEEDED when the run goes over its budget, and whatever SIMULATE signals
             (handler-bind ((budget-exceeded
                              (lambda (condition)
                                (when (eq (budget-exceeded-quantity condition) :time)
-                                 (setf out-of-time t)))))
+                                 (setf out-of-time t)
+                                 ;; the states that finished are the run's history
+                                 (let ((restart (find-restart 'stop-simulation condition)))
+                                   (when restart (invoke-restart restart condition)))))))
               (call-with-budget
                (lambda ()
                  (ames.maxima:with-parameter-values (values)
                    (let ((history (handler-bind ((ambiguous-transition #'stop-simulation))
-                                    (simulate scenario :bridge bridge :parameter-values values))))
+                                    (simulate scenario :bridge bridge :parameter-values values
+                                                       :limits limits))))
                      (dolist (fact (ames.maxima:facts-from-values))
                        (unless (member fact (getf (history-notes history) :assumed)
                                        :key (lambda (entry) (getf entry :fact)) :test #'equal)

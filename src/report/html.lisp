@@ -214,14 +214,42 @@ its heading and fact, its states and how it ends; the selected branch marked."
 them) on STREAM: per scenario its picture, a timeline of its states and events, and
 each state's formulas typeset by KaTeX (inlined from libjs-katex; without it the TeX
 source shows)."
-  (let ((histories (if (listp histories) histories (list histories))))
+  (let ((histories (if (listp histories) histories (list histories)))
+        (failures '()))
     (multiple-value-bind (script style) (katex-assets)
       (format stream "<!DOCTYPE html>~%<html lang=\"en\"><head><meta charset=\"utf-8\">~%<title>AMES: ~{~A~^, ~}</title>~%"
               (mapcar (lambda (h) (html-escape (name-text (scenario-name (history-scenario h))))) histories))
       (format stream "<style>~A~%~@[~A~]</style>~%" *page-style* style)
       (when script (format stream "<script>~A</script>~%" script))
       (format stream "</head><body>~%<h1>AMES report</h1>~%")
-      (dolist (history histories) (scenario-html history stream bridge))
+      (setf failures (remove nil (mapcar (lambda (history)
+                                           (scenario-html-or-failure history stream bridge))
+                                         histories)))
       (when script
         (format stream "<script>document.querySelectorAll('.math').forEach(function(e){katex.render(e.getAttribute('data-tex'),e,{throwOnError:false,displayMode:e.classList.contains('display')});});document.body.setAttribute('data-typeset','done');</script>~%"))
-      (format stream "</body></html>~%"))))
+      (format stream "</body></html>~%"))
+    (when failures
+      (error 'report-error :datum (mapcar #'car failures)
+                           :detail (format nil "The HTML section of ~{~A~^, ~} could not be written (~{~A~^; ~})"
+                                           (mapcar (lambda (f) (name-text (car f))) failures)
+                                           (mapcar #'cdr failures))))))
+
+(defun scenario-html-or-failure (history stream bridge)
+  "Write HISTORY's section of the page (SCENARIO-HTML). When presenting it fails (a
+defect of AMES), write a section saying so instead, so that the page keeps every other
+scenario, and return (SCENARIO-NAME . MESSAGE); else NIL."
+  (let* ((failure nil)
+         (section (handler-case (with-output-to-string (out) (scenario-html history out bridge))
+                    ;; out of time: the caller makes the page again without Maxima
+                    (budget-exceeded (condition) (error condition))
+                    (error (condition)
+                      (setf failure (handler-case (princ-to-string condition)
+                                      (error () (string (type-of condition)))))
+                      "")))
+         (name (scenario-name (history-scenario history))))
+    (if failure
+        (progn
+          (format stream "<section class=\"scenario\"><h2>Scenario ~A</h2>~%<p>This scenario's report could not be written: ~A</p></section>~%"
+                  (html-escape (name-text name)) (html-escape failure))
+          (cons name failure))
+        (progn (write-string section stream) nil))))

@@ -62,7 +62,10 @@ header). Signals REPORT-ERROR for what has no JSON form (a circular list, an obj
 (defun history-json (history)
   "HISTORY-SEXP of HISTORY as one line of JSON text (see the file header)."
   (with-output-to-string (out)
-    (yason:encode (sexp-to-json (history-sexp history)) out)))
+    (write-string (json-control-escapes
+                   (with-output-to-string (json)
+                     (yason:encode (sexp-to-json (history-sexp history)) json)))
+                  out)))
 
 (defun print-history-json (history stream)
   "Print HISTORY as one line of JSON on STREAM (see HISTORY-JSON)."

@@ -14,9 +14,12 @@
   "Names written as Greek letters.")
 
 (defun latex-escape (text)
-  "TEXT with LaTeX's special characters escaped, for running text."
+  "TEXT with LaTeX's special characters escaped, for running text and comments: a line
+break is a space (a blank line would end a paragraph, a line break a comment), other
+control characters are written visibly (VISIBLE-TEXT), and ^ and \\ are escaped (so no
+^^M can end a line)."
   (with-output-to-string (out)
-    (loop for c across text
+    (loop for c across (visible-text (substitute #\Space #\Newline text))
           do (case c
                ((#\# #\$ #\% #\& #\_ #\{ #\}) (format out "\\~C" c))
                ((#\< #\>) (format out "$~C$" c))
@@ -88,8 +91,11 @@ written by NUMBER-TEXT: 0.7483 + 1.692\\,\\tau - 4.905\\,\\tau^{2}."
 Numbers, and numeric forms such as 0.7483 + 1.692 tau, are written by NUMBER-TEXT."
   (cond ((realp expression) (number-latex expression))
         ((contains-float-p expression) (numeric-form-latex expression))
-        (t (ames.maxima:presentation-latex (presenter-bridge presenter) expression
-                                           :name-function #'latex-name))))
+        (t (handler-case (ames.maxima:presentation-latex (presenter-bridge presenter) expression
+                                                         :name-function #'latex-name)
+             ;; no time left (or Maxima failed): the form as solved, in typewriter type
+             (ames.maxima:maxima-condition ()
+               (format nil "\\mbox{\\texttt{~A}}" (latex-escape (text-form expression))))))))
 
 (defun phrase-latex (presenter phrase)
   "PHRASE as LaTeX running text, its formulas as inline math."
@@ -209,7 +215,7 @@ fork within a branch is indented once more), and how it ends."
 (defun print-view-latex (presenter view stream)
   "Write a HISTORY-VIEW as a LaTeX fragment on STREAM."
   (format stream "% AMES report: scenario ~A (a LaTeX fragment; needs no package)~%"
-          (name-text (getf view :name)))
+          (latex-escape (name-text (getf view :name))))
   (format stream "\\subsection*{Scenario ~A}~%" (latex-escape (name-text (getf view :name))))
   (when (getf view :description)
     (format stream "~A~%~%" (latex-escape (getf view :description))))

@@ -9,6 +9,8 @@ For people: the presentation step (each quantity written as a textbook would, th
 Maxima), then the text report, a LaTeX fragment, an SVG picture and a self-contained
 HTML page.")
   (:export
+   ;; no control character of a user's text reaches an output raw (escaping.lisp)
+   #:visible-text
    ;; s-expressions and JSON (sexp.lisp, json.lisp)
    #:history-sexp #:state-sexp #:state-forces-of #:print-history-sexp
    #:history-json #:print-history-json #:json-to-sexp #:sexp-to-json

@@ -163,7 +163,7 @@ path (a zero-length one where its trajectory cannot be drawn). No label overlaps
 (see labels.lisp)."
   (multiple-value-bind (bindings chosen) (illustration-values history)
     (let* ((scenario (history-scenario history))
-           (bindings (mapcar (lambda (e) (cons (car e) (float (cdr e) 1d0))) bindings))
+           (bindings (report-floats bindings))
            (path-and-drawn (multiple-value-list (picture-path history bindings)))
            (path (first path-and-drawn))
            (bodies (scenario-bodies scenario))

@@ -52,9 +52,19 @@ already has that name."
                                     (cons +arc-speed+ (display-symbol "S'" scenario))))))
 
 (defun call-with-presenter (history bridge function)
-  "Call FUNCTION with a PRESENTER for HISTORY, within the scenario's assumptions in BRIDGE."
-  (ames.maxima:with-assumptions (bridge (scenario-assumption-relations (history-scenario history)))
-    (funcall function (make-presenter history bridge))))
+  "Call FUNCTION with a PRESENTER for HISTORY, within the scenario's assumptions in BRIDGE.
+When the run's time is up (its budget's, or a signal's: see AMES.BASE:BUDGET-TIME-LEFT)
+Maxima is not asked: FUNCTION is called outside the assumptions, and the presenter's
+requests fall back to the forms as solved."
+  (flet ((without-maxima () (funcall function (make-presenter history bridge))))
+    (let ((left (budget-time-left)))
+      (if (and left (<= left 0))
+          (without-maxima)
+          (handler-case
+              (ames.maxima:with-assumptions (bridge (scenario-assumption-relations
+                                                     (history-scenario history)))
+                (funcall function (make-presenter history bridge)))
+            (ames.maxima:maxima-budget-exceeded () (without-maxima)))))))
 
 (defun arc-length-symbol (presenter)
   "The symbol that names the arc length in PRESENTER's reports."
@@ -163,8 +173,9 @@ assumptions (checked numerically), with tau and s in (0, 2): the given values fi
                               point)))
                 (let ((given (append (presenter-values presenter) (scenario-parameter-values scenario))))
                   (when (every (lambda (n) (assoc n given)) names)
-                    (let ((point (mapcar (lambda (n) (cons n (coerce (cdr (assoc n given)) 'double-float))) names)))
-                      (when (admissible-p point) (push (extended point) points)))))
+                    (let ((point (report-floats (mapcar (lambda (n) (assoc n given)) names))))
+                      (when (and (= (length point) (length names)) (admissible-p point))
+                        (push (extended point) points)))))
                 (loop repeat 200 while (< (length points) 4)
                       do (let ((point (mapcar (lambda (n) (cons n (+ 0.05d0 (random 1.5d0 state)))) names)))
                            (when (admissible-p point) (push (extended point) points))))
@@ -253,7 +264,7 @@ in VARIABLE or the best candidate."
     (and values (valid-expression-p expression :kind :arithmetic)
          (let ((value (expression-value expression values)))
            (cond ((integerp value) value)
-                 ((realp value) (float value 1d0)))))))
+                 (t (report-float value)))))))
 
 (defun numeric-polynomial (presenter expression &optional (variable 'tau))
   "EXPRESSION under the presenter's values as an arranged polynomial in VARIABLE with
@@ -267,9 +278,9 @@ numeric coefficients (0.9152 + 2.1 tau^2), a number when it is free of VARIABLE,
                                 (ames.maxima:maxima-condition () nil))))
             (when coefficients
               (let ((numbers (mapcar (lambda (c) (numeric presenter c)) coefficients)))
-                (when (every #'realp numbers)
+                (when (every #'report-float numbers)
                   (arrange (cons '+ (loop for n in numbers for degree from 0
                                           unless (zerop n)
-                                            collect (list '* (float n 1d0)
+                                            collect (list '* (report-float n)
                                                           (list 'expt variable degree))))
                            (presenter-arrangement presenter variable))))))))))

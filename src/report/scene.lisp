@@ -49,7 +49,7 @@ valued so far."
   "The double-float value of EXPRESSION under BINDINGS, or NIL."
   (let ((value (and (valid-expression-p expression :kind :arithmetic)
                     (expression-value expression bindings))))
-    (and (realp value) (float value 1d0))))
+    (report-float value)))
 
 (defun point-at (pair bindings)
   "The point (X Y) of the expressions PAIR under BINDINGS, or NIL."
@@ -168,7 +168,7 @@ or NIL (:FOREVER, undecided, no closed form)."
     (or (and (not (keywordp duration)) (not (and (consp duration) (keywordp (first duration))))
              (number-at duration bindings))
         (let ((note (getf (getf (state-notes state) :numeric) :duration)))
-          (and (realp note) (float note 1d0))))))
+          (report-float note)))))
 
 (defun trajectory (state body bindings horizon)
   "The points of BODY's reference point over STATE under BINDINGS: by tau up to the

@@ -15,9 +15,10 @@
 (defparameter *picture-width* 720 "The width of a picture in pixels.")
 
 (defun xml-escape (text)
-  "TEXT with & < > \" escaped for XML."
+  "TEXT with & < > \" escaped for XML, and its control characters but tab and line
+breaks written visibly (VISIBLE-TEXT): XML 1.0 allows no other."
   (with-output-to-string (out)
-    (loop for c across text
+    (loop for c across (visible-text text :keep '(#\Tab #\Newline #\Return))
           do (case c (#\& (write-string "&amp;" out)) (#\< (write-string "&lt;" out))
                    (#\> (write-string "&gt;" out)) (#\" (write-string "&quot;" out))
                    (t (write-char c out))))))

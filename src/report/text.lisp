@@ -168,6 +168,9 @@ then state by state the contacts named by their features, the forces, each movin
 body's acceleration and trajectory written as a textbook would (see PRESENT), the end
 event, the duration and what holds at the end; numbers beside the formulas under
 parameter values. Asks BRIDGE for the presentation forms."
-  (print-view-text (call-with-presenter history bridge
-                                        (lambda (presenter) (history-view presenter history)))
-                   stream))
+  (let ((view (call-with-presenter history bridge
+                                   (lambda (presenter) (history-view presenter history)))))
+    ;; names and descriptions are the user's: no control character reaches a terminal
+    (write-string (visible-text (with-output-to-string (out) (print-view-text view out))
+                                :keep '(#\Newline #\Tab))
+                  stream)))

@@ -382,7 +382,8 @@ tension."
           :description (scenario-description scenario)
           :parameters (parameter-phrases presenter)
           :values (mapcar (lambda (entry)
-                            (cons (car entry) (if (integerp (cdr entry)) (cdr entry) (float (cdr entry) 1d0))))
+                            (cons (car entry) (if (integerp (cdr entry)) (cdr entry)
+                                                 (or (report-float (cdr entry)) (cdr entry)))))
                           (history-parameter-values history))
           :fixed (loop for body in (scenario-fixed-bodies scenario)
                        for position = (scenario-body-position body)
@@ -412,7 +413,9 @@ tension."
                                             (cons ", at t = " (time-phrase presenter time)))))))
           :self-check (self-check-lines history)
           :stopped (and stopped (not (typep stopped 'ambiguous-transition))
-                        (list (remove #\Newline (princ-to-string stopped)))))))
+                        ;; its first line: what stopped the run (not the Lisp form at fault)
+                        (let ((text (princ-to-string stopped)))
+                          (list (subseq text 0 (position #\Newline text))))))))
 
 (defun self-check-lines (history)
   "The lines a report prints about HISTORY's self-check (its notes' :SELF-CHECK, see

@@ -205,10 +205,14 @@ order."
              (reject validation 'scenario-syntax-error clause "the clause is not a proper list"))
             ((not (clause-word clause))
              (reject validation 'unknown-clause-error clause
-                     "~A is not a clause of the scenario language; the clauses are ~
+                     "~A is not a clause of the scenario language~A; the clauses are ~
                       parameters, gravity, body, force, simulate, query, restitution, ~
                       friction, spring, pulley, rope and gravitation"
-                     (show (car clause))))
+                     (show (car clause))
+                     (if (symbolp (car clause))
+                         (did-you-mean (symbol-name (car clause))
+                                       (mapcar #'symbol-name +clause-words+))
+                         "")))
             (t (push clause (cdr (assoc (clause-word clause) sorted))))))
     (dolist (entry sorted sorted)
       (setf (cdr entry) (nreverse (cdr entry))))))
@@ -293,8 +297,7 @@ CHECK-SCENARIO-GEOMETRY, which the caller runs when it has those layers."
                                :bodies bodies :forces forces :frictions frictions
                                :states states :until until :branch branch
                                :all-branches all-branches
-                               :queries (mapcar (lambda (clause) (checked-query validation clause))
-                                                (clauses 'ames-scenario:query))
+                               :queries (checked-queries validation (clauses 'ames-scenario:query))
                                :restitutions (checked-restitutions
                                               validation (clauses 'ames-scenario:restitution))
                                :extensions (checked-extensions validation sorted bodies)

@@ -157,3 +157,22 @@ QUANTITY VALUE), an event pattern (:TIME PATTERN)."
            (list :reaches-time (checked-quantity validation (second x))
                  (checked-quantity validation (third x))))
           (t (list :time (checked-pattern validation x))))))
+
+(defun checked-queries (validation clauses)
+  "The canonical queries of the (query NAME QUESTION) CLAUSES, in order. A query's name
+is its answer's name in every report: two queries of one name, or a query named like a
+parameter, body, force, spring, pulley or rope, are a DUPLICATE-NAME-ERROR naming it."
+  (let ((queries '()))
+    (dolist (clause clauses (nreverse queries))
+      (let* ((query (checked-query validation clause))
+             (name (first query))
+             (declaration (declared validation name)))
+        (when (find (symbol-name name) queries
+                    :key (lambda (other) (symbol-name (first other))) :test #'string=)
+          (reject validation 'duplicate-name-error name
+                  "two queries are named ~A" (show name)))
+        (when declaration
+          (reject validation 'duplicate-name-error name
+                  "the query ~A is named like the ~(~A~) ~A; give it a name of its own"
+                  (show name) (car declaration) (show (cdr declaration))))
+        (push query queries)))))

@@ -29,8 +29,6 @@
 
 (in-package #:ames.scenario)
 
-(defconstant +largest-file+ (* 4 1024 1024)
-  "The largest scenario text accepted, in characters.")
 
 (define-condition forbidden-syntax (reader-error)
   ((detail :initarg :detail :reader forbidden-syntax-detail)
@@ -316,34 +314,44 @@ skipped at once and their conditions returned as CONDITIONS. Messages name the l
   (read-scenarios-from-source (make-source-text string :file file) on-error))
 
 (defun file-source (pathname)
-  "The SOURCE-TEXT of the file PATHNAME: its bytes decoded as UTF-8, each byte that is
-not UTF-8 noted (see DECODE-UTF-8). Signals SCENARIO-FILE-ERROR when the file cannot be
-opened or holds more bytes than 4 * +LARGEST-FILE+."
-  (let ((name (enough-namestring pathname)))
+  "The SOURCE-TEXT of the file PATHNAME (\"-\": the standard input; a pipe or a device
+too, see READ-INPUT-OCTETS): its bytes decoded as UTF-8, each byte that is not UTF-8
+noted (see DECODE-UTF-8). Signals SCENARIO-FILE-ERROR when the file cannot be opened or
+read, holds more bytes than 4 * +LARGEST-FILE+, holds nothing, or gives nothing within
+the time left in the running budget."
+  (let ((name (if (standard-input-name-p pathname) "standard input" (enough-namestring pathname))))
     (flet ((fail (detail)
              (error 'scenario-file-error :file name :datum name :detail detail
                                          :source name)))
-      (handler-case
-          (with-open-file (stream pathname :element-type '(unsigned-byte 8))
-            (when (> (file-length stream) (* 4 +largest-file+))
-              (fail (format nil "the file is longer than ~D characters" +largest-file+)))
-            (let* ((octets (make-array (file-length stream) :element-type '(unsigned-byte 8)))
-                   (end (read-sequence octets stream)))
-              (multiple-value-bind (text bad-bytes) (decode-utf-8 octets :end end)
-                (make-source-text text :file name :bad-bytes bad-bytes))))
-        (file-error (condition)
-          (fail (format nil "cannot open the file: ~A" (reader-error-detail condition))))
-        (stream-error (condition)
-          (fail (format nil "cannot read the file: ~A" (reader-error-detail condition))))))))
+      (let ((octets (handler-case (read-input-octets pathname)
+                      (input-failure (condition) (fail (input-failure-detail condition))))))
+        (when (every (lambda (octet) (member octet '(9 10 13 32))) octets)
+          (fail (if (zerop (length octets)) "the input is empty" "the input holds only blanks")))
+        (multiple-value-bind (text bad-bytes) (decode-utf-8 octets)
+          (make-source-text text :file name :bad-bytes bad-bytes))))))
 
 (defun read-scenario-file (pathname &key (on-error :signal))
   "The SCENARIOs of the scenario file PATHNAME, read as data (never loaded) and
 validated, as READ-SCENARIOS-FROM-STRING does. Returns (values SCENARIOS CONDITIONS).
 A byte that is not UTF-8 spoils only the scenario that holds it (outside a comment),
-with a SCENARIO-FILE-ERROR. A file that cannot be read signals SCENARIO-FILE-ERROR
+with a SCENARIO-FILE-ERROR. A file that cannot be read, or holds no scenario (empty,
+blank, only comments), signals SCENARIO-FILE-ERROR
 (with SKIP-SCENARIO active; with ON-ERROR :COLLECT it is returned among CONDITIONS)."
   (multiple-value-bind (source condition)
       (call-with-skip-restart on-error (lambda () (file-source pathname)))
     (if condition
         (values '() (list condition))
-        (read-scenarios-from-source source on-error))))
+        (multiple-value-bind (scenarios conditions) (read-scenarios-from-source source on-error)
+          (if (or scenarios conditions)
+              (values scenarios conditions)
+              ;; only comments: a file of no scenario is a mistake, as an empty one is
+              (multiple-value-bind (nothing condition)
+                  (call-with-skip-restart
+                   on-error
+                   (lambda ()
+                     (error 'scenario-file-error
+                            :file (source-text-file source) :datum (source-text-file source)
+                            :source (source-text-file source)
+                            :detail "the file holds no scenario, only comments")))
+                (declare (ignore nothing))
+                (values '() (list condition))))))))

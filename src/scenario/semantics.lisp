@@ -45,13 +45,31 @@ NIL."
                    (eql 0 (search (format nil "bodies ~A and " name) location)))))
            (scenario-bodies scenario)))
 
+(defun location-clause (scenario location)
+  "The clause of SCENARIO's form that LOCATION names by its words (\"spring S\",
+\"friction A B\", \"clause GRAVITATION\": the clause's word, then its first names), or NIL."
+  (let* ((words (cl-ppcre:split "\\s+" (string-upcase location)))
+         (words (if (equal (first words) "CLAUSE") (rest words) words))
+         (form (scenario-form scenario)))
+    (and words (alexandria:proper-list-p form)
+         (find-if (lambda (clause)
+                    (and (alexandria:proper-list-p clause)
+                         (>= (length clause) (length words))
+                         (every (lambda (word x) (and (symbolp x) (string= word (symbol-name x))))
+                                words clause)))
+                  form))))
+
 (defun location-source (scenario location)
   "\"FILE, line N\" for LOCATION in SCENARIO: the clause of the body that LOCATION
-names first, else the scenario's SOURCE."
-  (let ((body (location-body scenario location)))
+names first, else the clause LOCATION names (LOCATION-CLAUSE), else the scenario's
+SOURCE."
+  (let ((body (location-body scenario location))
+        (positions (scenario-positions scenario)))
     (if body
         (scenario-body-source scenario (scenario-body-name body))
-        (scenario-source scenario))))
+        (let* ((clause (and positions (location-clause scenario location)))
+               (line (and clause (form-line positions clause))))
+          (if line (source-description positions line) (scenario-source scenario))))))
 
 (defun location-context (scenario location)
   "The ERROR-CONTEXT of LOCATION (a string such as \"body X\") in SCENARIO: its file,
@@ -100,10 +118,17 @@ vertices run counter-clockwise."
                         append (arc-facts piece)))
       (:polygon (list (list `(> ,(polygon-signed-area shape) 0)
                             "the polygon's vertices run counter-clockwise"
-                            'scenario-shape-error))))))
+                            'scenario-shape-error
+                            :datum shape
+                            :if-false (format nil "they run clockwise; list them counter-clockwise: ~A"
+                                              (short-form-string (counter-clockwise-polygon shape)
+                                                                 (form-package shape)))))))))
 
 (defun scenario-facts (scenario)
-  "Every fact SCENARIO needs, as a list of (LOCATION RELATION WHAT CLASS)."
+  "Every fact SCENARIO needs, as a list of (LOCATION RELATION WHAT CLASS . OPTIONS), the
+OPTIONS a plist: :LENIENT true for a fact checked only where the assumptions decide it,
+:DATUM the form at fault (else RELATION), :IF-FALSE what the message adds when it is
+false (the vertices in the right order, say)."
   (append
    (loop for body in (scenario-bodies scenario)
          for location = (format nil "body ~A" (symbol-name (scenario-body-name body)))
@@ -115,7 +140,8 @@ vertices run counter-clockwise."
                          (shape-facts (scenario-body-shape body)))))
    (when (scenario-until scenario)
      (list (list "clause SIMULATE" `(> ,(scenario-until scenario) 0)
-                 "the :until time is positive" 'scenario-expression-error)))))
+                 "the :until time is positive" 'scenario-expression-error)))
+   (coefficient-facts scenario)))
 
 (defun decide-fact (bridge relation)
   "The truth of RELATION under the bridge's current assumptions; when Maxima's first
@@ -164,18 +190,24 @@ finds the assumptions inconsistent (the bridge's INCONSISTENT-ASSUMPTIONS is its
 (defun check-facts (scenario bridge)
   "Decide every fact SCENARIO needs (see SCENARIO-FACTS) under the assumptions in
 force; signal for the first that is false or undecided."
-  (loop for (location relation what class) in (scenario-facts scenario)
-        do (ecase (decide-fact bridge relation)
+  (loop for (location relation what class . options) in (scenario-facts scenario)
+        for lenient = (getf options :lenient)
+        do (ecase (if (and lenient (not (expression-variables relation)))
+                      ;; a number: decided exactly, never asked of Maxima's sign rules
+                      (or (ames.maxima:value-truth relation '((nil . 0))) :unknown)
+                      (decide-fact bridge relation))
              (:true)
-             (:false (semantic-reject scenario class location relation
-                                      "it is false that ~A" what))
+             (:false (semantic-reject scenario class location (or (getf options :datum) relation)
+                                      "it is false that ~A~@[; ~A~]" what
+                                      (getf options :if-false)))
              (:unknown
-              (error 'missing-assumption-error
+              (unless lenient
+               (error 'missing-assumption-error
                      :scenario (scenario-name scenario) :location location
                      :source (location-source scenario location) :datum relation :fact relation
                      :detail (scenario-detail scenario "the assumptions do not show that ~A; ~
                                                         declare what makes ~S hold"
-                                              what relation))))))
+                                              what relation)))))))
 
 (defun check-scenario-assumptions (scenario bridge)
   "Check, through the Maxima BRIDGE and under SCENARIO's parameter assumptions, what

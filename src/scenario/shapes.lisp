@@ -64,7 +64,9 @@ itself, counter-clockwise when the vertices are numbers."
                    (incf area (- (* ax by) (* bx ay))))))
       (case (compare-values area exact 0 t)
         (:less (shape-reject validation shape
-                             "the polygon's vertices run clockwise; list them counter-clockwise"))
+                             "the polygon's vertices run clockwise; list them counter-clockwise: ~A"
+                             (show (counter-clockwise-polygon
+                                    (cons (first shape) vertices)))))
         (:equal (shape-reject validation shape "the polygon has no area"))))
     (cons 'ames-scenario:polygon vertices)))
 

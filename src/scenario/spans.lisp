@@ -157,12 +157,26 @@ that were not UTF-8. Signals nothing."
                ;; form is cut. Iterative, so that no nesting depth can exhaust the stack.
                (let ((depth 0) (opens '()) (i start)
                      (limit (or (first-at-or-after resyncs (1+ start)) n)))
-                 (flet ((cut (position what)
-                          (note position
-                                (if (< limit n)
-                                    (format nil "~A is not closed before the (scenario of line ~D, ~
-                                                 where reading goes on" what (line-of limit))
-                                    (format nil "~A is not closed" what)))
+                 (flet ((cut (position what &optional (end limit))
+                          ;; where it should have ended: the last line with text before END
+                          (let ((last (line-of (or (position-if-not #'blank-char-p text
+                                                                    :end end :from-end t)
+                                                   position))))
+                            (note position
+                                  (cond
+                                    ((< end limit)
+                                     (format nil "~A is not closed; it should have been closed by ~
+                                                  the end of line ~D (the lines after it, indented ~
+                                                  as it is, fall inside it)" what last))
+                                    ((< limit n)
+                                      (format nil "~A is not closed before the (scenario of line ~D, ~
+                                                   where reading goes on; it should have been ~
+                                                   closed by the end of line ~D"
+                                              what (line-of limit) last))
+                                    (t
+                                      (format nil "~A is not closed; it should have been closed by ~
+                                                   the end of line ~D, the last of the text"
+                                              what last)))))
                           (return-from scan-form limit)))
                    (loop
                      (setf i (skip-blank i))
@@ -171,9 +185,13 @@ that were not UTF-8. Signals nothing."
                        (setf limit (or (first-at-or-after resyncs i) n)))
                      ;; past the start and not done: inside a list, or after a prefix
                      (when (and (> i start) (>= i limit))
-                       (if opens
-                           (cut (first opens) "this (")
-                           (cut start "the form that starts here")))
+                       (let ((suspect (and opens (unclosed-form-position text start limit))))
+                         (cond (suspect
+                                ;; the indentation shows which clause lacks its )
+                                (cut suspect "this (" (or (position #\Newline text :start suspect)
+                                                          limit)))
+                               (opens (cut (first opens) "this ("))
+                               (t (cut start "the form that starts here")))))
                      (let ((c (at i)))
                        (flet ((done-if-top (j)
                                 (setf i j)

@@ -172,8 +172,11 @@ Signals CLASS (or DUPLICATE-CLAUSE-ERROR for a repeated key)."
                           (show key) what allowed))
                  ((not known)
                   (reject validation class key
-                          "~S is not a keyword of ~A; its keywords are ~{~S~^ ~}"
-                          key what allowed))
+                          "~S is not a keyword of ~A~A; its keywords are ~{~S~^ ~}"
+                          key what (did-you-mean (symbol-name key)
+                                                 (mapcar (lambda (k) (format nil ":~(~A~)" k))
+                                                         allowed))
+                          allowed))
                  ((member known seen)
                   (reject validation 'duplicate-clause-error key
                           "~S is given twice in ~A" key what)))

@@ -81,11 +81,13 @@ they come too close to for the check to tell."
   "The parameter values of a run of SCENARIO: its (:value N) defaults when NUMERIC is
 true, overridden by SETTINGS (an alist (NAME . NUMBER), names matched by name), as an
 alist (PARAMETER-SYMBOL . NUMBER) in declaration order, checked against every
-assumption (see CHECK-VALUES-AGAINST-ASSUMPTIONS). Signals PARAMETER-VALUE-ERROR."
+assumption (see CHECK-VALUES-AGAINST-ASSUMPTIONS) and every physical range of a
+coefficient (CHECK-COEFFICIENT-VALUES). Signals PARAMETER-VALUE-ERROR."
   (let* ((given (resolved-settings scenario settings))
          (defaults (and numeric (scenario-parameter-values scenario)))
          (values (loop for parameter in (scenario-parameters scenario)
                        for name = (scenario-parameter-name parameter)
                        for entry = (or (assoc name given) (assoc name defaults))
                        when entry collect entry)))
-    (check-values-against-assumptions scenario values)))
+    (check-values-against-assumptions scenario values)
+    (check-coefficient-values scenario values)))

@@ -8,7 +8,7 @@ the engine, classifies and integrates it, proves which termination condition com
 and applies the transition. It knows no force, event or mode by name: those are the
 knowledge base's (package AMES.KB).")
   (:export
-   #:simulate #:*bridge* #:current-bridge #:stop-simulation #:*all-branches*
+   #:simulate #:*bridge* #:current-bridge #:stop-simulation #:*all-branches* #:*state-hook*
    #:simulation-error #:ambiguous-transition #:ambiguous-transition-candidates
    #:ambiguous-transition-missing-fact #:ambiguous-transition-state
    #:unsolvable-model #:unsupported-situation

@@ -15,6 +15,10 @@
   "The current Maxima bridge, made on first use."
   (or *bridge* (setf *bridge* (ames.maxima:make-bridge))))
 
+(defvar *state-hook* nil
+  "NIL, or a function of a SIMULATION-HISTORY and the QUALITATIVE-STATE just appended to
+it, called as each state's analysis is done (the command line's progress report).")
+
 (defparameter *default-state-limit* 12
   "How many states a scenario runs when its (simulate ...) clause sets no :states.")
 
@@ -151,6 +155,7 @@ noted in the history) for the rest of the run."
                        (ames.maxima:with-assumptions ((run-bridge run) (list fact))
                          (run-states run history index limit check-incremental))))))
              (setf (history-states history) (append (history-states history) (list state)))
+             (when *state-hook* (funcall *state-hook* history state))
              (cond ((null fired)
                     (setf (history-outcome history) :complete)
                     (return))
@@ -265,9 +270,11 @@ parameter's declaration to them."
           (setf (getf (history-notes history) :decided-by-values) (reverse (run-assumed run))))
         (setf (getf (history-notes history) :model-sizes) (run-statistics run))
         (setf (history-rederived history) (reverse (run-rederived run))))
-      (add-numeric-values history bridge)
-      (when (and (scenario-queries scenario) (null *branching*))
-        (setf (history-answers history) (answer-queries history bridge)))
+      ;; a run stopped by its time (or a signal) has no time left to ask Maxima more
+      (unless (typep (getf (history-notes history) :stopped-by) 'budget-exceeded)
+        (add-numeric-values history bridge)
+        (when (and (scenario-queries scenario) (null *branching*))
+          (setf (history-answers history) (answer-queries history bridge))))
       history)))
 
 ;;; Numbers beside the formulas

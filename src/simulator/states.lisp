@@ -121,7 +121,11 @@ u^2)) and a velocity that vanishes there simplifies to 0."
   "BODY's position (WHAT :POS) or velocity (:VEL) at the end of a numeric GROUP's state.
 A body moving along a curved contact is put on it exactly: its obstacle's end value plus
 the contact's point (or velocity) at the end arc length and speed, so that the next
-state finds it on the contact's locus."
+state finds it on the contact's locus. A state that ends at once (an impact at its
+start, before any integration: no end state) ends where it started."
+  (unless (group-end-state group)
+    (return-from numeric-final-value
+      (if (eq what :pos) (body-position run body) (body-velocity run body))))
   (let* ((end (group-end-state group))
          (contact (find-if (lambda (k) (eq body (first (contact-bodies run k))))
                            (loop for term in (group-terms group)
