@@ -100,6 +100,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "ropes")
                  (:file "gravitation")
                  (:file "turning")
+                 (:file "radial-turning")
                  (:file "energy")))
    (:module "scenario" :pathname "src/scenario/" :serial t
     :depends-on ("base" "maxima-bridge" "geometry")
