@@ -244,6 +244,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "reliability-fuzz")
                (:file "scale")
                (:file "self-check")
+               (:file "line-turning")
                (:file "runner")
                (:file "parallel-runner"))
   :perform (test-op (o c)
