@@ -137,6 +137,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "check-model")
                  (:file "path")
                  (:file "turns")
+                 (:file "oscillation")
                  (:file "numeric")
                  (:file "earliest")
                  (:file "states")
