@@ -154,3 +154,71 @@ the turn, fails naming the turn."
         (let ((verdict (state-check state history)))
           (is (eq :failed (getf verdict :status)) "~S" verdict))
         (setf (ames::state-duration state) duration)))))
+
+;;; Springs: one oscillation, periodic forever
+
+(defparameter *mass-on-a-spring*
+  "(scenario mass-on-a-spring
+     \"A block on a frictionless floor, tied by a spring to a point of the floor, pulled out and released.\"
+     (parameters (m :positive (:value 2)) (k :positive (:value 8)) (g :positive (:value 10))
+                 (l0 :positive (:value 1)) (a :positive (:value 1/2)))
+     (gravity g)
+     (body floor :fixed t :shape (half-plane (1 0) (0 0)))
+     (body block :mass m :position ((+ l0 a) 0) :velocity (0 0) :shape point)
+     (spring coupling :from (floor (0 0)) :to (block (0 0)) :stiffness k :rest-length l0)
+     (simulate :states 2))"
+  "Released at stretch a: x = l0 + a cos(sqrt(k/m) tau), between l0 - a and l0 + a.")
+
+(defparameter *two-masses-without-drift*
+  "(scenario two-masses-without-drift
+     \"Two particles joined by a spring, pushed apart with zero total momentum.\"
+     (parameters (m1 :positive (:value 1)) (m2 :positive (:value 2)) (k :positive (:value 3))
+                 (g :positive (:value 10)) (w :positive (:value 1)) (l0 :positive (:value 1)))
+     (gravity g)
+     (body floor :fixed t :shape (half-plane (1 0) (0 0)))
+     (body first :mass m1 :position (0 0) :velocity ((- (* m2 w)) 0) :shape point)
+     (body second :mass m2 :position (l0 0) :velocity ((* m1 w) 0) :shape point)
+     (spring coupling :from (first (0 0)) :to (second (0 0)) :stiffness k :rest-length l0)
+     (simulate :states 2))"
+  "The centre of mass stays put: the stretch oscillates with the reduced mass.")
+
+(defun periodic-note (history)
+  "The :PERIODIC note of HISTORY's first state, checking that it lasts forever."
+  (let ((state (first (ames::history-states history))))
+    (is (eq :complete (ames::history-outcome history)))
+    (is (eq :forever (ames::state-duration state)))
+    (getf (ames::state-notes state) :periodic)))
+
+(test a-mass-on-a-spring-oscillates-with-period-two-pi-root-m-over-k
+  "The block swings forever between x = l0 - a and l0 + a with the period 2 pi sqrt(m/k)."
+  (with-fixture simulator-bridge ()
+    (multiple-value-bind (history scenario) (history-of-text *mass-on-a-spring* bridge)
+      (let ((periodic (periodic-note history)))
+        (is (not (null periodic)))
+        (when periodic
+          (flet ((x (form) (in-scenario-terms scenario form)))
+            (call-with-scenario-facts
+             bridge scenario
+             (lambda ()
+               (is-same bridge "period" (getf periodic :period) (x '(* 2 pi (sqrt (/ m k)))))
+               (is-same-vector bridge "turning points" (getf periodic :between)
+                               (x '((- l0 a) (+ l0 a))))))))))))
+
+(test two-free-masses-on-a-spring-oscillate-with-the-reduced-mass
+  "Two masses pushed apart with zero total momentum oscillate with the period
+2 pi sqrt(mu/k), mu = m1 m2/(m1 + m2); two-masses-on-a-spring.lisp, whose centre of mass
+drifts, is no periodic state."
+  (with-fixture simulator-bridge ()
+    (multiple-value-bind (history scenario) (history-of-text *two-masses-without-drift* bridge)
+      (let ((periodic (periodic-note history)))
+        (is (not (null periodic)))
+        (when periodic
+          (flet ((x (form) (in-scenario-terms scenario form)))
+            (call-with-scenario-facts
+             bridge scenario
+             (lambda ()
+               (is-same bridge "period" (getf periodic :period)
+                        (x '(* 2 pi (sqrt (/ (* m1 m2) (* k (+ m1 m2)))))))))))))
+    (let* ((scenario (first (scenario-file-forms "two-masses-on-a-spring")))
+           (history (ames:simulate scenario :bridge bridge)))
+      (is (null (periodic-note history))))))
