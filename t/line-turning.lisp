@@ -222,3 +222,35 @@ drifts, is no periodic state."
     (let* ((scenario (first (scenario-file-forms "two-masses-on-a-spring")))
            (history (ames:simulate scenario :bridge bridge)))
       (is (null (periodic-note history))))))
+
+;;; A ceiling above the probe: it turns below it, or hits it
+
+(defparameter *probe-under-a-ceiling*
+  "(scenario probe-under-a-ceiling
+     \"A probe launched straight up below the escape speed toward a ceiling at height h.\"
+     (parameters (m :positive (:value 1)) (big-m :positive (:value 1000)) (big-g :positive (:value 1))
+                 (r :positive (:value 10)) (h :positive (> h r) (:value 20))
+                 (v0 :positive (< v0 (sqrt (/ (* 2 big-g big-m) r))) (:value 5)))
+     (gravitation big-g)
+     (body planet :mass big-m :fixed t :position (0 0) :shape (circle r))
+     (body ceiling :fixed t :shape (half-plane (0 h) (1 h)))
+     (body probe :mass m :position (0 r) :velocity (0 v0) :shape point)
+     (simulate :states 1))"
+  "The probe reaches the ceiling only when its energy integral is positive there: h below
+the turning height 2 G M r/(2 G M - r v0^2) = 11.43.")
+
+(test a-probe-turns-below-a-ceiling-beyond-its-reach
+  "Along the branch the values select: with h = 20 the probe turns (the ceiling is beyond
+its reach); with h = 11 it hits the ceiling."
+  (with-fixture simulator-bridge ()
+    (dolist (case '((20 :turns "PROBE") (11 :collision "PROBE" "CEILING")))
+      (destructuring-bind (h kind &rest bodies) case
+        (let* ((scenario (first (ames:read-scenarios-from-string *probe-under-a-ceiling*)))
+               (history (ames:run-scenario scenario :bridge bridge :numeric t
+                                                    :settings (list (cons "H" h))))
+               (states (remove-if #'ames::state-branches
+                                  (ames.check::checked-path (ames::history-states history)))))
+          (is (= 1 (length states)) "h = ~A: ~D states" h (length states))
+          (when states
+            (apply #'end-event-is (first states) kind bodies))
+          (is (null (ames.check:self-check-failed-p history))))))))
