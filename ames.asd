@@ -102,6 +102,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "ropes")
                  (:file "gravitation")
                  (:file "turning")
+                 (:file "radial-turning")
                  (:file "energy")))
    (:module "scenario" :pathname "src/scenario/" :serial t
     :depends-on ("base" "maxima-bridge" "geometry")
@@ -141,6 +142,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "check-model")
                  (:file "path")
                  (:file "turns")
+                 (:file "oscillation")
                  (:file "numeric")
                  (:file "earliest")
                  (:file "states")
@@ -266,6 +268,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "hardening-fuzz")
                (:file "scale")
                (:file "self-check")
+               (:file "line-turning")
                (:file "runner")
                (:file "parallel-runner"))
   :perform (test-op (o c)

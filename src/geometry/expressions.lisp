@@ -372,6 +372,10 @@ subexpression that depends on VARIABLE."
                                       (e* n (eexpt u (e- n 1)) (d u))
                                       (d (list 'exp (list '* n (list 'log u)))))))
                           (sqrt (e/ (d (first args)) (e* 2 (esqrt (first args)))))
+                          ;; |u|' = u u' / |u| (0 where u is free of the variable)
+                          (abs (if (free-of-p variable (first args))
+                                   0
+                                   (e/ (e* (first args) (d (first args))) x)))
                           (exp (e* x (d (first args))))
                           (log (e/ (d (first args)) (first args)))
                           (abs (e/ (e* (first args) (d (first args))) x))

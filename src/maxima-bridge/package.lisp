@@ -24,7 +24,7 @@ only by this package's own translation (see translation.lisp and maxima-server.l
    #:ode-solution-velocity #:ode-solution-speed-squared
    #:numeric-value #:latex
    ;; integrators (integrals.lisp, elliptic.lisp, quadrature.lisp, linear-ode.lisp, trig-roots.lisp)
-   #:travel-time #:numeric-travel-time #:libration-period #:position-over-time #:solve-linear-odes
+   #:travel-time #:numeric-travel-time #:libration-period #:sinusoid-coefficients #:position-over-time #:solve-linear-odes
    #:earliest-trigonometric-root
    #:solve-script
    ;; presentation (presentation.lisp)

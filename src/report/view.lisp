@@ -224,12 +224,17 @@ a textbook gives it: \"where sin(s/A) = E\"."
                               (list (let ((number (getf (getf (state-notes state) :numeric) :period)))
                                       (phrase "period " (present presenter (getf value :period))
                                               (if number (format nil " (~A)" (number-text number)) "")))
-                                    (phrase "between turning points at "
-                                            (list '= (arc-length-symbol presenter)
-                                                  (present presenter (first (getf value :between))))
-                                            " and "
-                                            (list '= (arc-length-symbol presenter)
-                                                  (present presenter (second (getf value :between)))))))))
+                                    ;; along a curve the arc length; else the coordinate
+                                    ;; that oscillates (a position term)
+                                    (let ((coordinate (if (getf value :coordinate)
+                                                          (present presenter (getf value :coordinate))
+                                                          (arc-length-symbol presenter))))
+                                      (phrase "between turning points at "
+                                              (list '= coordinate
+                                                    (present presenter (first (getf value :between))))
+                                              " and "
+                                              (list '= coordinate
+                                                    (present presenter (second (getf value :between))))))))))
                  (:impact
                   (list (cons "the impact"
                               (append

@@ -316,5 +316,10 @@ known."
               (when arc
                 (setf (getf (state-notes state) :end-arc-length) (candidate-at-arc arc))))))
         (unless fired
+          (let ((oscillation (and (not (getf (state-notes state) :periodic))
+                                  (linear-oscillation run groups))))
+            (when oscillation
+              ;; one frequency for every body: periodic (oscillation.lisp)
+              (setf (getf (state-notes state) :periodic) oscillation)))
           (setf (state-duration state) :forever (state-end-event state) :none))
         (values state fired)))))

@@ -126,13 +126,24 @@ for a compound relation."
   (and (not (member (first relation) '(or and not)))
        (funcall over-arc (violation-function relation))))
 
-(defun speed-function-p (run group function)
-  "True when FUNCTION (of the arc length) is the speed along GROUP's path or its
-negative."
+(defun speed-multiple (run group function)
+  "The constant K with FUNCTION (of the arc length) = K times the speed along GROUP's path
+(its line, for a :LINE group), K of proven sign (+1 or -1 exactly for a condition on the
+speed along a curve, l0 for the rate of a distance times the starting distance l0); NIL
+when FUNCTION is no such multiple."
   (let ((speed (group-speed group)))
-    (and speed function (not (free-of-p +arc-length+ function))
-         (or (eql 0 (tidy run `(- ,function ,speed)))
-             (eql 0 (tidy run `(+ ,function ,speed)))))))
+    (when (and speed function (not (free-of-p +arc-length+ function)))
+      (cond ((eql 0 (tidy run `(- ,function ,speed))) 1)
+            ((eql 0 (tidy run `(+ ,function ,speed))) -1)
+            (t (let ((k (tidy run `(/ ,function ,speed) :full)))
+                 (and (free-of-p +arc-length+ k)
+                      (member (sign-of run k) '(1 -1))
+                      k)))))))
+
+(defun speed-function-p (run group function)
+  "True when FUNCTION (of the arc length) is the speed along GROUP's path or line times
+a constant of proven sign (SPEED-MULTIPLE)."
+  (and (speed-multiple run group function) t))
 
 (defun turning-crossing (run solved group function)
   "Where FUNCTION, plus or minus the speed along GROUP's path, reaches zero from the
@@ -140,7 +151,7 @@ side of its sign ahead of the body: where E(s) = s'^2 reaches zero going negativ
 (values :AT S), (values :NEVER) or (values :UNKNOWN FACT). FUNCTION, the speed times
 the direction of motion, is positive while the body moves: it vanishes at the turning
 point; of the opposite sign, it never reaches zero from its side."
-  (let ((sign (if (eql 0 (tidy run `(- ,function ,(group-speed group)))) 1 -1)))
+  (let ((sign (sign-of run (speed-multiple run group function))))
     (cond ((/= (* sign (group-direction group)) 1) (values :never))
           ((turning-preceded-p run solved group) (values :never))
           (t (crossing-ahead run group (group-speed-squared group))))))
