@@ -378,7 +378,6 @@ subexpression that depends on VARIABLE."
                                    (e/ (e* (first args) (d (first args))) x)))
                           (exp (e* x (d (first args))))
                           (log (e/ (d (first args)) (first args)))
-                          (abs (e/ (e* (first args) (d (first args))) x))
                           (sin (e* (ecos (first args)) (d (first args))))
                           (cos (e- (e* (esin (first args)) (d (first args)))))
                           (tan (e/ (d (first args)) (esquare (ecos (first args)))))
