@@ -195,7 +195,17 @@ NIL. Returns the result plist, or NIL."
     (when (and values (not *self-check*))
       (setf (getf (history-notes history) :self-check) (list :skipped t)))
     (when (and *self-check* values)
-      (multiple-value-bind (values chosen) (check-values history)
+      (handler-case (check-history-claims history)
+        ;; a value beyond double precision (a default of 10^400): no numeric check can be
+        ;; made, and the report says so instead of ending
+        (floating-point-overflow ()
+          (setf (getf (history-notes history) :self-check)
+                (list :not-made "a number beyond double precision")))))))
+
+(defun check-history-claims (history)
+  "The body of SELF-CHECK-HISTORY: check every state of HISTORY's path and every printed
+number, and record the result in its notes as :SELF-CHECK."
+  (multiple-value-bind (values chosen) (check-values history)
       (let ((checked '()) (unchecked '()) (failures '()) (numbers-checked 0) (numbers 0) (clock 0d0)
             (equations (list 0 0)))
         (flet ((number-check (index entry)
@@ -225,7 +235,7 @@ NIL. Returns the result plist, or NIL."
               (append (list :checked (nreverse checked) :unchecked (nreverse unchecked)
                             :numbers (list numbers-checked numbers) :equations equations
                             :failures (nreverse failures))
-                      (and chosen (list :chosen chosen)))))))))
+                      (and chosen (list :chosen chosen)))))))
 
 (defun self-check-result (history)
   "The :SELF-CHECK plist of HISTORY's notes, or NIL when it was not checked."

@@ -35,8 +35,9 @@ a state that lasts forever). Stops at the first state whose start is not known."
   "Points (T VALUE) of FUNCTION (of tau, a number or NIL) over STATE, from START."
   (loop for i from 0 to *samples-per-state*
         for time = (* duration (/ i *samples-per-state*))
-        for value = (funcall function time)
-        when (and value (< (abs value) 1d12))
+        ;; a value beyond double precision (an overflow) is a point not drawn
+        for value = (handler-case (funcall function time) (arithmetic-error () nil))
+        when (and (realp value) (< (abs value) 1d12))
           collect (list (+ start time) value)))
 
 (defun closed-form-in-tau-p (expression)

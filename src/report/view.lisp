@@ -430,6 +430,8 @@ claim that failed with how far off it was. NIL when the run had no values to che
   (let ((check (getf (history-notes history) :self-check)))
     (cond ((null check) '())
           ((getf check :skipped) (list "Self-check: skipped (--no-check); nothing here was checked."))
+          ((getf check :not-made)
+           (list (format nil "Self-check: not made (~A); nothing here was checked." (getf check :not-made))))
           (t (append
               (list (format nil "Self-check~@[ (with ~{~A~^, ~} chosen for it: the claims hold for every value)~]: ~:[no state~*~;~:*state~P ~{~D~^, ~}~] checked against a numeric integration and an event search~@[; ~{~A~^; ~}~]; ~@[~{~D of ~D model equations satisfied by the solution along it~}; ~]~D of ~D printed numbers checked against their formulas."
                             (loop for (name . value) in (getf check :chosen)
