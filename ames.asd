@@ -173,6 +173,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "phrases")
                  (:file "view")
                  (:file "view-branches")
+                 (:file "view-check")
                  (:file "text")
                  (:file "sexp")
                  (:file "json")
