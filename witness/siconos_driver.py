@@ -253,6 +253,27 @@ def hermite(t0, q0, v0, t1, q1, v1, t):
     return q, v
 
 
+
+def lagrangian_system(model, bodies, t0, t_end, qs, vs, springs):
+    """The bodies as one linear Lagrangian system (masses, gravity and constant forces,
+    springs that keep their line) in a new NonSmoothDynamicalSystem over [t0, t_end]:
+    returns (nsds, ds)."""
+    g = float(model.get("gravity", 0.0))
+    n = len(bodies)
+    nsds = sk.NonSmoothDynamicalSystem(t0, t_end)
+    mass, force = np.zeros((2 * n, 2 * n)), np.zeros(2 * n)
+    for k, body in enumerate(bodies):
+        mass[2 * k, 2 * k] = mass[2 * k + 1, 2 * k + 1] = body.mass
+        force[2 * k:2 * k + 2] = [body.force[0], body.force[1] - body.mass * g]
+    stiffness = np.zeros((2 * n, 2 * n))
+    for spring in springs:
+        spring.add_to(stiffness, force)
+    ds = sk.LagrangianLinearTIDS(list(np.concatenate(qs)), list(np.concatenate(vs)),
+                                 mass, stiffness, np.zeros((2 * n, 2 * n)))
+    ds.setFExtPtr(force)
+    nsds.insertDynamicalSystem(ds)
+    return nsds, ds
+
 class Segment:
     """One Siconos model, from a state, with a fixed set of active contacts: one Lagrangian
     linear time-invariant system holding every free body (so that springs can couple them),
@@ -260,21 +281,8 @@ class Segment:
 
     def __init__(self, model, bodies, contacts, t0, qs, vs, t_end, dt, springs, resting=()):
         self.bodies, self.contacts = bodies, contacts
-        g = float(model.get("gravity", 0.0))
         n = len(bodies)
-        nsds = sk.NonSmoothDynamicalSystem(t0, t_end)
-        mass = np.zeros((2 * n, 2 * n))
-        force = np.zeros(2 * n)
-        for k, body in enumerate(bodies):
-            mass[2 * k, 2 * k] = mass[2 * k + 1, 2 * k + 1] = body.mass
-            force[2 * k:2 * k + 2] = [body.force[0], body.force[1] - body.mass * g]
-        stiffness = np.zeros((2 * n, 2 * n))
-        for spring in springs:
-            spring.add_to(stiffness, force)
-        self.ds = sk.LagrangianLinearTIDS(list(np.concatenate(qs)), list(np.concatenate(vs)),
-                                          mass, stiffness, np.zeros((2 * n, 2 * n)))
-        self.ds.setFExtPtr(force)
-        nsds.insertDynamicalSystem(self.ds)
+        nsds, self.ds = lagrangian_system(model, bodies, t0, t_end, qs, vs, springs)
         for c in contacts:
             rel = sk.LagrangianLinearTIR(np.array([c.row(n)]), np.array([c.constant()]))
             # a contact resting at the start gets e = 0: with no approach speed Newton's law

@@ -14,7 +14,8 @@ tangential relative speed falls to zero (or changes sign) or leaves zero.
 import numpy as np
 import siconos.kernel as sk
 
-from siconos_driver import Driver, LineLeft, Unsupported, pair_names, restitution
+from siconos_driver import (Driver, LineLeft, Unsupported, lagrangian_system, pair_names,
+                            restitution)
 
 STEP = 1e-4
 GAP_TOL = 1e-6
@@ -37,19 +38,7 @@ class FrictionSegment:
 
     def __init__(self, model, bodies, contacts, t0, qs, vs, t_end, springs, resting=()):
         n = len(bodies)
-        g = float(model.get("gravity", 0.0))
-        nsds = sk.NonSmoothDynamicalSystem(t0, t_end)
-        mass, force = np.zeros((2 * n, 2 * n)), np.zeros(2 * n)
-        for k, body in enumerate(bodies):
-            mass[2 * k, 2 * k] = mass[2 * k + 1, 2 * k + 1] = body.mass
-            force[2 * k:2 * k + 2] = [body.force[0], body.force[1] - body.mass * g]
-        stiffness = np.zeros((2 * n, 2 * n))
-        for spring in springs:
-            spring.add_to(stiffness, force)
-        self.ds = sk.LagrangianLinearTIDS(list(np.concatenate(qs)), list(np.concatenate(vs)),
-                                          mass, stiffness, np.zeros((2 * n, 2 * n)))
-        self.ds.setFExtPtr(force)
-        nsds.insertDynamicalSystem(self.ds)
+        nsds, self.ds = lagrangian_system(model, bodies, t0, t_end, qs, vs, springs)
         for c in contacts:
             a, b = c.names(bodies)
             rows = np.array([c.row(n), tangent_row(c, n)])
