@@ -1,8 +1,10 @@
 ;;;; ames.asd -- system definitions for AMES, the Algebraic MEchanics Simulator.
 ;;;;
 ;;;; One module, one folder and one package per layer; dependencies point down only:
-;;;;   base  <-  maxima-bridge, tms  <-  geometry  <-  engine  <-  kb
-;;;;   geometry, maxima-bridge  <-  scenario;   kb, scenario  <-  simulator  <-  report, check
+;;;;   base  <-  maxima-bridge (the only door to Maxima)  <-  algebra (reasoning about
+;;;;   prefix expressions: deciding, roots, integrators)  <-  geometry;   base  <-  tms
+;;;;   tms, maxima-bridge  <-  engine;   engine, geometry  <-  kb
+;;;;   algebra, geometry  <-  scenario;   kb, scenario  <-  simulator  <-  report, check
 ;;;;   <-  interface (package AMES: the REPL API and bin/ames)
 ;;;;   base, scenario  <-  witness (Siconos as an independent witness; knows no geometry,
 ;;;;   kb or simulator)  <-  interface
@@ -31,8 +33,15 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "bridge")
                  (:file "framing")
                  (:file "assumptions")
-                 (:file "angles")
                  (:file "operations")
+                 (:file "ode")
+                 (:file "presentation")
+                 (:static-file "maxima-server.lisp")))
+   (:module "algebra" :pathname "src/algebra/" :serial t
+    :depends-on ("base" "maxima-bridge")
+    :components ((:file "package")
+                 (:file "bounds")
+                 (:file "angles")
                  (:file "witnesses")
                  (:file "deciding")
                  (:file "orders")
@@ -42,7 +51,6 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "truth")
                  (:file "values")
                  (:file "roots")
-                 (:file "ode")
                  (:file "integrator-support")
                  (:file "quadrature")
                  (:file "integrals")
@@ -50,9 +58,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "periods")
                  (:file "linear-ode")
                  (:file "trig-roots")
-                 (:file "presentation")
-                 (:file "radicals")
-                 (:static-file "maxima-server.lisp")))
+                 (:file "radicals")))
    (:module "tms" :pathname "src/tms/" :serial t
     :depends-on ("base")
     :components ((:file "package")
@@ -61,7 +67,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "jtms")
                  (:file "explain")))
    (:module "geometry" :pathname "src/geometry/" :serial t
-    :depends-on ("base" "maxima-bridge")
+    :depends-on ("base" "algebra")
     :components ((:file "package")
                  (:file "conditions")
                  (:file "expressions")
@@ -105,7 +111,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "radial-turning")
                  (:file "energy")))
    (:module "scenario" :pathname "src/scenario/" :serial t
-    :depends-on ("base" "maxima-bridge" "geometry")
+    :depends-on ("base" "algebra" "geometry")
     :components ((:file "package")
                  (:file "conditions")
                  (:file "positions")

@@ -103,16 +103,16 @@ elliptic and Jacobi functions in Lisp)."
   (call-with-bridge
    (lambda (b)
      ;; the numeric witnesses skip what they cannot evaluate instead of failing
-     (is (member (ames.maxima:decide b '(> (sinh x) 0)) '(:true :unknown)))
+     (is (member (ames.algebra:decide b '(> (sinh x) 0)) '(:true :unknown)))
      (ames.maxima:with-assumptions (b '((> x 0) (< x (acosh 3))))
-       (is (member (ames.maxima:decide b '(> (+ (elliptic-k 1/2) (sinh x)) 0)) '(:true :unknown)))))))
+       (is (member (ames.algebra:decide b '(> (+ (elliptic-k 1/2) (sinh x)) 0)) '(:true :unknown)))))))
 
 ;;; Travel times
 
 (defun travel (b facts speed-squared from to &rest keys)
   "TRAVEL-TIME's values for SPEED-SQUARED in S, under FACTS."
   (ames.maxima:with-assumptions (b facts)
-    (apply #'ames.maxima:travel-time b speed-squared 's from to keys)))
+    (apply #'ames.algebra:travel-time b speed-squared 's from to keys)))
 
 (test travel-time-polynomial-energies
   (call-with-bridge
@@ -159,10 +159,10 @@ elliptic and Jacobi functions in Lisp)."
          (let ((values '((g . 981/100) (r . 1) (theta0 . 1/10))))
            (is (close-to-p 0.9071d0 (ames.maxima:numeric-value b time values) 1d-4))
            (is (close-to-p (ames.maxima:numeric-value b time values)
-                           (ames.maxima:numeric-travel-time b energy 's from to values) 1d-9)))
+                           (ames.algebra:numeric-travel-time b energy 's from to values) 1d-9)))
          (dolist (values '(((g . 2) (r . 3) (theta0 . 1)) ((g . 50) (r . 1/10) (theta0 . 1/100))))
            (is (close-to-p (ames.maxima:numeric-value b time values)
-                           (ames.maxima:numeric-travel-time b energy 's from to values) 1d-8))))))))
+                           (ames.algebra:numeric-travel-time b energy 's from to values) 1d-8))))))))
 
 (test travel-time-of-a-pendulum-swing
   (call-with-bridge
@@ -199,22 +199,22 @@ elliptic and Jacobi functions in Lisp)."
      (signals ames.maxima:invalid-bridge-argument (travel b '() '(* 2 s) 0 '(+ s 1)))
      (signals ames.maxima:invalid-bridge-argument (travel b '() '(* 2 s) 0 1 :direction 2))
      (signals ames.maxima:invalid-bridge-argument
-       (ames.maxima:travel-time b '(* 2 s) '(+ s 1) 0 1)))))
+       (ames.algebra:travel-time b '(* 2 s) '(+ s 1) 0 1)))))
 
 (test numeric-travel-times
   (call-with-bridge
    (lambda (b)
-     (is (close-to-p (sqrt 3d0) (ames.maxima:numeric-travel-time b '(* 2 a s) 's 0 'l '((a . 2) (l . 3))) 1d-12))
+     (is (close-to-p (sqrt 3d0) (ames.algebra:numeric-travel-time b '(* 2 a s) 's 0 'l '((a . 2) (l . 3))) 1d-12))
      ;; rest at both ends: half a period
-     (is (close-to-p (/ pi 3) (ames.maxima:numeric-travel-time
+     (is (close-to-p (/ pi 3) (ames.algebra:numeric-travel-time
                                b '(* 9 (- 4 (expt s 2))) 's 2 -2 '()) 1d-12))
-     (is (zerop (ames.maxima:numeric-travel-time b '(* 2 s) 's 1 1 '())))
+     (is (zerop (ames.algebra:numeric-travel-time b '(* 2 s) 's 1 1 '())))
      (signals ames.maxima:numeric-evaluation-failed
-       (ames.maxima:numeric-travel-time b '(- 1 (expt s 2)) 's 0 2 '()))
+       (ames.algebra:numeric-travel-time b '(- 1 (expt s 2)) 's 0 2 '()))
      (signals ames.maxima:numeric-evaluation-failed
-       (ames.maxima:numeric-travel-time b '(* 2 s) 's 0 'l '()))
+       (ames.algebra:numeric-travel-time b '(* 2 s) 's 0 'l '()))
      (signals ames.maxima:invalid-bridge-argument
-       (ames.maxima:numeric-travel-time b '(* 2 s) 's 0 1 '((a . "one")))))))
+       (ames.algebra:numeric-travel-time b '(* 2 s) 's 0 1 '((a . "one")))))))
 
 ;;; Linear ODEs with constant coefficients
 
@@ -223,7 +223,7 @@ elliptic and Jacobi functions in Lisp)."
 (defun linear-solution (b accelerations positions velocities initial-positions initial-velocities)
   "SOLVE-LINEAR-ODES's values under *SPRING-FACTS*."
   (ames.maxima:with-assumptions (b *spring-facts*)
-    (ames.maxima:solve-linear-odes b accelerations positions velocities
+    (ames.algebra:solve-linear-odes b accelerations positions velocities
                                    initial-positions initial-velocities)))
 
 (test linear-ode-bumper
@@ -301,7 +301,7 @@ elliptic and Jacobi functions in Lisp)."
 (defun trigonometric-root (b expression &rest keys)
   "EARLIEST-TRIGONOMETRIC-ROOT's values for EXPRESSION in TAU, with k, m, v0, w, l, a > 0."
   (ames.maxima:with-assumptions (b '((> k 0) (> m 0) (> v0 0) (> w 0) (> l 0) (> a 0)))
-    (apply #'ames.maxima:earliest-trigonometric-root b expression 'tau keys)))
+    (apply #'ames.algebra:earliest-trigonometric-root b expression 'tau keys)))
 
 (defmacro is-root (b expected expression &rest keys)
   "Check that the earliest root of EXPRESSION is found, and equal to EXPECTED."
@@ -358,7 +358,7 @@ elliptic and Jacobi functions in Lisp)."
      ;; passes the bottom after a quarter, and is at -theta0 after half
      (ames.maxima:with-assumptions (b '((> g 0) (> l 0) (> theta0 0) (< theta0 (/ pi 2))))
        (multiple-value-bind (theta w status)
-           (ames.maxima:position-over-time b '(* 2 (/ g l) (- (cos s) (cos theta0))) 's 'theta0)
+           (ames.algebra:position-over-time b '(* 2 (/ g l) (- (cos s) (cos theta0))) 's 'theta0)
          (declare (ignore w))
          (is (eq :numeric status))
          (let ((quarter '(* (sqrt (/ l g)) (elliptic-k (expt (sin (/ theta0 2)) 2))))
@@ -373,8 +373,8 @@ elliptic and Jacobi functions in Lisp)."
      (ames.maxima:with-assumptions (b '((> g 0) (> r 0) (> theta0 0) (< theta0 (/ pi 2))))
        (let ((energy '(* 2 g r (- (cos theta0) (cos (/ s r)))))
              (values '((g . 981/100) (r . 1) (theta0 . 1/10))))
-         (multiple-value-bind (s w) (ames.maxima:position-over-time b energy 's '(* r theta0))
-           (let ((time (ames.maxima:travel-time b energy 's '(* r theta0) '(* r (acos (* 2/3 (cos theta0)))))))
+         (multiple-value-bind (s w) (ames.algebra:position-over-time b energy 's '(* r theta0))
+           (let ((time (ames.algebra:travel-time b energy 's '(* r theta0) '(* r (acos (* 2/3 (cos theta0)))))))
              (is (close-to-p (ames.maxima:numeric-value b '(acos (* 2/3 (cos theta0))) values)
                              (ames.maxima:numeric-value b (substitute-expressions (list (cons 'tau time)) s) values)
                              1d-9))
@@ -388,10 +388,10 @@ elliptic and Jacobi functions in Lisp)."
    (lambda (b)
      (ames.maxima:with-assumptions (b '((> g 0) (> l 0) (> w0 0) (> (* l (expt w0 2)) (* 4 g))))
        (let ((energy '(+ (expt w0 2) (* 2 (/ g l) (- (cos s) 1)))))
-         (multiple-value-bind (theta w status) (ames.maxima:position-over-time b energy 's 0 :direction -1)
+         (multiple-value-bind (theta w status) (ames.algebra:position-over-time b energy 's 0 :direction -1)
            (is (eq :numeric status))
            ;; going backwards, it is at -pi after the half-revolution time
-           (let ((half (ames.maxima:travel-time b energy 's 0 '(- pi)))
+           (let ((half (ames.algebra:travel-time b energy 's 0 '(- pi)))
                  (values '((g . 981/100) (l . 2) (w0 . 5))))
              (is (close-to-p (- pi) (ames.maxima:numeric-value
                                      b (substitute-expressions (list (cons 'tau half)) theta) values)
@@ -400,7 +400,7 @@ elliptic and Jacobi functions in Lisp)."
                                    b (substitute-expressions '((tau . 0)) w) values) 1d-12))))
          ;; not at rest: the direction is needed
          (signals ames.maxima:invalid-bridge-argument
-           (ames.maxima:position-over-time b energy 's 0))
+           (ames.algebra:position-over-time b energy 's 0))
          ;; another shape
          (is (equal '(nil :no-closed-form)
-                    (multiple-value-list (ames.maxima:position-over-time b '(+ 1 (expt s 4)) 's 0 :direction 1)))))))))
+                    (multiple-value-list (ames.algebra:position-over-time b '(+ 1 (expt s 4)) 's 0 :direction 1)))))))))

@@ -14,19 +14,19 @@ relative to the point L, at time TM.")
   (call-with-bridge
    (lambda (b)
      (ames.maxima:with-assumptions (b *uniform-motion-facts*)
-       (multiple-value-bind (root status) (ames.maxima:earliest-root b *uniform-motion-gap* 'tm)
+       (multiple-value-bind (root status) (ames.algebra:earliest-root b *uniform-motion-gap* 'tm)
          (is (eq :found status))
          (is (ames.maxima:equivalent-p
               b root '(/ (- (sqrt (+ (expt v0 2) (* 2 acc (- l x0)))) v0) acc)))
          ;; it is a root, and it lies after 0
          (is (ames.maxima:equivalent-p
               b (substitute-expressions (list (cons 'tm root)) *uniform-motion-gap*) 0))
-         (is (eq :true (ames.maxima:decide b `(> ,root 0)))))))))
+         (is (eq :true (ames.algebra:decide b `(> ,root 0)))))))))
 
 (test earliest-root-is-unknown-without-the-facts
   (call-with-bridge
    (lambda (b)
-     (multiple-value-bind (status candidates) (ames.maxima:earliest-root b *uniform-motion-gap* 'tm)
+     (multiple-value-bind (status candidates) (ames.algebra:earliest-root b *uniform-motion-gap* 'tm)
        (is (eq :unknown status))
        (is (= 2 (length candidates)))
        (dolist (candidate candidates)
@@ -37,27 +37,27 @@ relative to the point L, at time TM.")
   (call-with-bridge
    (lambda (b)
      (ames.maxima:with-assumptions (b '((> v0 0) (> acc 0) (> x0 l)))
-       (is (eq :none (ames.maxima:earliest-root b *uniform-motion-gap* 'tm)))))))
+       (is (eq :none (ames.algebra:earliest-root b *uniform-motion-gap* 'tm)))))))
 
 (test earliest-root-with-numbers
   (call-with-bridge
    (lambda (b)
      (let ((gap (substitute-expressions '((x0 . 0) (v0 . 2) (acc . 2) (l . 3)) *uniform-motion-gap*)))
        ;; tm^2 + 2 tm - 3 = (tm - 1)(tm + 3)
-       (is (equal '(1 :found) (multiple-value-list (ames.maxima:earliest-root b gap 'tm))))
-       (is (eq :none (ames.maxima:earliest-root b gap 'tm :after 1)))
+       (is (equal '(1 :found) (multiple-value-list (ames.algebra:earliest-root b gap 'tm))))
+       (is (eq :none (ames.algebra:earliest-root b gap 'tm :after 1)))
        (is (equal '(1 :found)
-                  (multiple-value-list (ames.maxima:earliest-root b gap 'tm :after 1 :strictly nil))))
+                  (multiple-value-list (ames.algebra:earliest-root b gap 'tm :after 1 :strictly nil))))
        (is (equal '(1 :found)
-                  (multiple-value-list (ames.maxima:earliest-root b gap 'tm :after -2)))))
-     (is (eq :none (ames.maxima:earliest-root b '(+ (expt tm 2) 1) 'tm)))
-     (is (equal '(2 :found) (multiple-value-list (ames.maxima:earliest-root b '(- (* 3 tm) 6) 'tm))))
-     (is (eq :none (ames.maxima:earliest-root b '(- (* 3 tm) 6) 'tm :after 3)))
+                  (multiple-value-list (ames.algebra:earliest-root b gap 'tm :after -2)))))
+     (is (eq :none (ames.algebra:earliest-root b '(+ (expt tm 2) 1) 'tm)))
+     (is (equal '(2 :found) (multiple-value-list (ames.algebra:earliest-root b '(- (* 3 tm) 6) 'tm))))
+     (is (eq :none (ames.algebra:earliest-root b '(- (* 3 tm) 6) 'tm :after 3)))
      (let ((cubic '(* (- tm 1) (- tm 2) (- tm 3))))
-       (is (equal '(1 :found) (multiple-value-list (ames.maxima:earliest-root b cubic 'tm))))
-       (is (equal '(2 :found) (multiple-value-list (ames.maxima:earliest-root b cubic 'tm :after 1)))))
+       (is (equal '(1 :found) (multiple-value-list (ames.algebra:earliest-root b cubic 'tm))))
+       (is (equal '(2 :found) (multiple-value-list (ames.algebra:earliest-root b cubic 'tm :after 1)))))
      ;; an irreducible cubic: isolated by Sturm sequences, given as a float
-     (multiple-value-bind (root status) (ames.maxima:earliest-root b '(- (expt tm 3) tm 1) 'tm)
+     (multiple-value-bind (root status) (ames.algebra:earliest-root b '(- (expt tm 3) tm 1) 'tm)
        (is (eq :found status))
        (is (typep root 'double-float))
        (is (< (abs (- (expt root 3) root 1)) 1d-6))))))
@@ -66,16 +66,16 @@ relative to the point L, at time TM.")
   (call-with-bridge
    (lambda (b)
      (multiple-value-bind (status candidates)
-         (ames.maxima:earliest-root b '(- (sin tm) (/ 1 2)) 'tm)
+         (ames.algebra:earliest-root b '(- (sin tm) (/ 1 2)) 'tm)
        (is (eq :unknown status))
        (is (member '(/ pi 6) candidates :test (lambda (x y) (ames.maxima:equivalent-p b x y))))))))
 
 (test earliest-root-rejects-bad-arguments
   (call-with-bridge
    (lambda (b)
-     (signals ames.maxima:invalid-bridge-argument (ames.maxima:earliest-root b 'tm '(+ tm 1)))
-     (signals ames.maxima:invalid-bridge-argument (ames.maxima:earliest-root b 'tm 'tm :after 'tm))
-     (signals ames.maxima:untranslatable-expression (ames.maxima:earliest-root b '(< tm 1) 'tm)))))
+     (signals ames.maxima:invalid-bridge-argument (ames.algebra:earliest-root b 'tm '(+ tm 1)))
+     (signals ames.maxima:invalid-bridge-argument (ames.algebra:earliest-root b 'tm 'tm :after 'tm))
+     (signals ames.maxima:untranslatable-expression (ames.algebra:earliest-root b '(< tm 1) 'tm)))))
 
 ;;; Autonomous ODEs
 
@@ -184,7 +184,7 @@ a radicand is negative, which EXPRESSION-VALUE (real only) does not evaluate."
 (defun radicands (expression)
   "The radicands of the square roots in EXPRESSION."
   (cond ((atom expression) '())
-        ((ames.maxima::radical-exponent expression)
+        ((ames.algebra::radical-exponent expression)
          (cons (second expression) (radicands (second expression))))
         (t (mapcan #'radicands (rest expression)))))
 
@@ -206,7 +206,7 @@ principal roots), and every radicand left is proven >= 0 in the rewritten real f
                          ((* p (sqrt x)) :unchanged)
                          ((* (sqrt p) (sqrt (+ p 1))) :unchanged)))
            (destructuring-bind (form kind) case
-             (let ((rewritten (ames.maxima:real-radicals b form)))
+             (let ((rewritten (ames.algebra:real-radicals b form)))
                (is (every (lambda (point)
                             (< (abs (- (complex-value form point) (complex-value rewritten point)))
                                1d-9))
@@ -214,11 +214,11 @@ principal roots), and every radicand left is proven >= 0 in the rewritten real f
                    "~S became ~S, of another value" form rewritten)
                (if (eq kind :unchanged)
                    (is (equal form rewritten) "~S became ~S" form rewritten)
-                   (is (every (lambda (r) (ames.maxima:holds-p b `(>= ,r 0))) (radicands rewritten))
+                   (is (every (lambda (r) (ames.algebra:holds-p b `(>= ,r 0))) (radicands rewritten))
                        "~S became ~S, still with a negative radicand" form rewritten))))))
        ;; simplified, the first is Maxima's -p sqrt(x y)
        (ames.maxima:with-assumptions (b facts)
-         (let ((simplified (ames.maxima:simplify-real b '(* p (sqrt x) (sqrt y)))))
+         (let ((simplified (ames.algebra:simplify-real b '(* p (sqrt x) (sqrt y)))))
            (is (every (lambda (point)
                         (< (abs (- (complex-value simplified point)
                                    (- (* (cdr (assoc 'p point))

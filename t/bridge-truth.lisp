@@ -16,7 +16,7 @@ abs; order-preserving names; parameter values; geometry asking only what matters
 (defun decided (bridge facts relation)
   "DECIDE's verdict on RELATION under FACTS."
   (ames.maxima:with-assumptions (bridge facts)
-    (ames.maxima:decide bridge relation)))
+    (ames.algebra:decide bridge relation)))
 
 ;;; The facts of issue 9
 
@@ -44,7 +44,7 @@ abs; order-preserving names; parameter values; geometry asking only what matters
       (dolist (angle '((- (/ pi 2) a) (+ a pi) (* -1/2 (- (* 2 a) (* 3 pi))) (- a)
                        (+ (* 3/2 pi) (* -1 a) b) (- (* 5/2 pi) (* 2 a)) (/ (- pi (* 2 a)) 2)))
         (let* ((original (list function angle))
-               (reduced (ames.maxima::reduce-quarter-turns original)))
+               (reduced (ames.algebra::reduce-quarter-turns original)))
           (is (not (equal reduced original)) "~S was left as it is" original)
           (dotimes (i 5)
             (let* ((values `((a . ,(+ 0.1d0 (random 1.3d0 state))) (b . ,(random 1d0 state))))
@@ -55,9 +55,9 @@ abs; order-preserving names; parameter values; geometry asking only what matters
 
 (test angle-ranges-are-exact
   (flet ((sign-of (function angle facts)
-           (ames.maxima::range-trigonometric-sign
-            function (ames.maxima::expression-range
-                      angle (ames.maxima::subject-ranges (ames.maxima::flatten-facts facts))))))
+           (ames.algebra::range-trigonometric-sign
+            function (ames.algebra::expression-range
+                      angle (ames.algebra::subject-ranges (ames.maxima::flatten-facts facts))))))
     ;; open and closed ends at a zero or a pole
     (is (eq :positive (sign-of 'sin 'a '((> a 0) (< a pi)))))
     (is (eq :nonnegative (sign-of 'sin 'a '((>= a 0) (<= a pi)))))
@@ -77,10 +77,10 @@ abs; order-preserving names; parameter values; geometry asking only what matters
     ;; the derived facts Maxima is given
     (is (equal '((> (sin a) 0) (> (cos a) 0) (> (tan a) 0)
                  (< (sin a) 1) (> (sin a) -1) (< (cos a) 1) (> (cos a) -1))
-               (ames.maxima::derived-sign-facts '((> a 0) (< a (/ pi 2))))))
+               (ames.algebra::derived-sign-facts '((> a 0) (< a (/ pi 2))))))
     (is (equal '((>= (sin a) 0) (> (cos a) 0) (>= (tan a) 0) (< (sin a) 1) (> (sin a) -1)
                  (> (cos a) -1))
-               (ames.maxima::derived-sign-facts '((>= a 0) (< a (/ pi 2)))))
+               (ames.algebra::derived-sign-facts '((>= a 0) (< a (/ pi 2)))))
         "cos a reaches 1 at a = 0")))
 
 (test signed-factors-and-orderings-inside-them
@@ -166,7 +166,7 @@ are never contradicted at a random admissible point."
          (ames.maxima:with-assumptions (b facts)
            (dotimes (i 40)
              (let* ((relation (list (pick '(> < >= <=)) (term 2) (term 2)))
-                    (verdict (ames.maxima:decide b relation)))
+                    (verdict (ames.algebra:decide b relation)))
                (unless (eq verdict :unknown)
                  (dolist (point (random-table-points facts relation 400))
                    (let ((truth (table-point-truth relation facts point)))
@@ -183,12 +183,12 @@ are never contradicted at a random admissible point."
        (let ((root (ames.maxima:simplify b '(sqrt (expt l 2)))))
          (is (equal '(abs l) root))
          ;; sent back to Maxima inside other requests: no "operator MABS is not allowed"
-         (is (eq :true (ames.maxima:decide b `(>= ,root 0))))
-         (is (eq :true (ames.maxima:decide b `(>= (+ (* 2 ,root) (expt l 2)) 0))))
+         (is (eq :true (ames.algebra:decide b `(>= ,root 0))))
+         (is (eq :true (ames.algebra:decide b `(>= (+ (* 2 ,root) (expt l 2)) 0))))
          (is (ames.maxima:equivalent-p b `(* ,root ,root) '(expt l 2)))
          (is (= 3/2 (ames.maxima:numeric-value b `(+ 1 ,root) '((l . -1/2)))))))
      (ames.maxima:with-assumptions (b '((> l 0)))
-       (is (eq :true (ames.maxima:decide b '(= (abs l) l))))))))
+       (is (eq :true (ames.algebra:decide b '(= (abs l) l))))))))
 
 (test abs-in-the-algebra-and-in-scenarios
   (is (valid-expression-p '(abs (- x 1)) :kind :arithmetic))
@@ -220,9 +220,9 @@ times of drops from those heights are ordered."
                           (loop for (lower higher) on heights while higher
                                 collect `(> ,higher ,lower)))))
        (ames.maxima:with-assumptions (b facts)
-         (is (eq :true (ames.maxima:decide b `(< ,(first heights) ,(car (last heights))))))
+         (is (eq :true (ames.algebra:decide b `(< ,(first heights) ,(car (last heights))))))
          (loop for (lower higher) on heights while higher
-               do (is (eq :true (ames.maxima:decide b `(<= (sqrt (/ (* 2 ,lower) g))
+               do (is (eq :true (ames.algebra:decide b `(<= (sqrt (/ (* 2 ,lower) g))
                                                            (sqrt (/ (* 2 ,higher) g)))))
                       "~A lands before ~A" lower higher)))))))
 
@@ -230,33 +230,33 @@ times of drops from those heights are ordered."
 
 (test values-decide-what-the-assumptions-leave-open
   (let ((values '((m . 2) (g . 981/100) (f . 20))))
-    (is (eq :true (ames.maxima:value-truth '(> f (* m g)) values)))
-    (is (eq :false (ames.maxima:value-truth '(> (* m g) f) values)))
-    (is (eq :true (ames.maxima:value-truth '(= (* 2 f) 40) values)) "exact where rational")
-    (is (eq :true (ames.maxima:value-truth '(< (sin 1) (* m g)) values)))
-    (is (null (ames.maxima:value-truth '(> h 0) values)) "no value for h")
-    (is (null (ames.maxima:value-truth '(< x (/ pi 2)) '((x . 7853981633974483/5000000000000000))))
+    (is (eq :true (ames.algebra:value-truth '(> f (* m g)) values)))
+    (is (eq :false (ames.algebra:value-truth '(> (* m g) f) values)))
+    (is (eq :true (ames.algebra:value-truth '(= (* 2 f) 40) values)) "exact where rational")
+    (is (eq :true (ames.algebra:value-truth '(< (sin 1) (* m g)) values)))
+    (is (null (ames.algebra:value-truth '(> h 0) values)) "no value for h")
+    (is (null (ames.algebra:value-truth '(< x (/ pi 2)) '((x . 7853981633974483/5000000000000000))))
         "too close to call"))
-  (ames.maxima:with-parameter-values ('((m . 2) (g . 981/100) (f . 20)))
-    (is (eq :true (ames.maxima:decide-by-values '(> f (* m g)))))
-    (is (eq :false (ames.maxima:decide-by-values '(< f (* m g)))))
-    (is (equal '((> f (* m g)) (>= f (* m g))) (ames.maxima:facts-from-values))
+  (ames.algebra:with-parameter-values ('((m . 2) (g . 981/100) (f . 20)))
+    (is (eq :true (ames.algebra:decide-by-values '(> f (* m g)))))
+    (is (eq :false (ames.algebra:decide-by-values '(< f (* m g)))))
+    (is (equal '((> f (* m g)) (>= f (* m g))) (ames.algebra:facts-from-values))
         "each fact recorded as it holds"))
   (signals ames.maxima:invalid-bridge-argument
-    (ames.maxima:call-with-parameter-values '((m . "two")) (lambda () nil))))
+    (ames.algebra:call-with-parameter-values '((m . "two")) (lambda () nil))))
 
 (test an-undecided-fact-says-which-values-give-which-outcome
   (call-with-bridge
    (lambda (b)
      (ames.maxima:with-assumptions (b '((> m 0) (> g 0) (> f 0)))
-       (let ((text (ames.maxima:explain-undecided b '(> f (* m g)))))
+       (let ((text (ames.algebra:explain-undecided b '(> f (* m g)))))
          (is (stringp text))
          (is (search "holds at" text))
          (is (search "fails at" text)))
-       (multiple-value-bind (holds fails) (ames.maxima:undecided-witnesses b '(> f (* m g)))
-         (is (eq :true (ames.maxima:value-truth '(> f (* m g)) holds)))
-         (is (eq :false (ames.maxima:value-truth '(> f (* m g)) fails))))
-       (is (null (ames.maxima:explain-undecided b '(> (* m g) 0))) "a fact that always holds")))))
+       (multiple-value-bind (holds fails) (ames.algebra:undecided-witnesses b '(> f (* m g)))
+         (is (eq :true (ames.algebra:value-truth '(> f (* m g)) holds)))
+         (is (eq :false (ames.algebra:value-truth '(> f (* m g)) fails))))
+       (is (null (ames.algebra:explain-undecided b '(> (* m g) 0))) "a fact that always holds")))))
 
 ;;; Geometry asks only the facts that change its answer
 
@@ -286,12 +286,12 @@ undecided fact about the height is not asked."
            (is (typep condition 'ames.geometry:undecidable-geometric-fact))
            (is (search "holds at" (princ-to-string condition))))
          ;; ... unless the run's values decide it, and then it is recorded
-         (ames.maxima:with-parameter-values ('((h . 1) (k . 3/2)))
+         (ames.algebra:with-parameter-values ('((h . 1) (k . 3/2)))
            (is (ames.geometry:penetrates-p pair '(1/4 (- k 1))))
-           (let ((facts (ames.maxima:facts-from-values)))
+           (let ((facts (ames.algebra:facts-from-values)))
              (is (consp facts))
              (dolist (fact facts)
-               (is (eq :true (ames.maxima:value-truth fact '((h . 1) (k . 3/2)))))))))))))
+               (is (eq :true (ames.algebra:value-truth fact '((h . 1) (k . 3/2)))))))))))))
 
 (test a-point-outside-a-segment-s-span-is-not-on-it
   "Whether the point lies on the segment's line is undecided, and does not matter."

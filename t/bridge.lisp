@@ -65,12 +65,12 @@ relative to the wedge, down the slope (direction (cos a, -sin a)).")
      (let ((n (solution-value (first (ames.maxima:solve-equations b *wedge-equations*
                                                                   *wedge-unknowns*))
                               'n)))
-       (is (eq :unknown (ames.maxima:decide b `(> ,n 0))))
+       (is (eq :unknown (ames.algebra:decide b `(> ,n 0))))
        (ames.maxima:with-assumptions (b *wedge-facts*)
-         (is (eq :true (ames.maxima:decide b `(> ,n 0))))
-         (is (eq :false (ames.maxima:decide b `(<= ,n 0)))))
+         (is (eq :true (ames.algebra:decide b `(> ,n 0))))
+         (is (eq :false (ames.algebra:decide b `(<= ,n 0)))))
        ;; the facts are gone with their scope
-       (is (eq :unknown (ames.maxima:decide b `(> ,n 0))))
+       (is (eq :unknown (ames.algebra:decide b `(> ,n 0))))
        (is (null (ames.maxima:current-assumptions b)))))))
 
 ;;; Assumptions
@@ -78,32 +78,32 @@ relative to the wedge, down the slope (direction (cos a, -sin a)).")
 (test trigonometric-sign-facts-are-derived-from-bounds
   (call-with-bridge
    (lambda (b)
-     (is (eq :unknown (ames.maxima:decide b '(> (cos a) 0))))
+     (is (eq :unknown (ames.algebra:decide b '(> (cos a) 0))))
      (ames.maxima:with-assumptions (b '((> a 0) (< a (/ pi 2))))
-       (is (eq :true (ames.maxima:decide b '(> (sin a) 0))))
-       (is (eq :true (ames.maxima:decide b '(> (cos a) 0))))
-       (is (eq :true (ames.maxima:decide b '(> (tan a) 0)))))
+       (is (eq :true (ames.algebra:decide b '(> (sin a) 0))))
+       (is (eq :true (ames.algebra:decide b '(> (cos a) 0))))
+       (is (eq :true (ames.algebra:decide b '(> (tan a) 0)))))
      (ames.maxima:with-assumptions (b '((< (/ pi 2) b) (<= b pi)))
-       (is (eq :true (ames.maxima:decide b '(< (cos b) 0))))
-       (is (eq :true (ames.maxima:decide b '(>= (sin b) 0))))
-       (is (eq :unknown (ames.maxima:decide b '(> (sin b) 0)))))
+       (is (eq :true (ames.algebra:decide b '(< (cos b) 0))))
+       (is (eq :true (ames.algebra:decide b '(>= (sin b) 0))))
+       (is (eq :unknown (ames.algebra:decide b '(> (sin b) 0)))))
      (ames.maxima:with-assumptions (b '((> c (- pi)) (< c 0)))
-       (is (eq :true (ames.maxima:decide b '(< (sin c) 0))))
-       (is (eq :unknown (ames.maxima:decide b '(> (cos c) 0))))))))
+       (is (eq :true (ames.algebra:decide b '(< (sin c) 0))))
+       (is (eq :unknown (ames.algebra:decide b '(> (cos c) 0))))))))
 
 (test assumption-scopes-nest
   (call-with-bridge
    (lambda (b)
      (ames.maxima:with-assumptions (b '((> a 0)))
-       (is (eq :unknown (ames.maxima:decide b '(> (sin a) 0))))
+       (is (eq :unknown (ames.algebra:decide b '(> (sin a) 0))))
        (ames.maxima:with-assumptions (b '((< a (/ pi 2)) (> k 0)))
          (is (equal '((> a 0) (< a (/ pi 2)) (> k 0)) (ames.maxima:current-assumptions b)))
-         (is (eq :true (ames.maxima:decide b '(> (sin a) 0))))
-         (is (eq :true (ames.maxima:decide b '(> (* k a) 0)))))
-       (is (eq :unknown (ames.maxima:decide b '(> (sin a) 0))))
-       (is (eq :unknown (ames.maxima:decide b '(> k 0))))
-       (is (eq :true (ames.maxima:decide b '(> a 0)))))
-     (is (eq :unknown (ames.maxima:decide b '(> a 0)))))))
+         (is (eq :true (ames.algebra:decide b '(> (sin a) 0))))
+         (is (eq :true (ames.algebra:decide b '(> (* k a) 0)))))
+       (is (eq :unknown (ames.algebra:decide b '(> (sin a) 0))))
+       (is (eq :unknown (ames.algebra:decide b '(> k 0))))
+       (is (eq :true (ames.algebra:decide b '(> a 0)))))
+     (is (eq :unknown (ames.algebra:decide b '(> a 0)))))))
 
 (test a-scope-ends-on-a-non-local-exit
   (call-with-bridge
@@ -111,7 +111,7 @@ relative to the wedge, down the slope (direction (cos a, -sin a)).")
      (block leave
        (ames.maxima:with-assumptions (b '((> q 0)))
          (return-from leave)))
-     (is (eq :unknown (ames.maxima:decide b '(> q 0))))
+     (is (eq :unknown (ames.algebra:decide b '(> q 0))))
      (is (null (ames.maxima:current-assumptions b))))))
 
 (test inconsistent-assumptions-name-the-fact
@@ -126,14 +126,14 @@ relative to the wedge, down the slope (direction (cos a, -sin a)).")
          (is (equal '(< x 0) (ames.maxima:inconsistent-assumptions-fact condition)))
          (is (search "(< X 0)" (princ-to-string condition))))
        ;; the failed scope left nothing behind
-       (is (eq :unknown (ames.maxima:decide b '(> y 0))))
+       (is (eq :unknown (ames.algebra:decide b '(> y 0))))
        ;; the restart runs the body without the offending fact
        (is (eq :true
                (handler-bind ((ames.maxima:inconsistent-assumptions
                                 (lambda (c) (declare (ignore c))
                                   (invoke-restart 'ames.maxima:retract-assumption))))
                  (ames.maxima:with-assumptions (b '((> y 0) (< x 0)))
-                   (ames.maxima:decide b '(> (* x y) 0)))))))
+                   (ames.algebra:decide b '(> (* x y) 0)))))))
      (is (null (ames.maxima:current-assumptions b))))))
 
 ;;; Simplify, equivalence, decide
@@ -164,18 +164,18 @@ relative to the wedge, down the slope (direction (cos a, -sin a)).")
 (test decide-is-three-valued
   (call-with-bridge
    (lambda (b)
-     (is (eq :true (ames.maxima:decide b '(> 2 1))))
-     (is (eq :false (ames.maxima:decide b '(< 2 1))))
-     (is (eq :true (ames.maxima:decide b '(< 1 (sqrt 2)))))
-     (is (eq :unknown (ames.maxima:decide b '(> x 0))))
-     (is (eq :true (ames.maxima:decide b '(>= (expt x 2) 0))))
-     (is (eq :true (ames.maxima:decide b '(= (* 2 (sin u) (cos u)) (sin (* 2 u))))))
-     (is (eq :false (ames.maxima:decide b '(= 1 2))))
-     (is (eq :true (ames.maxima:decide b '(/= 1 2))))
-     (is (eq :false (ames.maxima:decide b '(and (> 2 1) (< 2 1)))))
-     (is (eq :true (ames.maxima:decide b '(or (> x 0) (> 2 1)))))
-     (is (eq :unknown (ames.maxima:decide b '(and (> x 0) (> 2 1)))))
-     (is (eq :true (ames.maxima:decide b '(not (< 2 1))))))))
+     (is (eq :true (ames.algebra:decide b '(> 2 1))))
+     (is (eq :false (ames.algebra:decide b '(< 2 1))))
+     (is (eq :true (ames.algebra:decide b '(< 1 (sqrt 2)))))
+     (is (eq :unknown (ames.algebra:decide b '(> x 0))))
+     (is (eq :true (ames.algebra:decide b '(>= (expt x 2) 0))))
+     (is (eq :true (ames.algebra:decide b '(= (* 2 (sin u) (cos u)) (sin (* 2 u))))))
+     (is (eq :false (ames.algebra:decide b '(= 1 2))))
+     (is (eq :true (ames.algebra:decide b '(/= 1 2))))
+     (is (eq :false (ames.algebra:decide b '(and (> 2 1) (< 2 1)))))
+     (is (eq :true (ames.algebra:decide b '(or (> x 0) (> 2 1)))))
+     (is (eq :unknown (ames.algebra:decide b '(and (> x 0) (> 2 1)))))
+     (is (eq :true (ames.algebra:decide b '(not (< 2 1))))))))
 
 (test solve-reports-none-all-and-several
   (call-with-bridge
@@ -220,13 +220,13 @@ relative to the wedge, down the slope (direction (cos a, -sin a)).")
   (call-with-bridge
    (lambda (b)
      (ames.maxima:reset-bridge-statistics b)
-     (ames.maxima:decide b '(> (expt x 2) -1))
+     (ames.algebra:decide b '(> (expt x 2) -1))
      (let ((before (getf (ames.maxima:bridge-statistics b) :maxima-calls)))
-       (ames.maxima:decide b '(> (expt x 2) -1))
+       (ames.algebra:decide b '(> (expt x 2) -1))
        (let ((statistics (ames.maxima:bridge-statistics b)))
          (is (= before (getf statistics :maxima-calls)))
          (is (<= 1 (getf statistics :cache-hits)))))
      ;; the same request under other assumptions is asked again
      (ames.maxima:with-assumptions (b '((> x 0)))
-       (is (eq :true (ames.maxima:decide b '(> x 0)))))
-     (is (eq :unknown (ames.maxima:decide b '(> x 0)))))))
+       (is (eq :true (ames.algebra:decide b '(> x 0)))))
+     (is (eq :unknown (ames.algebra:decide b '(> x 0)))))))

@@ -154,14 +154,14 @@ the period is 4 sqrt(1/10) K(sin^2(1/4)) = 2.01841..."
 do not settle stays open."
   (with-fixture simulator-bridge ()
     (ames.maxima:with-assumptions (bridge '((> v0 0) (> g 0) (> r 0) (< v0 (sqrt (* g r)))))
-      (is (eq :false (ames.maxima:decide bridge '(> (- (expt v0 2) (* g r)) 0))))
-      (is (eq :true (ames.maxima:decide bridge '(< (expt v0 2) (* g r)))))
-      (is (eq :unknown (ames.maxima:decide bridge '(> (- (expt v0 2) (/ (* g r) 2)) 0)))))
+      (is (eq :false (ames.algebra:decide bridge '(> (- (expt v0 2) (* g r)) 0))))
+      (is (eq :true (ames.algebra:decide bridge '(< (expt v0 2) (* g r)))))
+      (is (eq :unknown (ames.algebra:decide bridge '(> (- (expt v0 2) (/ (* g r) 2)) 0)))))
     (ames.maxima:with-assumptions (bridge '((> v0 0) (> g 0) (> r 0) (> v0 (sqrt (* 2 g r)))))
-      (is (eq :true (ames.maxima:decide bridge '(> (- (expt v0 2) (* 2 g r)) 0)))))
+      (is (eq :true (ames.algebra:decide bridge '(> (- (expt v0 2) (* 2 g r)) 0)))))
     (ames.maxima:with-assumptions (bridge '((> mu 0) (> a 0) (< a (/ pi 2)) (< mu (tan a))))
-      (is (eq :true (ames.maxima:decide bridge '(> (- (expt (sin a) 2) (* (expt mu 2) (expt (cos a) 2))) 0))))
-      (is (eq :false (ames.maxima:decide bridge '(<= (- (expt (sin a) 2) (* (expt mu 2) (expt (cos a) 2))) 0)))))))
+      (is (eq :true (ames.algebra:decide bridge '(> (- (expt (sin a) 2) (* (expt mu 2) (expt (cos a) 2))) 0))))
+      (is (eq :false (ames.algebra:decide bridge '(<= (- (expt (sin a) 2) (* (expt mu 2) (expt (cos a) 2))) 0)))))))
 
 (test the-amplitude-of-a-loop-decides-lift-off
   "Between sqrt(2 g r) and sqrt(5 g r) the normal force's sinusoid m (v0^2 - 2 g r)/r +
@@ -170,7 +170,7 @@ do not settle stays open."
   (with-fixture simulator-bridge ()
     (ames.maxima:with-assumptions (bridge '((> m 0) (> g 0) (> r 0) (> v0 0) (> v0 (sqrt (* 2 g r)))
                                             (< v0 (sqrt (* 5 g r)))))
-      (is (eq :true (ames.maxima:decide bridge '(<= (/ (* (expt m 2) (expt (- (expt v0 2) (* 2 g r)) 2))
+      (is (eq :true (ames.algebra:decide bridge '(<= (/ (* (expt m 2) (expt (- (expt v0 2) (* 2 g r)) 2))
                                                        (expt r 2))
                                                     (* 9 (expt m 2) (expt g 2)))))))))
 
@@ -178,7 +178,7 @@ do not settle stays open."
   "A sin t + B cos t - C with C > A + B >= sqrt(A^2 + B^2) (A, B > 0) never vanishes."
   (with-fixture simulator-bridge ()
     (ames.maxima:with-assumptions (bridge '((> a 0) (> b 0) (> c (+ a b))))
-      (is (eq :none (ames.maxima:earliest-trigonometric-root
+      (is (eq :none (ames.algebra:earliest-trigonometric-root
                      bridge '(- (+ (* a (sin tau)) (* b (cos tau))) c) 'tau))))))
 
 (test an-offset-cosine-vanishes-at-its-arc-cosine
@@ -187,7 +187,7 @@ between pi/2 and pi, and vanishes there."
   (with-fixture simulator-bridge ()
     (ames.maxima:with-assumptions (bridge '((> h 0) (> k h)))
       (multiple-value-bind (root status)
-          (ames.maxima:earliest-trigonometric-root bridge '(+ h (* k (cos tau))) 'tau)
+          (ames.algebra:earliest-trigonometric-root bridge '(+ h (* k (cos tau))) 'tau)
         (is (eq :found status))
         (is (same-expression-p bridge root '(acos (- (/ h k)))))
         (loop for (h k) in '((1 2) (1/3 1) (9/10 1))

@@ -226,14 +226,14 @@ overflowing its growing steps."
 :NONE when no value settles it."
   (let ((s (intern "S" '#:ames-scenario)))
     (flet ((outcome (value expression)
-             (ames.maxima:with-parameter-values ((list (cons s value)))
+             (ames.algebra:with-parameter-values ((list (cons s value)))
                (ames.geometry::value-outcome (list :sign expression) '(:positive :zero :negative)))))
       ;; 1 - 16 (s - 7/4)^2: positive for s in (3/2, 2), zero at s = 3/2, negative below
       (let ((x `(+ (* -16 (expt (+ ,s -7/4) 2)) 1)))
         (is (eq :positive (outcome 7/4 x)))
         (is (eq :negative (outcome 1/2 x)))
         (is (eq :zero (outcome 3/2 x))))
-      (is (eq :none (ames.maxima:with-parameter-values ('())
+      (is (eq :none (ames.algebra:with-parameter-values ('())
                       (ames.geometry::value-outcome (list :sign s) '(:positive :negative))))))))
 
 ;;; Class 9: the sexp output names things as the user does
@@ -330,8 +330,8 @@ stops at 2 (3/4) - (1 - c) = (5 + sqrt(145))/20, where k (1 - x) < 5: it stays."
 > 0 where a > b; |x| < -1 never; |x - 1| > 1/2 depends on x."
   (with-fixture simulator-bridge ()
     (ames.maxima:with-assumptions (bridge '((> r 0) (> top 0) (> len 0) (> a b)))
-      (is (eq :true (ames.maxima:decide bridge '(>= (abs (- x y)) (- x y)))))
-      (is (eq :true (ames.maxima:decide bridge '(>= (+ (* 2 r) top (abs (- len (* 2 r) top))) len))))
-      (is (eq :true (ames.maxima:decide bridge '(> (abs (- a b)) 0))))
-      (is (eq :false (ames.maxima:decide bridge '(< (abs x) -1))))
-      (is (eq :unknown (ames.maxima:decide bridge '(> (abs (- x 1)) 1/2)))))))
+      (is (eq :true (ames.algebra:decide bridge '(>= (abs (- x y)) (- x y)))))
+      (is (eq :true (ames.algebra:decide bridge '(>= (+ (* 2 r) top (abs (- len (* 2 r) top))) len))))
+      (is (eq :true (ames.algebra:decide bridge '(> (abs (- a b)) 0))))
+      (is (eq :false (ames.algebra:decide bridge '(< (abs x) -1))))
+      (is (eq :unknown (ames.algebra:decide bridge '(> (abs (- x 1)) 1/2)))))))

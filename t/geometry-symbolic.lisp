@@ -70,7 +70,7 @@ given, by their values agreeing at every sample."
          (ames.maxima:with-assumptions (bridge '((> g 0)))
            (is (g-same-meaning-p bridge (substitute-expressions at-meeting (ames.geometry:meeting-gap meeting)) 0))
            (dolist (relation (rest (ames.geometry:meeting-conditions meeting)))
-             (is (eq :true (ames.maxima:decide bridge (substitute-expressions at-meeting relation)))
+             (is (eq :true (ames.algebra:decide bridge (substitute-expressions at-meeting relation)))
                  "~S" relation))))))))
 
 (test geometry-symbolic-wedge-on-the-ground
@@ -189,18 +189,18 @@ slope's start leads on to the base."
             (fall '((/ h (* 2 (tan a))) (- h (* 1/2 g tau tau))))
             (meeting (ames.geometry:contact-meeting slope fall)))
        (multiple-value-bind (time status)
-           (ames.maxima:earliest-root bridge (ames.geometry:meeting-gap meeting) 'tau)
+           (ames.algebra:earliest-root bridge (ames.geometry:meeting-gap meeting) 'tau)
          (is (eq :found status))
          (is (g-same-meaning-p bridge time '(sqrt (/ h g))))
          (when (eq status :found)
-           (is (eq :true (ames.maxima:decide
+           (is (eq :true (ames.algebra:decide
                           bridge (substitute-expressions (list (cons 'tau time))
                                                          `(< ,(ames.geometry:meeting-rate meeting) 0)))))
            (dolist (relation (ames.geometry:meeting-extent meeting))
-             (is (eq :true (ames.maxima:decide
+             (is (eq :true (ames.algebra:decide
                             bridge (substitute-expressions (list (cons 'tau time)) relation)))))))
        (let ((below (ames.geometry:contact-meeting base fall)))
-         (is (eq :true (ames.maxima:decide
+         (is (eq :true (ames.algebra:decide
                         bridge (substitute-expressions (list (cons 'tau '(sqrt (/ (* 2 h) g))))
                                                        `(> ,(ames.geometry:meeting-rate below) 0))))))
        (let ((leavings (ames.geometry:contact-leavings slope 's 'sdot)))

@@ -26,7 +26,7 @@
    "exec yes 'Maxima prints this again and again, outside any frame'"
    (lambda (b)
      (let ((condition (within-seconds (8)
-                        (handler-case (ames.maxima:decide b '(> 2 1))
+                        (handler-case (ames.algebra:decide b '(> 2 1))
                           (ames-error (c) c)))))
        (is (typep condition 'ames.maxima:maxima-condition) "~S" condition)
        (is (<= (length (ames.maxima::bridge-buffer b)) ames.maxima:*reply-limit*))))))
@@ -40,7 +40,7 @@ printf '@AMES%s@BEGIN\\n' \"$nonce\"
 exec yes 'x'"
      (lambda (b)
        (let ((condition (within-seconds (8)
-                          (handler-case (ames.maxima:decide b '(> 2 1))
+                          (handler-case (ames.algebra:decide b '(> 2 1))
                             (ames-error (c) c)))))
          (is (typep condition 'ames.maxima:maxima-output-overflow) "~S" condition)
          (is (search "200,000" (princ-to-string condition)))
@@ -49,7 +49,7 @@ exec yes 'x'"
 (test a-long-reply-of-maxima-itself-is-an-overflow-and-the-next-request-works
   (call-with-bridge
    (lambda (b)
-     (is (eq :true (ames.maxima:decide b '(> 2 1))))
+     (is (eq :true (ames.algebra:decide b '(> 2 1))))
      (let ((ames.maxima:*reply-limit* 20000))
        (signals ames.maxima:maxima-output-overflow
          (ames.maxima:simplify b '(expt (+ x y 1) 100)))
@@ -58,7 +58,7 @@ exec yes 'x'"
 (test a-request-gets-no-more-than-the-time-left
   (call-with-bridge
    (lambda (b)
-     (is (eq :true (ames.maxima:decide b '(> 2 1))))
+     (is (eq :true (ames.algebra:decide b '(> 2 1))))
      (let ((condition (within-seconds (6)
                         (handler-case
                             (with-budget (:limits (make-limits :time-limit 1) :subject 'slow)
@@ -73,9 +73,9 @@ exec yes 'x'"
        (signals budget-exceeded
          (with-budget (:limits (make-limits :time-limit 1/10))
            (sleep 0.2)
-           (ames.maxima:decide b '(> 3 1))))
+           (ames.algebra:decide b '(> 3 1))))
        (is (= calls (maxima-calls b))))
-     (is (eq :true (ames.maxima:decide b '(> 4 1)))))
+     (is (eq :true (ames.algebra:decide b '(> 4 1)))))
    :timeout 20))
 
 (test the-maxima-timeout-comes-from-the-limits
@@ -87,7 +87,7 @@ exec yes 'x'"
                            (ames-error (c) c)))))
        (is (typep condition 'ames.maxima:maxima-timeout) "~S" condition)
        (is (= 1/2 (ames.maxima:maxima-timeout-seconds condition))))
-     (is (eq :true (ames.maxima:decide b '(> 2 1)))))
+     (is (eq :true (ames.algebra:decide b '(> 2 1)))))
    :timeout 20))
 
 (test a-reset-bridge-answers-as-a-new-one
@@ -102,11 +102,11 @@ exec yes 'x'"
          (is (equal fresh (answer b)))
          ;; inside an assumption scope only a restart may reset, ending the process
          (ames.maxima:with-assumptions (b '((> p 0)))
-           (ames.maxima:decide b '(> p 0))
+           (ames.algebra:decide b '(> p 0))
            (is (ames.maxima:bridge-in-scope-p b))
            (signals ames.maxima:invalid-bridge-argument (ames.maxima:reset-bridge b))
            (ames.maxima:reset-bridge b :restart t)
            (is (not (ames.maxima:bridge-in-scope-p b)))
            (is (not (ames.maxima:bridge-alive-p b))))
          (is (null (ames.maxima:current-assumptions b)))
-         (is (eq :unknown (ames.maxima:decide b '(> p 0)))))))))
+         (is (eq :unknown (ames.algebra:decide b '(> p 0)))))))))

@@ -100,12 +100,12 @@ with f twice the threshold and negative with f half of it."
                       (substitute-expressions (list (cons (x 'f) value)) a-by)))
                (is (not (null a-by)))
                (when a-by
-                 (is (eq :unknown (ames.maxima:decide bridge `(> ,a-by 0))))
+                 (is (eq :unknown (ames.algebra:decide bridge `(> ,a-by 0))))
                  (is-same bridge "a_By against the threshold"
                           a-by (x `(/ (* (- l1 l2) (- f ,threshold))
                                       (+ (* ma l3) (/ (* mb (expt (- l1 l2) 2)) l3)))))
-                 (is (eq :true (ames.maxima:decide bridge `(> ,(with-push `(* 2 ,threshold)) 0))))
-                 (is (eq :true (ames.maxima:decide bridge `(< ,(with-push `(/ ,threshold 2)) 0))))
+                 (is (eq :true (ames.algebra:decide bridge `(> ,(with-push `(* 2 ,threshold)) 0))))
+                 (is (eq :true (ames.algebra:decide bridge `(< ,(with-push `(/ ,threshold 2)) 0))))
                  (is-same bridge "at the threshold B stays put" (with-push threshold) 0))))))))))
 
 ;;; Explanations

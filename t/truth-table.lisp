@@ -97,8 +97,8 @@
   "RELATION's truth (:TRUE, :FALSE or NIL when unsure) at POINT, when every fact of FACTS
 surely holds there; :INADMISSIBLE otherwise."
   (let ((values (mapcar (lambda (entry) (cons (car entry) (rational (cdr entry)))) point)))
-    (if (every (lambda (fact) (eq (ames.maxima:value-truth fact values) :true)) facts)
-        (ames.maxima:value-truth relation values)
+    (if (every (lambda (fact) (eq (ames.algebra:value-truth fact values) :true)) facts)
+        (ames.algebra:value-truth relation values)
         :inadmissible)))
 
 (defun random-table-points (facts relation count)
@@ -120,7 +120,7 @@ as alists), from a fixed seed."
    (lambda (bridge)
      (loop for (facts relation verdict note) in *truth-table*
            do (ames.maxima:with-assumptions (bridge facts)
-                (is (eq verdict (ames.maxima:decide bridge relation))
+                (is (eq verdict (ames.algebra:decide bridge relation))
                     "~A: ~S under ~S should be ~S" note relation facts verdict))))))
 
 (test textbook-verdicts-agree-with-numbers
@@ -138,5 +138,5 @@ really false somewhere (and true somewhere else)."
                 (:unknown
                  (ames.maxima:with-assumptions (bridge facts)
                    (is (or (and (member :true truths) (member :false truths))
-                           (ames.maxima:undecided-witnesses bridge relation))
+                           (ames.algebra:undecided-witnesses bridge relation))
                        "~A: not seen to hold at one point and fail at another" note))))))))

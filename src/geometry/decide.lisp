@@ -5,7 +5,7 @@
 ;;;;   1. exact rational arithmetic, when the expression is rational;
 ;;;;   2. double-float evaluation, when the expression is a constant (no parameters) whose
 ;;;;      value is clearly away from zero (|v| > 1e-9): a constant like cos(1) - 1/2;
-;;;;   3. otherwise the Maxima bridge, (ames.maxima:decide bridge relation), under the
+;;;;   3. otherwise the Maxima bridge, (ames.algebra:decide bridge relation), under the
 ;;;;      assumptions the caller has established with ames.maxima:with-assumptions.
 ;;;; When none answers, the fact is open. Inside a predicate run by
 ;;;; CALL-DECIDING-WHAT-MATTERS (a point on a piece, bodies overlapping), each open fact
@@ -13,7 +13,7 @@
 ;;;; same answer, the fact does not matter and is never asked (a point whose coordinate
 ;;;; lies outside a segment's span is not on it, whether or not it is on its line). A
 ;;;; fact that matters is decided by the run's parameter values when there are some
-;;;; (ames.maxima:decide-by-values, which records it), else UNDECIDABLE-GEOMETRIC-FACT is
+;;;; (ames.algebra:decide-by-values, which records it), else UNDECIDABLE-GEOMETRIC-FACT is
 ;;;; signalled, naming the fact, the subject (shape form or body pair) and, when found,
 ;;;; which parameter values make it hold and which make it fail, with restarts
 ;;;; ASSUME-TRUE and ASSUME-FALSE.
@@ -38,7 +38,7 @@ facts only) and the subject named when a fact cannot be decided."
 
 (defun bridge-decide (bridge relation)
   "Ask the Maxima bridge whether RELATION holds: :TRUE, :FALSE or :UNKNOWN."
-  (ames.maxima:decide bridge relation))
+  (ames.algebra:decide bridge relation))
 
 (defun undecidable (decider relation &optional detail)
   "Signal UNDECIDABLE-GEOMETRIC-FACT for RELATION, its detail saying which parameter
@@ -52,7 +52,7 @@ ASSUME-TRUE returns T, ASSUME-FALSE returns NIL."
                :detail (or detail
                            (if bridge
                                (format nil "neither exact arithmetic nor Maxima can decide it under the current assumptions~@[; ~A~]"
-                                       (ames.maxima:explain-undecided bridge relation))
+                                       (ames.algebra:explain-undecided bridge relation))
                                "no Maxima bridge was given to decide a symbolic fact")))
       (assume-true ()
         :report "Take the fact as true."
@@ -89,18 +89,18 @@ is open and not yet chosen on this branch. Never escapes the exploration."))
   "The outcome of OUTCOMES (T / NIL for a relation, :POSITIVE :ZERO :NEGATIVE for a sign
 fact (:SIGN X)) that the run's parameter values give FACT, or :NONE."
   (if (not (sign-fact-p fact))
-      (case (ames.maxima:decide-by-values fact)
+      (case (ames.algebra:decide-by-values fact)
         (:true t) (:false nil) (t :none))
       (let ((x (second fact)))
         (cond ((and (member :positive outcomes)
-                    (eq (ames.maxima:value-truth (list '> x 0)) :true))
-               (ames.maxima:decide-by-values (list '> x 0)) :positive)
+                    (eq (ames.algebra:value-truth (list '> x 0)) :true))
+               (ames.algebra:decide-by-values (list '> x 0)) :positive)
               ((and (member :negative outcomes)
-                    (eq (ames.maxima:value-truth (list '< x 0)) :true))
-               (ames.maxima:decide-by-values (list '< x 0)) :negative)
+                    (eq (ames.algebra:value-truth (list '< x 0)) :true))
+               (ames.algebra:decide-by-values (list '< x 0)) :negative)
               ((and (member :zero outcomes)
-                    (eq (ames.maxima:value-truth (list '= x 0)) :true))
-               (ames.maxima:decide-by-values (list '= x 0)) :zero)
+                    (eq (ames.algebra:value-truth (list '= x 0)) :true))
+               (ames.algebra:decide-by-values (list '= x 0)) :zero)
               (t :none)))))
 
 (defun restart-outcome (decider fact)

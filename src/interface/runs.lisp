@@ -115,11 +115,11 @@ outcome is :STOPPED and its notes' :STOPPED-BY is the BUDGET-EXCEEDED."
                                    (when restart (invoke-restart restart condition)))))))
               (call-with-budget
                (lambda ()
-                 (ames.maxima:with-parameter-values (values)
+                 (ames.algebra:with-parameter-values (values)
                    (let ((history (handler-bind ((ambiguous-transition #'stop-simulation))
                                     (simulate scenario :bridge bridge :parameter-values values
                                                        :limits limits))))
-                     (dolist (fact (ames.maxima:facts-from-values))
+                     (dolist (fact (ames.algebra:facts-from-values))
                        (unless (member fact (getf (history-notes history) :assumed)
                                        :key (lambda (entry) (getf entry :fact)) :test #'equal)
                          (push (list :state nil :fact fact)

@@ -3,8 +3,9 @@
 ;;;; Each WITH-ASSUMPTIONS scope is one Maxima context made with supcontext and ended with
 ;;;; killcontext, so facts never leak out of their scope. Maxima does not use the range of
 ;;;; an angle to find the sign of its sine or cosine (with 0 < a < pi/2, is(cos(a) > 0) is
-;;;; unknown), so the bridge derives those facts itself from the numeric bounds of each
-;;;; variable (exactly, see angles.lisp) and assumes them too. The frames are kept in the bridge, so a restarted
+;;;; unknown), so the algebra layer derives those facts from the numeric bounds of each
+;;;; variable (exactly, see src/algebra/angles.lisp) and the bridge assumes them too,
+;;;; through *DERIVED-FACTS*. The frames are kept in the bridge, so a restarted
 ;;;; Maxima process gets them replayed.
 
 (in-package #:ames.maxima)
@@ -40,89 +41,30 @@ equal() and notequal())."
       (/= (apply #'mform +notequal+ (mform-arguments form)))
       (t form))))
 
-;;; Deriving trigonometric sign facts from numeric bounds
-
-(defun constant-value (expression)
-  "The double-float value of EXPRESSION when it is made of numbers and PI only, else NIL."
-  (labels ((value (x)
-             (cond ((realp x) (coerce x 'double-float))
-                   ((eq x 'pi) pi)
-                   ((and (consp x) (arithmetic-operator-p (car x)))
-                    (let ((arguments (mapcar #'value (cdr x))))
-                      (when (every #'realp arguments)
-                        (let ((result (apply-operator (car x) arguments)))
-                          (and (realp result) (coerce result 'double-float))))))
-                   (t nil)))
-           (apply-operator (operator arguments)
-             (handler-case
-                 (case operator
-                   (+ (apply #'+ arguments)) (- (apply #'- arguments))
-                   (* (apply #'* arguments)) (/ (apply #'/ arguments))
-                   (expt (expt (first arguments) (second arguments)))
-                   (sqrt (sqrt (first arguments))) (exp (exp (first arguments)))
-                   (abs (abs (first arguments)))
-                   (log (log (first arguments)))
-                   (sin (sin (first arguments))) (cos (cos (first arguments)))
-                   (tan (tan (first arguments))) (asin (asin (first arguments)))
-                   (acos (acos (first arguments)))
-                   (atan (apply #'atan arguments)))
-               (arithmetic-error () nil))))
-    (value expression)))
-
-(defstruct (bound (:constructor make-bound (value open)))
-  "One end of an interval: a double-float VALUE, OPEN when the end is excluded."
-  value open)
-
 (defun subject-p (x)
   "True for what a bound can be about: a variable or a quantity term."
   (or (variable-symbol-p x) (quantity-term-p x)))
 
-(defun fact-bound (fact)
-  "When the relation FACT bounds a subject by a constant, return the subject, :LOWER or
-:UPPER (or :BOTH for =), and the BOUND; else NIL."
-  (let ((operator (expression-operator fact)))
-    (when (member operator '(< > <= >= =))
-      (let* ((lhs (relation-lhs fact)) (rhs (relation-rhs fact))
-             (flip (and (not (subject-p lhs)) (subject-p rhs)))
-             (subject (if flip rhs lhs))
-             (value (constant-value (if flip lhs rhs))))
-        (when (and (subject-p subject) value)
-          (let ((operator (if flip
-                              (ecase operator (< '>) (> '<) (<= '>=) (>= '<=) (= '=))
-                              operator)))
-            (ecase operator
-              (> (values subject :lower (make-bound value t)))
-              (>= (values subject :lower (make-bound value nil)))
-              (< (values subject :upper (make-bound value t)))
-              (<= (values subject :upper (make-bound value nil)))
-              (= (values subject :both (make-bound value nil))))))))))
+;;; What the algebra layer adds to the facts (it sits above the bridge, so it installs
+;;; its functions here rather than being called by name)
 
-(defun tighter-bound (old new side)
-  "The tighter of the bounds OLD (maybe NIL) and NEW on SIDE (:LOWER or :UPPER)."
-  (cond ((null old) new)
-        ((= (bound-value old) (bound-value new))
-         (if (bound-open new) new old))
-        ((eq side :lower) (if (> (bound-value new) (bound-value old)) new old))
-        (t (if (< (bound-value new) (bound-value old)) new old))))
+(defvar *derived-facts* nil
+  "The function that reads off, from a list of flattened facts, the facts a physicist
+sees at once and Maxima misses (the signs of sin, cos and tan of a bounded angle), to be
+assumed with them; NIL derives none. Installed by the algebra layer (src/algebra/bounds.lisp).")
 
-(defun subject-intervals (facts)
-  "An alist (SUBJECT LOWER . UPPER) of the numeric bounds FACTS put on each subject."
-  (let ((intervals '()))
-    (dolist (fact (flatten-facts facts) (nreverse intervals))
-      (multiple-value-bind (subject side bound) (fact-bound fact)
-        (when subject
-          (let ((entry (or (assoc subject intervals :test #'equal)
-                           (let ((new (list subject nil))) (push new intervals) new))))
-            (when (member side '(:lower :both))
-              (setf (second entry) (tighter-bound (second entry) bound :lower)))
-            (when (member side '(:upper :both))
-              (setf (cddr entry) (tighter-bound (cddr entry) bound :upper)))))))))
+(defvar *told-fact* nil
+  "The function of a bridge and a fact that gives the fact as Maxima is to be told it (a
+product of square roots of negative radicands written with real roots); NIL tells every
+fact as given. Installed by the algebra layer (src/algebra/truth.lisp).")
 
-(defun derived-sign-facts (facts)
-  "The sign facts about sin, cos and tan of each subject that follow from the numeric
-bounds in FACTS (0 < a < pi/2 gives sin a > 0, cos a > 0 and tan a > 0), read off the
-exact ranges of angles.lisp."
-  (angle-sign-facts (flatten-facts facts)))
+(defun derived-facts (facts)
+  "The facts *DERIVED-FACTS* reads off FACTS (flattened first), or none."
+  (and *derived-facts* (funcall *derived-facts* (flatten-facts facts))))
+
+(defun told-fact (bridge fact)
+  "FACT as Maxima is told it: through *TOLD-FACT*, or as given."
+  (if *told-fact* (funcall *told-fact* bridge fact) fact))
 
 ;;; Scopes
 
@@ -179,19 +121,14 @@ under the other facts."
   (dolist (fact facts) (check-translatable fact :condition))
   (let* ((table (bridge-names bridge))
          (outer (current-assumptions bridge))
-         (already (derived-sign-facts outer))
+         (already (derived-facts outer))
          (derived (remove-if (lambda (fact) (member fact already :test #'equal))
-                             (derived-sign-facts (append outer facts))))
+                             (derived-facts (append outer facts))))
          (flat (flatten-facts facts))
          ;; Derived facts go first, so that a contradiction is laid at a given fact.
          (sources (append derived flat))
-         ;; Maxima is told facts with real square roots only (see REALIFIED-RELATION)
-         (assumed (append derived
-                          (mapcar (lambda (fact)
-                                    (if (product-root-radicands fact)
-                                        (realified-relation bridge fact)
-                                        fact))
-                                  flat)))
+         ;; Maxima is told facts with real square roots only (see *TOLD-FACT*)
+         (assumed (append derived (mapcar (lambda (fact) (told-fact bridge fact)) flat)))
          (frame (make-assumption-frame (fresh-context-name table) facts
                                        (mapcar (lambda (fact) (fact-to-maxima table fact))
                                                assumed)))

@@ -13,24 +13,16 @@ only by this package's own translation (see translation.lisp and maxima-server.l
    #:bridge-in-scope-p
    #:*reply-limit*
    ;; operations
-   #:simplify #:expression-size #:solve-equations #:decide #:holds-p #:equivalent-p #:sign-varies-p #:refuted-p
-   #:call-with-assumptions #:with-assumptions #:current-assumptions
-   ;; numbers before proofs (values.lisp)
-   #:call-with-parameter-values #:with-parameter-values #:current-parameter-values
-   #:value-truth #:decide-by-values #:facts-from-values
-   #:undecided-witnesses #:explain-undecided
-   #:earliest-root
+   #:simplify #:expression-size #:solve-equations #:equivalent-p
+   #:call-with-assumptions #:with-assumptions #:current-assumptions #:flatten-facts
+   ;; the algebra layer's hooks into the assumptions (assumptions.lisp)
+   #:*derived-facts* #:*told-fact*
    #:solve-autonomous-ode #:ode-solution #:ode-solution-kind #:ode-solution-position
    #:ode-solution-velocity #:ode-solution-speed-squared
    #:numeric-value #:latex
-   ;; integrators (integrals.lisp, elliptic.lisp, quadrature.lisp, linear-ode.lisp, trig-roots.lisp)
-   #:travel-time #:numeric-travel-time #:libration-period #:sinusoid-coefficients #:position-over-time #:solve-linear-odes
-   #:earliest-trigonometric-root
    #:solve-script
    ;; presentation (presentation.lisp)
    #:presentation-candidates #:polynomial-coefficients #:presentation-latex
-   ;; real square roots (radicals.lisp)
-   #:real-radicals #:simplify-real
    ;; conditions
    #:maxima-condition #:maxima-error #:maxima-error-message
    #:maxima-question #:maxima-question-text #:maxima-question-expressions
@@ -40,7 +32,6 @@ only by this package's own translation (see translation.lisp and maxima-server.l
    #:solve-failed #:inconsistent-assumptions #:inconsistent-assumptions-fact
    #:untranslatable-expression #:untranslatable-result
    #:numeric-evaluation-failed #:invalid-bridge-argument #:untranslatable-result-form
-   #:linear-ode-failed
    ;; restarts
    #:retract-assumption #:assume-and-retry))
 

@@ -108,7 +108,7 @@ declared, quantity terms (a_x), other names, s, then tau."
       (if found
           known
           (setf (gethash key (presenter-cache presenter))
-                (handler-case (ames.maxima:holds-p (presenter-bridge presenter)
+                (handler-case (ames.algebra:holds-p (presenter-bridge presenter)
                                                    (list relation expression 0))
                   (ames.maxima:maxima-condition () nil)))))))
 
@@ -116,7 +116,7 @@ declared, quantity terms (a_x), other names, s, then tau."
 
 (defun holds-under-assumptions-p (presenter relation)
   "True when the bridge proves RELATION under the scenario's assumptions."
-  (handler-case (ames.maxima:holds-p (presenter-bridge presenter) relation)
+  (handler-case (ames.algebra:holds-p (presenter-bridge presenter) relation)
     (ames.maxima:maxima-condition () nil)))
 
 (defun complementary-angles (presenter expression)

@@ -120,7 +120,7 @@ PARAMETER-VALUE-ERROR naming the clause and the values when one is false."
   (loop for (location relation what) in (coefficient-facts scenario)
         for variables = (expression-variables relation)
         when (and variables (every (lambda (variable) (assoc variable values)) variables)
-                  (eq (ames.maxima:value-truth relation values) :false))
+                  (eq (ames.algebra:value-truth relation values) :false))
           do (error 'parameter-value-error
                     :scenario (scenario-name scenario) :location location
                     :source (location-source scenario location) :datum relation

@@ -146,9 +146,9 @@ false (the vertices in the right order, say)."
 (defun decide-fact (bridge relation)
   "The truth of RELATION under the bridge's current assumptions; when Maxima's first
 answer is :UNKNOWN, asks again about the fully simplified difference of its sides."
-  (let ((verdict (ames.maxima:decide bridge relation)))
+  (let ((verdict (ames.algebra:decide bridge relation)))
     (if (eq verdict :unknown)
-        (ames.maxima:decide bridge
+        (ames.algebra:decide bridge
                             (make-relation (first relation)
                                            (ames.maxima:simplify
                                             bridge `(- ,(relation-lhs relation)
@@ -194,7 +194,7 @@ force; signal for the first that is false or undecided."
         for lenient = (getf options :lenient)
         do (ecase (if (and lenient (not (expression-variables relation)))
                       ;; a number: decided exactly, never asked of Maxima's sign rules
-                      (or (ames.maxima:value-truth relation '((nil . 0))) :unknown)
+                      (or (ames.algebra:value-truth relation '((nil . 0))) :unknown)
                       (decide-fact bridge relation))
              (:true)
              (:false (semantic-reject scenario class location (or (getf options :datum) relation)

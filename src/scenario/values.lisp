@@ -62,7 +62,7 @@ they come too close to for the check to tell."
         (let ((relation (assumption-relation name assumption)))
           (when (every (lambda (variable) (assoc variable values))
                        (expression-variables relation))
-            (case (ames.maxima:value-truth relation values)
+            (case (ames.algebra:value-truth relation values)
               (:true)
               (:false
                (value-reject scenario parameter relation

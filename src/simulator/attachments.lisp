@@ -130,7 +130,7 @@ pairs of bodies with mass (see src/kb/springs.lisp, ropes.lisp, gravitation.lisp
   "True when the geometry CONTACT can be reached by a point retreating along AXIS: a
 curved one, or a straight one whose outward normal is against AXIS."
   (or (not (straight-contact-p contact))
-      (ames.maxima:holds-p bridge (vec-dot-expression axis (ames.geometry:contact-outward-normal contact 0)
+      (ames.algebra:holds-p bridge (vec-dot-expression axis (ames.geometry:contact-outward-normal contact 0)
                                                       '<))))
 
 (defun vec-dot-expression (u v relation)

@@ -117,8 +117,8 @@ holds at once only when it is loose."
 assumptions leave open fires (:TRUE when it is negative, :FALSE when positive) at the
 run's parameter values, the fact recorded as assumed from them; NIL when there are no
 values or they do not settle it. An impact has one outcome: it is not branched on."
-  (cond ((eq (ames.maxima:decide-by-values `(< ,coefficient 0)) :true) :true)
-        ((eq (ames.maxima:decide-by-values `(> ,coefficient 0)) :true) :false)))
+  (cond ((eq (ames.algebra:decide-by-values `(< ,coefficient 0)) :true) :true)
+        ((eq (ames.algebra:decide-by-values `(> ,coefficient 0)) :true) :false)))
 
 (defun vanishes-identically-p (run solved expression)
   "True when EXPRESSION (over quantity terms) vanishes identically near the start, as

@@ -74,7 +74,7 @@ place to branch: its outcome is one, the question only how the algebra shows it.
         :choice
         (let* ((relation (constant-roots-taken run relation))
                (verdict (decide run relation)))
-          (or (and (eq verdict :unknown) (ames.maxima:decide-by-values relation))
+          (or (and (eq verdict :unknown) (ames.algebra:decide-by-values relation))
               verdict)))))
 
 (defun call-with-model (run model decider thunk)

@@ -221,7 +221,7 @@ assumptions leave open."
                             terms))))
     (handler-case
         (multiple-value-bind (position-values velocity-values)
-            (ames.maxima:solve-linear-odes (run-bridge run) accelerations positions velocities
+            (ames.algebra:solve-linear-odes (run-bridge run) accelerations positions velocities
                                            (funcall initial positions) (funcall initial velocities))
           (setf (group-motion group)
                 (mapcar (lambda (entry) (cons (car entry) (tidy run (cdr entry) :full)))

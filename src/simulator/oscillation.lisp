@@ -19,7 +19,7 @@ varies otherwise (the second value then :OTHER)."
   (let ((waves '()))
     (dolist (entry (group-motion group) (values (nreverse waves) nil))
       (unless (free-of-p 'tau (cdr entry))
-        (let ((parts (handler-case (ames.maxima:sinusoid-coefficients (run-bridge run) (cdr entry) 'tau)
+        (let ((parts (handler-case (ames.algebra:sinusoid-coefficients (run-bridge run) (cdr entry) 'tau)
                        (ames.maxima:maxima-condition () nil))))
           (unless parts (return-from motion-sinusoids (values nil :other)))
           (push (cons (car entry) parts) waves))))))

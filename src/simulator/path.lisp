@@ -188,7 +188,7 @@ integral on a circle under a constant force), else (:NO-CLOSED-FORM :FROM-ARC-LE
     (if (holds run `(= ,s1 ,s0))
         0
         (multiple-value-bind (time kind)
-            (ames.maxima:travel-time (run-bridge run) energy +arc-length+ s0 s1
+            (ames.algebra:travel-time (run-bridge run) energy +arc-length+ s0 s1
                                      :direction (group-direction group))
           (if (eq kind :closed-form)
               time
@@ -198,7 +198,7 @@ integral on a circle under a constant force), else (:NO-CLOSED-FORM :FROM-ARC-LE
 (defun numeric-travel-time (bridge energy s0 s1 values)
   "The time to travel from arc length S0 to S1 when the speed squared is ENERGY (in
 +ARC-LENGTH+), under the parameter VALUES; NIL when it has no value there."
-  (handler-case (ames.maxima:numeric-travel-time bridge energy +arc-length+ s0 s1
+  (handler-case (ames.algebra:numeric-travel-time bridge energy +arc-length+ s0 s1
                                                  (mapcar (lambda (entry)
                                                            (cons (car entry) (cdr entry)))
                                                          values))

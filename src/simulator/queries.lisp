@@ -193,10 +193,10 @@ decided under the assumptions in BRIDGE; signals UNANSWERABLE when it is not dec
   (dolist (state states (unanswerable "the run does not reach t = ~A" time))
     (let ((start (state-start state)) (duration (state-duration state)))
       (unless (closed-form-p start) (unanswerable "a state's start has no closed form"))
-      (when (eq (ames.maxima:decide bridge `(>= ,time ,start)) :true)
+      (when (eq (ames.algebra:decide bridge `(>= ,time ,start)) :true)
         (cond ((eq duration :forever) (return (values state `(- ,time ,start))))
               ((not (closed-form-p duration)) (unanswerable "state ~D has no closed-form end" (state-index state)))
-              (t (case (ames.maxima:decide bridge `(< ,time (+ ,start ,duration)))
+              (t (case (ames.algebra:decide bridge `(< ,time (+ ,start ,duration)))
                    (:true (return (values state `(- ,time ,start))))
                    (:unknown (unanswerable "whether t = ~A falls in state ~D is not decided" time (state-index state))))))))))
 
@@ -225,23 +225,23 @@ decided under the assumptions in BRIDGE; signals UNANSWERABLE when it is not dec
     (when (or (vector-p* lhs) (vector-p* rhs)) (unanswerable "a relation between vectors"))
     (when (not (free-of-p +arc-length+ difference))
       (return-from relation-holds-over
-        (let ((verdict (ames.maxima:decide bridge (list (first relation) difference 0))))
+        (let ((verdict (ames.algebra:decide bridge (list (first relation) difference 0))))
           (values verdict "on the curve, decided for every arc length at once"))))
     (when (and (eq (first relation) '=) (not (free-of-p 'tau difference)))
       (return-from relation-holds-over (equality-over-state bridge state difference)))
     (flet ((at (time) (substitute-expressions (list (cons 'tau time)) difference)))
-      (let ((start (ames.maxima:decide bridge (list (first relation) (at 0) 0))))
+      (let ((start (ames.algebra:decide bridge (list (first relation) (at 0) 0))))
         (cond ((eq start :false) (values :false (format nil "it fails at the start of state ~D" (state-index state))))
               ((free-of-p 'tau difference)
                (values start (format nil "in state ~D it is a constant relation~:[, not decided~;~]"
                                      (state-index state) (not (eq start :unknown)))))
               ((eq start :unknown) (values :unknown (format nil "not decided at the start of state ~D" (state-index state))))
-              (t (let ((root (ames.maxima:earliest-root bridge difference 'tau :after 0 :strictly t :candidates nil)))
+              (t (let ((root (ames.algebra:earliest-root bridge difference 'tau :after 0 :strictly t :candidates nil)))
                    (cond ((eq root :none) (values :true (format nil "it holds at the start of state ~D and never changes sign" (state-index state))))
                          ((eq root :unknown) (values :unknown (format nil "where it changes sign in state ~D is not decided" (state-index state))))
                          ((eq duration :forever) (values :false (format nil "it changes sign at tau = ~S in state ~D" root (state-index state))))
                          ((not (closed-form-p duration)) (values :unknown "the state's end has no closed form"))
-                         (t (case (ames.maxima:decide bridge `(>= ,root ,duration))
+                         (t (case (ames.algebra:decide bridge `(>= ,root ,duration))
                               (:true (values :true (format nil "it holds from the start of state ~D to its end" (state-index state))))
                               (:false (values :false (format nil "it changes sign inside state ~D" (state-index state))))
                               (t (values :unknown "whether it changes sign before the state ends is not decided"))))))))))))
@@ -278,8 +278,8 @@ is linear in it with a coefficient of decided sign; else FACT."
          (coefficient (ames.maxima:simplify bridge (ames.geometry:differentiate x parameter) :strategy :full)))
     (if (or (not (free-of-p parameter coefficient)) (free-of-p parameter x))
         fact
-        (let ((sign (cond ((ames.maxima:holds-p bridge `(> ,coefficient 0)) 1)
-                          ((ames.maxima:holds-p bridge `(< ,coefficient 0)) -1))))
+        (let ((sign (cond ((ames.algebra:holds-p bridge `(> ,coefficient 0)) 1)
+                          ((ames.algebra:holds-p bridge `(< ,coefficient 0)) -1))))
           (if (null sign)
               fact
               (let ((value (ames.maxima:simplify bridge `(- ,parameter (/ ,x ,coefficient)) :strategy :full))
@@ -291,8 +291,8 @@ is linear in it with a coefficient of decided sign; else FACT."
 (defun simplified (bridge expression)
   "EXPRESSION in its simplest real form through BRIDGE (each component of a vector)."
   (if (vector-p* expression)
-      (mapcar (lambda (x) (ames.maxima:simplify-real bridge x)) expression)
-      (ames.maxima:simplify-real bridge expression)))
+      (mapcar (lambda (x) (ames.algebra:simplify-real bridge x)) expression)
+      (ames.algebra:simplify-real bridge expression)))
 
 (defun answer-question (bridge scenario question facts outcome states paths)
   "QUESTION's answer on one path (its FACTS, OUTCOME and STATES); PATHS are all the

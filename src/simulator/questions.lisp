@@ -36,7 +36,7 @@ point when impacts bring it to rest)."
       (unless resting (unanswerable "~(~A~) never comes to rest for good in this run" body))
       (let ((start (state-start (first (last resting)))))
         (unless (closed-form-p start) (unanswerable "the time it comes to rest has no closed form"))
-        (ames.maxima:simplify-real bridge start)))))
+        (ames.algebra:simplify-real bridge start)))))
 
 (defun reaches-time (bridge scenario states quantity value)
   "The first time QUANTITY takes VALUE on STATES: at a state's start, or at the earliest
@@ -49,8 +49,8 @@ reaches it."
       (unless (closed-form-p start) (unanswerable "state ~D's start has no closed form" (state-index state)))
       (unless (free-of-p +arc-length+ difference)
         (unanswerable "along a path the time a quantity takes a value has no closed form"))
-      (let ((at-start (ames.maxima:decide bridge `(= ,(substitute-expressions '((tau . 0)) difference) 0))))
-        (when (eq at-start :true) (return (ames.maxima:simplify-real bridge start)))
+      (let ((at-start (ames.algebra:decide bridge `(= ,(substitute-expressions '((tau . 0)) difference) 0))))
+        (when (eq at-start :true) (return (ames.algebra:simplify-real bridge start)))
         (when (eq at-start :unknown)
           (unanswerable "whether it holds at the start of state ~D is not decided" (state-index state))))
       (unless (free-of-p 'tau difference)
@@ -61,8 +61,8 @@ reaches it."
             (case (if (eq duration :forever) :true
                       (progn (unless (closed-form-p duration)
                                (unanswerable "state ~D's end has no closed form" (state-index state)))
-                             (ames.maxima:decide bridge `(<= ,root ,duration))))
-              (:true (return (ames.maxima:simplify-real bridge `(+ ,start ,root))))
+                             (ames.algebra:decide bridge `(<= ,root ,duration))))
+              (:true (return (ames.algebra:simplify-real bridge `(+ ,start ,root))))
               (:unknown (unanswerable "whether it is reached before state ~D ends is not decided"
                                       (state-index state))))))))))
 
@@ -70,8 +70,8 @@ reaches it."
   "|X| where the sign of X is decided, else signals UNANSWERABLE."
   (let ((x (ames.maxima:simplify bridge x :strategy :full)))
     (cond ((eql x 0) 0)
-          ((eq :true (ames.maxima:decide bridge `(>= ,x 0))) x)
-          ((eq :true (ames.maxima:decide bridge `(<= ,x 0))) `(- ,x))
+          ((eq :true (ames.algebra:decide bridge `(>= ,x 0))) x)
+          ((eq :true (ames.algebra:decide bridge `(<= ,x 0))) `(- ,x))
           (t (unanswerable "the sign of the displacement ~S is not decided" x)))))
 
 (defun turning-times (bridge component duration)
@@ -82,8 +82,8 @@ reaches it."
         repeat 8
         do (cond ((eq root :unknown) (unanswerable "where the body turns back is not decided"))
                  ((eq root :none) (return (reverse times)))
-                 ((eq :true (ames.maxima:decide bridge `(< ,root ,duration))) (push root times))
-                 ((eq :true (ames.maxima:decide bridge `(>= ,root ,duration))) (return (reverse times)))
+                 ((eq :true (ames.algebra:decide bridge `(< ,root ,duration))) (push root times))
+                 ((eq :true (ames.algebra:decide bridge `(>= ,root ,duration))) (return (reverse times)))
                  (t (unanswerable "whether the body turns back before the state ends is not decided")))
         finally (unanswerable "the body turns back too many times")))
 
@@ -126,7 +126,7 @@ DISTANCE / (1 - F^2)."
     (cond ((null accumulation) distance)
           ((not (every (lambda (entry) (free-of-p 'tau (second entry))) (state-accelerations state)))
            (unanswerable "the repeated cycles of state ~D do not have constant accelerations" (state-index state)))
-          ((not (eq :true (ames.maxima:decide bridge `(= ,(getf accumulation :cycle) ,(state-duration state)))))
+          ((not (eq :true (ames.algebra:decide bridge `(= ,(getf accumulation :cycle) ,(state-duration state)))))
            (unanswerable "the repeated cycle is not state ~D alone" (state-index state)))
           (t `(/ ,distance (- 1 (expt ,(getf accumulation :factor) 2)))))))
 
@@ -134,11 +134,11 @@ DISTANCE / (1 - F^2)."
   "The path length BODY travels during the state DURING names, or over the whole path
 (a Zeno sequence's cycles summed) when DURING is NIL."
   (if during
-      (ames.maxima:simplify-real bridge (state-distance bridge scenario (resolve-when bridge states during) body))
+      (ames.algebra:simplify-real bridge (state-distance bridge scenario (resolve-when bridge states during) body))
       (let ((moving (motion-states states)))
         (unless (or (member outcome '(:complete)) (and moving (eq :forever (state-duration (first (last moving))))))
           (unanswerable "the run ~(~A~) before its end" outcome))
-        (ames.maxima:simplify-real
+        (ames.algebra:simplify-real
          bridge (cons '+ (mapcar (lambda (state)
                                    (repeated-distance bridge state (state-distance bridge scenario state body)))
                                  moving))))))
@@ -155,7 +155,7 @@ not zero throughout; else :UNKNOWN. Returns the reason too."
                           ((closed-form-p duration) duration))))
         (if (and point
                  (eq :true (ignore-errors
-                            (ames.maxima:decide bridge `(/= ,(substitute-expressions (list (cons 'tau point)) difference) 0)))))
+                            (ames.algebra:decide bridge `(/= ,(substitute-expressions (list (cons 'tau point)) difference) 0)))))
             (values :false (format nil "it does not hold at tau = ~A in state ~D" point (state-index state)))
             (values :unknown (format nil "whether it holds throughout state ~D is not decided" (state-index state)))))))
 
@@ -174,9 +174,9 @@ compression's greatest value from the energy integral)."
               (values 'tau 0 duration))
             (let ((from (arc-length-start state)) (to (arc-length-end state)))
               (unless (and from to) (unanswerable "the state's ends along its path are not known"))
-              (if (eq :true (ames.maxima:decide bridge `(<= ,from ,to)))
+              (if (eq :true (ames.algebra:decide bridge `(<= ,from ,to)))
                   (values +arc-length+ from to)
-                  (if (eq :true (ames.maxima:decide bridge `(>= ,from ,to)))
+                  (if (eq :true (ames.algebra:decide bridge `(>= ,from ,to)))
                       (values +arc-length+ to from)
                       (unanswerable "which way the state runs along its path is not decided")))))
       (let* ((points (append (list from to) (critical-points bridge (ames.geometry:differentiate
@@ -184,11 +184,11 @@ compression's greatest value from the energy integral)."
                                                                            (if (and (consp q) (eq (first q) 'sqrt)) (second q) q)
                                                                            variable)
                                                                           variable from to)))
-             (values (mapcar (lambda (p) (ames.maxima:simplify-real bridge (substitute-expressions (list (cons variable p)) q)))
+             (values (mapcar (lambda (p) (ames.algebra:simplify-real bridge (substitute-expressions (list (cons variable p)) q)))
                              points))
              (best (find-if (lambda (v)
                               (every (lambda (w) (or (eq v w)
-                                                     (eq :true (ames.maxima:decide bridge (list (if maximum '>= '<=) v w)))))
+                                                     (eq :true (ames.algebra:decide bridge (list (if maximum '>= '<=) v w)))))
                                      values))
                             values)))
         (or best (unanswerable "which of ~{~A~^, ~} is the ~:[smallest~;largest~] is not decided"
@@ -216,8 +216,8 @@ the zeros of the cosine and of the sine, each found by the root finder of its ki
         repeat 8
         do (cond ((eq root :unknown) (unanswerable "where its derivative vanishes is not decided"))
                  ((eq root :none) (return (reverse points)))
-                 ((eq :true (ames.maxima:decide bridge `(< ,root ,to))) (push root points))
-                 ((eq :true (ames.maxima:decide bridge `(>= ,root ,to))) (return (reverse points)))
+                 ((eq :true (ames.algebra:decide bridge `(< ,root ,to))) (push root points))
+                 ((eq :true (ames.algebra:decide bridge `(>= ,root ,to))) (return (reverse points)))
                  (t (unanswerable "whether its derivative vanishes before the state ends is not decided")))
         finally (unanswerable "its derivative vanishes too many times in the state")))
 
@@ -225,6 +225,6 @@ the zeros of the cosine and of the sine, each found by the root finder of its ki
   "The earliest root of G in VARIABLE strictly after AFTER, :NONE or :UNKNOWN: through
 AMES.MAXIMA:EARLIEST-TRIGONOMETRIC-ROOT for a sinusoid in time, else EARLIEST-ROOT."
   (if (and (eq variable 'tau) (trigonometric-in-time-p g))
-      (let ((root (ames.maxima:earliest-trigonometric-root bridge g 'tau :after after :strictly t)))
+      (let ((root (ames.algebra:earliest-trigonometric-root bridge g 'tau :after after :strictly t)))
         root)
-      (values (ames.maxima:earliest-root bridge g variable :after after :strictly t :candidates nil))))
+      (values (ames.algebra:earliest-root bridge g variable :after after :strictly t :candidates nil))))

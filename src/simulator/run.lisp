@@ -75,15 +75,15 @@ of (:state N :fact RELATION).")
 (defun tidy-real (run expression)
   "EXPRESSION simplified fully, products of square roots of negative quantities written
 with real roots (AMES.MAXIMA:SIMPLIFY-REAL): how values at a state's end are reported."
-  (ames.maxima:simplify-real (run-bridge run) expression))
+  (ames.algebra:simplify-real (run-bridge run) expression))
 
 (defun decide (run relation)
   "RELATION decided under the scenario's assumptions: :TRUE, :FALSE or :UNKNOWN."
-  (ames.maxima:decide (run-bridge run) relation))
+  (ames.algebra:decide (run-bridge run) relation))
 
 (defun holds (run relation)
   "True when RELATION is decided :TRUE under the scenario's assumptions."
-  (ames.maxima:holds-p (run-bridge run) relation))
+  (ames.algebra:holds-p (run-bridge run) relation))
 
 (defun run-parameter-signs (run)
   "The alist parameter -> declared sign of RUN's scenario (see PARAMETER-SIGNS)."
@@ -102,7 +102,7 @@ the parameters' declared signs (SIGN-ALGEBRA) answer first; Maxima where they do
          (sign-algebra (run-parameter-signs run) x))
         ((holds run `(> ,x 0)) 1)
         ((holds run `(< ,x 0)) -1)
-        ((and (not (ames.maxima:sign-varies-p (run-bridge run) x))
+        ((and (not (ames.algebra:sign-varies-p (run-bridge run) x))
               (holds run `(= ,x 0)))
          0)
         (t :unknown)))
@@ -211,7 +211,7 @@ are alternatives. At a concave corner both faces can push at once."
                      do (let* ((length (ames.geometry:contact-length geometry))
                                (turn (vec-cross (ames.geometry:contact-unit-tangent geometry length)
                                                 (ames.geometry:contact-unit-tangent neighbour 0))))
-                          (when (ames.maxima:holds-p bridge `(>= ,turn 0))
+                          (when (ames.algebra:holds-p bridge `(>= ,turn 0))
                             (push other (cdr (or (assoc name alternatives)
                                                  (car (push (list name) alternatives)))))
                             (push name (cdr (or (assoc other alternatives)

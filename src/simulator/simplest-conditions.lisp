@@ -30,7 +30,7 @@
 
 (defun proven (bridge relation)
   "DECIDE's verdict on RELATION, :UNKNOWN where it signals."
-  (handler-case (ames.maxima:decide bridge relation)
+  (handler-case (ames.algebra:decide bridge relation)
     (ames-error () :unknown)))
 
 (defun product-factors (e)

@@ -41,9 +41,9 @@ what AMES.MAXIMA:EARLIEST-ROOT returns, without the candidates of an undecided a
 for a trigonometric function of TAU, AMES.MAXIMA:EARLIEST-TRIGONOMETRIC-ROOT's."
   (if (trigonometric-in-time-p g)
       (multiple-value-bind (root status)
-          (ames.maxima:earliest-trigonometric-root (run-bridge run) g 'tau :after after :strictly t)
+          (ames.algebra:earliest-trigonometric-root (run-bridge run) g 'tau :after after :strictly t)
         (if (eq root :unknown) (values :unknown nil) (values root status)))
-      (ames.maxima:earliest-root (run-bridge run) g 'tau :after after :strictly t :candidates nil)))
+      (ames.algebra:earliest-root (run-bridge run) g 'tau :after after :strictly t :candidates nil)))
 
 (defun undecided-sign-fact (run g after)
   "The relation whose truth would settle where the polynomial G in TAU first vanishes:
@@ -61,7 +61,7 @@ assumptions do not decide; else (:EARLIEST-ROOT-OF (= G 0) :CANDIDATES ...)."
                            collect `(> ,c 0) collect `(< ,c 0))
                      :key (lambda (fact) (decide run fact)))))
         `(:earliest-root-of (= ,g 0)
-          :candidates ,(nth-value 1 (ames.maxima:earliest-root (run-bridge run) g 'tau
+          :candidates ,(nth-value 1 (ames.algebra:earliest-root (run-bridge run) g 'tau
                                                                :after after :strictly t))))))
 
 (defun first-time-negative (run g)
@@ -106,7 +106,7 @@ OVER-TIME turning an expression into a function of TAU: (values :AT TIME), (valu
   "True when H, a polynomial of degree at most 2 in TAU, is proven negative for every
 TAU > 0: H(0) <= 0, H'(0) <= 0 and H'' <= 0, not all zero. A cheap, sound test that
 rules out a meeting without solving for it."
-  (when (ames.maxima:refuted-p (run-bridge run) `(< ,h 0) :assuming '((> tau 0)))
+  (when (ames.algebra:refuted-p (run-bridge run) `(< ,h 0) :assuming '((> tau 0)))
     (return-from stays-negative-p nil))
   (let* ((h (tidy run h))
          (d1 (tidy run (time-derivative h)))
@@ -136,7 +136,7 @@ on the line of a face, but past the face's end, at every time it crosses that li
          (checks (remove 'or extent :key #'first)))
     (and checks (<= 1 degree 2)
          (multiple-value-bind (status roots)
-             (ames.maxima:earliest-root bridge gap 'tau :after after :strictly t)
+             (ames.algebra:earliest-root bridge gap 'tau :after after :strictly t)
            (and (eq status :unknown) (= (length roots) degree)
                 (every (lambda (root)
                          (some (lambda (r) (eq (decide run (at-time r root)) :false)) checks))

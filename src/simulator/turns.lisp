@@ -30,7 +30,7 @@ reaches zero going negative, over every turn: (values :AT S), (values :NEVER), (
       (return-from circle-crossing nil))
     (loop repeat 4
           do (multiple-value-bind (root status)
-                 (handler-case (ames.maxima:earliest-trigonometric-root (run-bridge run) f +turn-angle+
+                 (handler-case (ames.algebra:earliest-trigonometric-root (run-bridge run) f +turn-angle+
                                                                         :after after :strictly t)
                    (ames.maxima:maxima-error () (values :unknown nil)))
                (unless (keywordp root)
@@ -224,7 +224,7 @@ LIBRATION-PERIOD. NIL otherwise (another end, or no closed form of the period)."
         (when (and (not (gap-relation-contact relation))
                    (speed-function-p run group (speed-condition-function relation over-arc))
                    (holds run `(= ,(tidy run (at-arc energy (group-s0 group))) 0)))
-          (let ((period (handler-case (ames.maxima:libration-period (run-bridge run) energy +arc-length+)
+          (let ((period (handler-case (ames.algebra:libration-period (run-bridge run) energy +arc-length+)
                           (ames.maxima:maxima-condition () nil))))
             (when period
               (list :period period

@@ -1,4 +1,4 @@
-;;;; src/maxima-bridge/angles.lisp -- exact ranges of angles: where sin, cos and tan have a sign, and where they are monotone.
+;;;; src/algebra/angles.lisp -- exact ranges of angles: where sin, cos and tan have a sign, and where they are monotone.
 ;;;;
 ;;;; Maxima does not use the range of an angle to find the sign of its sine (with
 ;;;; 0 < a < pi/2, is(cos(a) > 0) is unknown), nor of a shifted or scaled angle
@@ -10,7 +10,7 @@
 ;;;; keeps every conclusion sound. Ranges of compound angles come from the ranges of
 ;;;; their subjects by interval arithmetic (sums, differences, rational multiples).
 
-(in-package #:ames.maxima)
+(in-package #:ames.algebra)
 
 ;;; Numbers P + Q pi
 

@@ -1,4 +1,4 @@
-;;;; src/maxima-bridge/sturm.lisp -- signs a physicist reads off that sign() misses: a polynomial in one bounded quantity (Sturm), a multiple of what a fact bounds.
+;;;; src/algebra/sturm.lisp -- signs a physicist reads off that sign() misses: a polynomial in one bounded quantity (Sturm), a multiple of what a fact bounds.
 ;;;;
 ;;;; A physicist reads off that 32 c^4 - 96 c^3 + 108 c - 81 < 0 for c = cos theta0 with
 ;;;; 0 < theta0 < pi/2 by looking at it on [0, 1]; Maxima's sign() cannot. When an
@@ -14,7 +14,7 @@
 ;;;; sign() uses it only for that very form. A factor that is a constant multiple of it
 ;;;; (ratsimp of the ratio is a number) has its sign from the fact.
 
-(in-package #:ames.maxima)
+(in-package #:ames.algebra)
 
 (defun polynomial-kernel (x)
   "The one kernel K such that X is a polynomial with rational coefficients in K: a

@@ -1,4 +1,4 @@
-;;;; src/maxima-bridge/square-orders.lisp -- declared bounds carried through monotone maps.
+;;;; src/algebra/square-orders.lisp -- declared bounds carried through monotone maps.
 ;;;;
 ;;;; A bound declared on a positive parameter, v0 < sqrt(g r) or mu < tan a, says just as
 ;;;; much about its square: x -> x^2 is increasing on [0, oo), so 0 < V < E gives
@@ -9,7 +9,7 @@
 ;;;; Sound: every admissible V^2 is such an E^2 -/+ D. This is the last strategy of the
 ;;;; order substitution (orders.lisp), tried when the plain orderings decide nothing.
 
-(in-package #:ames.maxima)
+(in-package #:ames.algebra)
 
 (defun even-powers-only-p (variable expression)
   "True when VARIABLE occurs in EXPRESSION, and only as (EXPT VARIABLE N) with N even."

@@ -1,4 +1,4 @@
-;;;; src/maxima-bridge/truth.lisp -- what a physicist knows, for DECIDE: signed factors, angles, monotonicity, squares.
+;;;; src/algebra/truth.lisp -- what a physicist knows, for DECIDE: signed factors, angles, monotonicity, squares.
 ;;;;
 ;;;; Maxima's is() and sign() miss facts any physicist reads off at once: cos(pi/2 - a) > 0
 ;;;; when 0 < a < pi/2; (h - r)(l1 - l2) > 0 when h > r and l1 > l2 (sign() does not use
@@ -21,7 +21,7 @@
 ;;;;
 ;;;; The signs of expressions from the signs of their parts are in signs.lisp.
 
-(in-package #:ames.maxima)
+(in-package #:ames.algebra)
 
 (defparameter *largest-simplified-relation* 400
   "DECIDE-BY-SIGNED-PARTS has Maxima simplify (and factor) the difference of the sides
@@ -347,6 +347,16 @@ Maxima takes the square root of a negative for an imaginary number, and so finds
 relation complex, or a fact about it inconsistent."
   (let ((radicands (imaginary-radicands bridge relation)))
     (if radicands (realified relation radicands) relation)))
+
+(defun fact-as-told (bridge fact)
+  "FACT as Maxima is to be told it when assumed: with its products of square roots of
+negative radicands written with real roots (REALIFIED-RELATION), else as given. The
+bridge calls it through its hook *TOLD-FACT*."
+  (if (product-root-radicands fact)
+      (realified-relation bridge fact)
+      fact))
+
+(setf *told-fact* 'fact-as-told)
 
 (defun decide-with-imaginary-radicands (bridge relation)
   "RELATION, which has products of square roots of negative radicands (see

@@ -1,4 +1,4 @@
-;;;; src/maxima-bridge/deciding.lisp -- DECIDE: the truth of a relation under the facts in force, three-valued and cached.
+;;;; src/algebra/deciding.lisp -- DECIDE: the truth of a relation under the facts in force, three-valued and cached.
 ;;;;
 ;;;; The strategies, cheapest first: Maxima's is(); numeric witnesses that no strategy can
 ;;;; decide it (witnesses.lisp); sign() of the difference of the sides in several forms;
@@ -10,7 +10,7 @@
 ;;;; Speed: sign() requests are asked one at a time until the relation is decided, and
 ;;;; DECIDE caches its verdicts.
 
-(in-package #:ames.maxima)
+(in-package #:ames.algebra)
 
 ;;; Deciding relations
 

@@ -1,4 +1,4 @@
-;;;; src/maxima-bridge/values.lisp -- numbers before proofs: the parameter values of a run, and the values that show a fact undecided.
+;;;; src/algebra/values.lisp -- numbers before proofs: the parameter values of a run, and the values that show a fact undecided.
 ;;;;
 ;;;; DECIDE never guesses: it answers :TRUE or :FALSE only with a proof. Two things a user
 ;;;; needs besides, both numeric:
@@ -12,7 +12,7 @@
 ;;;; where its sides are rational, else as balls that enclose the exact value (see
 ;;;; witnesses.lisp): a value too close to call decides nothing.
 
-(in-package #:ames.maxima)
+(in-package #:ames.algebra)
 
 (defvar *parameter-values* '()
   "The parameter values of the current run: an alist (PARAMETER . NUMBER), bound by

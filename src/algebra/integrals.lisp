@@ -1,4 +1,4 @@
-;;;; src/maxima-bridge/integrals.lisp -- travel times in closed form: the integral of ds / sqrt(E(s)) for the energy integral E.
+;;;; src/algebra/integrals.lisp -- travel times in closed form: the integral of ds / sqrt(E(s)) for the energy integral E.
 ;;;;
 ;;;; A one-degree-of-freedom conservative motion has the energy integral w^2 = E(s); the
 ;;;; time from s0 to s1 (no turning point between) is the integral of ds / sqrt(E). The
@@ -16,7 +16,7 @@
 ;;;; of quadrature.lisp at random admissible points (required when no symbolic proof).
 ;;;; The elliptic pattern is in elliptic.lisp.
 
-(in-package #:ames.maxima)
+(in-package #:ames.algebra)
 
 (defstruct (travel (:constructor make-travel (bridge energy position from to direction)))
   "A travel-time question: BRIDGE, the squared speed ENERGY in the name POSITION, the

@@ -1,4 +1,4 @@
-;;;; src/maxima-bridge/integrator-support.lisp -- what the integrators share: their conditions, sign decisions, pattern extraction and numeric verification.
+;;;; src/algebra/integrator-support.lisp -- what the integrators share: their conditions, sign decisions, pattern extraction and numeric verification.
 ;;;;
 ;;;; The integrators (travel times, linear ODEs, trigonometric roots) recognise an
 ;;;; expression's shape by asking Maxima (polynomial coefficients; the constants A, B, C of
@@ -8,7 +8,7 @@
 ;;;; force, as the numeric witnesses of operations.lisp draw them) against an independent
 ;;;; numeric computation.
 
-(in-package #:ames.maxima)
+(in-package #:ames.algebra)
 
 (define-condition linear-ode-failed (solve-failed)
   ()

@@ -1,4 +1,4 @@
-;;;; src/maxima-bridge/elliptic.lisp -- motion under E = A + B cos(k s) + C sin(k s): travel times and positions through elliptic functions.
+;;;; src/algebra/elliptic.lisp -- motion under E = A + B cos(k s) + C sin(k s): travel times and positions through elliptic functions.
 ;;;;
 ;;;; A particle on a circle of radius r under a constant force (a pendulum, a bead on a
 ;;;; hoop, the thesis's particle on a sphere) has the energy integral
@@ -13,7 +13,7 @@
 ;;;; shifted by 2 pi n to make it so. Inverting F gives the position as a function of
 ;;;; time through Jacobi's functions (POSITION-OVER-TIME).
 
-(in-package #:ames.maxima)
+(in-package #:ames.algebra)
 
 (defstruct (sinusoid (:constructor make-sinusoid (a d phase k regime)))
   "E = A + D cos(K s - PHASE), with D >= 0 and K > 0 (prefix expressions), and its

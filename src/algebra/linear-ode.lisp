@@ -1,4 +1,4 @@
-;;;; src/maxima-bridge/linear-ode.lisp -- systems of linear second-order ODEs with constant coefficients, solved by Laplace transform.
+;;;; src/algebra/linear-ode.lisp -- systems of linear second-order ODEs with constant coefficients, solved by Laplace transform.
 ;;;;
 ;;;; Springs make the accelerations linear in the positions (and, with dampers, in the
 ;;;; velocities): x_i'' = c_i + sum_j K_ij x_j + sum_j D_ij x_j'. With x_i(0) = p_i and
@@ -10,7 +10,7 @@
 ;;;; properties behind in Maxima. Every answer is substituted back into the equations and
 ;;;; the initial values before it is returned.
 
-(in-package #:ames.maxima)
+(in-package #:ames.algebra)
 
 (defvar *transform-variables* '()
   "Uninterned symbols standing for the Laplace transforms X_1, X_2 ... (made as needed,

@@ -1,4 +1,4 @@
-;;;; src/maxima-bridge/trig-roots.lisp -- the earliest root of A + B cos(w t) + C sin(w t), proven earliest.
+;;;; src/algebra/trig-roots.lisp -- the earliest root of A + B cos(w t) + C sin(w t), proven earliest.
 ;;;;
 ;;;; Springs make termination conditions sinusoidal in time: a bumper's compression
 ;;;; (v0/w) sin(w t) returns to 0 at t = pi/w. With x = w t and the half angle
@@ -14,7 +14,7 @@
 ;;;; way. A root exists at all only when A^2 <= B^2 + C^2: when that is not decided, the
 ;;;; answer is :UNKNOWN with that fact.
 
-(in-package #:ames.maxima)
+(in-package #:ames.algebra)
 
 (defun earliest-trigonometric-root (bridge expression variable &key (after 0) (strictly t))
   "The earliest real root of EXPRESSION = 0 in VARIABLE greater than AFTER (or equal to

@@ -1,4 +1,4 @@
-;;;; src/maxima-bridge/roots.lisp -- the earliest root of an expression after a given value, proven earliest.
+;;;; src/algebra/roots.lisp -- the earliest root of an expression after a given value, proven earliest.
 ;;;;
 ;;;; A termination condition of a qualitative state is the earliest time at which some
 ;;;; expression reaches zero. With symbolic coefficients Maxima's sign() of a single root is
@@ -9,7 +9,7 @@
 ;;;; when it is proven to be the earliest; otherwise the answer is :UNKNOWN with the
 ;;;; candidates.
 
-(in-package #:ames.maxima)
+(in-package #:ames.algebra)
 
 (defun numeric-form-p (form)
   "True when the Maxima FORM is a plain number (integer, float or RAT)."

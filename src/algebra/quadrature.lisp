@@ -1,4 +1,4 @@
-;;;; src/maxima-bridge/quadrature.lisp -- numeric travel times: adaptive Gauss-Legendre quadrature of ds / sqrt(E(s)).
+;;;; src/algebra/quadrature.lisp -- numeric travel times: adaptive Gauss-Legendre quadrature of ds / sqrt(E(s)).
 ;;;;
 ;;;; The time to travel from s0 to s1 when the squared speed is E(s) is the integral of
 ;;;; ds / sqrt(E(s)). E vanishes where the motion starts from rest or ends at a turning
@@ -11,7 +11,7 @@
 ;;;; through AMES.BASE:EXPRESSION-VALUE. Also the reference for verifying closed forms
 ;;;; (see integrals.lisp).
 
-(in-package #:ames.maxima)
+(in-package #:ames.algebra)
 
 (defparameter *gauss-legendre-16*
   (let ((x '(0.0950125098376374401853193d0 0.2816035507792589132304605d0

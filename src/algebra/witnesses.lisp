@@ -1,9 +1,9 @@
-;;;; src/maxima-bridge/witnesses.lisp -- numeric witnesses: admissible points, and values as balls that enclose them.
+;;;; src/algebra/witnesses.lisp -- numeric witnesses: admissible points, and values as balls that enclose them.
 ;;;;
 ;;;; Used by DECIDE (deciding.lisp) to answer at once what no strategy can decide, by
 ;;;; HOLDS-P and REFUTED-P, and by the parameter values of a run (values.lisp).
 
-(in-package #:ames.maxima)
+(in-package #:ames.algebra)
 
 ;;; Numeric witnesses: quick proofs that a relation is not decided, or not true
 ;;;

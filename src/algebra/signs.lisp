@@ -1,4 +1,4 @@
-;;;; src/maxima-bridge/signs.lisp -- the signs of an expression from the signs of its parts, as a physicist finds them.
+;;;; src/algebra/signs.lisp -- the signs of an expression from the signs of its parts, as a physicist finds them.
 ;;;;
 ;;;; EXPRESSION-SIGNS gives the signs an arithmetic expression may take at every admissible
 ;;;; point: products and quotients of signed factors, sums of terms of one sign, powers,
@@ -14,7 +14,7 @@
 ;;;; real somewhere (a square root of something that may be negative, a division by
 ;;;; something that may be zero): no conclusion is drawn from such a part.
 
-(in-package #:ames.maxima)
+(in-package #:ames.algebra)
 
 (defvar *compound-fact-signs* t
   "True when LEAF-SIGNS looks for a factor that is a multiple of what a fact in force

@@ -1,4 +1,4 @@
-;;;; src/maxima-bridge/periods.lisp -- the period of a swing between two turning points.
+;;;; src/algebra/periods.lisp -- the period of a swing between two turning points.
 ;;;;
 ;;;; A body whose energy integral is E(s) = A + D cos(k s - phi) with A < D (elliptic.lisp's
 ;;;; libration: a pendulum, a particle in a bowl) swings between the two roots of E around
@@ -8,7 +8,7 @@
 ;;;; theta0 (E = 2 g r (cos(s/r - pi/2) - cos theta0)) that is 4 sqrt(r/g) K(sin^2(theta0/2)),
 ;;;; the textbook pendulum's period.
 
-(in-package #:ames.maxima)
+(in-package #:ames.algebra)
 
 (defun libration-period (bridge speed-squared position)
   "The period of the swing of a body whose speed squared along its path is SPEED-SQUARED

@@ -1,11 +1,11 @@
-;;;; src/maxima-bridge/orders.lisp -- the last strategy of DECIDE: the orderings of the parameters substituted.
+;;;; src/algebra/orders.lisp -- the last strategy of DECIDE: the orderings of the parameters substituted.
 ;;;;
 ;;;; Maxima's sign() uses a fact V > E only where V stands alone. A fact that orders a
 ;;;; variable V of the relation against an expression E (V > E, or any fact linear in V,
 ;;;; such as w < h - g d^2/(2 v0^2), which says h > w + g d^2/(2 v0^2)) lets DECIDE write V as
 ;;;; E + D with D > 0 fresh, after which sums show their signs term by term.
 
-(in-package #:ames.maxima)
+(in-package #:ames.algebra)
 
 (defun coefficient-sign (bridge coefficient)
   "1 or -1 when COEFFICIENT is proven positive or negative under the facts in force (a

@@ -1,4 +1,4 @@
-;;;; src/maxima-bridge/radicals.lisp -- real quantities written with real square roots.
+;;;; src/algebra/radicals.lisp -- real quantities written with real square roots.
 ;;;;
 ;;;; Maxima's algebra keeps a value in the complex numbers' principal branch, so a real
 ;;;; quantity can come back as a product of square roots of negative quantities: A's speed
@@ -8,7 +8,7 @@
 ;;;; radicands negated and the sign the factors of i give: sqrt(x)^m = i^m sqrt(-x)^m for
 ;;;; x < 0, m odd, the powers i^m multiplying to +1 or -1 in a real product.
 
-(in-package #:ames.maxima)
+(in-package #:ames.algebra)
 
 (defun radical-exponent (form)
   "The exponent of FORM when it is a power of a square root, (sqrt X) or (expt X K/2)

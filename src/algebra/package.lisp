@@ -1,0 +1,37 @@
+;;;; src/algebra/package.lisp -- the algebra that reasons about AMES's prefix expressions: package and exported contract.
+
+(defpackage #:ames.algebra
+  (:use #:cl #:ames.base #:ames.maxima)
+  ;; What the algebra still writes in Maxima's own terms: the requests it builds for the
+  ;; bridge to send (is(), sign(), coefficients, derivatives, Laplace transforms). Every
+  ;; one goes out through MAXIMA-REQUEST and the bridge's translation.
+  (:import-from #:ames.maxima
+                #:*cache-limit* #:*relation-heads*
+                #:+equal+ #:+false+ #:+i+ #:+integrate-noun+ #:+mequal+ #:+mexpt+ #:+mgeqp+
+                #:+mgreaterp+ #:+mleqp+ #:+mlessp+ #:+mlist+ #:+mplus+ #:+mtimes+ #:+notequal+
+                #:+rat+
+                #:assumption-key #:bridge-cache #:bridge-excess-names #:bridge-names
+                #:bridge-statistics-record #:statistics-cache-hits #:statistics-calls
+                #:check-translatable #:closed-form #:contains-head-p #:contains-symbol-p
+                #:from-mx #:to-mx #:maxima-name #:maxima-request #:request-list #:maxima-truth
+                #:mcall #:mdifference #:mform #:mform-p #:mlist #:mlist-items
+                #:negate-condition #:simplest-form #:subject-p #:trigonometric-form-p)
+  (:documentation "The algebra of AMES's prefix expressions, above the Maxima bridge:
+deciding a relation under the facts in force (signs, angles, orders, Sturm sequences,
+numeric witnesses, what a physicist knows), numbers before proofs, the earliest root,
+and the integrators (travel times, elliptic motion, linear ODEs, trigonometric roots).
+It asks Maxima only through the bridge.")
+  (:export
+   ;; deciding (deciding.lisp)
+   #:decide #:holds-p #:sign-varies-p #:refuted-p
+   ;; numbers before proofs (values.lisp)
+   #:call-with-parameter-values #:with-parameter-values #:current-parameter-values
+   #:value-truth #:decide-by-values #:facts-from-values
+   #:undecided-witnesses #:explain-undecided
+   ;; roots (roots.lisp, trig-roots.lisp)
+   #:earliest-root #:earliest-trigonometric-root
+   ;; integrators (integrals.lisp, elliptic.lisp, periods.lisp, quadrature.lisp, linear-ode.lisp)
+   #:travel-time #:numeric-travel-time #:libration-period #:sinusoid-coefficients
+   #:position-over-time #:solve-linear-odes #:linear-ode-failed
+   ;; real square roots (radicals.lisp)
+   #:real-radicals #:simplify-real))
