@@ -41,6 +41,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
     :depends-on ("base" "maxima-bridge")
     :components ((:file "package")
                  (:file "bounds")
+                 (:file "sign-rules")
                  (:file "angles")
                  (:file "witnesses")
                  (:file "deciding")

@@ -77,15 +77,6 @@ narrow the signs (an empty intersection would mean contradictory answers)."
          form)
         (t (some #'square-root-kernel (cdr form)))))
 
-(defun sign-product (a b)
-  "The signs a product may have when its factors may have the signs A and B."
-  (remove-duplicates
-   (loop for x in a
-         append (loop for y in b
-                      collect (cond ((or (eq x :zero) (eq y :zero)) :zero)
-                                    ((eq x y) :positive)
-                                    (t :negative))))))
-
 (defun radical-signs (bridge difference &key datum)
   "The signs of DIFFERENCE (a Maxima form) found by clearing one square root: written
 as (a + b sqrt(A)) / c, its numerator has the sign of a when b = 0 and, when a and b

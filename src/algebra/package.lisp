@@ -22,6 +22,9 @@ numeric witnesses, what a physicist knows), numbers before proofs, the earliest 
 and the integrators (travel times, elliptic motion, linear ODEs, trigonometric roots).
 It asks Maxima only through the bridge.")
   (:export
+   ;; the one sign system: sign sets and the rules of signs (sign-rules.lisp)
+   #:number-signs #:negated-signs #:only-signs-p #:sum-signs #:power-signs #:sign-product
+   #:constant-sign #:rules-of-signs #:sign-set-signum #:signum-sign-set
    ;; deciding (deciding.lisp)
    #:decide #:holds-p #:sign-varies-p #:refuted-p
    ;; numbers before proofs (values.lisp)

@@ -129,38 +129,6 @@ angle shifted by quarter turns or negated written with the plain angle."
 
 ;;; Signs of expressions, from the signs of their parts
 
-(defun number-signs (x)
-  (list (cond ((plusp x) :positive) ((minusp x) :negative) (t :zero))))
-
-(defun negated-signs (signs)
-  (mapcar (lambda (s) (case s (:positive :negative) (:negative :positive) (t s))) signs))
-
-(defun only-signs-p (signs &rest allowed)
-  (and signs (subsetp signs allowed)))
-
-(defun sum-signs (term-signs)
-  "The signs of a sum whose terms have TERM-SIGNS; NIL unless the terms agree in sign."
-  (flet ((agree (sign)
-           (when (every (lambda (s) (only-signs-p s sign :zero)) term-signs)
-             (cond ((some (lambda (s) (equal s (list sign))) term-signs) (list sign))
-                   ((every (lambda (s) (equal s '(:zero))) term-signs) '(:zero))
-                   (t (list sign :zero))))))
-    (and (notany #'null term-signs)
-         (or (agree :positive) (agree :negative)))))
-
-(defun power-signs (base-signs exponent)
-  "The signs of a power whose base has BASE-SIGNS, for a rational EXPONENT."
-  (cond ((null base-signs) nil)
-        ((integerp exponent)
-         (cond ((and (<= exponent 0) (member :zero base-signs)) nil)
-               ((zerop exponent) '(:positive))
-               ((evenp exponent)
-                (remove-duplicates (mapcar (lambda (s) (if (eq s :zero) :zero :positive)) base-signs)))
-               (t base-signs)))
-        ((only-signs-p base-signs :positive) '(:positive))
-        ((and (plusp exponent) (only-signs-p base-signs :positive :zero)) base-signs)
-        (t nil)))
-
 (defun square-root-radicand (x)
   "The radicand A when X is (SQRT A) or (EXPT A 1/2), else NIL."
   (and (compound-expression-p x)

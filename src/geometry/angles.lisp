@@ -78,19 +78,6 @@ shifted out; at X = atan(y, u), cos = u / sqrt(u^2 + y^2) and sin = y / sqrt(u^2
   (let ((r (pi-multiple x)))
     (if (and r (integerp r)) 0 (list 'tan x))))
 
-(defparameter +float-decision-margin+ 1d-9
-  "A constant expression whose floating value exceeds this in magnitude has that sign.")
-
-(defun constant-sign (x)
-  "The sign (-1, 0 or 1) of the expression X when arithmetic alone settles it: always
-when its value is an exact rational, else when its double-float value lies farther than
-+FLOAT-DECISION-MARGIN+ from zero; NIL otherwise (and whenever X has a variable)."
-  (multiple-value-bind (value exact) (expression-value x)
-    (cond ((null value) nil)
-          ((and exact (rationalp value)) (signum value))
-          ((> (abs value) +float-decision-margin+) (round (signum value)))
-          (t nil))))
-
 (defun special-atan2 (y x)
   "The angle of (X, Y) as a multiple of PI when X and Y are constants making a
 multiple of PI/6 or PI/4, else NIL."

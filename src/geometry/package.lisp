@@ -2,6 +2,7 @@
 
 (defpackage #:ames.geometry
   (:use #:cl #:ames.base)
+  (:import-from #:ames.algebra #:constant-sign)
   (:documentation "Shapes, configuration-space obstacles split into simple contacts,
 and path coordinates (thesis sections 2.5.2 and 2.5.7).
 

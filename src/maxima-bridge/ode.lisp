@@ -1,4 +1,4 @@
-;;;; src/maxima-bridge/ode.lisp -- autonomous second-order ODEs, numeric values, and LaTeX.
+;;;; src/maxima-bridge/ode.lisp -- autonomous second-order ODEs and numeric values.
 ;;;;
 ;;;; A state variable's equation of motion x'' = f(x, x') is handed to ode2 and ic2. When
 ;;;; Maxima gives x(t) explicitly, that is the closed form; when it answers implicitly (an
@@ -200,49 +200,3 @@ MAXIMA-TIMEOUT."
           (coerce answer 'double-float)
           (error 'numeric-evaluation-failed :datum expression
                                             :detail "the value is not a real number")))))
-
-;;; LaTeX
-
-(defparameter *greek-letters*
-  '("alpha" "beta" "gamma" "delta" "epsilon" "zeta" "eta" "theta" "iota" "kappa" "lambda"
-    "mu" "nu" "xi" "pi" "rho" "sigma" "tau" "upsilon" "phi" "chi" "psi" "omega")
-  "Names rendered as Greek letters in LaTeX.")
-
-(defun latex-word (text)
-  "TEXT (a name's letters) as LaTeX: a Greek letter, one italic letter, or \\mathit{...};
-trailing digits become a subscript; characters other than letters and digits become \\_."
-  (let* ((safe (map 'string (lambda (c) (if (alphanumericp c) (char-downcase c) #\_)) text))
-         (digits-start (or (position-if-not #'digit-char-p safe :from-end t) -1))
-         (stem (subseq safe 0 (1+ digits-start)))
-         (digits (subseq safe (1+ digits-start)))
-         (escaped (cl-ppcre:regex-replace-all "_" stem "\\\\_"))
-         (rendered (cond ((member stem *greek-letters* :test #'string=) (format nil "\\~A" stem))
-                         ((= (length stem) 1) stem)
-                         ((string= stem "") "")
-                         (t (format nil "\\mathit{~A}" escaped)))))
-    (if (string= digits "") rendered (format nil "{~A}_{~A}" rendered digits))))
-
-(defun latex-name (name)
-  "The LaTeX for the AMES NAME: a variable, or a quantity term as head_{arguments}."
-  (if (symbolp name)
-      (latex-word (symbol-name name))
-      (format nil "\\mathrm{~A}_{~{~A~^,~}}"
-              (map 'string (lambda (c) (if (alphanumericp c) (char-downcase c) #\-))
-                   (symbol-name (first name)))
-              (mapcar (lambda (a) (if (integerp a) (princ-to-string a) (latex-word (symbol-name a))))
-                      (rest name)))))
-
-(defun latex (bridge expression)
-  "The LaTeX of EXPRESSION (arithmetic or a relation), as Maxima's tex() writes it
-(without the surrounding $$), with AMES's names rendered readably.
-Signals UNTRANSLATABLE-EXPRESSION, MAXIMA-ERROR, MAXIMA-TIMEOUT."
-  (let* ((answer (maxima-request bridge (mcall "$TEX" (to-mx bridge expression :any) +false+)
-                                 :datum expression))
-         (text (string-trim '(#\$ #\Space #\Newline #\Return) (if (stringp answer) answer ""))))
-    (cl-ppcre:regex-replace-all
-     "(?:\\{\\\\it\\s+)?amesv([a-z]+)(?:\\})?" text
-     (lambda (match letters)
-       (multiple-value-bind (name found)
-           (user-name (bridge-names bridge) (wire (concatenate 'string "$AMESV" (string-upcase letters))))
-         (if found (format nil "{~A}" (latex-name name)) match)))
-     :simple-calls t)))

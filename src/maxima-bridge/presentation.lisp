@@ -45,51 +45,13 @@ INVALID-BRIDGE-ARGUMENT when VARIABLE is no variable, MAXIMA-ERROR, MAXIMA-TIMEO
              (handler-case (mapcar (lambda (c) (from-mx bridge c)) (mlist-items answer))
                (untranslatable-result () nil))))))
 
-;;; TeX of a form as it is structured
+;;; TeX, with the caller's names
 
-(defun as-is-form (bridge expression)
-  "The unsimplified Maxima form of EXPRESSION (arithmetic or a relation) keeping its
-structure for tex(): negations as MMINUS, quotients as MQUOTIENT, negative numbers as
-negations, the order of arguments as given."
-  (check-translatable expression :any)
-  (let ((table (bridge-names bridge)))
-    (labels ((out (x)
-               (cond ((and (realp x) (minusp x)) (mform +mminus+ (out (- x))))
-                     ((realp x) (number-to-maxima x))
-                     ((constant-symbol-p x) +pi+)
-                     ((or (variable-symbol-p x) (quantity-term-p x)) (maxima-name table x))
-                     (t (let ((operator (expression-operator x))
-                              (arguments (mapcar #'out (expression-arguments x))))
-                          (case operator
-                            (+ (if (rest arguments) (apply #'mform +mplus+ arguments) (first arguments)))
-                            (- (if (rest arguments)
-                                   (apply #'mform +mplus+ (first arguments)
-                                          (mapcar (lambda (a) (mform +mminus+ a)) (rest arguments)))
-                                   (mform +mminus+ (first arguments))))
-                            (* (if (rest arguments) (apply #'mform +mtimes+ arguments) (first arguments)))
-                            (/ (if (rest arguments)
-                                   (mform +mquotient+ (first arguments)
-                                          (if (cddr arguments)
-                                              (apply #'mform +mtimes+ (rest arguments))
-                                              (second arguments)))
-                                   (mform +mquotient+ 1 (first arguments))))
-                            (expt (mform +mexpt+ (first arguments) (second arguments)))
-                            (exp (mform +mexpt+ +e+ (first arguments)))
-                            (atan (if (rest arguments)
-                                      (mform +atan2+ (first arguments) (second arguments))
-                                      (mform +atan+ (first arguments))))
-                            (t (apply #'mform (operator-head operator) arguments))))))))
-      (out expression))))
-
-(defun presentation-latex (bridge expression &key (name-function #'latex-name))
-  "The LaTeX of EXPRESSION (arithmetic or a relation) as Maxima's tex() writes it, without
-the surrounding $$, and with EXPRESSION's structure kept exactly (nothing is simplified
-or reordered: the order of terms and factors is the caller's). Each variable or quantity
-term NAME is written as (funcall NAME-FUNCTION NAME), a LaTeX string (by default
-LATEX-NAME's). Signals UNTRANSLATABLE-EXPRESSION, MAXIMA-ERROR, MAXIMA-TIMEOUT."
-  (let* ((answer (maxima-request bridge (mcall "$AMES_TEX_AS_IS" (as-is-form bridge expression))
-                                 :datum expression))
-         (text (string-trim '(#\$ #\Space #\Newline #\Return) (if (stringp answer) answer ""))))
+(defun tex-with-names (bridge answer name-function)
+  "The LaTeX text of Maxima's tex() ANSWER without the surrounding $$, each mangled name
+of BRIDGE's table written {(funcall NAME-FUNCTION NAME)} for the variable or quantity
+term NAME it stands for."
+  (let ((text (string-trim '(#\$ #\Space #\Newline #\Return) (if (stringp answer) answer ""))))
     (cl-ppcre:regex-replace-all
      "(?:\\{\\\\it\\s+)?amesv([a-z]+)(?:\\})?" (substitute #\Space #\Newline text)
      (lambda (match letters)
@@ -97,3 +59,35 @@ LATEX-NAME's). Signals UNTRANSLATABLE-EXPRESSION, MAXIMA-ERROR, MAXIMA-TIMEOUT."
            (user-name (bridge-names bridge) (wire (concatenate 'string "$AMESV" (string-upcase letters))))
          (if found (format nil "{~A}" (funcall name-function name)) match)))
      :simple-calls t)))
+
+(defun check-name-function (name-function)
+  "Signal INVALID-BRIDGE-ARGUMENT unless NAME-FUNCTION is a function designator."
+  (unless (or (functionp name-function) (and name-function (symbolp name-function)))
+    (error 'invalid-bridge-argument :datum name-function
+                                    :detail "the name function must be a function (the caller's LaTeX names)")))
+
+(defun latex (bridge expression &key name-function)
+  "The LaTeX of EXPRESSION (arithmetic or a relation), as Maxima's tex() writes it after
+its own simplification (without the surrounding $$), each variable or quantity term NAME
+written as (funcall NAME-FUNCTION NAME), a LaTeX string (the report's LaTeX names: the
+bridge writes none of its own). Signals INVALID-BRIDGE-ARGUMENT without a NAME-FUNCTION,
+UNTRANSLATABLE-EXPRESSION, MAXIMA-ERROR, MAXIMA-TIMEOUT."
+  (check-name-function name-function)
+  (tex-with-names bridge
+                  (maxima-request bridge (mcall "$TEX" (to-mx bridge expression :any) +false+)
+                                  :datum expression)
+                  name-function))
+
+(defun presentation-latex (bridge expression &key name-function)
+  "The LaTeX of EXPRESSION (arithmetic or a relation) as Maxima's tex() writes it, without
+the surrounding $$, and with EXPRESSION's structure kept exactly (nothing is simplified
+or reordered: the order of terms and factors is the caller's; see TO-MAXIMA's AS-IS).
+Each variable or quantity term NAME is written as (funcall NAME-FUNCTION NAME), a LaTeX
+string. Signals INVALID-BRIDGE-ARGUMENT without a NAME-FUNCTION,
+UNTRANSLATABLE-EXPRESSION, MAXIMA-ERROR, MAXIMA-TIMEOUT."
+  (check-name-function name-function)
+  (tex-with-names bridge
+                  (maxima-request bridge (mcall "$AMES_TEX_AS_IS"
+                                                (to-maxima (bridge-names bridge) expression :as-is t))
+                                  :datum expression)
+                  name-function))

@@ -177,35 +177,46 @@ as double-floats."
     (ratio (mform +rat+ (numerator number) (denominator number)))
     (float (coerce number 'double-float))))
 
-(defun to-maxima (table expression &key (kind :any))
+(defun to-maxima (table expression &key (kind :any) as-is)
   "The Maxima form of EXPRESSION (prefix algebra), its names mangled through TABLE.
-KIND (:ARITHMETIC, :CONDITION or :ANY) says what EXPRESSION must be. Signals
+KIND (:ARITHMETIC, :CONDITION or :ANY) says what EXPRESSION must be. AS-IS keeps
+EXPRESSION's structure for tex() (negations as MMINUS, quotients as MQUOTIENT, negative
+numbers as negations, the arguments in the order given), where the default writes what
+Maxima's simplifier expects (a - b as a + (-1) b, a / b as a b^-1). Signals
 UNTRANSLATABLE-EXPRESSION for anything outside the algebra."
   (check-translatable expression kind)
   (labels ((out (x)
-             (cond ((realp x) (number-to-maxima x))
+             (cond ((and as-is (realp x) (minusp x)) (mform +mminus+ (out (- x))))
+                   ((realp x) (number-to-maxima x))
                    ((constant-symbol-p x) +pi+)
                    ((or (variable-symbol-p x) (quantity-term-p x)) (maxima-name table x))
-                   (t (let ((operator (expression-operator x))
-                            (arguments (mapcar #'out (expression-arguments x))))
-                        (case operator
-                          (+ (if (rest arguments) (apply #'mform +mplus+ arguments) (first arguments)))
-                          (- (if (rest arguments)
-                                 (apply #'mform +mplus+ (first arguments)
-                                        (mapcar (lambda (a) (mform +mtimes+ -1 a)) (rest arguments)))
-                                 (mform +mtimes+ -1 (first arguments))))
-                          (* (if (rest arguments) (apply #'mform +mtimes+ arguments) (first arguments)))
-                          (/ (if (rest arguments)
-                                 (apply #'mform +mtimes+ (first arguments)
-                                        (mapcar (lambda (a) (mform +mexpt+ a -1)) (rest arguments)))
-                                 (mform +mexpt+ (first arguments) -1)))
-                          (expt (mform +mexpt+ (first arguments) (second arguments)))
-                          (exp (mform +mexpt+ +e+ (first arguments)))
-                          (atan (if (rest arguments)
-                                    (mform +atan2+ (first arguments) (second arguments))
-                                    (mform +atan+ (first arguments))))
-                          (t (apply #'mform (operator-head operator) arguments))))))))
+                   (t (operator-form (expression-operator x)
+                                     (mapcar #'out (expression-arguments x))
+                                     as-is)))))
     (out expression)))
+
+(defun operator-form (operator arguments as-is)
+  "The Maxima form of OPERATOR applied to the Maxima forms ARGUMENTS (see TO-MAXIMA for
+AS-IS)."
+  (flet ((negation (a) (if as-is (mform +mminus+ a) (mform +mtimes+ -1 a)))
+         (product (factors) (if (rest factors) (apply #'mform +mtimes+ factors) (first factors))))
+    (case operator
+      (+ (if (rest arguments) (apply #'mform +mplus+ arguments) (first arguments)))
+      (- (if (rest arguments)
+             (apply #'mform +mplus+ (first arguments) (mapcar #'negation (rest arguments)))
+             (negation (first arguments))))
+      (* (product arguments))
+      (/ (cond ((null (rest arguments))
+                (if as-is (mform +mquotient+ 1 (first arguments)) (mform +mexpt+ (first arguments) -1)))
+               (as-is (mform +mquotient+ (first arguments) (product (rest arguments))))
+               (t (apply #'mform +mtimes+ (first arguments)
+                         (mapcar (lambda (a) (mform +mexpt+ a -1)) (rest arguments))))))
+      (expt (mform +mexpt+ (first arguments) (second arguments)))
+      (exp (mform +mexpt+ +e+ (first arguments)))
+      (atan (if (rest arguments)
+                (mform +atan2+ (first arguments) (second arguments))
+                (mform +atan+ (first arguments))))
+      (t (apply #'mform (operator-head operator) arguments)))))
 
 ;;; Back: Maxima -> prefix algebra
 

@@ -50,66 +50,14 @@ the signs the bridge gave (SIGNS)."
                   (cond ((null entry) (push (cons parameter sign) signs))
                         ((member sign '(1 -1)) (setf (cdr entry) sign))))))))))))
 
-(defun sign-negated (sign)
-  "The sign of -X when X has SIGN."
-  (case sign (1 -1) (-1 1) (0 0) (:nonnegative :nonpositive) (:nonpositive :nonnegative)
-    (t :unknown)))
-
-(defun sign-product (a b)
-  "The sign of X Y when X has sign A and Y sign B."
-  (cond ((or (eql a 0) (eql b 0)) 0)
-        ((or (eq a :unknown) (eq b :unknown)) :unknown)
-        ((and (integerp a) (integerp b)) (* a b))
-        (t (let ((positive-a (and (member a '(1 :nonnegative)) t))
-                 (positive-b (and (member b '(1 :nonnegative)) t)))
-             ;; one of them only weak: so is the product
-             (if (eq positive-a positive-b) :nonnegative :nonpositive)))))
-
-(defun sign-sum (a b)
-  "The sign of X + Y when X has sign A and Y sign B."
-  (cond ((eql a 0) b)
-        ((eql b 0) a)
-        ((and (member a '(1 :nonnegative)) (member b '(1 :nonnegative)))
-         (if (or (eql a 1) (eql b 1)) 1 :nonnegative))
-        ((and (member a '(-1 :nonpositive)) (member b '(-1 :nonpositive)))
-         (if (or (eql a -1) (eql b -1)) -1 :nonpositive))
-        (t :unknown)))
-
 (defun sign-algebra (signs expression)
   "The sign of EXPRESSION for every admissible value of the parameters, whose signs
-SIGNS gives (an alist), by the rules of signs: 1, -1, 0, :NONNEGATIVE, :NONPOSITIVE or
-:UNKNOWN."
-  (labels ((walk (x)
-             (cond ((realp x) (if (rationalp x) (signum x) :unknown))
-                   ((symbolp x) (or (cdr (assoc x signs)) :unknown))
-                   ((not (consp x)) :unknown)
-                   (t (let ((arguments (rest x)))
-                        (case (first x)
-                          (+ (reduce #'sign-sum (mapcar #'walk arguments) :initial-value 0))
-                          (- (if (rest arguments)
-                                 (sign-sum (walk (first arguments))
-                                           (sign-negated
-                                            (reduce #'sign-sum (mapcar #'walk (rest arguments))
-                                                    :initial-value 0)))
-                                 (sign-negated (walk (first arguments)))))
-                          (* (reduce #'sign-product (mapcar #'walk arguments) :initial-value 1))
-                          (/ (let ((signs (mapcar #'walk arguments)))
-                               ;; a divisor must be known not to vanish
-                               (if (every (lambda (s) (member s '(1 -1))) (rest signs))
-                                   (reduce #'sign-product signs :initial-value 1)
-                                   :unknown)))
-                          (sqrt (case (walk (first arguments))
-                                  (1 1) (0 0) (:nonnegative :nonnegative) (t :unknown)))
-                          (expt (let ((base (walk (first arguments)))
-                                      (power (second arguments)))
-                                  (cond ((not (integerp power)) :unknown)
-                                        ((zerop power) 1)
-                                        ((and (minusp power) (not (member base '(1 -1)))) :unknown)
-                                        ((evenp power)
-                                         (case base ((1 -1) 1) (0 0) (t :nonnegative)))
-                                        (t base))))
-                          (t :unknown)))))))
-    (walk expression)))
+SIGNS gives (an alist), by the rules of signs (AMES.ALGEBRA:RULES-OF-SIGNS, the one sign
+system): 1, -1, 0, :NONNEGATIVE, :NONPOSITIVE or :UNKNOWN."
+  (ames.algebra:sign-set-signum
+   (ames.algebra:rules-of-signs
+    (lambda (parameter) (ames.algebra:signum-sign-set (cdr (assoc parameter signs))))
+    expression)))
 
 (defparameter *float-sign-margin* 1d-6
   "A constant expression evaluated in double precision (roots, pi) has its value's sign
@@ -120,10 +68,8 @@ expressions the broad phase evaluates (positions and bounds) is below 1e-12.")
   "The sign of EXPRESSION for every admissible parameter value, by exact arithmetic (a
 constant evaluated in floating point only beyond *FLOAT-SIGN-MARGIN*) or the rules of
 signs: 1, -1, 0, :NONNEGATIVE, :NONPOSITIVE or :UNKNOWN. Never asks Maxima."
-  (let ((value (expression-value expression)))
-    (cond ((rationalp value) (signum value))
-          ((and (floatp value) (> (abs value) *float-sign-margin*)) (round (signum value)))
-          (t (sign-algebra (reach-signs-of-parameters reach) expression)))))
+  (or (ames.algebra:constant-sign expression *float-sign-margin*)
+      (sign-algebra (reach-signs-of-parameters reach) expression)))
 
 ;;; Each body's coordinates over the state
 
