@@ -227,6 +227,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "bridge-integrators")
                (:file "bridge-truth")
                (:file "truth-table")
+               (:file "algebra-signs")
                (:file "scenario")
                (:file "scenario-reader")
                (:file "scenario-fuzz")

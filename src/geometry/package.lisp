@@ -27,6 +27,8 @@ and call inside ames.maxima:with-assumptions for symbolic shapes):
   CONTACT-LEAVINGS                        -> the conditions for s(tau) to pass an end
 (when they first hold is the simulator's question: src/simulator/termination.lisp)")
   (:export
+   ;; the one toolkit of plane vectors, lists (X Y) of expressions (vectors.lisp)
+   #:vec #:vx #:vy #:v+ #:v- #:vneg #:vscale #:vdiv #:dot #:cross #:norm-squared #:vector-length
    ;; conditions
    #:geometry-error #:invalid-shape #:invalid-shape-form
    #:undecidable-geometric-fact #:undecidable-fact #:undecidable-subject

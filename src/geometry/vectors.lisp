@@ -1,5 +1,8 @@
 ;;;; src/geometry/vectors.lisp -- plane vectors of expressions, directions and angular ranges.
 ;;;;
+;;;; AMES's one toolkit of plane vectors (exported): the simulator and the knowledge base
+;;;; build their dot and cross products with it, and the report its points of a drawing
+;;;; (numbers are expressions too: the sums and products fold them as CL does).
 ;;;; A vector is a list (X Y) of prefix expressions. A DIRECTION is a non-zero vector
 ;;;; (not necessarily of unit length) with, optionally, the angle expression it makes
 ;;;; with +x. An ANGULAR-RANGE is the set of directions swept counter-clockwise from

@@ -21,12 +21,12 @@
 (defun separation-rate (situation a b)
   "(B' - A').(B0 - A0): the rate of the distance from point A to point B times the
 starting distance, while the points move along their line."
-  (dot-of (span-difference situation a b 'initial-pos) (span-difference situation a b 'vel)))
+  (ames.geometry:dot (span-difference situation a b 'initial-pos) (span-difference situation a b 'vel)))
 
 (defun along-line-p (situation a b)
   "The condition: the relative velocity of A and B has no part across their line at the
 start of the state."
-  `(<= (expt ,(cross-of (span-difference situation a b 'initial-pos)
+  `(<= (expt ,(ames.geometry:cross (span-difference situation a b 'initial-pos)
                         (span-difference situation a b 'vel))
              2)
        0))
@@ -43,7 +43,7 @@ start of the state."
                    :documentation "Two points move together along their line, or are at rest.")
 (register-template *mechanics* 'moving-across-line
                    (lambda (situation a b)
-                     (let ((across (cross-of (span-difference situation a b 'initial-pos)
+                     (let ((across (ames.geometry:cross (span-difference situation a b 'initial-pos)
                                              (span-difference situation a b 'vel))))
                        `(> (expt ,across 2) 0)))
                    :documentation "Two points' relative velocity has a part across their line.")

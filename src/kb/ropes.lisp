@@ -60,7 +60,7 @@
                              situation rope
                              (lambda (s)
                                (multiple-value-bind (a b) (segment-points situation s)
-                                 (norm-of (span-difference situation a b 'pos)))))))
+                                 (ames.geometry:vector-length (span-difference situation a b 'pos)))))))
                      :documentation "L minus the rope's length, from the positions.")
   (register-template kb 'rope-rate-now
                      (lambda (situation rope)
@@ -69,7 +69,7 @@
                         (lambda (s)
                           (multiple-value-bind (a b) (segment-points situation s)
                             (let ((d (span-difference situation a b 'pos)))
-                              `(/ ,(dot-of d (span-difference situation a b 'vel)) ,(norm-of d)))))))
+                              `(/ ,(ames.geometry:dot d (span-difference situation a b 'vel)) ,(ames.geometry:vector-length d)))))))
                      :documentation "The rate of the rope's length, from the positions and velocities."))
 
 (register-rope-templates *mechanics*)
@@ -119,7 +119,7 @@ third law gives the pull at its far end."
   "The unit vector along SEGMENT (from its :from point to its :to point) at the impact."
   (multiple-value-bind (a b) (segment-points situation segment)
     (let ((d (mapcar (lambda (q p) `(- ,q ,p)) (impact-point situation b) (impact-point situation a))))
-      (mapcar (lambda (x) `(/ ,x ,(norm-of d))) d))))
+      (mapcar (lambda (x) `(/ ,x ,(ames.geometry:vector-length d))) d))))
 
 (defun register-rope-impact-templates (kb)
   "Register in KB the template functions of ropes at an impact."
@@ -129,7 +129,7 @@ third law gives the pull at its far end."
                               situation rope
                               (lambda (s)
                                 (multiple-value-bind (a b) (segment-points situation s)
-                                  (norm-of (mapcar (lambda (q p) `(- ,q ,p))
+                                  (ames.geometry:vector-length (mapcar (lambda (q p) `(- ,q ,p))
                                                    (impact-point situation b)
                                                    (impact-point situation a))))))
                             ,(entity-property (entity-named situation rope) :length)))
@@ -140,7 +140,7 @@ third law gives the pull at its far end."
                              situation rope
                              (lambda (s)
                                (multiple-value-bind (a b) (segment-points situation s)
-                                 (dot-of (impact-segment-direction situation s)
+                                 (ames.geometry:dot (impact-segment-direction situation s)
                                          (mapcar (lambda (axis)
                                                    `(- (vel-after ,(point-body b) ,axis)
                                                        (vel-after ,(point-body a) ,axis)))

@@ -63,22 +63,10 @@ INITIAL-POS (at the state's start), VEL or ACC (its rates)."
                 `(- ,(point-rate situation b axis head) ,(point-rate situation a axis head))))
           '(:x :y)))
 
-(defun dot-of (u v)
-  "The expression of the dot product of the vectors U and V."
-  `(+ (* ,(first u) ,(first v)) (* ,(second u) ,(second v))))
-
-(defun cross-of (u v)
-  "The expression of the z component of the cross product of U and V."
-  `(- (* ,(first u) ,(second v)) (* ,(second u) ,(first v))))
-
-(defun norm-of (u)
-  "The expression of the length of the vector U."
-  `(sqrt ,(dot-of u u)))
-
 (defun initial-direction (situation a b)
   "The unit vector from A to B at the start of the state."
   (let* ((d0 (span-difference situation a b 'initial-pos))
-         (norm (norm-of d0)))
+         (norm (ames.geometry:vector-length d0)))
     (mapcar (lambda (x) `(/ ,x ,norm)) d0)))
 
 (defun register-span-templates (kb)
@@ -90,22 +78,22 @@ INITIAL-POS (at the state's start), VEL or ACC (its rates)."
          "A component of the unit vector from A to B at the start of the state.")
     (reg 'aligned-span-length
          (lambda (situation a b)
-           (dot-of (span-difference situation a b 'pos) (initial-direction situation a b)))
+           (ames.geometry:dot (span-difference situation a b 'pos) (initial-direction situation a b)))
          "The span's length while it keeps its starting direction: (B - A).u0.")
     (reg 'aligned-span-acceleration
          (lambda (situation a b)
-           (dot-of (span-difference situation a b 'acc) (initial-direction situation a b)))
+           (ames.geometry:dot (span-difference situation a b 'acc) (initial-direction situation a b)))
          "The second derivative of that length: (B'' - A'').u0.")
     (reg 'span-transverse-rate
          (lambda (situation a b)
-           (cross-of (span-difference situation a b 'initial-pos) (span-difference situation a b 'vel)))
+           (ames.geometry:cross (span-difference situation a b 'initial-pos) (span-difference situation a b 'vel)))
          "The relative velocity across the starting direction (times the starting length).")
     (reg 'span-offset
          (lambda (situation a b)
-           (cross-of (span-difference situation a b 'initial-pos) (span-difference situation a b 'pos)))
+           (ames.geometry:cross (span-difference situation a b 'initial-pos) (span-difference situation a b 'pos)))
          "How far B - A has turned off the starting direction (times the starting length).")
     (reg 'current-span-length
-         (lambda (situation a b) (norm-of (span-difference situation a b 'pos)))
+         (lambda (situation a b) (ames.geometry:vector-length (span-difference situation a b 'pos)))
          "The span's length, |B - A|.")
     (reg 'span-vector
          (lambda (situation a b axis) (axis-component (span-difference situation a b 'pos) axis))
@@ -116,8 +104,8 @@ INITIAL-POS (at the state's start), VEL or ACC (its rates)."
                  (v (span-difference situation a b 'vel))
                  (w (span-difference situation a b 'acc))
                  (l `(span-length ,span)))
-             `(- (/ (+ ,(dot-of v v) ,(dot-of d w)) ,l)
-                 (/ (expt ,(dot-of d v) 2) (expt ,l 3)))))
+             `(- (/ (+ ,(ames.geometry:dot v v) ,(ames.geometry:dot d w)) ,l)
+                 (/ (expt ,(ames.geometry:dot d v) 2) (expt ,l 3)))))
          "The second derivative of |B - A|: (|v|^2 + d.a)/l - (d.v)^2/l^3.")))
 
 (register-span-templates *mechanics*)

@@ -27,7 +27,7 @@ curved face, ...). DATUM names the entity, DETAIL says what is missing."))
 (defun bumper-axis (situation bumper)
   "The unit vector (UX UY) of BUMPER's axis, from its attachment toward its free end."
   (let* ((toward (entity-property (entity-named situation bumper) :toward))
-         (norm (norm-of toward)))
+         (norm (ames.geometry:vector-length toward)))
     (mapcar (lambda (x) `(/ ,x ,norm)) toward)))
 
 (defun point-contact-compression (situation contact)
@@ -50,9 +50,9 @@ along the axis. Only straight faces: signals UNMODELLED-SITUATION for a curved o
                              '(:x :y)))
            (start (ames.geometry:contact-point geometry 0))
            (normal (ames.geometry:contact-outward-normal geometry 0))
-           (depth `(- ,(dot-of (mapcar (lambda (q p) `(- ,q ,p)) relative start) normal))))
+           (depth `(- ,(ames.geometry:dot (mapcar (lambda (q p) `(- ,q ,p)) relative start) normal))))
       ;; the free end pushed back by c along -u stays on the face: depth = c (-u.n)
-      `(/ ,depth (- ,(dot-of (bumper-axis situation (entity-name bumper)) normal))))))
+      `(/ ,depth (- ,(ames.geometry:dot (bumper-axis situation (entity-name bumper)) normal))))))
 
 (defun register-spring-templates (kb)
   "Register in KB the template functions of springs and bumpers."

@@ -3,6 +3,7 @@
 
 (defpackage #:ames.report
   (:use #:cl #:ames.base #:ames.scenario #:ames.simulator)
+  (:import-from #:ames.geometry #:v+ #:v- #:vscale #:norm-squared)
   (:documentation "Reports of a simulation history. For programs: the readable
 s-expression of the scenario language's output section, and the same content as JSON.
 For people: the presentation step (each quantity written as a textbook would, through

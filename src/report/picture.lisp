@@ -115,7 +115,7 @@ fact, whether it was selected, is the one DRAWN (a list of labels), or was not s
            (loop for (from vector) in arrows
                  for numbered in (numbered-symbols symbols)
                  when (> (vlength vector) (* 1d-9 largest))
-                   collect (list from (v* (/ (* 0.22d0 size) largest) vector)
+                   collect (list from (vscale (/ (* 0.22d0 size) largest) vector)
                                  (if (= 1 (length (getf numbered :word))) (getf numbered :symbol) (getf numbered :word))))))))
 
 (defun draw-trajectories (out frame scenario path paths moving colours bindings)

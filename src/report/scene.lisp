@@ -56,13 +56,12 @@ valued so far."
   (let ((x (number-at (first pair) bindings)) (y (number-at (second pair) bindings)))
     (and x y (list x y))))
 
-(defun v+ (a b) "The sum of the points A and B." (list (+ (first a) (first b)) (+ (second a) (second b))))
-(defun v- (a b) "The point A minus B." (list (- (first a) (first b)) (- (second a) (second b))))
-(defun v* (k a) "The point A scaled by K." (list (* k (first a)) (* k (second a))))
-(defun vlength (a) "The length of A." (sqrt (+ (expt (first a) 2) (expt (second a) 2))))
+;; Points of the drawing are vectors of numbers: the vector toolkit's V+, V- and VSCALE
+;; (ames.geometry, imported) fold numbers as CL does; lengths are taken in floating point.
+(defun vlength (a) "The length of the numeric vector A, a float." (sqrt (norm-squared a)))
 (defun vunit (a)
-  "A scaled to length 1 (the zero vector stays zero)."
-  (let ((l (vlength a))) (if (> l 1d-12) (v* (/ 1 l) a) (list 0d0 0d0))))
+  "The numeric vector A scaled to length 1 (the zero vector stays zero)."
+  (let ((l (vlength a))) (if (> l 1d-12) (vscale (/ 1 l) a) (list 0d0 0d0))))
 
 ;;; Shapes in the plane
 
@@ -131,9 +130,9 @@ where a number is missing."
 (defun outline-anchor (outline)
   "A point inside OUTLINE where its label and weight go: a polygon's vertex mean."
   (ecase (first outline)
-    ((:polygon :polyline) (v* (/ 1d0 (length (second outline))) (reduce #'v+ (second outline))))
+    ((:polygon :polyline) (vscale (/ 1d0 (length (second outline))) (reduce #'v+ (second outline))))
     (:circle (second outline))
-    (:half-plane (v* 0.5d0 (v+ (second outline) (third outline))))
+    (:half-plane (vscale 0.5d0 (v+ (second outline) (third outline))))
     (:point (second outline))))
 
 ;;; Trajectories

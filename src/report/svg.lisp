@@ -76,9 +76,9 @@ breaks written visibly (VISIBLE-TEXT): XML 1.0 allows no other."
        (let* ((direction (vunit (v- p2 p1)))
               (inward (list (- (second direction)) (first direction)))
               (reach (* 4 (max (- (frame-xmax frame) (frame-xmin frame)) (- (frame-ymax frame) (frame-ymin frame)))))
-              (a (v- p1 (v* reach direction))) (b (v+ p1 (v* reach direction))))
+              (a (v- p1 (vscale reach direction))) (b (v+ p1 (vscale reach direction))))
          (format stream "<polygon class=\"~A\" points=\"~A\" clip-path=\"url(#view)\"~A/>~%" class
-                 (points-attribute frame (list a b (v+ b (v* reach inward)) (v+ a (v* reach inward))))
+                 (points-attribute frame (list a b (v+ b (vscale reach inward)) (v+ a (vscale reach inward))))
                  extra)
          (format stream "<line class=\"surface\" x1=\"~,2F\" y1=\"~,2F\" x2=\"~,2F\" y2=\"~,2F\" clip-path=\"url(#view)\"/>~%"
                  (first (to-picture frame a)) (second (to-picture frame a))
@@ -142,7 +142,7 @@ body) into its observer (the first), or NIL."
       (multiple-value-bind (gkind gdata) (feature-geometry scenario observer-feature bindings)
         (let ((point (cond ((member gkind '(:point :vertex)) gdata)
                            ((eq fkind :vertex) fdata)
-                           ((eq gkind :edge) (v* 0.5d0 (v+ (first gdata) (second gdata)))))))
+                           ((eq gkind :edge) (vscale 0.5d0 (v+ (first gdata) (second gdata)))))))
           (when (and point (every #'identity (alexandria:ensure-list (if (eq fkind :edge) fdata '(t)))))
             (let ((normal (case fkind
                             (:edge (edge-outward-normal fdata))
@@ -150,7 +150,7 @@ body) into its observer (the first), or NIL."
                             (:arc (if (eq (second fdata) :outside)
                                       (vunit (v- (first fdata) point))
                                       (vunit (v- point (first fdata)))))
-                            (:vertex (and (eq gkind :edge) (v* -1 (edge-outward-normal gdata)))))))
+                            (:vertex (and (eq gkind :edge) (vscale -1 (edge-outward-normal gdata)))))))
               (and normal (> (vlength normal) 0.5d0) (list point normal)))))))))
 
 (defun force-arrows (scenario state bindings)
@@ -167,7 +167,7 @@ body) into its observer (the first), or NIL."
                         (size (number-at value point)))
                    (when (and geometry size)
                      (push (list (first geometry)
-                                 (v* (if (eq (first contact) (second entry)) size (- size)) (second geometry))
+                                 (vscale (if (eq (first contact) (second entry)) size (- size)) (second geometry))
                                  (or symbol "N"))
                            arrows))))
                 ((vector-value-p value)

@@ -130,12 +130,8 @@ pairs of bodies with mass (see src/kb/springs.lisp, ropes.lisp, gravitation.lisp
   "True when the geometry CONTACT can be reached by a point retreating along AXIS: a
 curved one, or a straight one whose outward normal is against AXIS."
   (or (not (straight-contact-p contact))
-      (ames.algebra:holds-p bridge (vec-dot-expression axis (ames.geometry:contact-outward-normal contact 0)
-                                                      '<))))
-
-(defun vec-dot-expression (u v relation)
-  "The relation (RELATION u.v 0)."
-  (list relation `(+ (* ,(first u) ,(first v)) (* ,(second u) ,(second v))) 0))
+      (ames.algebra:holds-p bridge (list '< (ames.geometry:dot axis (ames.geometry:contact-outward-normal contact 0))
+                                         0))))
 
 (defun probe-loci (scenario bridge first-index)
   "The loci of the scenario's probes (a bumper's free end, a point attached to a body
@@ -211,9 +207,9 @@ touching case is recognised (a point behind it reads :FALSE)."
         (if (straight-contact-p geometry)
             (let* ((normal (ames.geometry:contact-outward-normal geometry 0))
                    (start (ames.geometry:contact-point geometry 0))
-                   (gap (tidy run (vec-dot (vec- q start) normal)))
-                   (retreat (tidy run `(/ ,gap ,(vec-dot axis normal)))))
-              (values gap (mapcar (lambda (x) (tidy run x)) (vec- q (vec-scale retreat axis)))))
+                   (gap (tidy run (ames.geometry:dot (ames.geometry:v- q start) normal)))
+                   (retreat (tidy run `(/ ,gap ,(ames.geometry:dot axis normal)))))
+              (values gap (mapcar (lambda (x) (tidy run x)) (ames.geometry:v- q (ames.geometry:vscale retreat axis)))))
             (values (tidy run (ames.geometry:meeting-gap (ames.geometry:contact-meeting geometry q))) q))
       (cond ((not (holds-everywhere run (ames.geometry:meeting-extent
                                          (ames.geometry:contact-meeting geometry end))))

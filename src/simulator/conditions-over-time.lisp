@@ -27,7 +27,7 @@ when it moves, its position now when it is fixed."
 (defun relative-position-terms (run solved contact)
   "The observer's position relative to CONTACT's obstacle, over SOLVED's state terms."
   (destructuring-bind (observer obstacle) (contact-bodies run contact)
-    (vec- (body-position-terms run solved observer) (body-position-terms run solved obstacle))))
+    (ames.geometry:v- (body-position-terms run solved observer) (body-position-terms run solved obstacle))))
 
 (defun contact-meeting-terms (run solved contact)
   "The geometry's MEETING of CONTACT for the relative position over SOLVED's state
@@ -41,7 +41,7 @@ SOLVED's state terms."
   (let* ((geometry (contact-geometry run contact))
          (q0 (relative-initial-state run contact))
          (s0 (ames.geometry:contact-parameter geometry q0)))
-    `(+ ,s0 ,(vec-dot (vec- (relative-position-terms run solved contact) q0)
+    `(+ ,s0 ,(ames.geometry:dot (ames.geometry:v- (relative-position-terms run solved contact) q0)
                       (ames.geometry:contact-unit-tangent geometry s0)))))
 
 (defun straight-arc-speed-terms (run solved contact)
@@ -51,7 +51,7 @@ state terms."
   (let* ((geometry (contact-geometry run contact))
          (s0 (ames.geometry:contact-parameter geometry (relative-initial-state run contact))))
     (destructuring-bind (observer obstacle) (contact-bodies run contact)
-      (vec-dot (vec- (body-velocity-terms run solved observer)
+      (ames.geometry:dot (ames.geometry:v- (body-velocity-terms run solved observer)
                      (body-velocity-terms run solved obstacle))
                (ames.geometry:contact-unit-tangent geometry s0)))))
 

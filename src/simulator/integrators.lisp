@@ -165,7 +165,7 @@ of motion. Signals AMBIGUOUS-TRANSITION when the direction is not decided."
                                        :datum w0 :missing-fact `(> ,(at-arc tangential s0) 0)
                                        :detail "direction of motion along a curved contact"))))))
          (speed `(* ,direction (sqrt ,energy)))
-         (point (vec+ (body-position run obstacle)
+         (point (ames.geometry:v+ (body-position run obstacle)
                       (ames.geometry:contact-point geometry +arc-length+)))
          (tangent (ames.geometry:contact-unit-tangent geometry +arc-length+)))
     (setf (group-variable group) +arc-length+

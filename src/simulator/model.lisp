@@ -266,7 +266,7 @@ terms stay)."
   (let ((geometry (contact-geometry run contact)))
     (multiple-value-bind (q v) (relative-initial-state run contact)
       (declare (ignore q))
-      (tidy run (vec-dot v (ames.geometry:contact-unit-tangent
+      (tidy run (ames.geometry:dot v (ames.geometry:contact-unit-tangent
                             geometry (initial-arc-length run contact)))))))
 
 ;;; Local series: every quantity near the start of the state, as a polynomial in TAU

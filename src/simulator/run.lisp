@@ -107,12 +107,6 @@ the parameters' declared signs (SIGN-ALGEBRA) answer first; Maxima where they do
          0)
         (t :unknown)))
 
-(defun vec+ (a b) (list `(+ ,(first a) ,(first b)) `(+ ,(second a) ,(second b))))
-(defun vec- (a b) (list `(- ,(first a) ,(first b)) `(- ,(second a) ,(second b))))
-(defun vec-scale (k a) (list `(* ,k ,(first a)) `(* ,k ,(second a))))
-(defun vec-dot (a b) `(+ (* ,(first a) ,(first b)) (* ,(second a) ,(second b))))
-(defun vec-cross (a b) `(- (* ,(first a) ,(second b)) (* ,(second a) ,(first b))))
-
 (defun at-time (expression time)
   "EXPRESSION with TAU replaced by TIME."
   (substitute-expressions (list (cons 'tau time)) expression))
@@ -159,8 +153,8 @@ the parameters' declared signs (SIGN-ALGEBRA) answer first; Maxima where they do
 (defun relative-initial-state (run contact)
   "The observer's position and velocity relative to the obstacle at the state's start."
   (destructuring-bind (observer obstacle) (contact-bodies run contact)
-    (values (vec- (body-position run observer) (body-position run obstacle))
-            (vec- (body-velocity run observer) (body-velocity run obstacle)))))
+    (values (ames.geometry:v- (body-position run observer) (body-position run obstacle))
+            (ames.geometry:v- (body-velocity run observer) (body-velocity run obstacle)))))
 
 ;;; Setting a run up
 
@@ -209,7 +203,7 @@ are alternatives. At a concave corner both faces can push at once."
                    for other = (gethash neighbour by-geometry)
                    when (and other (eq end :end))
                      do (let* ((length (ames.geometry:contact-length geometry))
-                               (turn (vec-cross (ames.geometry:contact-unit-tangent geometry length)
+                               (turn (ames.geometry:cross (ames.geometry:contact-unit-tangent geometry length)
                                                 (ames.geometry:contact-unit-tangent neighbour 0))))
                           (when (ames.algebra:holds-p bridge `(>= ,turn 0))
                             (push other (cdr (or (assoc name alternatives)
@@ -263,7 +257,7 @@ files it names)."
 on its locus): positive when separating, negative when approaching."
   (let ((geometry (contact-geometry run contact)))
     (multiple-value-bind (q v) (relative-initial-state run contact)
-      (tidy run (vec-dot v (ames.geometry:contact-outward-normal
+      (tidy run (ames.geometry:dot v (ames.geometry:contact-outward-normal
                             geometry (ames.geometry:contact-parameter geometry q)))))))
 
 (defun touching-alternatives (run contact)

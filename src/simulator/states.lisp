@@ -142,9 +142,9 @@ start, before any integration: no end state) ends where it started."
                  (geometry (contact-geometry run contact))
                  (s (path 'ames.kb:path-position)))
             (mapcar (lambda (x) (tidy run x))
-                    (vec+ base (if (eq what :pos)
+                    (ames.geometry:v+ base (if (eq what :pos)
                                    (ames.geometry:contact-point geometry s)
-                                   (vec-scale (path 'ames.kb:path-speed)
+                                   (ames.geometry:vscale (path 'ames.kb:path-speed)
                                               (ames.geometry:contact-unit-tangent geometry s))))))))))
 
 (defun rational-of (x)
