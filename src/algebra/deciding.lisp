@@ -124,19 +124,6 @@ is there or the form is not linear in it."
                   (and numerator-signs (only denominator-signs :positive :negative)
                        (sign-product numerator-signs denominator-signs)))))))))))
 
-(defun relation-verdict (operator signs)
-  "The truth of (OPERATOR d 0) when d may have only SIGNS."
-  (flet ((only (&rest allowed) (and signs (subsetp signs allowed)))
-         (none (&rest excluded) (and signs (null (intersection signs excluded)))))
-    (cond ((null signs) :unknown)
-          (t (ecase operator
-               (> (cond ((only :positive) :true) ((none :positive) :false) (t :unknown)))
-               (>= (cond ((only :positive :zero) :true) ((only :negative) :false) (t :unknown)))
-               (< (cond ((only :negative) :true) ((none :negative) :false) (t :unknown)))
-               (<= (cond ((only :negative :zero) :true) ((only :positive) :false) (t :unknown)))
-               (= (cond ((only :zero) :true) ((none :zero) :false) (t :unknown)))
-               (/= (cond ((none :zero) :true) ((only :zero) :false) (t :unknown))))))))
-
 (defun opposite-truth (bridge relation lhs rhs)
   "The truth of RELATION that is() gives through the opposite relation (X <= 0 for
 X > 0, equal for notequal ...): :FALSE when is() proves the opposite, :TRUE when it

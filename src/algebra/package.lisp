@@ -25,6 +25,7 @@ It asks Maxima only through the bridge.")
    ;; the one sign system: sign sets and the rules of signs (sign-rules.lisp)
    #:number-signs #:negated-signs #:only-signs-p #:sum-signs #:power-signs #:sign-product
    #:constant-sign #:rules-of-signs #:sign-set-signum #:signum-sign-set
+   #:relation-signs #:signs-relation #:relation-verdict
    ;; deciding (deciding.lisp)
    #:decide #:holds-p #:sign-varies-p #:refuted-p
    ;; numbers before proofs (values.lisp)

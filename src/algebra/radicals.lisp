@@ -91,3 +91,15 @@ Equal to EXPRESSION in value. Signals what SIMPLIFY and DECIDE signal."
               simplified
               (let ((again (simplify bridge real :strategy :full)))
                 (if (equal again (real-radicals bridge again)) again real)))))))
+
+;;; Facts told to Maxima with real roots
+
+(defun fact-as-told (bridge fact)
+  "FACT as Maxima is to be told it when assumed: with its products of square roots of
+negative radicands written with real roots (REALIFIED-RELATION, truth.lisp), else as given. The
+bridge calls it through its hook *TOLD-FACT*."
+  (if (product-root-radicands fact)
+      (realified-relation bridge fact)
+      fact))
+
+(setf *told-fact* 'fact-as-told)

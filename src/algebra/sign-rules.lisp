@@ -59,6 +59,38 @@
                                     ((eq x y) :positive)
                                     (t :negative))))))
 
+;;; Relations to zero
+
+(defparameter +relation-signs+
+  '((< :negative) (<= :negative :zero) (= :zero) (>= :positive :zero) (> :positive)
+    (/= :positive :negative))
+  "Each relation operator with the sign set of E it admits in (OP E 0).")
+
+(defun relation-signs (operator)
+  "The sign set of E admitted by (OPERATOR E 0). Signals a TYPE-ERROR unless OPERATOR
+is one of < <= = >= > /=."
+  (rest (or (assoc operator +relation-signs+)
+            (error 'type-error :datum operator :expected-type '(member < <= = >= > /=)))))
+
+(defun signs-relation (signs)
+  "The order relation (< <= = >= >) whose (OP E 0) admits exactly the sign set SIGNS;
+:ALL when SIGNS holds every sign; else NIL."
+  (if (subsetp +all-signs+ signs)
+      :all
+      (loop for (operator . admitted) in +relation-signs+
+            when (and (not (eq operator '/=)) (subsetp admitted signs) (subsetp signs admitted))
+              return operator)))
+
+(defun relation-verdict (operator signs)
+  "The truth of (OPERATOR d 0) when d may have only the sign set SIGNS: :TRUE when every
+sign of SIGNS is admitted, :FALSE when none is, else :UNKNOWN (also for SIGNS NIL,
+nothing known)."
+  (let ((admitted (relation-signs operator)))
+    (cond ((null signs) :unknown)
+          ((subsetp signs admitted) :true)
+          ((null (intersection signs admitted)) :false)
+          (t :unknown))))
+
 ;;; The sign of a constant
 
 (defparameter *float-decision-margin* 1d-9

@@ -348,16 +348,6 @@ relation complex, or a fact about it inconsistent."
   (let ((radicands (imaginary-radicands bridge relation)))
     (if radicands (realified relation radicands) relation)))
 
-(defun fact-as-told (bridge fact)
-  "FACT as Maxima is to be told it when assumed: with its products of square roots of
-negative radicands written with real roots (REALIFIED-RELATION), else as given. The
-bridge calls it through its hook *TOLD-FACT*."
-  (if (product-root-radicands fact)
-      (realified-relation bridge fact)
-      fact))
-
-(setf *told-fact* 'fact-as-told)
-
 (defun decide-with-imaginary-radicands (bridge relation)
   "RELATION, which has products of square roots of negative radicands (see
 IMAGINARY-RADICANDS), decided in real terms: written with real roots where the products

@@ -203,10 +203,7 @@ signalled when it matters, the restarts ASSUME-TRUE / ASSUME-FALSE then answer
 (defun sign-satisfies-p (operator sign)
   "True when (OPERATOR D 0) holds for a D of SIGN (:NEGATIVE, :ZERO or :POSITIVE);
 OPERATOR is one of = /= < > <= >=."
-  (ecase operator
-    (= (eq sign :zero)) (/= (not (eq sign :zero)))
-    (< (eq sign :negative)) (> (eq sign :positive))
-    (<= (not (eq sign :positive))) (>= (not (eq sign :negative)))))
+  (and (member sign (ames.algebra:relation-signs operator)) t))
 
 (defun fact-holds-p (decider relation)
   "True when RELATION, (REL LHS RHS) with REL one of = /= < > <= >=, holds; false when

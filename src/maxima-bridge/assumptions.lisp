@@ -56,7 +56,7 @@ assumed with them; NIL derives none. Installed by the algebra layer (src/algebra
 (defvar *told-fact* nil
   "The function of a bridge and a fact that gives the fact as Maxima is to be told it (a
 product of square roots of negative radicands written with real roots); NIL tells every
-fact as given. Installed by the algebra layer (src/algebra/truth.lisp).")
+fact as given. Installed by the algebra layer (src/algebra/radicals.lisp).")
 
 (defun derived-facts (facts)
   "The facts *DERIVED-FACTS* reads off FACTS (flattened first), or none."

@@ -1,8 +1,9 @@
 ;;;; src/maxima-bridge/operations.lisp -- what the rest of AMES asks of Maxima: simplify, solve, equivalence.
 ;;;;
 ;;;; Every operation takes and returns AMES's prefix algebra. Deciding relations is in
-;;;; deciding.lisp and truth.lisp, numeric witnesses in witnesses.lisp, the earliest root,
-;;;; the autonomous ODE, numeric values and LaTeX in roots.lisp and ode.lisp.
+;;;; the algebra layer (src/algebra/: deciding.lisp, truth.lisp, witnesses.lisp; the earliest
+;;;; root in roots.lisp), the autonomous ODE and numeric values in ode.lisp, TeX in
+;;;; presentation.lisp.
 ;;;;
 ;;;; Speed: a round trip costs little next to Maxima's own work, so the work is cut, never
 ;;;; the answers: steps that give the ratsimp form again (trigsimp without sin, cos or

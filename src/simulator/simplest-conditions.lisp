@@ -14,16 +14,6 @@
 
 (in-package #:ames.simulator)
 
-(defparameter +relation-signs+ '((< :neg) (<= :neg :zero) (= :zero) (>= :pos :zero) (> :pos))
-  "Each relation operator with the signs of E it admits in (OP E 0).")
-
-(defun operator-of-signs (signs)
-  "The relation operator admitting exactly SIGNS, :ALL for every sign, or NIL."
-  (if (subsetp '(:neg :zero :pos) signs)
-      :all
-      (first (find-if (lambda (entry) (and (subsetp (rest entry) signs) (subsetp signs (rest entry))))
-                      +relation-signs+))))
-
 (defun flipped (operator)
   "OPERATOR with the sides exchanged (the relation of -E)."
   (ecase operator (< '>) (> '<) (<= '>=) (>= '<=) (= '=)))
@@ -112,8 +102,8 @@ when all are proven, :FALSE when one is proven false."
             (let ((op-b (cond ((or (equal e-a e-b) (ignore-errors (ames.maxima:equivalent-p bridge e-a e-b))) op-b)
                               ((ignore-errors (ames.maxima:equivalent-p bridge e-a `(- ,e-b))) (flipped op-b)))))
               (when op-b
-                (let ((op (operator-of-signs (union (rest (assoc op-a +relation-signs+))
-                                                    (rest (assoc op-b +relation-signs+))))))
+                (let ((op (ames.algebra:signs-relation (union (ames.algebra:relation-signs op-a)
+                                                              (ames.algebra:relation-signs op-b)))))
                   (cond ((eq op :all) (or (remove (first only-a) a :test #'equal) :true))
                         (op (substitute (list op e-a 0) (first only-a) a :test #'equal))))))))))))
 
