@@ -36,6 +36,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "operations")
                  (:file "ode")
                  (:file "presentation")
+                 (:file "calculus")
                  (:static-file "maxima-server.lisp")))
    (:module "algebra" :pathname "src/algebra/" :serial t
     :depends-on ("base" "maxima-bridge")

@@ -259,8 +259,6 @@ antiderivative may jump between the ends)."
          (saved (bridge-timeout bridge)))
     (setf (bridge-timeout bridge) (min saved *integration-timeout*))
     (unwind-protect
-         (let ((answer (maxima-request bridge (mcall "$INTEGRATE" (to-mx bridge integrand) (to-mx bridge s))
-                                       :datum integrand)))
-           (unless (contains-head-p +integrate-noun+ answer)
-             (values (from-mx bridge answer) nil)))
+         (let ((antiderivative (maxima-antiderivative bridge integrand s)))
+           (when antiderivative (values antiderivative nil)))
       (setf (bridge-timeout bridge) saved))))

@@ -1,12 +1,12 @@
 ;;;; src/algebra/integrator-support.lisp -- what the integrators share: their conditions, sign decisions, pattern extraction and numeric verification.
 ;;;;
 ;;;; The integrators (travel times, linear ODEs, trigonometric roots) recognise an
-;;;; expression's shape by asking Maxima (polynomial coefficients; the constants A, B, C of
-;;;; A + B cos(k s) + C sin(k s)), choose a closed form by the signs the current
-;;;; assumptions decide, and check every answer before it leaves the bridge: symbolically
-;;;; when Maxima can, else at random admissible points (points satisfying the facts in
-;;;; force, as the numeric witnesses of operations.lisp draw them) against an independent
-;;;; numeric computation.
+;;;; expression's shape by asking Maxima through the bridge's calculus (polynomial
+;;;; coefficients, derivatives; the constants A, B, C of A + B cos(k s) + C sin(k s)),
+;;;; choose a closed form by the signs the current assumptions decide, and check every
+;;;; answer before it leaves the algebra: symbolically when Maxima can, else at random
+;;;; admissible points (points satisfying the facts in force, as witnesses.lisp draws
+;;;; them) against an independent numeric computation.
 
 (in-package #:ames.algebra)
 
@@ -22,13 +22,6 @@ equations or the initial values when substituted back. DATUM is the list of equa
 
 ;;; Auxiliary variables (the bridge's own names, never a user's)
 
-(defun auxiliary-variable (bridge symbol)
-  "SYMBOL (an uninterned symbol held by the integrators) registered in BRIDGE's name
-table as one of the bridge's own $AMESX names, so that it can never meet a user's name;
-returns SYMBOL, which then translates like any variable."
-  (maxima-name (bridge-names bridge) symbol "$AMESX")
-  symbol)
-
 (defvar *laplace-variable* (make-symbol "LAPLACE-S")
   "The variable of Laplace transforms in SOLVE-LINEAR-ODES.")
 
@@ -38,20 +31,6 @@ returns SYMBOL, which then translates like any variable."
 (defvar *sample-variable* (make-symbol "SAMPLE-S")
   "The variable standing for a position or a time inside a derivative check.")
 
-;;; Asking Maxima where a failure only means "this way does not work"
-
-(defun call-or-nil (function)
-  "FUNCTION's values, or NIL when Maxima asks a question, fails, times out, or answers
-outside the algebra: for the attempts whose failure only means that another way must
-be tried (never for an answer that is returned unchecked)."
-  (handler-case (funcall function)
-    (maxima-question () nil)
-    (maxima-error () nil)
-    (maxima-timeout () nil)
-    (untranslatable-result () nil)
-    (inconsistent-assumptions () nil)
-    (solve-failed () nil)))
-
 (defun simplified (bridge expression &optional (strategy :full))
   "EXPRESSION simplified by Maxima (STRATEGY, :FULL by default: the smallest of several
 forms)."
@@ -60,14 +39,6 @@ forms)."
 (defun substituted (bridge expression variable value &optional (strategy :full))
   "EXPRESSION with VARIABLE replaced by VALUE, simplified."
   (simplified bridge (substitute-expressions (list (cons variable value)) expression) strategy))
-
-(defun maxima-derivative (bridge expression variable)
-  "The derivative of EXPRESSION with respect to the name VARIABLE, by Maxima, ratsimped.
-Signals UNTRANSLATABLE-RESULT when Maxima leaves it unevaluated (a derivative of
-jacobi_am, say)."
-  (from-mx bridge (maxima-request bridge (mcall "$RATSIMP" (mcall "$DIFF" (to-mx bridge expression)
-                                                                  (to-mx bridge variable)))
-                                  :datum expression)))
 
 (defun decided-sign (bridge expression)
   "The sign of EXPRESSION that the current assumptions decide: :POSITIVE, :NEGATIVE or
@@ -85,25 +56,6 @@ jacobi_am, say)."
   (or (eql expression 0) (equivalent-p bridge expression 0)))
 
 ;;; Shapes
-
-(defun polynomial-coefficients-in (bridge expression variable)
-  "The coefficients (c0 c1 ... cd) of EXPRESSION as a polynomial in VARIABLE (prefix,
-free of VARIABLE, simplified), or NIL when it is not one."
-  (let* ((form (to-mx bridge expression))
-         (answers (request-list bridge (list (mcall "$AMES_POLYNOMIAL_COEFFICIENTS" form (to-mx bridge variable))
-                                             (mcall "$DENOM" (mcall "$RATSIMP" form)))
-                                :datum expression))
-         (numerator (first answers))
-         (denominator (second answers)))
-    ;; ames_polynomial_coefficients gives the numerator's coefficients (its denominator
-    ;; is then free of VARIABLE)
-    (and (not (eq numerator +false+))
-         (call-or-nil
-          (lambda ()
-            (mapcar (lambda (c)
-                      (from-mx bridge (maxima-request bridge (mcall "$RATSIMP" (mquotient c denominator))
-                                                      :datum expression)))
-                    (mlist-items numerator)))))))
 
 (defun trigonometric-arguments (expression variable)
   "The arguments of the sines and cosines in EXPRESSION that depend on VARIABLE, each once."
@@ -142,11 +94,7 @@ minus A + B cos(k v) + C sin(k v) simplifies to 0."
 arguments of its sines and cosines expanded into sums (sin((pi + 2 w t)/2) into
 sin(pi/2 + w t), which Maxima's trigexpand then takes apart) simplifies to 0."
   (or (equivalent-p bridge x y)
-      (let ((difference (mdifference (to-mx bridge x) (to-mx bridge y))))
-        (flet ((zero-p (form) (eql 0 (maxima-request bridge form :datum (list '- x y)))))
-          (or (zero-p (mcall "$RATSIMP" (mcall "$TRIGEXPAND" (mcall "$EXPAND" difference))))
-              (zero-p (mcall "$RATSIMP" (mcall "$AMES_TRIGSIMP"
-                                               (mcall "$TRIGEXPAND" (mcall "$EXPAND" difference))))))))))
+      (zero-after-trigexpand-p bridge x y)))
 
 ;;; Numeric verification
 

@@ -130,14 +130,11 @@ each c free of the state, checked by Maxima. Signals INVALID-BRIDGE-ARGUMENT oth
 
 (defun inverse-laplace (bridge transform time datum)
   "ilt(TRANSFORM, s, TIME), simplified, in prefix algebra."
-  (let ((answer (maxima-request bridge (mcall "$ILT" (to-mx bridge transform)
-                                              (to-mx bridge *laplace-variable*) (to-mx bridge time))
-                                :datum datum)))
-    (handler-case (simplest-form bridge answer transform)
-      (untranslatable-result (c)
-        (error 'linear-ode-failed :datum datum
-                                  :detail (format nil "the inverse Laplace transform is outside the algebra (~A)"
-                                                  (ames-error-detail c)))))))
+  (handler-case (inverse-laplace-transform bridge transform *laplace-variable* time datum)
+    (untranslatable-result (c)
+      (error 'linear-ode-failed :datum datum
+                                :detail (format nil "the inverse Laplace transform is outside the algebra (~A)"
+                                                (ames-error-detail c))))))
 
 (defun verify-linear-solution (bridge accelerations state time positions velocities
                                initial-positions initial-velocities)

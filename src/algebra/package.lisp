@@ -2,19 +2,20 @@
 
 (defpackage #:ames.algebra
   (:use #:cl #:ames.base #:ames.maxima)
-  ;; What the algebra still writes in Maxima's own terms: the requests it builds for the
-  ;; bridge to send (is(), sign(), coefficients, derivatives, Laplace transforms). Every
-  ;; one goes out through MAXIMA-REQUEST and the bridge's translation.
+  ;; What the reasoning (deciding.lisp, signs.lisp, truth.lisp, roots.lisp, orders.lisp)
+  ;; still writes in Maxima's own terms: the is() and sign() requests and the root
+  ;; formulas it builds for the bridge to send (through MAXIMA-REQUEST and the bridge's
+  ;; translation), and the bridge's cache and name table that DECIDE shares. The
+  ;; integrators ask through the bridge's exported operations (calculus.lisp) only.
   (:import-from #:ames.maxima
                 #:*cache-limit* #:*relation-heads*
-                #:+equal+ #:+false+ #:+i+ #:+integrate-noun+ #:+mequal+ #:+mexpt+ #:+mgeqp+
-                #:+mgreaterp+ #:+mleqp+ #:+mlessp+ #:+mlist+ #:+mplus+ #:+mtimes+ #:+notequal+
-                #:+rat+
+                #:+equal+ #:+false+ #:+i+ #:+mequal+ #:+mexpt+ #:+mgeqp+ #:+mgreaterp+
+                #:+mleqp+ #:+mlessp+ #:+mlist+ #:+mplus+ #:+mtimes+ #:+notequal+ #:+rat+
                 #:assumption-key #:bridge-cache #:bridge-excess-names #:bridge-names
                 #:bridge-statistics-record #:statistics-cache-hits #:statistics-calls
-                #:check-translatable #:closed-form #:contains-head-p #:contains-symbol-p
+                #:check-translatable #:contains-symbol-p
                 #:from-mx #:to-mx #:maxima-name #:maxima-request #:request-list #:maxima-truth
-                #:mcall #:mdifference #:mform #:mform-p #:mlist #:mlist-items
+                #:mcall #:mdifference #:mform #:mform-p #:mlist #:mlist-items #:mquotient
                 #:negate-condition #:simplest-form #:subject-p #:trigonometric-form-p)
   (:documentation "The algebra of AMES's prefix expressions, above the Maxima bridge:
 deciding a relation under the facts in force (signs, angles, orders, Sturm sequences,

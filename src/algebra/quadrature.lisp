@@ -94,19 +94,7 @@ trip), c0 exactly 0 when it simplifies to 0 (not tried when c0 is clearly not 0 
 the alist VALUES, when given); NIL when Maxima cannot give them."
   (call-or-nil
    (lambda ()
-     (let* ((form (to-mx bridge expression))
-            (s (to-mx bridge position))
-            (at (to-mx bridge end))
-            (coefficients
-              (mapcar (lambda (c) (from-mx bridge c))
-                      (request-list bridge
-                                    (loop for k from 0 to 4
-                                          for factorial in '(1 1 2 6 24)
-                                          collect (mcall "$RATSIMP"
-                                                         (mquotient (mcall "$SUBSTITUTE" at s
-                                                                           (if (zerop k) form (mcall "$DIFF" form s k)))
-                                                                    factorial)))
-                                    :datum expression))))
+     (let* ((coefficients (taylor-coefficients bridge expression position end 4)))
        (let ((c0 (and values (expression-value (first coefficients) values)))
              (c1 (and values (expression-value (second coefficients) values))))
          (if (and (not (and c0 c1 (> (abs c0) (* 1d-9 (+ (abs c0) (abs c1))))))

@@ -15,9 +15,6 @@
   "True when the Maxima FORM is a plain number (integer, float or RAT)."
   (or (realp form) (mform-p form +rat+)))
 
-(defun mquotient (a b)
-  (mform +mtimes+ a (mform +mexpt+ b -1)))
-
 (defun root-verdict (signs strictly)
   "Whether a root offset with SIGNS lies after the start: :YES, :NO or :MAYBE."
   (flet ((only (&rest allowed) (and signs (subsetp signs allowed))))

@@ -127,9 +127,7 @@ NIL when that does not apply or the roots are inside the interval."
                  (at-high (kernel-polynomial-value x kernel high))
                  (middle (kernel-polynomial-value x kernel (/ (+ low high) 2)))
                  (count (handler-case
-                            (maxima-request bridge (mcall "$NROOTS" (to-mx bridge polynomial)
-                                                          (to-mx bridge low) (to-mx bridge high))
-                                            :datum x)
+                            (maxima-root-count bridge polynomial low high :datum x)
                           (maxima-error () nil))))
             ;; nroots counts the roots in (LOW, HIGH]
             (when (and (integerp count)

@@ -21,6 +21,10 @@ only by this package's own translation (see translation.lisp and maxima-server.l
    #:ode-solution-velocity #:ode-solution-speed-squared
    #:numeric-value #:latex
    #:solve-script
+   ;; the calculus the integrators ask (calculus.lisp)
+   #:call-or-nil #:auxiliary-variable #:maxima-derivative #:polynomial-coefficients-in
+   #:zero-after-trigexpand-p #:taylor-coefficients #:maxima-antiderivative
+   #:inverse-laplace-transform #:maxima-root-count
    ;; presentation (presentation.lisp)
    #:presentation-candidates #:polynomial-coefficients #:presentation-latex
    ;; conditions
