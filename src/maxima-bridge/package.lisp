@@ -5,7 +5,9 @@
   (:documentation "The Maxima bridge: the only code that knows Maxima's syntax or
 representation. Speaks AMES's prefix algebra to the rest of the system. One persistent
 Debian `maxima` process per BRIDGE, started lazily, answering framed requests built
-only by this package's own translation (see translation.lisp and maxima-server.lisp).")
+only by this package's own translation (see translation.lisp and maxima-server.lisp).
+The algebra that reasons about prefix expressions (deciding, roots, integrators) is the
+layer above, AMES.ALGEBRA; the form builders it still uses are listed in its package.")
   (:export
    ;; the bridge object
    #:bridge #:make-bridge #:close-bridge #:bridge-timeout #:bridge-alive-p #:bridge-process-id
