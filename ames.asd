@@ -2,8 +2,8 @@
 ;;;;
 ;;;; One module, one folder and one package per layer; dependencies point down only:
 ;;;;   base  <-  maxima-bridge (the only door to Maxima)  <-  algebra (reasoning about
-;;;;   prefix expressions: deciding, roots, integrators)  <-  geometry;   base  <-  tms
-;;;;   tms, maxima-bridge  <-  engine;   engine, geometry  <-  kb
+;;;;   prefix expressions: signs, deciding, roots, integrators)  <-  geometry
+;;;;   base  <-  tms  <-  engine (never talks to Maxima);   engine, geometry  <-  kb
 ;;;;   algebra, geometry  <-  scenario;   kb, scenario  <-  simulator  <-  report, check
 ;;;;   <-  interface (package AMES: the REPL API and bin/ames)
 ;;;;   base, scenario  <-  witness (Siconos as an independent witness; knows no geometry,
@@ -85,7 +85,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "contacts")
                  (:file "obstacle")))
    (:module "engine" :pathname "src/engine/" :serial t
-    :depends-on ("base" "tms" "maxima-bridge")
+    :depends-on ("base" "tms")
     :components ((:file "package")
                  (:file "conditions")
                  (:file "patterns")
