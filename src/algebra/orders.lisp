@@ -125,13 +125,7 @@ each alone (writing V = E - D forgets V > 0); then, for a small relation (see
 E - D) in DECIDE-BY-ORDER-SUBSTITUTION: an uninterned symbol, so no user name can be
 it, and the same one each time for a VARIABLE of BRIDGE, so that the rewritten requests
 are answered from the cache when they come again."
-  (let ((table (bridge-excess-names bridge)))
-    (or (gethash variable table)
-        (let ((excess (make-symbol (format nil "~A-EXCESS" variable))))
-          ;; named apart from the algebra's variables ($AMESX...), so that it takes none
-          ;; of their letters
-          (maxima-name (bridge-names bridge) excess "$AMESX")
-          (setf (gethash (copy-tree variable) table) excess)))))
+  (keyed-auxiliary-variable bridge variable (format nil "~A-EXCESS" variable)))
 
 (defun decide-with-orders (bridge relation orders)
   "DECIDE-BY-ORDER-SUBSTITUTION's work for the given ORDERS (see ORDER-FACTS)."

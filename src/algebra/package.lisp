@@ -11,10 +11,10 @@
                 #:*cache-limit* #:*relation-heads*
                 #:+equal+ #:+false+ #:+i+ #:+mequal+ #:+mexpt+ #:+mgeqp+ #:+mgreaterp+
                 #:+mleqp+ #:+mlessp+ #:+mlist+ #:+mplus+ #:+mtimes+ #:+notequal+ #:+rat+
-                #:assumption-key #:bridge-cache #:bridge-excess-names #:bridge-names
+                #:assumption-key #:bridge-cache
                 #:bridge-statistics-record #:statistics-cache-hits #:statistics-calls
                 #:check-translatable #:contains-symbol-p
-                #:from-mx #:to-mx #:maxima-name #:maxima-request #:request-list #:maxima-truth
+                #:from-mx #:to-mx #:maxima-request #:request-list #:maxima-truth
                 #:mcall #:mdifference #:mform #:mform-p #:mlist #:mlist-items #:mquotient
                 #:negate-condition #:simplest-form #:subject-p #:trigonometric-form-p)
   (:documentation "The algebra of AMES's prefix expressions, above the Maxima bridge:

@@ -243,12 +243,8 @@ variable, each once."
   "The fresh variable standing for KERNEL in DECIDE-BY-ANGLE-SUBSTITUTION: uninterned,
 the same each time for a KERNEL of BRIDGE (so that requests come again from the cache),
 and named apart from the algebra's variables ($AMESX...)."
-  (let ((table (bridge-excess-names bridge))
-        (key (list :kernel kernel)))
-    (or (gethash key table)
-        (let ((variable (make-symbol (format nil "~A-VALUE" (expression-operator kernel)))))
-          (maxima-name (bridge-names bridge) variable "$AMESX")
-          (setf (gethash (copy-tree key) table) variable)))))
+  (keyed-auxiliary-variable bridge (list :kernel kernel)
+                            (format nil "~A-VALUE" (expression-operator kernel))))
 
 (defun decide-by-angle-substitution (prover relation)
   "Step 6: every sin, cos and tan of a compound angle whose range gives it a sign is

@@ -71,8 +71,8 @@ before the process is killed and replaced.")
    (cache :initform (make-cache) :accessor bridge-cache
           :documentation "Answers to requests, and DECIDE's verdicts, under the facts in force.")
    (excess-names :initform (make-hash-table :test 'equal) :accessor bridge-excess-names
-                 :documentation "Variable -> the uninterned symbol DECIDE-BY-ORDER-SUBSTITUTION
-writes its excess over a bound with (see ORDER-EXCESS-NAME).")
+                 :documentation "Key -> the auxiliary variable KEYED-AUXILIARY-VARIABLE made
+for it (a variable's excess over its bound, an angle's sine, for DECIDE).")
    (statistics :initform (make-statistics) :accessor bridge-statistics-record))
   (:documentation "A connection to one persistent Maxima process, started lazily, with
 its name table, assumption scopes, cache and counters. Use a bridge from one thread."))

@@ -29,6 +29,15 @@ returns SYMBOL, which then translates like any variable."
   (maxima-name (bridge-names bridge) symbol "$AMESX")
   symbol)
 
+(defun keyed-auxiliary-variable (bridge key name)
+  "The auxiliary variable (see AUXILIARY-VARIABLE) BRIDGE keeps for KEY (compared with
+EQUAL): made the first time as an uninterned symbol called NAME, the same one each time
+after, so that requests written with it come again from the cache."
+  (let ((table (bridge-excess-names bridge)))
+    (or (gethash key table)
+        (setf (gethash (copy-tree key) table)
+              (auxiliary-variable bridge (make-symbol name))))))
+
 (defun maxima-derivative (bridge expression variable)
   "The derivative of EXPRESSION with respect to the name VARIABLE, by Maxima, ratsimped.
 Signals UNTRANSLATABLE-RESULT when Maxima leaves it unevaluated (a derivative of

@@ -24,7 +24,7 @@ layer above, AMES.ALGEBRA; the form builders it still uses are listed in its pac
    #:numeric-value #:latex
    #:solve-script
    ;; the calculus the integrators ask (calculus.lisp)
-   #:call-or-nil #:auxiliary-variable #:maxima-derivative #:polynomial-coefficients-in
+   #:call-or-nil #:auxiliary-variable #:keyed-auxiliary-variable #:maxima-derivative #:polynomial-coefficients-in
    #:zero-after-trigexpand-p #:taylor-coefficients #:maxima-antiderivative
    #:inverse-laplace-transform #:maxima-root-count
    ;; presentation (presentation.lisp)
