@@ -1,8 +1,9 @@
 ;;;; ames.asd -- system definitions for AMES, the Algebraic MEchanics Simulator.
 ;;;;
 ;;;; One module, one folder and one package per layer; dependencies point down only:
-;;;;   base  <-  maxima-bridge, tms  <-  geometry  <-  engine  <-  kb
-;;;;   geometry, maxima-bridge  <-  scenario;   kb, scenario  <-  simulator  <-  report, check
+;;;;   base  <-  maxima-bridge, tms  <-  geometry  <-  engine;   geometry, maxima-bridge  <-  scenario
+;;;;   engine, scenario  <-  kb (each phenomenon reads its own clause of a validated scenario)
+;;;;   kb  <-  simulator  <-  report, check
 ;;;;   <-  interface (package AMES: the REPL API and bin/ames)
 ;;;;   base, scenario  <-  witness (Siconos as an independent witness; knows no geometry,
 ;;;;   kb or simulator)  <-  interface
@@ -92,8 +93,9 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "transitions")
                  (:file "choices")))
    (:module "kb" :pathname "src/kb/" :serial t
-    :depends-on ("engine" "geometry")
+    :depends-on ("engine" "geometry" "scenario")
     :components ((:file "package")
+                 (:file "phenomena")
                  (:file "mechanics")
                  (:file "impacts")
                  (:file "friction")
