@@ -259,6 +259,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "report-presentation")
                (:file "report-readable")
                (:file "report-formats")
+               (:file "phenomena")
                (:file "readme")
                (:file "reliability-limits")
                (:file "reliability-reader")

@@ -341,3 +341,8 @@ events of meeting, colliding, lifting off and leaving past an end."
   "A constant force from outside the scenario, each (force NAME :on B :value (FX FY))."
   (:entities #'external-force-entities)
   (:force :external :names 2 :words "external force ~A on ~A" :label (:name 0)))
+
+(define-phenomenon drive
+  "A driven body's drive (the body clause's :driven): the force that keeps its velocity,
+named generically (\"drive B\")."
+  (:force :drive :names 1))

@@ -124,21 +124,26 @@ make of SCENARIO that need one."
   (collected #'phenomenon-entity-phrases scenario))
 
 (defun described (kind accessor)
-  "The description plist of KIND in the phenomena's ACCESSOR lists, or NIL."
+  "The description plist of KIND in the phenomena's ACCESSOR lists, or NIL; the second
+value is true when a phenomenon describes KIND (possibly with an empty plist: named
+generically)."
   (loop for phenomenon in *phenomena*
         for entry = (assoc kind (funcall accessor phenomenon))
-        when entry return (rest entry)))
+        when entry return (values (rest entry) t)))
 
 (defun force-description (kind)
-  "The plist (:NAMES :WORDS :SYMBOL :ARROW :LABEL) of the reported force KIND, or NIL."
+  "The plist (:NAMES :WORDS :SYMBOL :ARROW :LABEL) of the reported force KIND, or NIL;
+true as a second value when a phenomenon describes KIND."
   (described kind #'phenomenon-forces))
 
 (defun impulse-description (kind)
-  "The plist (:NAMES :WORDS) of the impulse KIND an impact reports, or NIL."
+  "The plist (:NAMES :WORDS) of the impulse KIND an impact reports, or NIL; true as a
+second value when a phenomenon describes KIND."
   (described kind #'phenomenon-impulses))
 
 (defun event-description (kind)
-  "The plist (:WORDS :SHORT :AT-FEATURE-END) of the event KIND, or NIL."
+  "The plist (:WORDS :SHORT :AT-FEATURE-END) of the event KIND, or NIL; true as a second
+value when a phenomenon describes KIND."
   (described kind #'phenomenon-events))
 
 (defun quantity-description (query-kind)
