@@ -45,10 +45,8 @@ syntax in src/scenario/.")
    ;; names used in beliefs and force names
    #:normal #:reaction #:gravity #:external #:environment
    ;; springs, ropes, universal gravitation, energy (spans.lisp, springs.lisp, ropes.lisp,
-   ;; gravitation.lisp, energy.lisp): the entity kinds, the quantities the simulator
-   ;; provides (a free body's position at the state's start) and reads
-   #:gravity-field #:external-force #:friction-coefficients
-   #:spring #:bumper #:point-contact #:rope #:rope-segment #:gravitation-field #:body-pair
+   ;; gravitation.lisp, energy.lisp): the quantities the simulator provides (a free body's
+   ;; position at the state's start) and reads
    #:initial-pos #:span #:span-length #:span-direction #:span-acceleration #:tension
    #:kinetic-energy #:momentum #:potential-energy #:pressing #:taut
    #:unmodelled-situation))

@@ -109,7 +109,7 @@ impact (:CONTACTS, :IMPULSES, :ENERGY-LOST, :VELOCITIES-BEFORE, :VELOCITIES-AFTE
               (report (loop for (section entry) in (model-reported model)
                             collect (list section (value-entry solved entry)))))
          (values after
-                 (list :contacts (contact-descriptions run (active-contact-instances run))
+                 (list :contacts (contact-descriptions run (active-contact-instances run contacts))
                        :impulses (loop for (section entry) in report
                                        when (eq section :impulses) collect entry)
                        :energy-lost (loop for (section entry) in report
@@ -118,12 +118,15 @@ impact (:CONTACTS, :IMPULSES, :ENERGY-LOST, :VELOCITIES-BEFORE, :VELOCITIES-AFTE
                        :velocities-after after
                        :choices (trial-notes trial))))))))
 
-(defun active-contact-instances (run)
-  "The touching contacts whose impulse instance is active in the impact's model."
-  (loop for belief in (ames.engine:model-beliefs (run-model run))
-        when (and (eq (first belief) 'ames.kb:impulse)
-                  (eq (first (second belief)) 'ames.kb:impulse))
-          collect (getf (cddr belief) :contact)))
+(defun active-contact-instances (run contacts)
+  "Those of the touching CONTACTS an impulse acts through in the impact's model (an
+(impulse NAME ... :contact K) belief), in the order of the beliefs."
+  (remove-duplicates
+   (loop for belief in (ames.engine:model-beliefs (run-model run))
+         when (and (eq (first belief) 'ames.kb:impulse)
+                   (member (getf (cddr belief) :contact) contacts))
+           collect (getf (cddr belief) :contact))
+   :from-end t))
 
 (defun value-entry (solved form)
   "FORM, a report entry, with every quantity term replaced by its value in SOLVED."
