@@ -3,8 +3,9 @@
 ;;;; One module, one folder and one package per layer; dependencies point down only:
 ;;;;   base  <-  maxima-bridge (the only door to Maxima)  <-  algebra (reasoning about
 ;;;;   prefix expressions: signs, deciding, roots, integrators)  <-  geometry
-;;;;   base  <-  tms  <-  engine (never talks to Maxima);   engine, geometry  <-  kb
-;;;;   algebra, geometry  <-  scenario;   kb, scenario  <-  simulator  <-  report, check
+;;;;   base  <-  tms  <-  engine (never talks to Maxima);   algebra, geometry  <-  scenario
+;;;;   engine, scenario  <-  kb (each phenomenon reads its own clause of a validated scenario)
+;;;;   kb  <-  simulator  <-  report, check
 ;;;;   <-  interface (package AMES: the REPL API and bin/ames)
 ;;;;   base, scenario  <-  witness (Siconos as an independent witness; knows no geometry,
 ;;;;   kb or simulator)  <-  interface
@@ -100,8 +101,9 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "transitions")
                  (:file "choices")))
    (:module "kb" :pathname "src/kb/" :serial t
-    :depends-on ("engine" "geometry")
+    :depends-on ("engine" "geometry" "scenario")
     :components ((:file "package")
+                 (:file "phenomena")
                  (:file "mechanics")
                  (:file "impacts")
                  (:file "friction")
@@ -266,6 +268,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "report-presentation")
                (:file "report-readable")
                (:file "report-formats")
+               (:file "phenomena")
                (:file "readme")
                (:file "reliability-limits")
                (:file "reliability-reader")

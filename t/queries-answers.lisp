@@ -123,12 +123,6 @@ ends as it would without queries."
       (let ((stays (first (answers-named history "STAYS"))))
         (is (eq :unanswered (second stays)) "~S" stays)))))
 
-(defun energy-queries (states)
-  "Query clauses asking the energy at the start and end of each of STATES (0 ...)."
-  (loop for i below states
-        append (list (format nil "(query start-~D (value (energy) :at (start ~D)))" i i)
-                     (format nil "(query end-~D (value (energy) :at (end ~D)))" i i))))
-
 (defun report-total-energy (state at)
   "The report's total T + V of STATE (the sum of its :ENERGY note's terms, as the report
 adds them) at AT, :START or :END, or NIL where it has none there in closed form."
@@ -148,41 +142,6 @@ adds them) at AT, :START or :END, or NIL where it has none there in closed form.
           (t (let ((d (ames.simulator::state-duration state)))
                (and (not (keywordp d)) (not (and (consp d) (keywordp (first d))))
                     (subst d 'tau total)))))))
-
-(test energy-query-is-the-report-total-on-every-scenario
-  "On every scenario under scenarios/ (each path of a branching one), the query
-(value (energy) :at (start N)) and (end N) equals the total energy T + V the report
-prints for state N there, wherever the report has one in closed form (Maxima-checked)."
-  (with-fixture simulator-bridge ()
-    (let ((compared 0))
-      (dolist (file (scenario-files))
-        (dolist (form (ames:read-scenario-forms (uiop:read-file-string file)))
-          (let* ((plain (ames:parse-scenario form))
-                 (states (or (ames:scenario-states plain) 3))
-                 (scenario (ames:parse-scenario
-                            (append form (first (ames:read-scenario-forms
-                                                 (format nil "(~{~A~^ ~})" (energy-queries states)))))))
-                 (history (handler-case (ames:simulate scenario :bridge bridge)
-                            (ames-error () nil))))
-            (when history
-              (loop for (facts nil . path-states) in (ames.simulator::history-paths history)
-                    for k from 0
-                    do (ames.maxima:with-assumptions
-                           (bridge (append (ames:scenario-assumption-relations scenario) facts))
-                         (dolist (state path-states)
-                           (dolist (at '(:start :end))
-                             (let* ((name (format nil "~:@(~A~)-~D" at (ames.simulator::state-index state)))
-                                    (entry (nth k (answers-named history name)))
-                                    (expected (report-total-energy state at)))
-                               (when (and expected entry)
-                                 (incf compared)
-                                 (is (not (eq :unanswered (second entry)))
-                                     "~A ~A: not answered (~A) where the report has ~S"
-                                     (pathname-name file) name (getf (cddr entry) :reason) expected)
-                                 (unless (eq :unanswered (second entry))
-                                   (is-same bridge (format nil "~A ~A" (pathname-name file) name)
-                                            (second entry) expected))))))))))))
-      (is (> compared 40) "only ~D energies compared" compared))))
 
 (test numbers-people-write
   "(deg 17) is 17 pi/180 in a scenario's expressions and queries; a default may be a

@@ -124,15 +124,17 @@ true when it succeeds. Returns the log as a second value."
       (uiop:delete-directory-tree directory :validate t :if-does-not-exist :ignore))))
 
 (defun check-scenario-file-in-every-format (file)
-  "Presentation forms equal the solved ones, and the text, JSON, SVG and LaTeX reports are
-produced and valid, for every scenario of FILE; their LaTeX compiles (skipped without
-pdflatex)."
+  "Presentation forms equal the solved ones, the text, JSON, SVG and LaTeX reports are
+produced and valid, and the energy query equals the report's total energy, for every
+scenario of FILE; their LaTeX compiles (skipped without pdflatex)."
   (with-fixture simulator-bridge ()
     (let ((latex (make-string-output-stream)))
       (dolist (scenario (ames:read-scenario-file file))
         (let ((history (simulate-stopping-when-ambiguous scenario bridge)))
           (check-presentation bridge history)
-          (check-formats bridge history latex)))
+          (check-formats bridge history latex)
+          ;; the energy query on this very run (t/phenomena.lisp)
+          (check-energy-query-is-the-report-total bridge history)))
       (if (program-path "pdflatex")
           (multiple-value-bind (ok log) (compiles-with-pdflatex-p (get-output-stream-string latex))
             (is-true ok "pdflatex failed:~%~A" (subseq log (max 0 (- (length log) 3000)))))

@@ -1,7 +1,6 @@
 ;;;; t/test-costs.sexp -- seconds each test took in `make test` (the merged main on an idle 2-core machine,
 ;;;; 2026-11-26, 3 workers): the parallel runner starts the longest first. Refresh from build/test-timings.sexp.
 ((TWO-BLOCKS-IN-A-CORNER-WITH-A-SEGMENT-WALL-TO-REST . 151.2)
- (ENERGY-QUERY-IS-THE-REPORT-TOTAL-ON-EVERY-SCENARIO . 124.47)
  (EVERY-SCENARIO-PASSES-ITS-SELF-CHECK . 101.2)
  (CORNER-BRANCHES-ON-THE-SIGN-OF-THE-PUSH . 53.88)
  (EVERY-FORMAT/TWO-BLOCKS-IN-CORNER . 53.1)

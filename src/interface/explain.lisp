@@ -15,8 +15,8 @@
 (defun component-summary (name)
   "The first sentence of the mechanics component NAME's description and the thesis
 figure or section it cites, or NIL."
-  (let* ((component (or (ames.engine:find-component (ames.kb:mechanics-knowledge-base) name nil)
-                        (ames.engine:find-component (ames.kb:impact-knowledge-base) name nil)))
+  (let* ((component (some (lambda (kb) (ames.engine:find-component kb name nil))
+                          (ames.kb:knowledge-bases)))
          (text (and component (ames.engine:component-documentation component))))
     (when text
       (let* ((flat (substitute #\Space #\Newline text))
@@ -35,10 +35,9 @@ segment) -> its phrase (\"particle on wedge\", \"rope, piece 1\").")
   "While a state is explained: the state.")
 
 (defun segment-names (scenario)
-  "An alist rope segment entity -> its phrase (\"rope, piece 1\") for SCENARIO's ropes."
-  (loop for (rope . segments) in (ames.simulator::rope-segment-names scenario)
-        append (loop for segment in segments for k from 1
-                     collect (cons segment (format nil "~(~A~), piece ~D" rope k)))))
+  "An alist entity a phenomenon made of SCENARIO's clauses -> the phrase naming it to
+people (\"rope, piece 1\"): AMES.KB:ENTITY-PHRASES-OF."
+  (ames.kb:entity-phrases-of scenario))
 
 (defun entity-text (x)
   "A body, contact, segment or other name in an explanation, without package or colon."

@@ -78,3 +78,21 @@ by consistency)."
    (:equations (= (friction-force ?contact) (* ?mu-k (normal-force ?contact))))
    (:transition :to :static :when (> (path-speed ?contact) 0)
                 :event (:stops-sliding ?body1 ?body2))))
+
+(defun friction-entities (scenario)
+  "Each (friction A B :static MU-S :kinetic MU-K) clause of SCENARIO as the entity
+(friction-coefficients FRICTION-i :between (A B) :static MU-S :kinetic MU-K)."
+  (loop for friction in (ames.scenario:scenario-frictions scenario)
+        for index from 0
+        collect (list 'friction-coefficients (indexed-entity-name "FRICTION" index)
+                      :between (ames.scenario:scenario-friction-bodies friction)
+                      :static (ames.scenario:scenario-friction-static friction)
+                      :kinetic (ames.scenario:scenario-friction-kinetic friction))))
+
+(define-phenomenon friction
+  "Coulomb friction on every contact between two bodies (the friction clause)."
+  (:entities #'friction-entities)
+  (:force :friction :names 2 :words "friction of ~*~A on ~:*~:*~A" :symbol "F")
+  (:event :starts-sliding :words "~A starts sliding on ~A")
+  (:event :stops-sliding :words "~A stops sliding on ~A")
+  (:quantity :friction :force :friction))

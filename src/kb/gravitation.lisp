@@ -41,3 +41,29 @@ their centres; Newton's third law gives the second body's pull from the first's.
               (= (force-y (gravitation ?pair ?body1))
                  (/ (* (gravitational-constant ?field) (mass ?body1) (mass ?body2) (span-direction ?pair :y))
                     (expt (span-length ?pair) 2)))))
+
+(defun massive-body-pairs (scenario)
+  "Every two bodies of SCENARIO that have a mass and are not both fixed, as (B1 B2)."
+  (loop for (b1 . rest) on (remove nil (ames.scenario:scenario-bodies scenario)
+                                   :key #'ames.scenario:scenario-body-mass)
+        append (loop for b2 in rest
+                     unless (and (ames.scenario:scenario-body-fixed-p b1)
+                                 (ames.scenario:scenario-body-fixed-p b2))
+                       collect (list (ames.scenario:scenario-body-name b1)
+                                     (ames.scenario:scenario-body-name b2)))))
+
+(defun gravitation-entities (scenario)
+  "The (gravitation G) clause of SCENARIO as (gravitation-field GRAVITATION :constant G),
+and every pair of bodies it may act between as (body-pair PAIR-i :first B1 :second B2)."
+  (append
+   (let ((constant (ames.scenario:scenario-gravitation scenario)))
+     (and constant (list (list 'gravitation-field 'gravitation :constant constant))))
+   (loop for (b1 b2) in (massive-body-pairs scenario)
+         for index from 0
+         collect (list 'body-pair (indexed-entity-name "PAIR" index) :first b1 :second b2))))
+
+(define-phenomenon gravitation
+  "Universal gravitation between every two bodies with mass (the gravitation clause)."
+  (:entities #'gravitation-entities)
+  (:force :gravitation :names 2 :words "gravitation of ~*~A on ~:*~:*~A")
+  (:event :meet))

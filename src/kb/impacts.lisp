@@ -29,6 +29,10 @@
   "The knowledge base of impacts."
   *impacts*)
 
+(defun knowledge-bases ()
+  "Every knowledge base of AMES: a state's (mechanics) and an impact's."
+  (list *mechanics* *impacts*))
+
 (defun entity-vector (situation name key axis)
   "The AXIS component of the vector property KEY of the entity NAME."
   (axis-component (entity-property (entity-named situation name) key) axis))
@@ -150,3 +154,17 @@ for E = 1 (an elastic impact)."
   (:arguments (?bodies :collect ?b :matching (moving-at-impact ?b)))
   (:assert (reported :impact (:energy-lost (energy-lost impact))))
   (:equations (= (energy-lost impact) (kinetic-energy-drop ?bodies))))
+
+;;; The clause and the names (see phenomena.lisp)
+
+(defun touching-contact-entity (scenario contact observer obstacle normal)
+  "The impact situation's entity of the CONTACT touching at the impact between OBSERVER
+and OBSTACLE, with its outward NORMAL there and the restitution SCENARIO's (restitution
+...) clauses give the pair."
+  (list 'touching-contact contact :observer observer :obstacle obstacle :normal normal
+        :restitution (ames.scenario:scenario-restitution scenario observer obstacle)))
+
+(define-phenomenon impact
+  "Frictionless impacts: impulses along the contact normals and Newton's law of
+restitution (the restitution clause)."
+  (:impulse :impulse :names 2 :words "impulse of ~*~A on ~:*~:*~A"))

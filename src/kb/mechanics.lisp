@@ -301,3 +301,48 @@ normal component comes from the kinematic restriction."
                (= (rel-acc ?body1 ?body2 :y)
                   (+ (* (path-acc ?contact :tangential) (unit-tangent ?contact :y))
                      (* (path-acc ?contact :normal) (inward-normal ?contact :y)))))))
+
+;;; The phenomena of this file (see phenomena.lisp): contact, terrestrial gravity, external
+;;; forces (a driven body's drive is named generically: (:drive B (FX FY)))
+
+(defun gravity-entities (scenario)
+  "The (gravity G) clause of SCENARIO as the field (gravity-field EARTH :strength G)."
+  (let ((strength (ames.scenario:scenario-gravity scenario)))
+    (and strength (list (list 'gravity-field 'earth :strength strength)))))
+
+(defun external-force-entities (scenario)
+  "Each (force NAME :on B :value (FX FY)) clause of SCENARIO as an EXTERNAL-FORCE entity."
+  (mapcar (lambda (force)
+            (destructuring-bind (fx fy) (ames.scenario:scenario-force-value force)
+              (list 'external-force (ames.scenario:scenario-force-name force)
+                    :on (ames.scenario:scenario-force-body force) :fx fx :fy fy)))
+          (ames.scenario:scenario-forces scenario)))
+
+(define-phenomenon contact
+  "Two bodies touching along a simple contact of the configuration space (the simulator
+describes the contacts between the bodies' shapes itself): the normal force, and the
+events of meeting, colliding, lifting off and leaving past an end."
+  (:force :normal :names 2 :words "normal force of ~*~A on ~:*~:*~A" :symbol "N"
+          :arrow :along-contact-normal)
+  (:event :contact :words "~A comes into contact with ~A" :short "touches ~A")
+  (:event :collision :words "~A collides with ~A" :short "hits ~A")
+  (:event :lift-off :words "~A lifts off ~A (the normal force would turn attractive)"
+          :short "lifts off ~A")
+  (:event :leaves :words "~A leaves ~A past the end of the contact"
+          :at-feature-end "~A reaches the end of " :short "leaves ~A")
+  (:quantity :normal-force :force :normal))
+
+(define-phenomenon gravity
+  "A terrestrial field, the scenario's (gravity G): each free body's weight."
+  (:entities #'gravity-entities)
+  (:force :gravity :names 1 :words "weight of ~A" :label "weight"))
+
+(define-phenomenon external-force
+  "A constant force from outside the scenario, each (force NAME :on B :value (FX FY))."
+  (:entities #'external-force-entities)
+  (:force :external :names 2 :words "external force ~A on ~A" :label (:name 0)))
+
+(define-phenomenon drive
+  "A driven body's drive (the body clause's :driven): the force that keeps its velocity,
+named generically (\"drive B\")."
+  (:force :drive :names 1))

@@ -12,26 +12,41 @@ the simulator describes. The components own their events (what each termination
 condition is, for the report), their dynamics (DERIVATIVE beliefs: the ODEs of the
 state variables) and their report (REPORTED beliefs: what a state lists, such as its
 forces). See mechanics.lisp's header for the vocabulary the simulator and the
-components share.")
+components share.
+
+Each phenomenon (contact, gravity, external force, friction, spring, rope, gravitation,
+impact, turning) is declared once with DEFINE-PHENOMENON beside its components
+(phenomena.lisp): the entities it makes of its scenario clause, the points attached to
+bodies whose loci the geometry gives, how its forces, impulses and events are named in
+every report, and the query quantities it answers. The simulator, the queries, the
+reports and `explain` look these up and name no force, event or mode. To add a
+phenomenon: a new file here (listed in ames.asd) with its DEFCOMPONENTs (reporting its
+forces in :FORCES and its energy in :ENERGY) and one DEFINE-PHENOMENON; the clause's
+syntax in src/scenario/.")
   (:export
    #:*mechanics* #:mechanics-knowledge-base #:contact-geometry
-   #:*impacts* #:impact-knowledge-base
+   #:*impacts* #:impact-knowledge-base #:knowledge-bases
+   ;; the registry of phenomena (phenomena.lisp)
+   #:define-phenomenon #:phenomenon #:phenomenon-name #:phenomenon-documentation
+   #:*phenomena* #:find-phenomenon
+   #:situation-entities-of #:impact-entities-of #:probes-of #:entity-phrases-of
+   #:force-description #:impulse-description #:event-description #:quantity-description
+   #:touching-contact-entity
    ;; the impact model's quantities and entities (impacts.lisp)
    #:vel-after #:jx #:jy #:normal-impulse #:separation-after #:energy-lost #:touching-contact
    #:impulse
    ;; the quantity terms the components speak of (heads of terms such as (acc particle :x))
    #:acc #:vel #:pos #:rel-acc #:fx #:fy #:normal-force
    #:path-acc #:path-position #:path-speed #:contact-gap #:friction-force
-   ;; the entity kinds and properties the simulator must describe
-   #:body #:gravity-field #:external-force #:simple-contact #:friction-coefficients
+   ;; the entity kinds the simulator describes itself (the phenomena make the others)
+   #:body #:simple-contact
    ;; the beliefs the simulator reads
    #:derivative #:reported #:force #:in-contact #:path-coordinates
    ;; names used in beliefs and force names
    #:normal #:reaction #:gravity #:external #:environment
    ;; springs, ropes, universal gravitation, energy (spans.lisp, springs.lisp, ropes.lisp,
-   ;; gravitation.lisp, energy.lisp): the entity kinds the simulator describes, the
-   ;; quantities it provides (a free body's position at the state's start) and reads
-   #:spring #:bumper #:point-contact #:rope #:rope-segment #:gravitation-field #:body-pair
+   ;; gravitation.lisp, energy.lisp): the quantities the simulator provides (a free body's
+   ;; position at the state's start) and reads
    #:initial-pos #:span #:span-length #:span-direction #:span-acceleration #:tension
    #:kinetic-energy #:momentum #:potential-energy #:pressing #:taut
    #:unmodelled-situation))

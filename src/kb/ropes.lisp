@@ -180,3 +180,50 @@ rope's impulse; Newton's third law gives the far end's."
            (impulse (rope-pull ?segment ?body2) :from ?body1 :on ?body2 :contact ?segment))
   (:equations (= (impulse-x (rope-pull ?segment ?body1)) (* (rope-impulse ?rope) (segment-direction ?segment :x)))
               (= (impulse-y (rope-pull ?segment ?body1)) (* (rope-impulse ?rope) (segment-direction ?segment :y)))))
+
+;;; The clause and the names (see phenomena.lisp)
+
+(defun rope-segment-names (scenario)
+  "Alist rope name -> the names of its segments (SEGMENT-i), numbered across SCENARIO's
+ropes."
+  (let ((index -1))
+    (mapcar (lambda (rope)
+              (cons (ames.scenario:scenario-rope-name rope)
+                    (loop repeat (1- (length (ames.scenario:scenario-rope-through rope)))
+                          collect (indexed-entity-name "SEGMENT" (incf index)))))
+            (ames.scenario:scenario-ropes scenario))))
+
+(defun rope-entities (scenario)
+  "The entities of SCENARIO's ropes: each rope and its straight segments between
+consecutive points, pulleys resolved into points of their bodies; a segment between two
+points of one body says so (:WITHIN-ONE-BODY T). The same in a state and at an impact."
+  (loop for rope in (ames.scenario:scenario-ropes scenario)
+        for (nil . segments) in (rope-segment-names scenario)
+        for points = (mapcar (lambda (p) (ames.scenario:rope-point-position scenario p))
+                             (ames.scenario:scenario-rope-through rope))
+        collect (list 'rope (ames.scenario:scenario-rope-name rope)
+                      :length (ames.scenario:scenario-rope-length rope) :segments segments)
+        append (loop for segment in segments
+                     for (from to) on points
+                     for index from 0
+                     collect (list* 'rope-segment segment :rope (ames.scenario:scenario-rope-name rope)
+                                    :index index :from from :to to
+                                    (and (eq (first from) (first to)) (list :within-one-body t))))))
+
+(defun segment-phrases (scenario)
+  "An alist rope segment entity -> its phrase (\"rope, piece 1\") for SCENARIO's ropes."
+  (loop for (rope . segments) in (rope-segment-names scenario)
+        append (loop for segment in segments for k from 1
+                     collect (cons segment (format nil "~(~A~), piece ~D" rope k)))))
+
+(define-phenomenon rope
+  "Massless inextensible ropes over pulleys, taut or slack, jerked tight at an impact (the
+rope and pulley clauses)."
+  (:entities #'rope-entities)
+  (:impact-entities #'rope-entities)
+  (:entity-phrases #'segment-phrases)
+  (:force :tension :names 1 :words "tension in ~A" :symbol "T")
+  (:impulse :rope-impulse :names 1 :words "impulse of the jerk along ~A")
+  (:event :slackens :words "~A goes slack")
+  (:event :tightens :words "~A becomes taut")
+  (:quantity :tension :force :tension))

@@ -114,3 +114,53 @@ met when the body reaches the free end and left when the compression returns to 
                  (* (stiffness ?spring) (compression ?contact) (bumper-direction ?spring :x)))
               (= (force-y (bumper ?contact ?body))
                  (* (stiffness ?spring) (compression ?contact) (bumper-direction ?spring :y)))))
+
+;;; The clause, the bumper's free end, and the names (see phenomena.lisp)
+
+(defun spring-entities (scenario)
+  "Each (spring ...) clause of SCENARIO as a SPRING entity (attached at both ends) or a
+BUMPER entity (attached at one end, :toward its free end)."
+  (mapcar (lambda (spring)
+            (let ((name (ames.scenario:scenario-spring-name spring))
+                  (from (ames.scenario:scenario-spring-from spring))
+                  (stiffness (ames.scenario:scenario-spring-stiffness spring))
+                  (rest-length (ames.scenario:scenario-spring-rest-length spring)))
+              (if (ames.scenario:scenario-spring-bumper-p spring)
+                  (list 'bumper name :on (first from) :at (second from)
+                                     :toward (ames.scenario:scenario-spring-toward spring)
+                                     :stiffness stiffness :rest-length rest-length)
+                  (list 'spring name :from from :to (ames.scenario:scenario-spring-to spring)
+                                     :stiffness stiffness :rest-length rest-length))))
+          (ames.scenario:scenario-springs scenario)))
+
+(defun bumper-axis-vector (spring)
+  "The unit vector along the bumper SPRING's axis (a scenario spring), toward its free end."
+  (destructuring-bind (dx dy) (ames.scenario:scenario-spring-toward spring)
+    (let ((norm `(sqrt (+ (expt ,dx 2) (expt ,dy 2)))))
+      (list `(/ ,dx ,norm) `(/ ,dy ,norm)))))
+
+(defun bumper-free-end (spring)
+  "The point of the bumper SPRING's body where its free end rests: (X Y) in its frame, at
+the rest length from the attachment along the axis."
+  (destructuring-bind (x y) (second (ames.scenario:scenario-spring-from spring))
+    (destructuring-bind (ux uy) (bumper-axis-vector spring)
+      (let ((l0 (ames.scenario:scenario-spring-rest-length spring)))
+        (list `(+ ,x (* ,l0 ,ux)) `(+ ,y (* ,l0 ,uy)))))))
+
+(defun bumper-probes (scenario)
+  "Each bumper's free end as a probe: a point of its body that retreats along the axis
+when pressed, whose loci on the other bodies are POINT-CONTACT entities."
+  (loop for spring in (ames.scenario:scenario-springs scenario)
+        when (ames.scenario:scenario-spring-bumper-p spring)
+          collect (list :point (ames.scenario:scenario-spring-name spring)
+                        :body (first (ames.scenario:scenario-spring-from spring))
+                        :at (bumper-free-end spring)
+                        :axis (bumper-axis-vector spring)
+                        :kind 'point-contact)))
+
+(define-phenomenon spring
+  "Ideal springs attached at both ends (Hooke's law) and bumpers (a spring attached at one
+end, pushing what presses its free end): the spring clause."
+  (:entities #'spring-entities)
+  (:probes #'bumper-probes)
+  (:force :spring :names 2 :words "spring ~A on ~A"))

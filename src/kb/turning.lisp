@@ -28,3 +28,8 @@ state runs the other way."
    (:entry (< (path-speed ?contact) 0))
    (:transition :to :forward :when (> (path-speed ?contact) 0)
                 :event (:turns ?body1))))
+
+(define-phenomenon turning
+  "Turning points of a motion of one degree of freedom (this file, radial-turning.lisp):
+the speed along the path or the line changes sign (named generically)."
+  (:event :turns))

@@ -161,30 +161,28 @@ of wedge\", \"the right side of block-b against the face of wall\"."
   "True when X is a vector (X Y) of arithmetic expressions."
   (and (consp x) (= 2 (length x)) (every (lambda (c) (valid-expression-p c :kind :arithmetic)) x)))
 
-(defparameter *force-phrases*
-  '((:normal "normal force of ~*~A on ~:*~:*~A" 2 "N")
-    (:gravity "weight of ~A" 1 nil)
-    (:external "external force ~A on ~A" 2 nil)
-    (:friction "friction of ~*~A on ~:*~:*~A" 2 "F")
-    (:spring "spring ~A on ~A" 2 nil)
-    (:tension "tension in ~A" 1 "T")
-    (:gravitation "gravitation of ~*~A on ~:*~:*~A" 2 nil))
-  "Each force kind with the FORMAT control of its label (over its leading names), how
-many names lead its entry, and the symbol of a scalar value.")
+(defun described-label (description kind names)
+  "The label of an entry of KIND led by NAMES: the FORMAT control :WORDS of its
+DESCRIPTION (a phenomenon's, AMES.KB:FORCE-DESCRIPTION or IMPULSE-DESCRIPTION) over the
+names when it has them all, else the kind's words and the names."
+  (if (and (getf description :words) (= (length names) (getf description :names)))
+      (apply #'format nil (getf description :words) (mapcar #'name-text names))
+      (format nil "~A~{ ~A~}" (keyword-words kind) (mapcar #'name-text names))))
 
 (defun force-entry (entry)
   "The parts of a reported force ENTRY (KIND NAME... VALUE [:KEY VALUE ...]) as
 (values LABEL SYMBOL VALUE OPTIONS): LABEL a string, SYMBOL a string or NIL, VALUE an
-expression, a vector (X Y) or NIL, OPTIONS a plist. Unknown kinds are taken apart
-generically: the names first, the value last."
+expression, a vector (X Y) or NIL, OPTIONS a plist. The kind's phenomenon says how many
+names lead it, its words and symbol (AMES.KB:FORCE-DESCRIPTION); a kind none describes
+is taken apart generically: the names first, the value last."
   (let* ((kind (first entry))
          (positional (loop for x in (rest entry) until (keywordp x) collect x))
          (options (nthcdr (length positional) (rest entry)))
-         (known (assoc kind *force-phrases*))
+         (known (ames.kb:force-description kind))
          (value-p (lambda (x) (or (vector-value-p x)
                                   (and (not (symbolp x)) (valid-expression-p x :kind :arithmetic)))))
          (names (if known
-                    (subseq positional 0 (min (third known) (length positional)))
+                    (subseq positional 0 (min (getf known :names) (length positional)))
                     (if (and positional (funcall value-p (car (last positional))))
                         (butlast positional)
                         positional)))
@@ -195,32 +193,22 @@ generically: the names first, the value last."
                                (valid-expression-p (first rest) :kind :arithmetic))
                            (funcall value-p (first rest)))
                        (first rest)))))
-    (values (if (and known (= (length names) (third known)))
-                (apply #'format nil (second known) (mapcar #'name-text names))
-                (format nil "~A~{ ~A~}" (keyword-words kind) (mapcar #'name-text names)))
-            (if (vector-value-p value) nil (and known (fourth known)))
+    (values (described-label known kind names)
+            (if (vector-value-p value) nil (getf known :symbol))
             value
             options)))
 
-(defparameter *impulse-phrases*
-  '((:impulse "impulse of ~*~A on ~:*~:*~A" 2)
-    (:rope-impulse "impulse of the jerk along ~A" 1))
-  "Each impulse kind an impact reports, with the FORMAT control of its label over its
-leading names and how many names lead its entry.")
-
 (defun impulse-entry (entry)
   "The parts of an impact's impulse ENTRY (KIND NAME... MAGNITUDE) as (values LABEL
-MAGNITUDE): LABEL a string, MAGNITUDE an expression or NIL. Unknown kinds are taken apart
-generically: the names first, the magnitude last."
+MAGNITUDE): LABEL a string (the kind's words, AMES.KB:IMPULSE-DESCRIPTION), MAGNITUDE an
+expression or NIL. Unknown kinds are taken apart generically: the names first, the
+magnitude last."
   (let* ((kind (first entry))
-         (known (assoc kind *impulse-phrases*))
          (value (car (last (rest entry))))
          (magnitude (and (rest entry) (not (symbolp value))
                          (valid-expression-p value :kind :arithmetic) value))
          (names (if magnitude (butlast (rest entry)) (rest entry))))
-    (values (if (and known (= (length names) (third known)))
-                (apply #'format nil (second known) (mapcar #'name-text names))
-                (format nil "~A~{ ~A~}" (keyword-words kind) (mapcar #'name-text names)))
+    (values (described-label (ames.kb:impulse-description kind) kind names)
             magnitude)))
 
 ;;; Events
@@ -242,7 +230,6 @@ generically, their options as \"key value\")."
      (let* ((kind (first event))
             (positional (loop for x in (rest event) until (keywordp x) collect x))
             (options (nthcdr (length positional) (rest event)))
-            (a (name-text (first positional))) (b (name-text (second positional)))
             ;; an impact's impulse and energy lost have their own section ("the impact")
             (shown-elsewhere (if (and state (getf (state-notes state) :impact))
                                  '(:endpoint :impulse :energy-lost)
@@ -255,23 +242,24 @@ generically, their options as \"key value\")."
                                             (format nil "~(~A~)" value))))))
        (append
         (case kind
-          (:leaves (let ((contact (and state (contact-of state (first positional) (second positional)))))
-                     (if contact
-                         (append (list (format nil "~A reaches the end of " a))
-                                 (let ((feature (getf (cddr contact) :feature)))
-                                   (if (eq (first contact) (first positional))
-                                       (feature-phrase presenter feature)
-                                       (feature-phrase presenter (getf (cddr contact) :observer-feature)))))
-                         (list (format nil "~A leaves ~A past the end of the contact" a b)))))
-          (:lift-off (list (format nil "~A lifts off ~A (the normal force would turn attractive)" a b)))
-          (:contact (list (format nil "~A comes into contact with ~A" a b)))
-          (:collision (list (format nil "~A collides with ~A" a b)))
-          (:contact-ends (list (format nil "the contact of ~A with ~A ends" a b)))
-          (:starts-sliding (list (format nil "~A starts sliding on ~A" a b)))
-          (:stops-sliding (list (format nil "~A stops sliding on ~A" a b)))
-          (:slackens (list (format nil "~A goes slack" a)))
-          (:tightens (list (format nil "~A becomes taut" a)))
           (:branch (list "the run branches"))
           (:time-limit (phrase "the time limit t = " (present presenter (first positional)) " is reached"))
-          (t (list (format nil "~A~{ ~A~}" (keyword-words kind) (mapcar #'name-text positional)))))
+          (t (described-event-phrase presenter kind positional state)))
         (remove nil extra))))))
+
+(defun described-event-phrase (presenter kind names state)
+  "The words of an event of KIND over its leading NAMES, as its phenomenon describes it
+(AMES.KB:EVENT-DESCRIPTION): its :WORDS over the names, or, when it says :AT-FEATURE-END
+and STATE has a contact between the first two names, those words over the first and the
+feature of the contact the first leaves; a kind none describes as its words and the names."
+  (let* ((described (ames.kb:event-description kind))
+         (words (getf described :words))
+         (at-end (getf described :at-feature-end))
+         (contact (and at-end state (contact-of state (first names) (second names)))))
+    (cond (contact
+           (append (list (format nil at-end (name-text (first names))))
+                   (feature-phrase presenter (if (eq (first contact) (first names))
+                                                 (getf (cddr contact) :feature)
+                                                 (getf (cddr contact) :observer-feature)))))
+          (words (list (apply #'format nil words (mapcar #'name-text names))))
+          (t (list (format nil "~A~{ ~A~}" (keyword-words kind) (mapcar #'name-text names)))))))

@@ -28,15 +28,15 @@
   "The picture's style sheet.")
 
 (defun event-short (event)
-  "A short label for an end EVENT: \"hits ground\", \"lifts off sphere\"."
-  (let ((kind (first event)) (other (and (third event) (symbolp (third event)) (name-text (third event)))))
-    (case kind
-      (:collision (format nil "hits ~A" other))
-      (:contact (format nil "touches ~A" other))
-      (:lift-off (format nil "lifts off ~A" other))
-      (:leaves (format nil "leaves ~A" other))
-      (:time-limit "time limit")
-      (t (format nil "~A~@[ ~A~]" (keyword-words kind) other)))))
+  "A short label for an end EVENT: \"hits ground\", \"lifts off sphere\": the :SHORT words
+its phenomenon gives (AMES.KB:EVENT-DESCRIPTION) over its second name, else the kind's
+words and that name."
+  (let* ((kind (first event))
+         (other (and (third event) (symbolp (third event)) (name-text (third event))))
+         (short (getf (ames.kb:event-description kind) :short)))
+    (cond (short (format nil short other))
+          ((eq kind :time-limit) "time limit")
+          (t (format nil "~A~@[ ~A~]" (keyword-words kind) other)))))
 
 (defun state-events (state)
   "The events that end STATE (several when simultaneous), none for :NONE or :UNDECIDED."

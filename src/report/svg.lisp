@@ -153,6 +153,15 @@ body) into its observer (the first), or NIL."
                             (:vertex (and (eq gkind :edge) (vscale -1 (edge-outward-normal gdata)))))))
               (and normal (> (vlength normal) 0.5d0) (list point normal)))))))))
 
+(defun arrow-label (entry)
+  "The picture's label of the force ENTRY's arrow: the :LABEL its phenomenon gives
+(AMES.KB:FORCE-DESCRIPTION), a string or (:NAME I) the entry's Ith name, else the
+kind's words."
+  (let ((label (getf (ames.kb:force-description (first entry)) :label)))
+    (cond ((stringp label) label)
+          ((and (consp label) (eq (first label) :name)) (name-text (nth (1+ (second label)) entry)))
+          (t (keyword-words (first entry))))))
+
 (defun force-arrows (scenario state bindings)
   "The arrows of STATE's forces at the start: (FROM VECTOR LABEL) in the plane."
   (let ((s0 (number-at (getf (getf (state-notes state) :path-coordinates) :arc-length-from) bindings))
@@ -161,14 +170,14 @@ body) into its observer (the first), or NIL."
       (let ((point (if s0 (acons +arc-length+ s0 bindings) bindings)))
         (multiple-value-bind (label symbol value) (force-entry entry)
           (declare (ignore label))
-          (cond ((eq (first entry) :normal)
+          (cond ((eq (getf (ames.kb:force-description (first entry)) :arrow) :along-contact-normal)
                  (let* ((contact (contact-of state (second entry) (third entry)))
                         (geometry (and contact (contact-point-and-normal scenario contact bindings)))
                         (size (number-at value point)))
                    (when (and geometry size)
                      (push (list (first geometry)
                                  (vscale (if (eq (first contact) (second entry)) size (- size)) (second geometry))
-                                 (or symbol "N"))
+                                 (or symbol (keyword-words (first entry))))
                            arrows))))
                 ((vector-value-p value)
                  (let* ((body-name (find-if (lambda (x) (and (symbolp x) (find-scenario-body x scenario)))
@@ -179,8 +188,5 @@ body) into its observer (the first), or NIL."
                                                           (body-origin body bindings) bindings))))
                    (when (and vector outline)
                      (push (list (outline-anchor outline) vector
-                                 (case (first entry)
-                                   (:gravity "weight")
-                                   (:external (name-text (second entry)))
-                                   (t (keyword-words (first entry)))))
+                                 (arrow-label entry))
                            arrows))))))))))

@@ -1,11 +1,11 @@
-;;;; src/simulator/attachments.lisp -- what the situation says of things attached to bodies
-;;;; (springs, pulleys, ropes, the pairs of bodies with mass), the loci of points attached to
-;;;; bodies, and how relations over the state variables are decided at a state's start.
+;;;; src/simulator/attachments.lisp -- the loci of points attached to bodies (the probes the
+;;;; knowledge base's phenomena declare), and how relations over the state variables are
+;;;; decided at a state's start.
 ;;;;
-;;;; Nothing mechanical is computed here: the scenario's clauses are described as entities
-;;;; (the kb's components decide what they do), a bumper's free end is a point attached to
-;;;; a body whose loci against the other bodies the geometry gives, and a relation over the
-;;;; state variables is decided on their values at the start of the state.
+;;;; Nothing mechanical is computed here: the phenomena describe their clauses as entities
+;;;; and their probes (src/kb/phenomena.lisp), the geometry gives a probe's loci against the
+;;;; other bodies, and a relation over the state variables is decided on its values at
+;;;; the start of the state.
 ;;;;
 ;;;; Generic rules this file adds (see STATE-RELATION-VERDICT and PROBE-VERDICT):
 ;;;;   - (initial-pos B :x), a free body's coordinate at the start of the current state, is a
@@ -18,70 +18,6 @@
 ;;;;     crossed: (<= (contact-gap K) 0) holds while the obstacle reaches or covers the point.
 
 (in-package #:ames.simulator)
-
-;;; Entities
-
-(defun indexed-name (prefix index)
-  "The symbol PREFIX-INDEX naming an entity the simulator makes (not from user data)."
-  (intern (format nil "~A-~D" prefix index) '#:ames.simulator))
-
-(defun rope-segment-names (scenario)
-  "Alist rope name -> the names of its segments, numbered across the scenario's ropes."
-  (let ((index -1))
-    (mapcar (lambda (rope)
-              (cons (scenario-rope-name rope)
-                    (loop repeat (1- (length (scenario-rope-through rope)))
-                          collect (indexed-name "SEGMENT" (incf index)))))
-            (scenario-ropes scenario))))
-
-(defun rope-entities (scenario)
-  "The entities of SCENARIO's ropes (see src/kb/ropes.lisp): each rope and its straight
-segments between consecutive points, pulleys resolved into points of their bodies; a
-segment between two points of one body says so (:WITHIN-ONE-BODY T)."
-  (loop for rope in (scenario-ropes scenario)
-        for (nil . segments) in (rope-segment-names scenario)
-        for points = (mapcar (lambda (p) (rope-point-position scenario p)) (scenario-rope-through rope))
-        collect (list 'ames.kb:rope (scenario-rope-name rope)
-                      :length (scenario-rope-length rope) :segments segments)
-        append (loop for segment in segments
-                     for (from to) on points
-                     for index from 0
-                     collect (list* 'ames.kb:rope-segment segment :rope (scenario-rope-name rope)
-                                    :index index :from from :to to
-                                    (and (eq (first from) (first to)) (list :within-one-body t))))))
-
-(defun massive-body-pairs (scenario)
-  "Every two bodies of SCENARIO that have a mass and are not both fixed, as (B1 B2)."
-  (loop for (b1 . rest) on (remove nil (scenario-bodies scenario) :key #'scenario-body-mass)
-        append (loop for b2 in rest
-                     unless (and (scenario-body-fixed-p b1) (scenario-body-fixed-p b2))
-                       collect (list (scenario-body-name b1) (scenario-body-name b2)))))
-
-(defun attachment-entities (run)
-  "The entities of the scenario's springs, bumpers, ropes, universal gravitation and the
-pairs of bodies with mass (see src/kb/springs.lisp, ropes.lisp, gravitation.lisp)."
-  (let ((scenario (run-scenario run)))
-    (append
-     (mapcar (lambda (spring)
-               (if (scenario-spring-bumper-p spring)
-                   (list 'ames.kb:bumper (scenario-spring-name spring)
-                         :on (first (scenario-spring-from spring))
-                         :at (second (scenario-spring-from spring))
-                         :toward (scenario-spring-toward spring)
-                         :stiffness (scenario-spring-stiffness spring)
-                         :rest-length (scenario-spring-rest-length spring))
-                   (list 'ames.kb:spring (scenario-spring-name spring)
-                         :from (scenario-spring-from spring) :to (scenario-spring-to spring)
-                         :stiffness (scenario-spring-stiffness spring)
-                         :rest-length (scenario-spring-rest-length spring))))
-             (scenario-springs scenario))
-     (rope-entities scenario)
-     (when (scenario-gravitation scenario)
-       (list (list 'ames.kb:gravitation-field 'gravitation
-                   :constant (scenario-gravitation scenario))))
-     (loop for (b1 b2) in (massive-body-pairs scenario)
-           for index from 0
-           collect (list 'ames.kb:body-pair (indexed-name "PAIR" index) :first b1 :second b2)))))
 
 ;;; Probes: points attached to bodies, and their loci on the other bodies
 
@@ -109,19 +45,6 @@ pairs of bodies with mass (see src/kb/springs.lisp, ropes.lisp, gravitation.lisp
                                     (arc-moved piece)))
                               (rest shape)))))))
 
-(defun bumper-axis-vector (spring)
-  "The unit vector along a bumper SPRING's axis, toward its free end."
-  (destructuring-bind (dx dy) (scenario-spring-toward spring)
-    (let ((norm `(sqrt (+ (expt ,dx 2) (expt ,dy 2)))))
-      (list `(/ ,dx ,norm) `(/ ,dy ,norm)))))
-
-(defun bumper-free-end (spring)
-  "The point of a bumper SPRING's body where its free end rests: (X Y) in its frame."
-  (destructuring-bind (x y) (second (scenario-spring-from spring))
-    (destructuring-bind (ux uy) (bumper-axis-vector spring)
-      (let ((l0 (scenario-spring-rest-length spring)))
-        (list `(+ ,x (* ,l0 ,ux)) `(+ ,y (* ,l0 ,uy)))))))
-
 (defun straight-contact-p (contact)
   "True when the geometry CONTACT is a line or a segment."
   (member (ames.geometry:contact-kind contact) '(:segment :line)))
@@ -134,19 +57,20 @@ curved one, or a straight one whose outward normal is against AXIS."
                                          0))))
 
 (defun probe-loci (scenario bridge first-index)
-  "The loci of the scenario's probes (a bumper's free end, a point attached to a body
-that retreats along its axis when pressed) on every other body: (values CONTACTS KINDS),
-CONTACTS an alist name -> geometry contact (observer the probe's body, obstacle the other
-body, whose shape is moved so that the relative position of the two bodies is on the
-locus when the probe's point is on the other body's boundary; only the faces that can
-meet a point retreating along the axis), KINDS an alist name -> (:KIND POINT-CONTACT
-:POINT PROBE :AXIS (UX UY)). Names continue from FIRST-INDEX."
+  "The loci of the probes the phenomena declare (AMES.KB:PROBES-OF: points attached to
+bodies that retreat along an axis when pressed, such as a bumper's free end) on every
+other body: (values CONTACTS KINDS), CONTACTS an alist name -> geometry contact (observer
+the probe's body, obstacle the other body, whose shape is moved so that the relative
+position of the two bodies is on the locus when the probe's point is on the other body's
+boundary; only the faces that can meet a point retreating along the axis), KINDS an
+alist name -> (:KIND ENTITY-KIND :POINT PROBE :AXIS (UX UY)). Names continue from
+FIRST-INDEX."
   (let ((contacts '()) (kinds '()) (index first-index)
         (point-shape (ames.geometry:parse-shape 'ames-scenario:point :bridge bridge)))
-    (dolist (spring (remove-if-not #'scenario-spring-bumper-p (scenario-springs scenario)))
-      (let* ((mount (find-scenario-body (first (scenario-spring-from spring)) scenario))
-             (end (mapcar (lambda (x) (ames.maxima:simplify bridge x)) (bumper-free-end spring)))
-             (axis (mapcar (lambda (x) (ames.maxima:simplify bridge x)) (bumper-axis-vector spring))))
+    (dolist (probe (ames.kb:probes-of scenario))
+      (let* ((mount (find-scenario-body (getf probe :body) scenario))
+             (end (mapcar (lambda (x) (ames.maxima:simplify bridge x)) (getf probe :at)))
+             (axis (mapcar (lambda (x) (ames.maxima:simplify bridge x)) (getf probe :axis))))
         (dolist (body (scenario-bodies scenario))
           (let ((shape (translated-shape (scenario-body-shape body) end)))
             (unless (or (eq body mount) (null shape)
@@ -160,8 +84,7 @@ meet a point retreating along the axis), KINDS an alist name -> (:KIND POINT-CON
                     (let ((name (contact-entity-name index)))
                       (incf index)
                       (push (cons name contact) contacts)
-                      (push (list name :kind 'ames.kb:point-contact
-                                       :point (scenario-spring-name spring) :axis axis)
+                      (push (list name :kind (getf probe :kind) :point (getf probe :point) :axis axis)
                             kinds))))))))))
     (values (nreverse contacts) (nreverse kinds))))
 

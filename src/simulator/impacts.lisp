@@ -1,8 +1,8 @@
 ;;;; src/simulator/impacts.lisp -- resolving an impact: the instantaneous model of the knowledge
 ;;;; base's impact components, its contacts chosen by consistency, the velocities just after.
 ;;;;
-;;;; A state ends in an impact when a contact is reached with a velocity (its component names
-;;;; that event, e.g. (:collision A B)). The positions carry over; the velocities jump. The
+;;;; A state ends in an impact when a condition is reached with a velocity that its component
+;;;; declares impulsive (its :IMPACT event). The positions carry over; the velocities jump. The
 ;;;; impact's model is built from AMES.KB:IMPACT-KNOWLEDGE-BASE over every contact that touches
 ;;;; at that moment (several at once are solved together: a block landing on two supports, a
 ;;;; particle reaching the corner of a slope and the ground, a chain of touching blocks), and
@@ -37,8 +37,9 @@ off the foot of a slope onto the ground, bouncing up)."
 
 (defun impact-entities (run contacts)
   "The situation of an impact (see src/kb/impacts.lisp): the bodies with their positions
-and velocities just before, each of CONTACTS with its outward normal there, and the ropes
-(see src/kb/ropes.lisp)."
+and velocities just before, each of CONTACTS with its outward normal there
+(AMES.KB:TOUCHING-CONTACT-ENTITY), and what the phenomena make of their clauses for an
+impact (AMES.KB:IMPACT-ENTITIES-OF: the ropes)."
   (let ((scenario (run-scenario run)))
     (append
      (mapcar (lambda (body)
@@ -50,16 +51,15 @@ and velocities just before, each of CONTACTS with its outward normal there, and 
                        :position (body-position run name)
                        :velocity (body-velocity run name))))
              (scenario-bodies scenario))
-     (rope-entities scenario)
+     (ames.kb:impact-entities-of scenario)
      (mapcar (lambda (contact)
                (let ((geometry (contact-geometry run contact)))
                  (destructuring-bind (observer obstacle) (contact-bodies run contact)
-                   (list 'ames.kb:touching-contact contact
-                         :observer observer :obstacle obstacle
-                         :normal (mapcar (lambda (x) (tidy run x))
-                                         (ames.geometry:contact-outward-normal
-                                          geometry (initial-arc-length run contact)))
-                         :restitution (scenario-restitution scenario observer obstacle)))))
+                   (ames.kb:touching-contact-entity
+                    scenario contact observer obstacle
+                    (mapcar (lambda (x) (tidy run x))
+                            (ames.geometry:contact-outward-normal
+                             geometry (initial-arc-length run contact)))))))
              contacts))))
 
 (defun impact-decider (run)
@@ -109,7 +109,7 @@ impact (:CONTACTS, :IMPULSES, :ENERGY-LOST, :VELOCITIES-BEFORE, :VELOCITIES-AFTE
               (report (loop for (section entry) in (model-reported model)
                             collect (list section (value-entry solved entry)))))
          (values after
-                 (list :contacts (contact-descriptions run (active-contact-instances run))
+                 (list :contacts (contact-descriptions run (active-contact-instances run contacts))
                        :impulses (loop for (section entry) in report
                                        when (eq section :impulses) collect entry)
                        :energy-lost (loop for (section entry) in report
@@ -118,12 +118,15 @@ impact (:CONTACTS, :IMPULSES, :ENERGY-LOST, :VELOCITIES-BEFORE, :VELOCITIES-AFTE
                        :velocities-after after
                        :choices (trial-notes trial))))))))
 
-(defun active-contact-instances (run)
-  "The touching contacts whose impulse instance is active in the impact's model."
-  (loop for belief in (ames.engine:model-beliefs (run-model run))
-        when (and (eq (first belief) 'ames.kb:impulse)
-                  (eq (first (second belief)) 'ames.kb:impulse))
-          collect (getf (cddr belief) :contact)))
+(defun active-contact-instances (run contacts)
+  "Those of the touching CONTACTS an impulse acts through in the impact's model (an
+(impulse NAME ... :contact K) belief), in the order of the beliefs."
+  (remove-duplicates
+   (loop for belief in (ames.engine:model-beliefs (run-model run))
+         when (and (eq (first belief) 'ames.kb:impulse)
+                   (member (getf (cddr belief) :contact) contacts))
+           collect (getf (cddr belief) :contact))
+   :from-end t))
 
 (defun value-entry (solved form)
   "FORM, a report entry, with every quantity term replaced by its value in SOLVED."
@@ -133,9 +136,9 @@ impact (:CONTACTS, :IMPULSES, :ENERGY-LOST, :VELOCITIES-BEFORE, :VELOCITIES-AFTE
 
 (defun impact-event (event impact)
   "EVENT, an impact event (:KIND NAME ...), with the impulse of the IMPACT's entries that
-name only things EVENT names (an entry is (:KIND NAME... VALUE), such as (:impulse A B J)
-for the contacts between A and B or (:rope-impulse R J) for a rope), and the kinetic
-energy lost, from the resolved IMPACT."
+name only things EVENT names (an entry is (:KIND NAME... VALUE), as the impact's
+components report them: the impulse between two bodies, or along a rope), and the
+kinetic energy lost, from the resolved IMPACT."
   (let* ((impulses (remove-if-not (lambda (entry)
                                     (every (lambda (name) (member name (rest event)))
                                            (butlast (rest entry))))

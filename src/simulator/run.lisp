@@ -221,29 +221,15 @@ are alternatives. At a concave corner both faces can push at once."
                  properties)))
 
 (defun situation-entities (run)
-  "The entities the mechanics knowledge base reads (see src/kb/mechanics.lisp and the
-files it names)."
+  "The entities the mechanics knowledge base reads: the bodies, the contacts (between
+shapes, and the loci of the phenomena's probes), then what each phenomenon makes of its
+scenario clause (AMES.KB:SITUATION-ENTITIES-OF; see src/kb/phenomena.lisp)."
   (let ((scenario (run-scenario run)))
     (append
      (mapcar #'body-entity (scenario-bodies scenario))
-     (when (scenario-gravity scenario)
-       (list (list 'ames.kb:gravity-field 'earth :strength (scenario-gravity scenario))))
-     (mapcar (lambda (force)
-               (list 'ames.kb:external-force (scenario-force-name force)
-                     :on (scenario-force-body force)
-                     :fx (first (scenario-force-value force))
-                     :fy (second (scenario-force-value force))))
-             (scenario-forces scenario))
      (mapcar (lambda (entry) (contact-entity run (car entry) (cdr entry)))
              (run-contacts run))
-     (loop for friction in (scenario-frictions scenario)
-           for index from 0
-           collect (list 'ames.kb:friction-coefficients
-                         (intern (format nil "FRICTION-~D" index) '#:ames.simulator)
-                         :between (scenario-friction-bodies friction)
-                         :static (scenario-friction-static friction)
-                         :kinetic (scenario-friction-kinetic friction)))
-     (attachment-entities run))))
+     (ames.kb:situation-entities-of scenario))))
 
 ;;; Which contacts touch at the start of a state
 

@@ -58,9 +58,11 @@ replaced by their values over the state's motion."
                             :observer-feature (ames.geometry:contact-observer-feature geometry)))))
           contacts))
 
-(defun end-event-of (events)
-  "The one event a state reports as its end: an impact first, else the first."
-  (or (find :collision events :key (lambda (e) (and (consp e) (first e)))) (first events)))
+(defun end-event-of (fired)
+  "The one event a state reports as its end, of the FIRED candidates: an impact's first
+(a condition reached at a non-zero rate that its component declares impulsive, see
+IMPULSIVE-P), else the first candidate's."
+  (candidate-event (or (find-if #'impulsive-p fired) (first fired))))
 
 (defun group-at-end (run groups group fired)
   "GROUP's end value: the arc length where FIRED ends it when it moves along a curve
@@ -304,7 +306,7 @@ known."
         (when fired
           (let ((time (candidate-time (first fired))))
             (setf (state-duration state) time
-                  (state-end-event state) (end-event-of (mapcar #'candidate-event fired))
+                  (state-end-event state) (end-event-of fired)
                   (state-final-positions state) (final-values run groups fired :pos)
                   (state-final-velocities state) (final-values run groups fired :vel))
             (when (rest fired)
