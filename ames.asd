@@ -121,6 +121,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "spans")
                  (:file "input")
                  (:file "reader")
+                 (:file "world")
                  (:file "semantics")
                  (:file "ranges")
                  (:file "values")))

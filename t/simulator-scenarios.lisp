@@ -169,12 +169,12 @@ consistency) and call FUNCTION with the simulator's run (its model in
 AMES.SIMULATOR::RUN-MODEL) and the solution alist of the model (every unknown
 quantity's value), under SCENARIO's assumptions in BRIDGE. Signals what SIMULATE
 signals for the same steps."
-  (ames:check-scenario scenario bridge)
-  (ames.maxima:with-assumptions (bridge (ames:scenario-assumption-relations scenario))
-    (let* ((run (ames.simulator::make-run scenario bridge))
-           (trial (ames.simulator::settle-choices run))
-           (solved (ames.simulator::trial-solved trial)))
-      (funcall function run (ames.simulator::solved-model-values solved)))))
+  (let ((world (nth-value 1 (ames:check-scenario scenario bridge))))
+    (ames.maxima:with-assumptions (bridge (ames:scenario-assumption-relations scenario))
+      (let* ((run (ames.simulator::make-run world bridge))
+             (trial (ames.simulator::settle-choices run))
+             (solved (ames.simulator::trial-solved trial)))
+        (funcall function run (ames.simulator::solved-model-values solved))))))
 
 (defun contact-between (run body-1 body-2)
   "The active contact entity of RUN between the bodies named BODY-1 and BODY-2 (either

@@ -214,68 +214,77 @@ assumptions do not decide) as an AMBIGUOUS-TRANSITION."
          :missing-fact (ames.engine:undecided-relation-relation condition)
          :detail "start of a state (an activation condition)"))
 
-(defun make-run (scenario bridge &optional parameter-values)
-  "The RUN of the validated SCENARIO at its start, its first model built (call under
-the scenario's assumptions in BRIDGE). PARAMETER-VALUES as SIMULATE takes them."
-  (multiple-value-bind (positions velocities) (initial-motion-state scenario)
-    (let* ((shapes (body-shapes scenario bridge))
-           (contacts (all-simple-contacts scenario shapes bridge))
-           (run (multiple-value-bind (loci kinds) (probe-loci scenario bridge (length contacts))
-                  (setf contacts (append contacts loci))
-                  (make-instance 'run :scenario scenario :bridge bridge :shapes shapes
-                                    :contacts contacts :locus-kinds kinds
-                                    :alternatives (corner-alternatives bridge contacts)
-                                    :positions positions :velocities velocities
-                                    :values (check-parameter-values parameter-values scenario))))
-           (situation (ames.engine:make-situation (situation-entities run) :data run)))
-      (handler-bind ((ames.engine:undecided-relation #'undecided-to-ambiguity))
-        (setf (run-model run)
-              (ames.engine:build-model (ames.engine:make-engine (ames.kb:mechanics-knowledge-base))
-                                       situation :decider (state-decider run))))
-      run)))
+(defun make-run (world bridge &optional parameter-values)
+  "The RUN of WORLD's validated scenario at its start, in the shapes and contact pairs
+its checks built (see CHECK-SCENARIO), its first model built (call under the scenario's
+assumptions in BRIDGE). PARAMETER-VALUES as SIMULATE has checked them."
+  (let ((scenario (world-scenario world)))
+    (multiple-value-bind (positions velocities) (initial-motion-state scenario)
+      (let* ((contacts (world-contacts world))
+             (run (multiple-value-bind (loci kinds) (probe-loci scenario bridge (length contacts))
+                    (setf contacts (append contacts loci))
+                    (make-instance 'run :scenario scenario :bridge bridge
+                                        :shapes (world-shapes world)
+                                        :contacts contacts :locus-kinds kinds
+                                        :alternatives (corner-alternatives bridge contacts)
+                                        :positions positions :velocities velocities
+                                        :values parameter-values)))
+             (situation (ames.engine:make-situation (situation-entities run) :data run)))
+        (handler-bind ((ames.engine:undecided-relation #'undecided-to-ambiguity))
+          (setf (run-model run)
+                (ames.engine:build-model (ames.engine:make-engine (ames.kb:mechanics-knowledge-base))
+                                         situation :decider (state-decider run))))
+        run))))
 
 (defun simulate-checked (scenario bridge parameter-values check-incremental &key extra-facts)
-  "SIMULATE's work on the validated SCENARIO, with EXTRA-FACTS (relations) assumed
+  "SIMULATE's work on the validated SCENARIO with PARAMETER-VALUES as CHECK-PARAMETER-VALUES
+returns them (keyed by the scenario's symbols), with EXTRA-FACTS (relations) assumed
 besides the scenario's own assumptions (a branch's). The scenario's checks (shapes, no
 overlap at the start) see the extra facts too: a boundary branch's scenario has lost a
-parameter's declaration to them."
-  (unless extra-facts
-    ;; first on its own, so that contradictory assumptions are named by parameter
-    (check-scenario scenario bridge))
-  (ames.maxima:with-assumptions (bridge (append (scenario-assumption-relations scenario) extra-facts))
-    (when extra-facts
-      (check-scenario scenario bridge))
-    (let ((history (make-instance 'simulation-history
-                                  :scenario scenario
-                                  :parameter-values (check-parameter-values parameter-values scenario)))
-          (limit (or (scenario-states scenario) *default-state-limit*))
-          (run nil))
-      (restart-case
-          (handler-bind ((ames.engine:undecided-relation #'undecided-to-ambiguity))
-            (setf run (make-run scenario bridge parameter-values))
-            (run-states run history 0 limit check-incremental))
-        (stop-simulation (&optional condition)
-          :report "Stop the simulation here and return the states so far."
-          (setf (history-outcome history) (if (typep condition 'ambiguous-transition)
-                                              :ambiguous
-                                              :stopped))
-          (when (and (typep condition 'ambiguous-transition)
-                     (ambiguous-transition-state condition))
-            (setf (history-states history)
-                  (append (history-states history)
-                          (list (ambiguous-transition-state condition)))))
-          (setf (getf (history-notes history) :stopped-by) condition)))
-      (when run
-        (when (run-assumed run)
-          (setf (getf (history-notes history) :decided-by-values) (reverse (run-assumed run))))
-        (setf (getf (history-notes history) :model-sizes) (run-statistics run))
-        (setf (history-rederived history) (reverse (run-rederived run))))
-      ;; a run stopped by its time (or a signal) has no time left to ask Maxima more
-      (unless (typep (getf (history-notes history) :stopped-by) 'budget-exceeded)
-        (add-numeric-values history bridge)
-        (when (and (scenario-queries scenario) (null *branching*))
-          (setf (history-answers history) (answer-queries history bridge))))
-      history)))
+parameter's declaration to them. The run is made in the WORLD the checks built."
+  (let ((world (unless extra-facts
+                 ;; first on its own, so that contradictory assumptions are named by parameter
+                 (nth-value 1 (check-scenario scenario bridge)))))
+    (ames.maxima:with-assumptions (bridge (append (scenario-assumption-relations scenario) extra-facts))
+      (simulate-in-world (or world (nth-value 1 (check-scenario scenario bridge)))
+                         bridge parameter-values check-incremental))))
+
+(defun simulate-in-world (world bridge parameter-values check-incremental)
+  "The SIMULATION-HISTORY of WORLD's scenario run in WORLD under the assumptions in force
+(see SIMULATE-CHECKED): the states, then the numbers under PARAMETER-VALUES and the
+answers to the queries. The restart STOP-SIMULATION returns the history so far."
+  (let* ((scenario (world-scenario world))
+         (history (make-instance 'simulation-history
+                                 :scenario scenario
+                                 :parameter-values parameter-values))
+         (limit (or (scenario-states scenario) *default-state-limit*))
+         (run nil))
+    (restart-case
+        (handler-bind ((ames.engine:undecided-relation #'undecided-to-ambiguity))
+          (setf run (make-run world bridge parameter-values))
+          (run-states run history 0 limit check-incremental))
+      (stop-simulation (&optional condition)
+        :report "Stop the simulation here and return the states so far."
+        (setf (history-outcome history) (if (typep condition 'ambiguous-transition)
+                                            :ambiguous
+                                            :stopped))
+        (when (and (typep condition 'ambiguous-transition)
+                   (ambiguous-transition-state condition))
+          (setf (history-states history)
+                (append (history-states history)
+                        (list (ambiguous-transition-state condition)))))
+        (setf (getf (history-notes history) :stopped-by) condition)))
+    (when run
+      (when (run-assumed run)
+        (setf (getf (history-notes history) :decided-by-values) (reverse (run-assumed run))))
+      (setf (getf (history-notes history) :model-sizes) (run-statistics run))
+      (setf (history-rederived history) (reverse (run-rederived run))))
+    ;; a run stopped by its time (or a signal) has no time left to ask Maxima more
+    (unless (typep (getf (history-notes history) :stopped-by) 'budget-exceeded)
+      (add-numeric-values history bridge)
+      (when (and (scenario-queries scenario) (null *branching*))
+        (setf (history-answers history) (answer-queries history bridge))))
+    history))
 
 ;;; Numbers beside the formulas
 
