@@ -244,7 +244,7 @@ generically, their options as \"key value\")."
             (options (nthcdr (length positional) (rest event)))
             (a (name-text (first positional))) (b (name-text (second positional)))
             ;; an impact's impulse and energy lost have their own section ("the impact")
-            (shown-elsewhere (if (and state (getf (state-notes state) :impact))
+            (shown-elsewhere (if (and state (state-impact state))
                                  '(:endpoint :impulse :energy-lost)
                                  '(:endpoint)))
             (extra (loop for (key value) on options by #'cddr

@@ -41,7 +41,7 @@
 (defun state-events (state)
   "The events that end STATE (several when simultaneous), none for :NONE or :UNDECIDED."
   (let ((end (state-end-event state)))
-    (if (consp end) (or (getf (state-notes state) :events) (list end)) '())))
+    (if (consp end) (or (state-simultaneous-events state) (list end)) '())))
 
 (defun picture-path (history bindings)
   "The states the picture follows: HISTORY's states (a fork, which has no period of
@@ -52,7 +52,7 @@ none (the path stops at the fork). Returns a second value: the branch labels tak
                (loop for state in states
                      ;; a fork is no period of motion: its selected branch is drawn instead
                      append (append
-                             (unless (getf (state-notes state) :fork) (list state))
+                             (unless (state-fork-p state) (list state))
                                   (let* ((branches (state-branches state))
                                          (k (or (position-if (lambda (b) (getf b :selected)) branches)
                                                 (position-if (lambda (b)

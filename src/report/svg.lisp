@@ -155,7 +155,7 @@ body) into its observer (the first), or NIL."
 
 (defun force-arrows (scenario state bindings)
   "The arrows of STATE's forces at the start: (FROM VECTOR LABEL) in the plane."
-  (let ((s0 (number-at (getf (getf (state-notes state) :path-coordinates) :arc-length-from) bindings))
+  (let ((s0 (number-at (getf (state-path-coordinates state) :arc-length-from) bindings))
         (arrows '()))
     (dolist (entry (state-forces state) (nreverse arrows))
       (let ((point (if s0 (acons +arc-length+ s0 bindings) bindings)))

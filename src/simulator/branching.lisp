@@ -190,7 +190,7 @@ that fact: see ASSUMED-ON-THIS-PATH-P)."
                                   :end-event '(:branch)
                                   :final-positions (run-positions run)
                                   :final-velocities (run-velocities run)
-                                  :notes (list :missing-fact fact :fork t))))
+                                  :missing-fact fact :fork t)))
         (when (rest alternatives)
           (setf (state-branches fork)
                 (let ((*branching* (list :count (+ (getf *branching* :count 0) (length alternatives))

@@ -63,11 +63,11 @@ CHECK-INCREMENTAL."
     (when impulsive
       (multiple-value-bind (after impact) (resolve-impact run)
         (setf (run-velocities run) after
-              (getf (state-notes state) :impact) impact
+              (state-impact state) impact
               (state-end-event state) (impact-event (state-end-event state) impact))
-        (let ((events (getf (state-notes state) :events)))
+        (let ((events (state-simultaneous-events state)))
           (when events
-            (setf (getf (state-notes state) :events)
+            (setf (state-simultaneous-events state)
                   (mapcar (lambda (event)
                             (if (find event impulsive :key #'candidate-event :test #'equal)
                                 (impact-event event impact)
@@ -91,15 +91,15 @@ CHECK-INCREMENTAL."
 (defun sum-zeno-sequence (run state)
   "Record the impact that ended STATE; when it repeats the previous one scaled (see
 ZENO-ACCUMULATION), jump to the accumulation point: the run goes on from there with the
-velocities' limit, zero, and STATE's notes say so (:ACCUMULATION)."
-  (let* ((impact (getf (state-notes state) :impact))
+velocities' limit, zero, and STATE says so (STATE-ACCUMULATION)."
+  (let* ((impact (state-impact state))
          (record (list :time (run-time run) :positions (run-positions run)
                        :after (run-velocities run)
                        :contacts (mapcar (lambda (c) (subseq c 0 2)) (getf impact :contacts))))
          (accumulation (zeno-accumulation run (first (run-impacts run)) record)))
     (push record (run-impacts run))
     (when accumulation
-      (setf (getf (state-notes state) :accumulation) accumulation
+      (setf (state-accumulation state) accumulation
             (run-time run) (getf accumulation :time)
             (run-velocities run) (mapcar (lambda (entry) (list (first entry) (list 0 0)))
                                          (run-velocities run))
@@ -310,7 +310,7 @@ durations before it summed (after a state whose end has no closed form)."
           (t clock))))
 
 (defun add-numeric-values (history bridge &optional (clock 0))
-  "When HISTORY has parameter values, record in each state's notes (:NUMERIC plist) the
+  "When HISTORY has parameter values, record in each state (STATE-NUMBERS, a plist) the
 numeric start, duration and final positions and velocities, each the value of the
 formula it is printed beside. CLOCK is the number at which its first state starts (a
 branch continued from a fork starts later), or NIL."
@@ -324,11 +324,11 @@ branch continued from a fork starts later), or NIL."
                          alist)))
           (let ((duration (numeric-duration bridge state values)))
             (setf clock (numeric-start bridge state values clock))
-            (setf (getf (state-notes state) :numeric)
+            (setf (state-numbers state)
                   (list :start clock
                         :duration (or duration (state-duration state))
                         :final-positions (numbers-of (state-final-positions state))
                         :final-velocities (numbers-of (state-final-velocities state))
-                        :period (let ((periodic (getf (state-notes state) :periodic)))
+                        :period (let ((periodic (state-periodic state)))
                                   (and periodic (numeric-or-nil bridge (getf periodic :period) values)))))
             (setf clock (and clock (realp duration) (+ clock duration)))))))))
