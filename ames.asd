@@ -196,6 +196,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
    (:module "interface" :pathname "src/interface/" :serial t
     :depends-on ("report" "check" "witness")
     :components ((:file "package")
+                 (:file "api")
                  (:file "runs")
                  (:file "check")
                  (:file "messages")
@@ -259,6 +260,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "report-readable")
                (:file "report-formats")
                (:file "readme")
+               (:file "api")
                (:file "reliability-limits")
                (:file "reliability-reader")
                (:file "reliability-bridge")

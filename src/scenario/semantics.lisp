@@ -30,6 +30,9 @@
   (:documentation "A fact the scenario needs (a positive mass, a counter-clockwise
 polygon...) that its parameter assumptions do not decide. DATUM is the fact."))
 
+(setf (documentation 'missing-assumption-fact 'function)
+      "The relation that the scenario's assumptions neither prove nor refute.")
+
 (defun scenario-detail (scenario control &rest arguments)
   "The detail string of a condition about SCENARIO: CONTROL applied to ARGUMENTS,
 forms printed short and in the scenario's package."

@@ -20,6 +20,11 @@
 break a declared assumption or a coefficient's physical range. DATUM is the
 assumption's relation."))
 
+(setf (documentation 'parameter-value-error-parameter 'function)
+      "The parameter whose assumption the values break, or NIL."
+      (documentation 'parameter-value-error-assumption 'function)
+      "The assumption the values break, as declared (:POSITIVE, (> D B) ...), or NIL.")
+
 (defun value-reject (scenario parameter datum control &rest arguments)
   "Signal PARAMETER-VALUE-ERROR about PARAMETER (a SCENARIO-PARAMETER or NIL) of SCENARIO."
   (error 'parameter-value-error
