@@ -75,7 +75,8 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "decompose")
                  (:file "union")
                  (:file "contacts")
-                 (:file "obstacle")))
+                 (:file "obstacle")
+                 (:file "touching")))
    (:module "engine" :pathname "src/engine/" :serial t
     :depends-on ("base" "tms" "maxima-bridge")
     :components ((:file "package")
@@ -131,6 +132,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "conditions")
                  (:file "history")
                  (:file "run")
+                 (:file "touching")
                  (:file "attachments")
                  (:file "structure")
                  (:file "model")

@@ -86,7 +86,7 @@ from AMES, at compile time too: one section of the tour."
 (define-api
   simulation-history history-scenario history-states history-outcome
   history-notes history-rederived history-parameter-values history-answers
-  qualitative-state state-index state-start state-duration state-contacts
+  qualitative-state state-index state-start state-duration state-contacts state-contact-points
   state-accelerations state-forces-of state-positions state-velocities
   state-initial-velocities state-end-event state-final-positions state-final-velocities
   state-analysis state-branches body-entry

@@ -219,7 +219,7 @@ path (a zero-length one where its trajectory cannot be drawn). No label overlaps
             (let ((first-state (first path)))
               (when first-state
                 (dolist (contact (state-contacts first-state))
-                  (let ((geometry (contact-point-and-normal scenario contact bindings)))
+                  (let ((geometry (contact-point-and-normal first-state contact bindings)))
                     (when geometry
                       (destructuring-bind (x y) (to-picture frame (first geometry))
                         (format out "<rect class=\"contact\" x=\"~,2F\" y=\"~,2F\" width=\"7\" height=\"7\" transform=\"rotate(45 ~,2F ~,2F)\"/>~%"

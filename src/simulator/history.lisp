@@ -17,6 +17,11 @@
 assumptions do not decide which event ends it (see the history's notes).")
    (contacts :initarg :contacts :initform '() :reader state-contacts
              :documentation "List of (BODY1 BODY2 :FEATURE F): the simple contacts that hold.")
+   (contact-points :initarg :contact-points :initform '() :reader state-contact-points
+                   :documentation "A list parallel to CONTACTS: for each, where its bodies
+touch at the state's start, a plist (:POINT (X Y) :NORMAL (NX NY)) in the fixed frame
+with NORMAL the unit normal from its second body (the obstacle) into its first, or NIL
+when not known (see touching.lisp).")
    (accelerations :initarg :accelerations :initform '() :accessor state-accelerations
                   :documentation "List of (BODY (AX AY)) in the fixed frame.")
    (forces :initarg :forces :initform '() :accessor state-forces

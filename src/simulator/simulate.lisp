@@ -281,10 +281,20 @@ answers to the queries. The restart STOP-SIMULATION returns the history so far."
       (setf (history-rederived history) (reverse (run-rederived run))))
     ;; a run stopped by its time (or a signal) has no time left to ask Maxima more
     (unless (typep (getf (history-notes history) :stopped-by) 'budget-exceeded)
-      (add-numeric-values history bridge)
-      (when (and (scenario-queries scenario) (null *branching*))
-        (setf (history-answers history) (answer-queries history bridge))))
+      (analyse-history history bridge))
     history))
+
+(defun analyse-history (history bridge &optional (clock 0))
+  "The analysis that follows a simulation, reading only HISTORY (its states and what the
+knowledge base reported in them), never the run: the numbers beside the formulas under
+the history's parameter values (ADD-NUMERIC-VALUES, its first state starting at CLOCK),
+then the answers to the scenario's queries (ANSWER-QUERIES), unless HISTORY is a branch
+still growing (the root's analysis answers them for every path). Call under the
+scenario's assumptions. Returns HISTORY."
+  (add-numeric-values history bridge clock)
+  (when (and (scenario-queries (history-scenario history)) (null *branching*))
+    (setf (history-answers history) (answer-queries history bridge)))
+  history)
 
 ;;; Numbers beside the formulas
 

@@ -249,6 +249,7 @@ known."
                  :index index :start (run-time run) :duration :undecided
                  :initial-velocities (run-velocities run)
                  :contacts (contact-descriptions run contacts)
+                 :contact-points (mapcar (lambda (contact) (contact-touching run contact)) contacts)
                  :accelerations
                  (mapcar (lambda (body)
                            (list body (if (body-fixed-p run body)
