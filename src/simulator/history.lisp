@@ -114,7 +114,11 @@ termination condition with its time, or why it never fires)."))
    (answers :initform '() :accessor history-answers
             :documentation "The answers to the scenario's queries (see ANSWER-QUERIES).")
    (notes :initform '() :accessor history-notes
-          :documentation "A plist: :STOPPED-BY holds the condition that stopped the run early.")
+          :documentation "What the run says of itself, a plist: :STOPPED-BY the condition
+that stopped it early; :ASSUMED the facts the parameter values decided, each (:STATE N
+:FACT RELATION) (N NIL outside a transition); :DECIDED-BY-VALUES the same, as the run
+recorded them; :MODEL-SIZES the model's sizes before and after elimination (for
+benchmarks); :SELF-CHECK what the self-check verified (see AMES.CHECK).")
    (rederived :initform '() :accessor history-rederived
               :documentation "How many component instances each transition re-derived."))
   (:documentation "The value of SIMULATE: a scenario's qualitative states in order."))
