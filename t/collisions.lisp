@@ -29,7 +29,7 @@ E everywhere (its declaration dropped)."
 
 (defun impact-of (state)
   "The impact that ended STATE, as the simulator records it in its notes."
-  (getf (ames::state-notes state) :impact))
+  (ames.simulator:state-impact state))
 
 (test head-on-impacts-with-restitution
   "Block A (mass ma, speed v) hits block B (mass mb, at rest) on a frictionless floor:
@@ -105,7 +105,7 @@ sqrt(2 h / g) (1 + e) / (1 - e) = 3 sqrt(2 h / g), after which it rests on the f
            (states (ames::history-states history)))
       (flet ((x (form) (in-scenario-terms scenario form)))
         (is (eq :complete (ames::history-outcome history)) "outcome ~S" (ames::history-outcome history))
-        (let* ((accumulating (find-if (lambda (s) (getf (ames::state-notes s) :accumulation)) states))
+        (let* ((accumulating (find-if (lambda (s) (ames.simulator:state-accumulation s)) states))
                (rest-state (car (last states))))
           (is (not (null accumulating)) "the repeating impacts are recognised")
           (call-with-scenario-facts
@@ -121,7 +121,7 @@ sqrt(2 h / g) (1 + e) / (1 - e) = 3 sqrt(2 h / g), after which it rests on the f
                         (rise (getf (impact-of (second states)) :velocities-after))
                         (x '(/ h 16))))
              (when accumulating
-               (let ((accumulation (getf (ames::state-notes accumulating) :accumulation)))
+               (let ((accumulation (ames.simulator:state-accumulation accumulating)))
                  (is-same bridge "factor" (getf accumulation :factor) 1/2)
                  (is-same bridge "accumulation time" (getf accumulation :time)
                           (x '(* 3 (sqrt (/ (* 2 h) g)))))

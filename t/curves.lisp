@@ -98,7 +98,7 @@ with the period 4 sqrt(R/g) K(sin^2(phi/2)) = 4 sqrt(R/g) K((1 - cos phi)/2)."
     (let* ((scenario (ames:parse-scenario *swing-in-an-offset-bowl*))
            (history (ames:simulate scenario :bridge bridge))
            (state (first (ames::history-states history)))
-           (periodic (getf (ames::state-notes state) :periodic)))
+           (periodic (ames.simulator:state-periodic state)))
       (is (eq :complete (ames::history-outcome history)))
       (is (eq :forever (ames::state-duration state)))
       (is (not (null periodic)))
@@ -138,7 +138,7 @@ the period is 4 sqrt(1/10) K(sin^2(1/4)) = 2.01841..."
     (let* ((scenario (scenario-named "particle-in-a-bowl"))
            (history (ames:simulate scenario :bridge bridge))
            (state (first (ames::history-states history)))
-           (period (getf (getf (ames::state-notes state) :periodic) :period))
+           (period (getf (ames.simulator:state-periodic state) :period))
            (values (in-scenario-terms scenario '((m . 1) (g . 10) (r . 1) (theta0 . 1/2)))))
       (is (not (null period)))
       (when period

@@ -121,7 +121,7 @@ still only the selected one has numbers."
                  (is (eql 0 (ames::state-index (first (getf branch :states))))))
                 (all (is (eq :complete (getf branch :outcome)))
                      (dolist (state (getf branch :states))
-                       (is (null (getf (ames::state-notes state) :numeric)))))
+                       (is (null (ames.simulator:state-numbers state)))))
                 (t (is (eq :not-simulated (getf branch :outcome)))
                    (is (null (getf branch :states))))))
         (dolist (answer (ames::history-answers history))

@@ -187,7 +187,7 @@ the turn, fails naming the turn."
   (let ((state (first (ames::history-states history))))
     (is (eq :complete (ames::history-outcome history)))
     (is (eq :forever (ames::state-duration state)))
-    (getf (ames::state-notes state) :periodic)))
+    (ames.simulator:state-periodic state)))
 
 (test a-mass-on-a-spring-oscillates-with-period-two-pi-root-m-over-k
   "The block swings forever between x = l0 - a and l0 + a with the period 2 pi sqrt(m/k)."

@@ -90,7 +90,7 @@ writes. Returns as a second value what was wrong."
       ;; the states drawn: the top-level ones, then a fork's branch (see PICTURE-PATH)
       (let ((drawn (remove-duplicates (mapcar #'second paths))))
         (dolist (state (ames:history-states history))
-          (unless (getf (ames:state-notes state) :fork) ; no period of motion: its branch is drawn
+          (unless (ames.simulator:state-fork-p state) ; no period of motion: its branch is drawn
             (is (member (ames:state-index state) drawn) "~A: state ~D not drawn" name (ames:state-index state))))
         (dolist (index drawn)
           (dolist (body moving)

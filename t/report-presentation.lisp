@@ -40,11 +40,11 @@ the internal names renamed as PRESENTED's are."
             (if (ames.report::vector-value-p value) (add-all value) (add value))))
         (loop for (nil position) in (ames:state-final-positions state) do (add-all position))
         (loop for (nil velocity) in (ames:state-final-velocities state) do (add-all velocity))
-        (let ((path (getf (ames:state-notes state) :path-coordinates)))
+        (let ((path (ames.simulator:state-path-coordinates state)))
           (add (getf path :arc-length-from))
           (add (getf path :tangential-acceleration))
           (add (third (getf path :energy-integral))))
-        (add (getf (ames:state-notes state) :end-arc-length))))))
+        (add (ames.simulator:state-end-arc-length state))))))
 
 (defun admissible-test-points (scenario count)
   "COUNT alists over SCENARIO's parameters (and tau, s) that satisfy its assumptions."

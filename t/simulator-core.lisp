@@ -68,7 +68,7 @@ and reaches the floor at the incline's foot after sqrt(2 h / g) / sin a."
         (is (not (null state)))
         (when state
           (is (equal '(("PARTICLE" "INCLINE")) (contact-pairs state)))
-          (let ((events (mapcar #'event-names (or (getf (ames::state-notes state) :events)
+          (let ((events (mapcar #'event-names (or (ames.simulator:state-simultaneous-events state)
                                                   (list (ames::state-end-event state))))))
             (is (member '(:collision "PARTICLE" "FLOOR") events :test #'equal) "events ~S" events))
           (call-with-scenario-facts
@@ -125,13 +125,13 @@ bottom with speed sqrt(2 g R), pressed by N = 3 m g there, meets the floor tange
           (when (and curve floor)
             (is (equal '(("PARTICLE" "TRACK")) (contact-pairs curve)))
             (is (equal '(("PARTICLE" "FLOOR")) (contact-pairs floor)))
-            (let ((events (mapcar #'event-names (getf (ames::state-notes curve) :events))))
+            (let ((events (mapcar #'event-names (ames.simulator:state-simultaneous-events curve))))
               (is (member '(:contact "PARTICLE" "FLOOR") events :test #'equal) "events ~S" events)
               (is (member '(:leaves "PARTICLE" "TRACK" :endpoint) events :test #'equal) "events ~S" events))
             (call-with-scenario-facts
              bridge scenario
              (lambda ()
-               (let ((end (getf (ames::state-notes curve) :end-arc-length)))
+               (let ((end (ames.simulator:state-end-arc-length curve)))
                  (is (not (null end)))
                  (when end
                    (is-same bridge "N at the bottom"

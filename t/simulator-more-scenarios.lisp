@@ -32,7 +32,7 @@ the defaults (g = 9.81, r = 1, theta0 = 0.1: an independent integration of the O
             (let ((duration (ames::state-duration slide)))
               (is (not (and (consp duration) (keywordp (first duration)))) "a closed form: ~S" duration)
               (is (mentions-name-p "ELLIPTIC-F" duration) "an elliptic integral: ~S" duration))
-            (let ((numeric (getf (getf (ames::state-notes slide) :numeric) :duration)))
+            (let ((numeric (getf (ames.simulator:state-numbers slide) :duration)))
               (is (and (realp numeric) (< (abs (- numeric 0.90711d0)) 1d-4)) "numeric duration ~S" numeric))
             (is (null (ames::state-contacts flight)))
             (is (eq :forever (ames::state-duration flight)))
@@ -229,7 +229,7 @@ a TYPE-ERROR on a string."
            (history (ames::simulate scenario :bridge bridge
                                              :parameter-values '(("g" . 10) ("h" . 5) ("d" . 1) ("v0" . 2))))
            (flight (second (ames::history-states history)))
-           (landing (per-body (getf (getf (ames::state-notes flight) :numeric) :final-positions)
+           (landing (per-body (getf (ames.simulator:state-numbers flight) :final-positions)
                               "PARTICLE")))
       ;; t2 = sqrt(2h/g) = 1, so the particle lands at x = v0 = 2
       (is (and (realp (first landing)) (< (abs (- (first landing) 2)) 1d-9)) "landing at ~S" landing))))

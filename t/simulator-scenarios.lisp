@@ -156,7 +156,7 @@ when the run stopped at its state limit)."
     (is (every (lambda (count state)
                  (and (integerp count)
                       (or (plusp count)
-                          (getf (ames::state-notes state) :impact))))
+                          (ames.simulator:state-impact state))))
                rederived (ames::history-states history))
         "a transition re-derived nothing: ~S" rederived)))
 
@@ -169,12 +169,12 @@ consistency) and call FUNCTION with the simulator's run (its model in
 AMES.SIMULATOR::RUN-MODEL) and the solution alist of the model (every unknown
 quantity's value), under SCENARIO's assumptions in BRIDGE. Signals what SIMULATE
 signals for the same steps."
-  (ames:check-scenario scenario bridge)
-  (ames.maxima:with-assumptions (bridge (ames:scenario-assumption-relations scenario))
-    (let* ((run (ames.simulator::make-run scenario bridge))
-           (trial (ames.simulator::settle-choices run))
-           (solved (ames.simulator::trial-solved trial)))
-      (funcall function run (ames.simulator::solved-model-values solved)))))
+  (let ((world (nth-value 1 (ames:check-scenario scenario bridge))))
+    (ames.maxima:with-assumptions (bridge (ames:scenario-assumption-relations scenario))
+      (let* ((run (ames.simulator::make-run world bridge))
+             (trial (ames.simulator::settle-choices run))
+             (solved (ames.simulator::trial-solved trial)))
+        (funcall function run (ames.simulator::solved-model-values solved))))))
 
 (defun contact-between (run body-1 body-2)
   "The active contact entity of RUN between the bodies named BODY-1 and BODY-2 (either
@@ -294,7 +294,7 @@ it slides away along the ground while the wedge slides the other way, forever."
                       (first (per-body (ames::state-final-velocities state) "PARTICLE")))
              (is-same bridge "and loses its vertical one"
                       (second (per-body (ames:state-initial-velocities after) "PARTICLE")) 0)))))
-      (let ((events (mapcar #'event-names (getf (ames::state-notes state) :events))))
+      (let ((events (mapcar #'event-names (ames.simulator:state-simultaneous-events state))))
         (is (member '(:collision "PARTICLE" "GROUND") events :test #'equal) "events: ~S" events)
         (is (member '(:leaves "PARTICLE" "WEDGE" :endpoint) events :test #'equal)
             "events: ~S" events))
@@ -400,7 +400,7 @@ t1 = d/v0 = 1/4 and t2 = sqrt(2h/g)."
            (history (simulate-stopping-when-ambiguous scenario bridge :parameter-values values))
            (states (ames::history-states history))
            (t2 (sqrt (/ 2d0 981/100))))
-      (flet ((numeric (state key) (getf (getf (ames::state-notes state) :numeric) key))
+      (flet ((numeric (state key) (getf (ames.simulator:state-numbers state) key))
              (close-to (x y) (and (realp x) (< (abs (- x y)) 1d-9))))
         (is (= 3 (length states)))
         (when (= 3 (length states))

@@ -25,7 +25,7 @@
 
 (defun reported-section (state section)
   "The entries of the knowledge base's report SECTION (:ENERGY, :MOMENTUM) in STATE."
-  (getf (ames::state-notes state) section))
+  (getf (ames.simulator:state-reported-sections state) section))
 
 (defun total-energy (state)
   "The sum of every energy STATE reports (kinetic and potential), an expression over the
@@ -265,7 +265,7 @@ m g y + m v^2/2 + k (l - 1)^2/2."
            (history (simulate-stopping-when-ambiguous (ames:parse-scenario *spring-pendulum*) bridge
                                                       :parameter-values values))
            (state (first (ames::history-states history)))
-           (numeric (getf (ames::state-notes state) :numeric)))
+           (numeric (ames.simulator:state-numbers state)))
       (is (eq :time-limit (ames::history-outcome history)))
       (destructuring-bind (x y) (per-body (getf numeric :final-positions) "BOB")
         (destructuring-bind (vx vy) (per-body (getf numeric :final-velocities) "BOB")
@@ -371,7 +371,7 @@ closed form (the run says so without numbers); with numbers, at t = 3 it is at
                        (ames:parse-scenario form) bridge
                        :parameter-values '((big-m . 1) (big-g . 1) (m . 1/1000) (v . 1))))
              (state (first (ames::history-states history)))
-             (at (per-body (getf (getf (ames::state-notes state) :numeric) :final-positions) "PLANET")))
+             (at (per-body (getf (ames.simulator:state-numbers state) :final-positions) "PLANET")))
         (is (eq :time-limit (ames::history-outcome history)))
         (is (and at (< (abs (- (first at) (cos 3d0))) 1d-6) (< (abs (- (second at) (sin 3d0))) 1d-6))
             "the planet at ~S" at)))))

@@ -114,7 +114,7 @@ pendulum's period 4 sqrt(r/g) K(sin^2(theta0/2)) (Maxima-checked)."
     (let* ((scenario (ames:parse-scenario *particle-in-a-bowl*))
            (history (ames:simulate scenario :bridge bridge))
            (state (first (ames::history-states history)))
-           (periodic (and state (getf (ames::state-notes state) :periodic))))
+           (periodic (and state (ames.simulator:state-periodic state))))
       (is (eq :complete (ames::history-outcome history)))
       (is (eq :forever (and state (ames::state-duration state))))
       (is (not (null periodic)))

@@ -28,6 +28,16 @@ name and the LOCATION in the scenario (a string such as \"body BALL\" or \"bodie
 and FLOOR\", or NIL)."
   file line scenario location)
 
+(setf (documentation 'error-context-file 'function)
+      "The file a condition arose in (a string), or NIL at the REPL."
+      (documentation 'error-context-line 'function)
+      "The line of that file: of the clause involved, else of the scenario; or NIL."
+      (documentation 'error-context-scenario 'function)
+      "The name of the scenario that was read or run, or NIL."
+      (documentation 'error-context-location 'function)
+      "Where in the scenario, a string such as \"body BALL\" or \"bodies BALL and
+FLOOR\", or NIL.")
+
 (defun write-error-context (context stream)
   "Write CONTEXT as the head of a report: Scenario NAME, LOCATION (FILE, line N): "
   (format stream "Scenario ~:[?~;~:*~A~]~@[, ~A~]~:[~2*~; (~@[~A, ~]line ~D)~]: "
@@ -56,6 +66,10 @@ AMES-ERROR-FULL-REPORT).")
              (format-report stream "~@[~A~]~@[~%  at fault: ~S~]"
                             (ames-error-detail condition)
                             (ames-error-datum condition)))))
+
+(setf (documentation 'ames-error-context 'function)
+      "The ERROR-CONTEXT of an AMES-ERROR (file, line, scenario, location), or NIL when
+unknown; SETF-able: whoever runs the scenario fills it.")
 
 (defconstant +report-maximum-lines+ 30
   "The most lines of an AMES-ERROR's report printed unless *FULL-REPORTS* is true.")

@@ -49,6 +49,15 @@ MAKE-LIMITS or CHANGE-LIMITS."
   (integer-bits nil :read-only t)
   (expression-size nil :read-only t))
 
+(setf (documentation 'limits-time-limit 'function)
+      "Seconds of wall time a whole scenario run may take, or NIL: none."
+      (documentation 'limits-maxima-timeout 'function)
+      "Seconds one Maxima request may take, or NIL: the bridge's own timeout."
+      (documentation 'limits-integer-bits 'function)
+      "The most bits of an exact integer (numerator or denominator) the Lisp side builds."
+      (documentation 'limits-expression-size 'function)
+      "The most terms of a sum the Lisp side builds.")
+
 (defun checked-limit (value what &key (allow-nil t) integer)
   "VALUE when it is a positive real (a positive integer when INTEGER), or NIL when
 ALLOW-NIL; else signal INVALID-LIMIT naming WHAT."
@@ -149,6 +158,16 @@ expression or operation), when known.")
                              (budget-exceeded-quantity condition) amount limit)))
                 (ames-error-detail condition)
                 (ames-error-datum condition))))))
+
+(setf (documentation 'budget-exceeded-quantity 'function)
+      "What went over its limit: :TIME, :INTEGER-BITS, :EXPRESSION-SIZE, or another
+quantity a layer bounds (the bridge's :REPLY-SIZE)."
+      (documentation 'budget-exceeded-limit 'function)
+      "The limit that was exceeded."
+      (documentation 'budget-exceeded-amount 'function)
+      "How much was needed (for sizes), or NIL."
+      (documentation 'budget-exceeded-subject 'function)
+      "The subject of the run (the scenario's name), or NIL.")
 
 (defun current-limits ()
   "The limits in force: the running budget's, else *LIMITS*."

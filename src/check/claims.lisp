@@ -118,7 +118,7 @@ length gives the claimed place and velocity); NIL when it is neither."
 integration gives it as zero within SCALE: at a turning point the closed form over the
 arc length is the root of the energy integral, which rounding leaves a hair below zero
 (the speed there is zero, as claimed)."
-  (and (null claimed) (eq what :velocity) (getf (state-notes state) :periodic)
+  (and (null claimed) (eq what :velocity) (state-periodic state)
        (<= (abs numeric) scale)))
 
 (defun compare-motion (setup state samples)

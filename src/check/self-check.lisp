@@ -32,11 +32,11 @@ makes it NIL).")
 duration with no closed form, the number the run found (see the simulator's notes); NIL
 when there is none; :FOREVER."
   (let ((duration (state-duration state))
-        (numeric (getf (state-notes state) :numeric)))
+        (numeric (state-numbers state)))
     (cond ((eq duration :forever) :forever)
           ((realp duration) duration)
           ((or (keywordp duration) (and (consp duration) (keywordp (first duration))))
-           (let ((n (or (getf (state-notes state) :numeric-duration) (getf numeric :duration))))
+           (let ((n (getf numeric :duration)))
              (and (realp n) n)))
           (t (handler-case (value-under duration values)
                (unevaluable () nil))))))
@@ -44,7 +44,7 @@ when there is none; :FOREVER."
 (defun period-number (state values)
   "The period of a periodic STATE (its notes' :PERIODIC (:PERIOD EXPR ...), see the
 scenario language's \"Oscillation and turning points\") under VALUES, or NIL."
-  (let ((periodic (getf (state-notes state) :periodic)))
+  (let ((periodic (state-periodic state)))
     (and (consp periodic) (getf periodic :period)
          (handler-case (value-under (getf periodic :period) values)
            (unevaluable () nil)))))
@@ -56,7 +56,7 @@ scenario language's \"Oscillation and turning points\") under VALUES, or NIL."
 period, at whose end it must be back where it started, its turning points allowed."
   (let ((model (getf (state-analysis state) :check-model))
         (duration (duration-number state values))
-        (periodic (getf (state-notes state) :periodic)))
+        (periodic (state-periodic state)))
     (flet ((unchecked (reason) (return-from check-state (list :status :unchecked :reason reason))))
       (cond ((state-branches state) (unchecked "the fork there has no period of motion; the branch the values select is checked"))
             ((null model) (unchecked "no model recorded"))
@@ -110,13 +110,13 @@ variable is back at its start."
 
 (defun printed-numbers (state)
   "The numbers the report prints beside STATE's formulas: a list of (LABEL NUMBER FORMULA)."
-  (let ((numeric (getf (state-notes state) :numeric)))
+  (let ((numeric (state-numbers state)))
     (append
      (let ((start (getf numeric :start)))
        (and (realp start) (not (realp (state-start state)))
             (list (list "start time" start (state-start state)))))
      ;; the number the report prints beside the duration (see the report's view)
-     (let ((duration (or (getf (state-notes state) :numeric-duration) (getf numeric :duration))))
+     (let ((duration (getf numeric :duration)))
        (and (realp duration) (not (realp (state-duration state)))
             (not (keywordp (state-duration state)))
             (not (and (consp (state-duration state)) (keywordp (first (state-duration state)))))
@@ -218,7 +218,7 @@ number, and record the result in its notes as :SELF-CHECK."
                             (push (failure-entry index result) failures)))))))
           (dolist (state (checked-path (history-states history)))
             (let* ((index (state-index state))
-                   (start (getf (getf (state-notes state) :numeric) :start))
+                   (start (getf (state-numbers state) :start))
                    (result (check-state state values
                                         :horizon (max 1d0 (* 2 (if (realp start) start clock))))))
               (when (realp start) (setf clock (coerce start 'double-float)))

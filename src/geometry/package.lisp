@@ -53,7 +53,7 @@ and call inside ames.maxima:with-assumptions for symbolic shapes):
    #:contact-curvature #:contact-sense #:contact-neighbours
    #:contact-point #:contact-unit-tangent #:contact-outward-normal #:contact-inward-normal
    #:contact-tangent-angle #:contact-normal-angle
-   #:position-on-contact-p #:contact-parameter
+   #:position-on-contact-p #:contact-parameter #:contact-touching-point
    ;; path coordinates
    #:path-velocity #:path-acceleration #:differentiate
    ;; meeting and leaving contacts

@@ -5,7 +5,7 @@
 ;;;;     does not depend on what ran before it in the process;
 ;;;;   - the run gets a budget (AMES.BASE:CALL-WITH-BUDGET) from the LIMITS given, by
 ;;;;     default *LIMITS*: wall time, and the size of exact numbers and expressions;
-;;;;   - the parameter values are checked (CHECK-PARAMETER-VALUES);
+;;;;   - the parameter values are checked (RUN-PARAMETER-VALUES, by CHECK-PARAMETER-VALUES);
 ;;;;   - an AMBIGUOUS-TRANSITION stops the run (its history says so);
 ;;;;   - every AMES-ERROR that leaves the run, but a SCENARIO-ERROR (which names its
 ;;;;     place itself), gets an ERROR-CONTEXT: the file, the scenario, the line of the
@@ -98,7 +98,6 @@ BUDGET-EXCEEDED when the run goes over its budget before its first state (or ove
 limit), and whatever SIMULATE signals. A run that goes over its time limit after that
 (or that a signal stops, see *STOP-REQUESTED*) returns the states that finished: its
 outcome is :STOPPED and its notes' :STOPPED-BY is the BUDGET-EXCEEDED."
-  (check-parameter-values settings scenario)
   (let ((values (run-parameter-values scenario :settings settings :numeric numeric))
         (out-of-time nil))
     (ames.maxima:reset-bridge bridge)

@@ -231,7 +231,7 @@ generically, their options as \"key value\")."
             (positional (loop for x in (rest event) until (keywordp x) collect x))
             (options (nthcdr (length positional) (rest event)))
             ;; an impact's impulse and energy lost have their own section ("the impact")
-            (shown-elsewhere (if (and state (getf (state-notes state) :impact))
+            (shown-elsewhere (if (and state (state-impact state))
                                  '(:endpoint :impulse :energy-lost)
                                  '(:endpoint)))
             (extra (loop for (key value) on options by #'cddr

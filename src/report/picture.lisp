@@ -41,7 +41,7 @@ words and that name."
 (defun state-events (state)
   "The events that end STATE (several when simultaneous), none for :NONE or :UNDECIDED."
   (let ((end (state-end-event state)))
-    (if (consp end) (or (getf (state-notes state) :events) (list end)) '())))
+    (if (consp end) (or (state-simultaneous-events state) (list end)) '())))
 
 (defun picture-path (history bindings)
   "The states the picture follows: HISTORY's states (a fork, which has no period of
@@ -52,7 +52,7 @@ none (the path stops at the fork). Returns a second value: the branch labels tak
                (loop for state in states
                      ;; a fork is no period of motion: its selected branch is drawn instead
                      append (append
-                             (unless (getf (state-notes state) :fork) (list state))
+                             (unless (state-fork-p state) (list state))
                                   (let* ((branches (state-branches state))
                                          (k (or (position-if (lambda (b) (getf b :selected)) branches)
                                                 (position-if (lambda (b)
@@ -219,7 +219,7 @@ path (a zero-length one where its trajectory cannot be drawn). No label overlaps
             (let ((first-state (first path)))
               (when first-state
                 (dolist (contact (state-contacts first-state))
-                  (let ((geometry (contact-point-and-normal scenario contact bindings)))
+                  (let ((geometry (contact-point-and-normal first-state contact bindings)))
                     (when geometry
                       (destructuring-bind (x y) (to-picture frame (first geometry))
                         (format out "<rect class=\"contact\" x=\"~,2F\" y=\"~,2F\" width=\"7\" height=\"7\" transform=\"rotate(45 ~,2F ~,2F)\"/>~%"

@@ -66,7 +66,7 @@ a state that lasts forever). Stops at the first state whose start is not known."
   (flet ((series (kinds)
            (loop for (state start duration) in spans
                  for entries = (remove-if-not (lambda (e) (member (first e) kinds))
-                                              (getf (state-notes state) :energy))
+                                              (getf (state-reported-sections state) :energy))
                  for values = (and entries (every (lambda (e) (closed-form-in-tau-p (third e))) entries)
                                    (state-series state start duration bindings
                                                  (lambda (time)

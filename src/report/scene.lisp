@@ -141,7 +141,7 @@ where a number is missing."
 
 (defun numeric-samples (state body)
   "The points of BODY's numerically integrated trajectory in STATE's notes, or NIL."
-  (loop for group in (getf (state-notes state) :numeric-trajectory)
+  (loop for group in (state-numeric-trajectory state)
         for terms = (getf group :terms)
         for x = (position-if (lambda (term) (and (consp term) (string= (symbol-name (first term)) "POS")
                                                  (eq (second term) body) (eq (third term) :x)))
@@ -166,7 +166,7 @@ or NIL (:FOREVER, undecided, no closed form)."
   (let ((duration (state-duration state)))
     (or (and (not (keywordp duration)) (not (and (consp duration) (keywordp (first duration))))
              (number-at duration bindings))
-        (let ((note (getf (getf (state-notes state) :numeric) :duration)))
+        (let ((note (getf (state-numbers state) :duration)))
           (report-float note)))))
 
 (defun trajectory (state body bindings horizon)
@@ -177,9 +177,8 @@ the numeric integration's samples; at least its start point when known."
          (duration (or (state-duration-number state bindings) horizon))
          (arc-length +arc-length+))
     (cond ((and (consp position) (eq (first position) :on-path))
-           (let* ((notes (state-notes state))
-                  (from (number-at (getf (getf notes :path-coordinates) :arc-length-from) bindings))
-                  (to (or (number-at (getf notes :end-arc-length) bindings)
+           (let* ((from (number-at (getf (state-path-coordinates state) :arc-length-from) bindings))
+                  (to (or (number-at (state-end-arc-length state) bindings)
                           (let ((d (state-duration state)))
                             (and (consp d) (number-at (getf (rest d) :to-arc-length) bindings)))
                           from)))

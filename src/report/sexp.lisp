@@ -78,7 +78,7 @@ parameter of SCENARIO has that name) as the text report names them s and s'."
      (loop for (key value) on notes by #'cddr
            ;; the line coordinates are the simulator's working, in the knowledge base's
            ;; internal terms; the positions and the path coordinates carry the result
-           unless (member key '(:numeric-duration :line-coordinates))
+           unless (eq key :line-coordinates)
              append (list key (if (eq key :impact)
                                   ;; the impact model's consistency search is the solver's
                                   ;; working, not a result

@@ -103,55 +103,16 @@ write it at once outside a picture's label placement."
 
 ;;; Contacts and forces at the start
 
-(defun feature-body-index (feature)
-  "The body and the index (or NIL) of FEATURE."
-  (values (getf (if (integerp (second feature)) (cddr feature) (rest feature)) :of)
-          (and (integerp (second feature)) (second feature))))
-
-(defun feature-geometry (scenario feature bindings)
-  "For a FEATURE at the start: (values KIND DATA): :EDGE with its two points, :VERTEX
-with its point, :CIRCLE or :ARC with the shape's centre and solid side, :POINT with the
-body's point; NIL when unknown."
-  (multiple-value-bind (name index) (feature-body-index feature)
-    (let* ((body (find-scenario-body name scenario))
-           (shape (and body (scenario-body-shape body)))
-           (origin (and body (body-origin body bindings))))
-      (flet ((at (pair) (let ((p (point-at pair bindings))) (and p (v+ origin p)))))
-        (case (first feature)
-          (:point (values :point origin))
-          (:edge (let ((points (edge-points shape index)))
-                   (and points (values :edge (mapcar #'at points)))))
-          (:vertex (and (eq (shape-kind shape) :polygon)
-                        (values :vertex (at (nth index (rest shape))))))
-          (:circle (values :circle (list origin :inside)))
-          (:arc (and (eq (shape-kind shape) :arc)
-                     (values :arc (list (at (getf (rest shape) :center))
-                                        (or (getf (rest shape) :solid) :inside))))))))))
-
-(defun edge-outward-normal (points)
-  "The unit outward normal of the edge POINTS (the solid on its left)."
-  (destructuring-bind (p1 p2) points
-    (let ((d (v- p2 p1))) (vunit (list (second d) (- (first d)))))))
-
-(defun contact-point-and-normal (scenario contact bindings)
-  "The point of CONTACT at the start and the unit normal from its obstacle (the second
-body) into its observer (the first), or NIL."
-  (destructuring-bind (observer obstacle &key feature observer-feature &allow-other-keys) contact
-    (declare (ignore observer obstacle))
-    (multiple-value-bind (fkind fdata) (feature-geometry scenario feature bindings)
-      (multiple-value-bind (gkind gdata) (feature-geometry scenario observer-feature bindings)
-        (let ((point (cond ((member gkind '(:point :vertex)) gdata)
-                           ((eq fkind :vertex) fdata)
-                           ((eq gkind :edge) (vscale 0.5d0 (v+ (first gdata) (second gdata)))))))
-          (when (and point (every #'identity (alexandria:ensure-list (if (eq fkind :edge) fdata '(t)))))
-            (let ((normal (case fkind
-                            (:edge (edge-outward-normal fdata))
-                            (:circle (vunit (v- point (first fdata))))
-                            (:arc (if (eq (second fdata) :outside)
-                                      (vunit (v- (first fdata) point))
-                                      (vunit (v- point (first fdata)))))
-                            (:vertex (and (eq gkind :edge) (vscale -1 (edge-outward-normal gdata)))))))
-              (and normal (> (vlength normal) 0.5d0) (list point normal)))))))))
+(defun contact-point-and-normal (state contact bindings)
+  "Where the bodies of CONTACT, one of STATE's contacts, touch at the start and the unit
+normal from its obstacle (the second body) into its observer (the first), as numbers
+under BINDINGS: (POINT NORMAL), or NIL. The simulator found them (STATE-CONTACT-POINTS):
+the report derives no geometry."
+  (let* ((index (position contact (state-contacts state)))
+         (entry (and index (nth index (state-contact-points state))))
+         (point (and entry (point-at (getf entry :point) bindings)))
+         (normal (and entry (point-at (getf entry :normal) bindings))))
+    (and point normal (> (vlength normal) 0.5d0) (list point (vunit normal)))))
 
 (defun arrow-label (entry)
   "The picture's label of the force ENTRY's arrow: the :LABEL its phenomenon gives
@@ -164,7 +125,7 @@ kind's words."
 
 (defun force-arrows (scenario state bindings)
   "The arrows of STATE's forces at the start: (FROM VECTOR LABEL) in the plane."
-  (let ((s0 (number-at (getf (getf (state-notes state) :path-coordinates) :arc-length-from) bindings))
+  (let ((s0 (number-at (getf (state-path-coordinates state) :arc-length-from) bindings))
         (arrows '()))
     (dolist (entry (state-forces state) (nreverse arrows))
       (let ((point (if s0 (acons +arc-length+ s0 bindings) bindings)))
@@ -172,7 +133,7 @@ kind's words."
           (declare (ignore label))
           (cond ((eq (getf (ames.kb:force-description (first entry)) :arrow) :along-contact-normal)
                  (let* ((contact (contact-of state (second entry) (third entry)))
-                        (geometry (and contact (contact-point-and-normal scenario contact bindings)))
+                        (geometry (and contact (contact-point-and-normal state contact bindings)))
                         (size (number-at value point)))
                    (when (and geometry size)
                      (push (list (first geometry)

@@ -60,9 +60,8 @@ tau, or NIL."
 (defun arc-range-numbers (presenter expression state)
   "For an EXPRESSION of the arc length s in STATE: (:FROM A :TO B), its numbers where the
 state starts and ends along the curve, when known; else NIL."
-  (let* ((notes (state-notes state))
-         (from (getf (getf notes :path-coordinates) :arc-length-from))
-         (to (getf notes :end-arc-length)))
+  (let* ((from (getf (state-path-coordinates state) :arc-length-from))
+         (to (state-end-arc-length state)))
     (when (and (presenter-values presenter) from)
       (flet ((at (s) (and s (numeric presenter (substitute-expressions (list (cons +arc-length+ s)) expression)))))
         (let ((a (at from)) (b (at to)))
@@ -210,7 +209,7 @@ a textbook gives it: \"where sin(s/A) = E\"."
         append (case key
                  ;; :line-coordinates is the simulator's working (the coordinate along the
                  ;; line of two bodies, in the knowledge base's terms): the positions show it
-                 ((:numeric :numeric-duration :events :line-coordinates :fork))
+                 ((:numeric :events :line-coordinates :fork))
                  (:numeric-trajectory
                   (list (cons "integrated numerically"
                               (list (list (format nil "~D sample~:P of the motion" 
@@ -221,7 +220,7 @@ a textbook gives it: \"where sin(s/A) = E\"."
                  (:path-coordinates (list (cons "on the curve" (path-note presenter value))))
                  (:periodic
                   (list (cons "periodic"
-                              (list (let ((number (getf (getf (state-notes state) :numeric) :period)))
+                              (list (let ((number (getf (state-numbers state) :period)))
                                       (phrase "period " (present presenter (getf value :period))
                                               (if number (format nil " (~A)" (number-text number)) "")))
                                     ;; along a curve the arc length; else the coordinate
@@ -301,17 +300,17 @@ tension."
 
 (defun state-view (presenter state)
   "The plist a report shows for STATE (see the file header)."
-  (let* ((numeric (getf (state-notes state) :numeric))
-         (events (getf (state-notes state) :events)))
+  (let* ((numeric (state-numbers state))
+         (events (state-simultaneous-events state)))
     (list :index (state-index state)
           ;; a fork is no period of motion: its index is the state it splits (see
           ;; the simulator's branching)
-          :fork (and (getf (state-notes state) :fork) t)
+          :fork (and (state-fork-p state) t)
           :start (time-phrase presenter (state-start state))
           :start-number (let ((n (getf numeric :start)))
                           (and (realp n) (not (realp (state-start state))) n))
           :duration (time-phrase presenter (state-duration state))
-          :duration-number (let ((n (or (getf (state-notes state) :numeric-duration) (getf numeric :duration))))
+          :duration-number (let ((n (getf numeric :duration)))
                              (and (realp n) n))
           :contacts (mapcar (lambda (c) (contact-phrase presenter c)) (state-contacts state))
           :forces (numbered-symbols (mapcar (lambda (f) (force-view presenter f state)) (state-forces state)))

@@ -82,6 +82,18 @@ sub-form (never NIL: an empty form is described by a string), DETAIL says what i
 wrong with it.")
   (:report report-scenario-error))
 
+(setf (documentation 'scenario-error-scenario 'function)
+      "The name of the scenario at fault, when it could be read, else NIL."
+      (documentation 'scenario-error-location 'function)
+      "Where in the scenario: a string such as \"body WEDGE\", or NIL."
+      (documentation 'scenario-error-clause 'function)
+      "The whole clause in which the defect lies, or NIL."
+      (documentation 'scenario-error-source 'function)
+      "Where the form came from, a string such as \"scenarios/x.lisp, line 3\", or NIL
+for a form given at the REPL."
+      (documentation 'scenario-error-cause 'function)
+      "The condition of a lower layer that this one wraps, or NIL.")
+
 (define-condition scenario-read-error (scenario-error)
   ((file :initarg :file :initform nil :reader scenario-read-error-file
          :documentation "The file read, or NIL when reading a string.")
@@ -102,6 +114,15 @@ token. DATUM is the start of the offending text.")
                      (ames-error-detail condition)
                      (let ((datum (ames-error-datum condition)))
                        (and datum (short-form-string datum)))))))
+
+(setf (documentation 'scenario-read-error-file 'function)
+      "The file read, or NIL when reading a string."
+      (documentation 'scenario-read-error-line 'function)
+      "The 1-based line of the fault."
+      (documentation 'scenario-read-error-column 'function)
+      "The 0-based column of the fault."
+      (documentation 'scenario-read-error-position 'function)
+      "The 0-based character offset of the fault.")
 
 (define-condition scenario-file-error (scenario-read-error) ()
   (:documentation "A scenario file that cannot be opened, or whose bytes are not text.

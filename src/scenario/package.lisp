@@ -79,6 +79,9 @@ and Maxima (assumptions, overlaps).")
    ;; the checks through Maxima and the geometry
    #:check-scenario #:check-scenario-assumptions #:check-scenario-geometry
    #:missing-assumption-error #:missing-assumption-fact
+   ;; the world the checks built and the run receives (world.lisp)
+   #:world #:make-world #:world-scenario #:world-shapes #:world-pairs #:world-shape
+   #:world-simple-contacts
    ;; the numbers of a run (values.lisp)
    #:parameter-value-error #:parameter-value-error-parameter #:parameter-value-error-assumption
    #:check-parameter-values #:run-parameter-values))

@@ -18,7 +18,9 @@
 ;;;; reject bodies that overlap at the start. Fixed bodies are all part of the fixed
 ;;;; frame: they may touch or overlap each other (a floor and a wall). Geometry's
 ;;;; conditions are wrapped into SCENARIO-ERRORs naming the body or the pair.
-;;;; CHECK-SCENARIO runs both under one scope of the scenario's assumptions.
+;;;; CHECK-SCENARIO runs both under one scope of the scenario's assumptions, and returns
+;;;; the shapes and pairs it built as the scenario's WORLD (world.lisp), which the
+;;;; simulator runs in: the geometry is derived once.
 
 (in-package #:ames.scenario)
 
@@ -27,6 +29,9 @@
          :documentation "The relation that the assumptions neither prove nor refute."))
   (:documentation "A fact the scenario needs (a positive mass, a counter-clockwise
 polygon...) that its parameter assumptions do not decide. DATUM is the fact."))
+
+(setf (documentation 'missing-assumption-fact 'function)
+      "The relation that the scenario's assumptions neither prove nor refute.")
 
 (defun scenario-detail (scenario control &rest arguments)
   "The detail string of a condition about SCENARIO: CONTROL applied to ARGUMENTS,
@@ -261,8 +266,10 @@ AMES-ERRORs leaving THUNK (a BUDGET-EXCEEDED, a Maxima failure) the context of L
 
 (defun scenario-geometry (scenario bridge)
   "Parse every shape of SCENARIO with the geometry layer and check that no two bodies,
-not both fixed, overlap at the start. Call under the scenario's assumptions."
-  (let ((shapes
+not both fixed, overlap at the start; return the WORLD so built (the shapes and the
+contact pairs). Call under the scenario's assumptions."
+  (let ((pairs '())
+        (shapes
           (loop for body in (scenario-bodies scenario)
                 collect (let ((body body))
                           (call-wrapping-geometry-conditions
@@ -304,8 +311,12 @@ not both fixed, overlap at the start. Call under the scenario's assumptions."
                                   (list (scenario-body-name body) (scenario-body-name other))
                                   "~A and ~A overlap at the start"
                                   (symbol-name (scenario-body-name body))
-                                  (symbol-name (scenario-body-name other))))))))))
-    shapes))
+                                  (symbol-name (scenario-body-name other))))
+                               (push pair pairs)))))))
+    (make-world scenario
+                (mapcar (lambda (body shape) (cons (scenario-body-name body) shape))
+                        (scenario-bodies scenario) shapes)
+                (nreverse pairs))))
 
 (defun check-scenario-geometry (scenario bridge)
   "Check SCENARIO's shapes with the geometry layer (ames.geometry:parse-shape) and that
@@ -314,17 +325,19 @@ under the scenario's assumptions. Returns SCENARIO.
 Signals SCENARIO-SHAPE-ERROR naming the body (wrapping geometry's INVALID-SHAPE) or the
 pair (UNSUPPORTED-SHAPE-PAIR), OVERLAPPING-BODIES-ERROR naming the pair,
 MISSING-ASSUMPTION-ERROR for a geometric fact that the assumptions do not decide, and
-CONTRADICTORY-ASSUMPTIONS-ERROR."
-  (call-with-scenario-assumptions scenario bridge
-                                  (lambda () (scenario-geometry scenario bridge)))
-  scenario)
+CONTRADICTORY-ASSUMPTIONS-ERROR. The second value is the WORLD built (see world.lisp)."
+  (values scenario
+          (call-with-scenario-assumptions scenario bridge
+                                          (lambda () (scenario-geometry scenario bridge)))))
 
 (defun check-scenario (scenario bridge)
   "Every check of SCENARIO that needs Maxima and geometry, under one scope of its
-assumptions: CHECK-SCENARIO-ASSUMPTIONS, then CHECK-SCENARIO-GEOMETRY. Returns
-SCENARIO; signals what they signal."
-  (call-with-scenario-assumptions scenario bridge
-                                  (lambda ()
-                                    (check-facts scenario bridge)
-                                    (scenario-geometry scenario bridge)))
-  scenario)
+assumptions (and whatever BRIDGE has in force besides): CHECK-SCENARIO-ASSUMPTIONS, then
+CHECK-SCENARIO-GEOMETRY. Returns SCENARIO and, as a second value, its WORLD: the shapes
+and contact pairs the checks built, which the simulation runs in. Signals what they
+signal."
+  (values scenario
+          (call-with-scenario-assumptions scenario bridge
+                                          (lambda ()
+                                            (check-facts scenario bridge)
+                                            (scenario-geometry scenario bridge)))))

@@ -17,14 +17,13 @@
    (assumption :initarg :assumption :initform nil :reader parameter-value-error-assumption
                :documentation "The assumption, as declared (:POSITIVE, (> D B) ...)."))
   (:documentation "A run's parameter values (given with --set, or (:value N) defaults)
-break a declared assumption, or name no parameter. DATUM is the assumption's relation,
-or the setting."))
+break a declared assumption or a coefficient's physical range. DATUM is the
+assumption's relation."))
 
-(defun parameter-named (scenario name)
-  "The SCENARIO-PARAMETER of SCENARIO whose name is NAME (a string or symbol), or NIL."
-  (find (string name) (scenario-parameters scenario)
-        :key (lambda (p) (symbol-name (scenario-parameter-name p)))
-        :test #'string-equal))
+(setf (documentation 'parameter-value-error-parameter 'function)
+      "The parameter whose assumption the values break, or NIL."
+      (documentation 'parameter-value-error-assumption 'function)
+      "The assumption the values break, as declared (:POSITIVE, (> D B) ...), or NIL.")
 
 (defun value-reject (scenario parameter datum control &rest arguments)
   "Signal PARAMETER-VALUE-ERROR about PARAMETER (a SCENARIO-PARAMETER or NIL) of SCENARIO."
@@ -37,19 +36,6 @@ or the setting."))
          :datum datum
          :parameter (and parameter (scenario-parameter-name parameter))
          :detail (apply #'scenario-detail scenario control arguments)))
-
-(defun resolved-settings (scenario settings)
-  "SETTINGS, an alist (NAME . NUMBER) with NAME a string or symbol matched by name, as an
-alist (PARAMETER-SYMBOL . NUMBER). Signals PARAMETER-VALUE-ERROR for a name that is no
-parameter of SCENARIO or a value that is not a finite real."
-  (loop for (name . value) in settings
-        for parameter = (parameter-named scenario name)
-        do (unless parameter
-             (value-reject scenario nil name "~A is not a parameter of this scenario" name))
-           (unless (and (realp value) (finite-real-p value))
-             (value-reject scenario parameter value "the value of ~A must be a finite real number, not ~A"
-                           (scenario-parameter-name parameter) value))
-        collect (cons (scenario-parameter-name parameter) value)))
 
 (defun check-values-against-assumptions (scenario values)
   "Check the alist VALUES ((PARAMETER-SYMBOL . NUMBER) ...) against every assumption of
@@ -79,11 +65,13 @@ they come too close to for the check to tell."
 
 (defun run-parameter-values (scenario &key settings numeric)
   "The parameter values of a run of SCENARIO: its (:value N) defaults when NUMERIC is
-true, overridden by SETTINGS (an alist (NAME . NUMBER), names matched by name), as an
-alist (PARAMETER-SYMBOL . NUMBER) in declaration order, checked against every
-assumption (see CHECK-VALUES-AGAINST-ASSUMPTIONS) and every physical range of a
-coefficient (CHECK-COEFFICIENT-VALUES). Signals PARAMETER-VALUE-ERROR."
-  (let* ((given (resolved-settings scenario settings))
+true, overridden by SETTINGS (an alist (NAME . NUMBER), names matched by name, checked
+by CHECK-PARAMETER-VALUES), as an alist (PARAMETER-SYMBOL . NUMBER) in declaration
+order, checked against every assumption (see CHECK-VALUES-AGAINST-ASSUMPTIONS) and every
+physical range of a coefficient (CHECK-COEFFICIENT-VALUES). Signals
+PARAMETER-VALUES-ERROR for malformed SETTINGS, UNDECLARED-SYMBOL-ERROR for a name that
+is no parameter, PARAMETER-VALUE-ERROR for values that break an assumption."
+  (let* ((given (check-parameter-values settings scenario))
          (defaults (and numeric (scenario-parameter-values scenario)))
          (values (loop for parameter in (scenario-parameters scenario)
                        for name = (scenario-parameter-name parameter)

@@ -190,7 +190,7 @@ that fact: see ASSUMED-ON-THIS-PATH-P)."
                                   :end-event '(:branch)
                                   :final-positions (run-positions run)
                                   :final-velocities (run-velocities run)
-                                  :notes (list :missing-fact fact :fork t))))
+                                  :missing-fact fact :fork t)))
         (when (rest alternatives)
           (setf (state-branches fork)
                 (let ((*branching* (list :count (+ (getf *branching* :count 0) (length alternatives))
@@ -312,8 +312,9 @@ branch's leaf outcomes (:FAILED for a branch that could not be simulated)."
 its SIMULATION-HISTORY. VALUES are the run's parameter values (an alist by symbol)."
   (let ((*history-clock* 0))            ; its history starts at t = 0
     (simulate-checked scenario bridge
-                      (mapcar (lambda (entry) (cons (symbol-name (car entry)) (cdr entry)))
-                              (remove-if-not (lambda (entry)
-                                               (find-scenario-parameter (car entry) scenario))
-                                             values))
+                      ;; the values of the parameters SCENARIO still has, keyed by its symbols
+                      (loop for (name . value) in values
+                            for parameter = (find-scenario-parameter name scenario)
+                            when parameter
+                              collect (cons (scenario-parameter-name parameter) value))
                       check-incremental :extra-facts facts)))

@@ -23,6 +23,12 @@ Restart: STOP-SIMULATION.")
                      (ambiguous-transition-missing-fact condition)
                      (ambiguous-transition-candidates condition)))))
 
+(setf (documentation 'ambiguous-transition-candidates 'function)
+      "The alternatives the assumptions leave open: termination candidates as (EVENT
+TIME), or the consistent assignments of contacts and modes."
+      (documentation 'ambiguous-transition-missing-fact 'function)
+      "A relation the assumptions do not decide, whose truth would settle the transition.")
+
 (define-condition unsolvable-model (simulation-error) ()
   (:documentation "The state's model has no solution, or no unique one."))
 

@@ -74,5 +74,4 @@ NUMERIC-CLOCK). Signals as SIMULATE-CHECKED does."
                   (append (history-states history)
                           (list (ambiguous-transition-state condition)))))
           (setf (getf (history-notes history) :stopped-by) condition)))
-      (add-numeric-values history bridge clock)
-      history)))
+      (analyse-history history bridge clock))))

@@ -18,4 +18,9 @@ knowledge base's (package AMES.KB).")
    #:qualitative-state #:state-index #:state-start #:state-duration #:state-contacts
    #:state-accelerations #:state-forces #:state-positions #:state-velocities
    #:state-end-event #:state-final-positions #:state-final-velocities #:state-notes
-   #:state-analysis #:state-initial-velocities #:state-branches #:body-entry #:numeric-or-nil))
+   #:state-analysis #:state-initial-velocities #:state-branches #:body-entry #:numeric-or-nil
+   ;; a state's notes, one slot each (history.lisp)
+   #:state-numbers #:state-accumulation #:state-impact #:state-end-arc-length
+   #:state-numeric-trajectory #:state-simultaneous-events #:state-periodic
+   #:state-undecided-detail #:state-path-coordinates #:state-line-coordinates
+   #:state-missing-fact #:state-fork-p #:state-reported-sections #:state-contact-points))

@@ -1,7 +1,7 @@
 ;;;; src/simulator/quantities.lisp -- the quantities a query reads off a state, as the knowledge
 ;;;; base reported them (issue 20, class 6: queries never re-derive physics).
 ;;;;
-;;;; A state's notes hold the sections the knowledge base reports beside the forces (see
+;;;; A state holds the sections the knowledge base reports beside the forces (see
 ;;;; src/kb/energy.lisp): :ENERGY, entries (:KINETIC BODY E) and (:POTENTIAL SOURCE E), and
 ;;;; :MOMENTUM, entries (:MOMENTUM BODY (PX PY)). A query's energy is the sum of the
 ;;;; :ENERGY entries, the very terms the report adds up as "total T + V"; a body's kinetic
@@ -17,8 +17,8 @@
   (and (symbolp a) (symbolp b) (string= (symbol-name a) (symbol-name b))))
 
 (defun reported-section (state section)
-  "The entries STATE's notes hold for the knowledge-base SECTION (:ENERGY, :MOMENTUM)."
-  (getf (state-notes state) section))
+  "The entries STATE holds for the knowledge-base SECTION (:ENERGY, :MOMENTUM)."
+  (getf (state-reported-sections state) section))
 
 (defun state-total-energy (state)
   "The sum of every energy term the knowledge base reports for STATE (kinetic energy of
@@ -49,14 +49,14 @@ reported."
 (defun arc-length-start (state)
   "The arc length at which STATE's motion along a curve or a line starts, or NIL (no such
 motion, or several lines sharing the coordinate)."
-  (let ((path (getf (state-notes state) :path-coordinates))
-        (lines (getf (state-notes state) :line-coordinates)))
+  (let ((path (state-path-coordinates state))
+        (lines (state-line-coordinates state)))
     (cond (path (getf path :arc-length-from))
           ((and lines (null (rest lines))) (getf (first lines) :from)))))
 
 (defun arc-length-end (state)
   "The arc length at which STATE's motion along a curve or a line ends, or NIL."
-  (getf (state-notes state) :end-arc-length))
+  (state-end-arc-length state))
 
 (defun mentions-unknown-p (expression)
   "True when EXPRESSION still holds a knowledge-base quantity term (such as (vel b :x)):

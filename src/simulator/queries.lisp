@@ -51,7 +51,7 @@ event printed (:leaves cart block :endpoint) when the cart is the observer."
 (defun state-events (state)
   "Every event that ends STATE."
   (let ((event (state-end-event state)))
-    (remove-duplicates (append (and (consp event) (list event)) (getf (state-notes state) :events))
+    (remove-duplicates (append (and (consp event) (list event)) (state-simultaneous-events state))
                        :test #'equal)))
 
 (defun event-state (states pattern)

@@ -122,7 +122,7 @@ forever only when the body is at rest in it)."
 impacts accumulate (its :ACCUMULATION note): under constant accelerations each cycle is
 the one before scaled by the factor F in time and F^2 in space, so the sum is
 DISTANCE / (1 - F^2)."
-  (let ((accumulation (getf (state-notes state) :accumulation)))
+  (let ((accumulation (state-accumulation state)))
     (cond ((null accumulation) distance)
           ((not (every (lambda (entry) (free-of-p 'tau (second entry))) (state-accelerations state)))
            (unanswerable "the repeated cycles of state ~D do not have constant accelerations" (state-index state)))

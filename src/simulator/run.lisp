@@ -162,31 +162,12 @@ the parameters' declared signs (SIGN-ALGEBRA) answer first; Maxima where they do
   "The symbol naming the INDEXth simple contact in the engine's situation."
   (intern (format nil "CONTACT-~D" index) '#:ames.simulator))
 
-(defun body-shapes (scenario bridge)
-  "Alist body name -> geometry shape for every body of SCENARIO."
-  (mapcar (lambda (body)
-            (cons (scenario-body-name body)
-                  (ames.geometry:parse-shape (scenario-body-shape body) :bridge bridge)))
-          (scenario-bodies scenario)))
-
-(defun all-simple-contacts (scenario shapes bridge)
-  "Alist contact name -> geometry contact for every pair of bodies not both fixed."
-  (let ((contacts '()) (index 0))
-    (loop for (body-1 . rest) on (scenario-bodies scenario)
-          do (dolist (body-2 rest)
-               (unless (and (scenario-body-fixed-p body-1) (scenario-body-fixed-p body-2))
-                 (let* ((name-1 (scenario-body-name body-1))
-                        (name-2 (scenario-body-name body-2))
-                        (pair (ames.geometry:make-contact-pair
-                               name-1 (cdr (assoc name-1 shapes))
-                               name-2 (cdr (assoc name-2 shapes))
-                               :bridge bridge
-                               :fixed (mapcar #'scenario-body-name
-                                              (scenario-fixed-bodies scenario)))))
-                   (dolist (contact (ames.geometry:pair-contacts pair))
-                     (push (cons (contact-entity-name index) contact) contacts)
-                     (incf index))))))
-    (nreverse contacts)))
+(defun world-contacts (world)
+  "Alist contact entity name -> geometry contact for every simple contact of WORLD's
+pairs (every two bodies not both fixed), numbered from 0 in the world's order."
+  (loop for contact in (world-simple-contacts world)
+        for index from 0
+        collect (cons (contact-entity-name index) contact)))
 
 (defun corner-alternatives (bridge contacts)
   "For CONTACTS (alist name -> geometry contact), the alist name -> names of the

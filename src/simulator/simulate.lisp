@@ -63,11 +63,11 @@ CHECK-INCREMENTAL."
     (when impulsive
       (multiple-value-bind (after impact) (resolve-impact run)
         (setf (run-velocities run) after
-              (getf (state-notes state) :impact) impact
+              (state-impact state) impact
               (state-end-event state) (impact-event (state-end-event state) impact))
-        (let ((events (getf (state-notes state) :events)))
+        (let ((events (state-simultaneous-events state)))
           (when events
-            (setf (getf (state-notes state) :events)
+            (setf (state-simultaneous-events state)
                   (mapcar (lambda (event)
                             (if (find event impulsive :key #'candidate-event :test #'equal)
                                 (impact-event event impact)
@@ -91,15 +91,15 @@ CHECK-INCREMENTAL."
 (defun sum-zeno-sequence (run state)
   "Record the impact that ended STATE; when it repeats the previous one scaled (see
 ZENO-ACCUMULATION), jump to the accumulation point: the run goes on from there with the
-velocities' limit, zero, and STATE's notes say so (:ACCUMULATION)."
-  (let* ((impact (getf (state-notes state) :impact))
+velocities' limit, zero, and STATE says so (STATE-ACCUMULATION)."
+  (let* ((impact (state-impact state))
          (record (list :time (run-time run) :positions (run-positions run)
                        :after (run-velocities run)
                        :contacts (mapcar (lambda (c) (subseq c 0 2)) (getf impact :contacts))))
          (accumulation (zeno-accumulation run (first (run-impacts run)) record)))
     (push record (run-impacts run))
     (when accumulation
-      (setf (getf (state-notes state) :accumulation) accumulation
+      (setf (state-accumulation state) accumulation
             (run-time run) (getf accumulation :time)
             (run-velocities run) (mapcar (lambda (entry) (list (first entry) (list 0 0)))
                                          (run-velocities run))
@@ -214,68 +214,87 @@ assumptions do not decide) as an AMBIGUOUS-TRANSITION."
          :missing-fact (ames.engine:undecided-relation-relation condition)
          :detail "start of a state (an activation condition)"))
 
-(defun make-run (scenario bridge &optional parameter-values)
-  "The RUN of the validated SCENARIO at its start, its first model built (call under
-the scenario's assumptions in BRIDGE). PARAMETER-VALUES as SIMULATE takes them."
-  (multiple-value-bind (positions velocities) (initial-motion-state scenario)
-    (let* ((shapes (body-shapes scenario bridge))
-           (contacts (all-simple-contacts scenario shapes bridge))
-           (run (multiple-value-bind (loci kinds) (probe-loci scenario bridge (length contacts))
-                  (setf contacts (append contacts loci))
-                  (make-instance 'run :scenario scenario :bridge bridge :shapes shapes
-                                    :contacts contacts :locus-kinds kinds
-                                    :alternatives (corner-alternatives bridge contacts)
-                                    :positions positions :velocities velocities
-                                    :values (check-parameter-values parameter-values scenario))))
-           (situation (ames.engine:make-situation (situation-entities run) :data run)))
-      (handler-bind ((ames.engine:undecided-relation #'undecided-to-ambiguity))
-        (setf (run-model run)
-              (ames.engine:build-model (ames.engine:make-engine (ames.kb:mechanics-knowledge-base))
-                                       situation :decider (state-decider run))))
-      run)))
+(defun make-run (world bridge &optional parameter-values)
+  "The RUN of WORLD's validated scenario at its start, in the shapes and contact pairs
+its checks built (see CHECK-SCENARIO), its first model built (call under the scenario's
+assumptions in BRIDGE). PARAMETER-VALUES as SIMULATE has checked them."
+  (let ((scenario (world-scenario world)))
+    (multiple-value-bind (positions velocities) (initial-motion-state scenario)
+      (let* ((contacts (world-contacts world))
+             (run (multiple-value-bind (loci kinds) (probe-loci scenario bridge (length contacts))
+                    (setf contacts (append contacts loci))
+                    (make-instance 'run :scenario scenario :bridge bridge
+                                        :shapes (world-shapes world)
+                                        :contacts contacts :locus-kinds kinds
+                                        :alternatives (corner-alternatives bridge contacts)
+                                        :positions positions :velocities velocities
+                                        :values parameter-values)))
+             (situation (ames.engine:make-situation (situation-entities run) :data run)))
+        (handler-bind ((ames.engine:undecided-relation #'undecided-to-ambiguity))
+          (setf (run-model run)
+                (ames.engine:build-model (ames.engine:make-engine (ames.kb:mechanics-knowledge-base))
+                                         situation :decider (state-decider run))))
+        run))))
 
 (defun simulate-checked (scenario bridge parameter-values check-incremental &key extra-facts)
-  "SIMULATE's work on the validated SCENARIO, with EXTRA-FACTS (relations) assumed
+  "SIMULATE's work on the validated SCENARIO with PARAMETER-VALUES as CHECK-PARAMETER-VALUES
+returns them (keyed by the scenario's symbols), with EXTRA-FACTS (relations) assumed
 besides the scenario's own assumptions (a branch's). The scenario's checks (shapes, no
 overlap at the start) see the extra facts too: a boundary branch's scenario has lost a
-parameter's declaration to them."
-  (unless extra-facts
-    ;; first on its own, so that contradictory assumptions are named by parameter
-    (check-scenario scenario bridge))
-  (ames.maxima:with-assumptions (bridge (append (scenario-assumption-relations scenario) extra-facts))
-    (when extra-facts
-      (check-scenario scenario bridge))
-    (let ((history (make-instance 'simulation-history
-                                  :scenario scenario
-                                  :parameter-values (check-parameter-values parameter-values scenario)))
-          (limit (or (scenario-states scenario) *default-state-limit*))
-          (run nil))
-      (restart-case
-          (handler-bind ((ames.engine:undecided-relation #'undecided-to-ambiguity))
-            (setf run (make-run scenario bridge parameter-values))
-            (run-states run history 0 limit check-incremental))
-        (stop-simulation (&optional condition)
-          :report "Stop the simulation here and return the states so far."
-          (setf (history-outcome history) (if (typep condition 'ambiguous-transition)
-                                              :ambiguous
-                                              :stopped))
-          (when (and (typep condition 'ambiguous-transition)
-                     (ambiguous-transition-state condition))
-            (setf (history-states history)
-                  (append (history-states history)
-                          (list (ambiguous-transition-state condition)))))
-          (setf (getf (history-notes history) :stopped-by) condition)))
-      (when run
-        (when (run-assumed run)
-          (setf (getf (history-notes history) :decided-by-values) (reverse (run-assumed run))))
-        (setf (getf (history-notes history) :model-sizes) (run-statistics run))
-        (setf (history-rederived history) (reverse (run-rederived run))))
-      ;; a run stopped by its time (or a signal) has no time left to ask Maxima more
-      (unless (typep (getf (history-notes history) :stopped-by) 'budget-exceeded)
-        (add-numeric-values history bridge)
-        (when (and (scenario-queries scenario) (null *branching*))
-          (setf (history-answers history) (answer-queries history bridge))))
-      history)))
+parameter's declaration to them. The run is made in the WORLD the checks built."
+  (let ((world (unless extra-facts
+                 ;; first on its own, so that contradictory assumptions are named by parameter
+                 (nth-value 1 (check-scenario scenario bridge)))))
+    (ames.maxima:with-assumptions (bridge (append (scenario-assumption-relations scenario) extra-facts))
+      (simulate-in-world (or world (nth-value 1 (check-scenario scenario bridge)))
+                         bridge parameter-values check-incremental))))
+
+(defun simulate-in-world (world bridge parameter-values check-incremental)
+  "The SIMULATION-HISTORY of WORLD's scenario run in WORLD under the assumptions in force
+(see SIMULATE-CHECKED): the states, then the numbers under PARAMETER-VALUES and the
+answers to the queries. The restart STOP-SIMULATION returns the history so far."
+  (let* ((scenario (world-scenario world))
+         (history (make-instance 'simulation-history
+                                 :scenario scenario
+                                 :parameter-values parameter-values))
+         (limit (or (scenario-states scenario) *default-state-limit*))
+         (run nil))
+    (restart-case
+        (handler-bind ((ames.engine:undecided-relation #'undecided-to-ambiguity))
+          (setf run (make-run world bridge parameter-values))
+          (run-states run history 0 limit check-incremental))
+      (stop-simulation (&optional condition)
+        :report "Stop the simulation here and return the states so far."
+        (setf (history-outcome history) (if (typep condition 'ambiguous-transition)
+                                            :ambiguous
+                                            :stopped))
+        (when (and (typep condition 'ambiguous-transition)
+                   (ambiguous-transition-state condition))
+          (setf (history-states history)
+                (append (history-states history)
+                        (list (ambiguous-transition-state condition)))))
+        (setf (getf (history-notes history) :stopped-by) condition)))
+    (when run
+      (when (run-assumed run)
+        (setf (getf (history-notes history) :decided-by-values) (reverse (run-assumed run))))
+      (setf (getf (history-notes history) :model-sizes) (run-statistics run))
+      (setf (history-rederived history) (reverse (run-rederived run))))
+    ;; a run stopped by its time (or a signal) has no time left to ask Maxima more
+    (unless (typep (getf (history-notes history) :stopped-by) 'budget-exceeded)
+      (analyse-history history bridge))
+    history))
+
+(defun analyse-history (history bridge &optional (clock 0))
+  "The analysis that follows a simulation, reading only HISTORY (its states and what the
+knowledge base reported in them), never the run: the numbers beside the formulas under
+the history's parameter values (ADD-NUMERIC-VALUES, its first state starting at CLOCK),
+then the answers to the scenario's queries (ANSWER-QUERIES), unless HISTORY is a branch
+still growing (the root's analysis answers them for every path). Call under the
+scenario's assumptions. Returns HISTORY."
+  (add-numeric-values history bridge clock)
+  (when (and (scenario-queries (history-scenario history)) (null *branching*))
+    (setf (history-answers history) (answer-queries history bridge)))
+  history)
 
 ;;; Numbers beside the formulas
 
@@ -301,7 +320,7 @@ durations before it summed (after a state whose end has no closed form)."
           (t clock))))
 
 (defun add-numeric-values (history bridge &optional (clock 0))
-  "When HISTORY has parameter values, record in each state's notes (:NUMERIC plist) the
+  "When HISTORY has parameter values, record in each state (STATE-NUMBERS, a plist) the
 numeric start, duration and final positions and velocities, each the value of the
 formula it is printed beside. CLOCK is the number at which its first state starts (a
 branch continued from a fork starts later), or NIL."
@@ -315,11 +334,11 @@ branch continued from a fork starts later), or NIL."
                          alist)))
           (let ((duration (numeric-duration bridge state values)))
             (setf clock (numeric-start bridge state values clock))
-            (setf (getf (state-notes state) :numeric)
+            (setf (state-numbers state)
                   (list :start clock
                         :duration (or duration (state-duration state))
                         :final-positions (numbers-of (state-final-positions state))
                         :final-velocities (numbers-of (state-final-velocities state))
-                        :period (let ((periodic (getf (state-notes state) :periodic)))
+                        :period (let ((periodic (state-periodic state)))
                                   (and periodic (numeric-or-nil bridge (getf periodic :period) values)))))
             (setf clock (and clock (realp duration) (+ clock duration)))))))))

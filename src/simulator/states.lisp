@@ -251,6 +251,7 @@ known."
                  :index index :start (run-time run) :duration :undecided
                  :initial-velocities (run-velocities run)
                  :contacts (contact-descriptions run contacts)
+                 :contact-points (mapcar (lambda (contact) (contact-touching run contact)) contacts)
                  :accelerations
                  (mapcar (lambda (body)
                            (list body (if (body-fixed-p run body)
@@ -271,11 +272,9 @@ known."
                                  :integrators (mapcar (lambda (g) (list (group-bodies g) (group-kind g)))
                                                       groups)
                                  :check-model (check-model run solved))
-                 :notes (let ((paths (path-notes run solved groups))
-                              (lines (line-notes groups)))
-                          (append (when paths (list :path-coordinates (first paths)))
-                                  (when lines (list :line-coordinates lines))
-                                  (reported-sections run solved groups))))))
+                 :path-coordinates (first (path-notes run solved groups))
+                 :line-coordinates (line-notes groups)
+                 :reported-sections (reported-sections run solved groups))))
     (multiple-value-bind (candidates unknown never)
         (let ((impacts (impacts-at-once run)))
           (if impacts
@@ -285,7 +284,7 @@ known."
                   ;; no closed form and no numbers: the state's end cannot be found
                   (setf (state-duration state) (list :no-closed-form :needs :parameter-values)
                         (state-end-event state) :undecided
-                        (getf (state-notes state) :undecided) (ames-error-detail condition))
+                        (state-undecided-detail state) (ames-error-detail condition))
                   (return-from analyse-state (values state :undecided))))))
       (let* ((limit (time-limit-candidate run))
              (fired (handler-bind ((ambiguous-transition
@@ -301,7 +300,7 @@ known."
         (let ((swing (periodic-swing run solved fired)))
           (when swing
             ;; between two turning points: periodic, forever (turns.lisp)
-            (setf (getf (state-notes state) :periodic) swing
+            (setf (state-periodic state) swing
                   fired nil)))
         (when fired
           (let ((time (candidate-time (first fired))))
@@ -310,18 +309,18 @@ known."
                   (state-final-positions state) (final-values run groups fired :pos)
                   (state-final-velocities state) (final-values run groups fired :vel))
             (when (rest fired)
-              (setf (getf (state-notes state) :events) (mapcar #'candidate-event fired)))
+              (setf (state-simultaneous-events state) (mapcar #'candidate-event fired)))
             (let ((numeric (remove nil (mapcar #'group-samples groups))))
               (when numeric
-                (setf (getf (state-notes state) :numeric-trajectory) numeric)))
+                (setf (state-numeric-trajectory state) numeric)))
             (let ((arc (find-if #'candidate-at-arc fired)))
               (when arc
-                (setf (getf (state-notes state) :end-arc-length) (candidate-at-arc arc))))))
+                (setf (state-end-arc-length state) (candidate-at-arc arc))))))
         (unless fired
-          (let ((oscillation (and (not (getf (state-notes state) :periodic))
+          (let ((oscillation (and (not (state-periodic state))
                                   (linear-oscillation run groups))))
             (when oscillation
               ;; one frequency for every body: periodic (oscillation.lisp)
-              (setf (getf (state-notes state) :periodic) oscillation)))
+              (setf (state-periodic state) oscillation)))
           (setf (state-duration state) :forever (state-end-event state) :none))
         (values state fired)))))
