@@ -500,6 +500,10 @@ def sx_states(names, qs, key):
 def main():
     text = open(sys.argv[1]).read() if len(sys.argv) > 1 else sys.stdin.read()
     model = json.loads(text)
+    if model.get("hinges") or any("inertia" in b for b in model.get("bodies", [])):
+        from siconos_rotation import main_rotation   # bodies that turn: 3 degrees of freedom
+        main_rotation(model)
+        return
     try:
         if model.get("friction"):
             from siconos_friction import FrictionDriver
