@@ -55,6 +55,7 @@ import math
 
 import numpy as np
 import siconos.kernel as sk
+import siconos.numerics as sn
 
 STEP = 1e-3
 GAP_TOL = 1e-6
@@ -89,6 +90,8 @@ class Body:
         self.q = np.array(list(spec["q"]) + [float(spec.get("theta", 0.0))], dtype=float)
         self.v = np.array(list(spec["v"]) + [float(spec.get("omega", 0.0))], dtype=float)
         self.force = np.array(spec.get("force", [0.0, 0.0]), dtype=float)
+        self.forces_at = [(np.array(f["point"], float), np.array(f["force"], float))
+                          for f in spec.get("forces_at", [])]
         shape = spec["shape"]
         self.kind = shape["kind"]
         self.r = float(shape.get("r", 0.0))
@@ -142,11 +145,24 @@ class Relation:
 class Contact(Relation):
     """A free body's vertex, disc or point against a fixed face."""
 
-    def __init__(self, body, face, vertex, n_dofs, mu, e):
+    def __init__(self, body, face, vertex, n_dofs, mu, e, q0):
         self.body, self.face, self.vertex = body, face, vertex
         self.n_dofs, self.mu, self.e = n_dofs, mu, e
         self.friction = mu is not None
         self.names = (body.name, face.name)
+        self.front = False
+        self.update_front(q0)
+
+    def update_front(self, q):
+        """Whether the face may hold the contact in the coming step: its point lies within
+        the face's extent, and in front of the face (or it was already held: a contact
+        in force may sink by round-off). A point behind a face's line (the body beside a
+        convex obstacle, seen from a face that looks away) is never held by it."""
+        point = self.point(q)
+        if not self.face.covers(point):
+            self.front = False
+        elif self.gap(q) >= -GAP_TOL:
+            self.front = True
 
     def offset(self, q):
         """The contact point's offset from the body's centre, world frame."""
@@ -171,7 +187,7 @@ class Contact(Relation):
         for row, u in enumerate([self.face.n, self.face.t][:k]):
             C[row, i:i + 2] = u
             C[row, i + 2] = float(np.dot(u, perp(d))) if self.body.rotating else 0.0
-        gap = self.gap(q) if self.face.covers(self.point(q)) else FAR
+        gap = self.gap(q) if self.front else FAR
         e = np.zeros(k)
         e[0] = gap - float(C[0].dot(q)) - MARGIN
         return C, e
@@ -347,7 +363,7 @@ class RotationDriver:
                     e = restitution(model, b.name, face.name)
                     vertices = b.vertices if b.kind in ("polygon", "segment") else [None]
                     for p in vertices:
-                        self.contacts.append(Contact(b, face, p, self.n, mu, e))
+                        self.contacts.append(Contact(b, face, p, self.n, mu, e, self.q0))
         self.hinges = [Hinge(h, self.bodies, self.n) for h in model.get("hinges", [])]
         self.ropes = [Rope(r, self.bodies, self.q0) for r in model.get("ropes", [])]
         self.has_friction = any(c.friction for c in self.contacts)
@@ -370,10 +386,24 @@ class RotationDriver:
         raise Unsupported("a probe on %s, which is no free body" % name)
 
     def check_pairs(self):
-        extended = [b for b in self.bodies if b.kind != "point"]
-        if len(extended) > 1:
-            raise Unsupported("contacts between two free bodies with rotation (%s and %s)"
-                              % (extended[0].name, extended[1].name))
+        """The pairs of free bodies that could touch, with the sum of their reaches (the
+        largest distance of a shape's point from its centre)."""
+        def reach(b):
+            if b.kind == "circle":
+                return b.r
+            return max([float(np.linalg.norm(p)) for p in b.vertices] + [0.0])
+        self.pairs = [(a, b, reach(a) + reach(b)) for k, a in enumerate(self.bodies)
+                      for b in self.bodies[k + 1:] if not (a.kind == "point" and b.kind == "point")]
+
+    def pair_met(self, q):
+        """A description of two free bodies near enough to touch (contacts between free
+        bodies are not modelled: the run is cut there), or None."""
+        for a, b, reach in self.pairs:
+            d = q[3 * a.index:3 * a.index + 2] - q[3 * b.index:3 * b.index + 2]
+            if float(np.linalg.norm(d)) <= reach:
+                return "%s and %s may touch; the witness does not model contacts between " \
+                       "free bodies" % (a.name, b.name)
+        return None
 
     def build(self):
         nsds = sk.NonSmoothDynamicalSystem(0.0, self.t_end)
@@ -384,9 +414,9 @@ class RotationDriver:
             mass[i, i] = mass[i + 1, i + 1] = b.mass
             mass[i + 2, i + 2] = b.inertia
             force[i:i + 2] = [b.force[0], b.force[1] - b.mass * g]
-        self.mass = mass
+        self.mass, self.base_force = mass, force
         self.ds = sk.LagrangianLinearTIDS(list(self.q0), list(self.v0), mass)
-        self.ds.setFExtPtr(force)
+        self.ds.setFExtPtr(force.copy())
         nsds.insertDynamicalSystem(self.ds)
         self.relations = self.contacts + self.hinges + self.ropes
         self.inters = []
@@ -398,6 +428,11 @@ class RotationDriver:
         self.sim.insertIntegrator(sk.MoreauJeanOSI(0.5))
         if self.has_friction:
             self.osnsp = sk.FrictionContact(2)
+            # the Coulomb problem solved to round-off (the default tolerance, 1e-4, leaves
+            # a block sliding flat on two corners turning at 1e-6 rad/s)
+            options = self.osnsp.numericsSolverOptions()
+            options.dparam[sn.SICONOS_DPARAM_TOL] = 1e-12
+            options.iparam[sn.SICONOS_IPARAM_MAX_ITER] = 10000
         else:
             self.osnsp = sk.MLCP()
         self.sim.insertNonSmoothProblem(self.osnsp)
@@ -420,6 +455,7 @@ class RotationDriver:
         state = {}
         while self.sim.hasNextEvent():
             self.refresh(qp, vp)
+            self.apply_forces(qp)
             self.osnsp.setHasBeenUpdated(False)
             self.sim.computeOneStep()
             t = self.sim.nextTime()
@@ -431,6 +467,10 @@ class RotationDriver:
             except RopeTurned as e:
                 self.truncated = str(e)
                 return tp, qp, vp
+            met = self.pair_met(q)
+            if met:
+                self.truncated = met
+                return tp, qp, vp
             lams = self.impulses()
             q = self.project(q, lams)
             self.contact_events(tp, qp, vp, t, q, v, lams, state)
@@ -441,8 +481,22 @@ class RotationDriver:
             self.sim.nextStep()
             if t >= self.t_end - 1e-12:
                 break
-        self.events.sort(key=lambda event: event["time"])
         return tp, qp, vp
+
+    def apply_forces(self, q):
+        """The external forces for the coming step: gravity and the forces at the centres,
+        and each force at a point of a rotating body with its torque (R(theta) p) x F at Q
+        (explicit, first order like the scheme)."""
+        if not any(b.forces_at for b in self.bodies):
+            return
+        f = self.base_force.copy()
+        for b in self.bodies:
+            i = 3 * b.index
+            for p, force in b.forces_at:
+                d = rotation(q[i + 2]).dot(p)
+                f[i:i + 2] += force
+                f[i + 2] += d[0] * force[1] - d[1] * force[0]
+        self.ds.fExt()[:] = f
 
     def refresh(self, q, v, lams=None):
         """The relations linearised at Q again; for those that did not act in the last step
@@ -450,6 +504,8 @@ class RotationDriver:
         decides which relations are active in the coming step from these outputs, which
         Siconos 4.4 leaves stale for an interaction that was not active."""
         for k, (r, inter) in enumerate(zip(self.relations, self.inters)):
+            if isinstance(r, Contact) and lams is not None:
+                r.update_front(q)
             if isinstance(r, (Contact, Hinge)):
                 r.refresh(q)
             if lams is not None and isinstance(r, Contact) and not lams[k][0] > 0:
@@ -517,8 +573,12 @@ class RotationDriver:
                     tz = tp + f * h
                 s["pending"] = (t, tz, [(":lift-off",) + r.names], qp + f * (q - qp),
                                 vp + f * (v - vp))
-            if pressing and r.friction and s["pressing"] and tp > 2 * h:
-                s0, s1 = r.tangential_speed(qp, vp), r.tangential_speed(q, v)
+            # the contact point's tangential speed as the step saw it: its point at QP (where
+            # the relation was linearised) moving with the new velocities V, 0 when it sticks
+            s1 = r.tangential_speed(qp, v) if r.friction else 0.0
+            s0 = s.get("slip")
+            s["slip"] = s1
+            if pressing and r.friction and s["pressing"] and tp > 2 * h and s0 is not None:
                 if abs(s0) > SPEED_TOL and (abs(s1) <= SPEED_TOL or s0 * s1 < 0):
                     f = s0 / (s0 - s1)
                     self.record(tp + f * h, [(":stops-sliding",) + r.names], qp + f * (q - qp),
@@ -567,6 +627,7 @@ def main_rotation(model):
     try:
         driver = RotationDriver(model)
         t, q, v = driver.run()
+        driver.events.sort(key=lambda event: event["time"])   # lift-offs are known late
     except Unsupported as e:
         print("(:status :unsupported :message %s)" % sx_string(str(e)))
         return
