@@ -253,6 +253,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "failure-classes")
                (:file "witness")
                (:file "witness-rotation")
+               (:file "scenario-rotation")
                (:file "simulator-fuzz")
                (:file "truth-scenarios")
                (:file "truth-branches")
