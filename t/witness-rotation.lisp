@@ -60,38 +60,41 @@ for HORIZON seconds (with the time STEP when given), and the values."
   "A uniform disc on a rough incline (mu > tan(a)/3) rolls: after t it has gone
 (1/3) g sin(a) t^2 down the slope, at (2/3) g sin(a) t, turning at -(2/3) g sin(a) t / r."
   (with-siconos
-    (multiple-value-bind (answer values) (rotation-witness "disc-rolling-down-incline" 1d0)
+    (multiple-value-bind (answer values) (rotation-witness "disc-rolling-down-incline" 0.5d0)
       (let* ((g (value-of-parameter values "g")) (a (value-of-parameter values "a"))
              (r (value-of-parameter values "r")) (h (value-of-parameter values "h"))
              (end (ames.witness:witness-end answer))
              (start (list (+ (/ h (* 2 (tan a))) (* r (sin a))) (+ (/ h 2) (* r (cos a)))))
              (position (state-entry end :positions "disc"))
-             (velocity (state-entry end :velocities "disc")))
+             (velocity (state-entry end :velocities "disc"))
+             (time (getf end :time)))
         (is (eq :ok (ames.witness:witness-status answer)))
         (is (null (ames.witness:witness-events answer)) "no event while it rolls")
-        (is (relatively-near (* 1/3 g (sin a)) (sqrt (reduce #'+ (mapcar (lambda (p q) (expt (- p q) 2)) position start)))
+        (is (relatively-near (* 1/3 g (sin a) time time)
+                             (sqrt (reduce #'+ (mapcar (lambda (p q) (expt (- p q) 2)) position start)))
                              1d-9))
-        (is (relatively-near (* 2/3 g (sin a)) (sqrt (reduce #'+ (mapcar (lambda (v) (* v v)) velocity))) 1d-9))
-        (is (relatively-near (/ (* -2/3 g (sin a)) r) (state-entry end :angular-velocities "disc") 1d-9))))))
+        (is (relatively-near (* 2/3 g (sin a) time) (sqrt (reduce #'+ (mapcar (lambda (v) (* v v)) velocity))) 1d-9))
+        (is (relatively-near (/ (* -2/3 g (sin a) time) r) (state-entry end :angular-velocities "disc") 1d-9))))))
 
 (test witness-hoop-and-disc-race
   "A hoop (I = m r^2) and a disc (m r^2 / 2) rolling down identical inclines: the disc
 accelerates at (2/3) g sin a, the hoop at (1/2) g sin a, so the disc arrives first."
   (with-siconos
-    (multiple-value-bind (answer values) (rotation-witness "hoop-and-disc-race" 1d0)
+    (multiple-value-bind (answer values) (rotation-witness "hoop-and-disc-race" 0.5d0)
       (let* ((g (value-of-parameter values "g")) (a (value-of-parameter values "a"))
-             (end (ames.witness:witness-end answer)))
+             (end (ames.witness:witness-end answer))
+             (time (getf end :time)))
         (flet ((speed (body) (sqrt (reduce #'+ (mapcar (lambda (v) (* v v)) (state-entry end :velocities body))))))
           (is (eq :ok (ames.witness:witness-status answer)))
-          (is (relatively-near (* 2/3 g (sin a)) (speed "disc") 1d-9))
-          (is (relatively-near (* 1/2 g (sin a)) (speed "hoop") 1d-9)))))))
+          (is (relatively-near (* 2/3 g (sin a) time) (speed "disc") 1d-9))
+          (is (relatively-near (* 1/2 g (sin a) time) (speed "hoop") 1d-9)))))))
 
 (test witness-disc-launched-sliding
   "A disc launched at v0 without spin on a rough floor rolls from t = v0 / (3 mu g)
 ((:stops-sliding disc floor), located within 2 h) at (2/3) v0, angular velocity
 -2 v0 / (3 r), and keeps rolling."
   (with-siconos
-    (multiple-value-bind (answer values) (rotation-witness "disc-launched-sliding" 1d0)
+    (multiple-value-bind (answer values) (rotation-witness "disc-launched-sliding" 0.6d0)
       (let* ((g (value-of-parameter values "g")) (mu (value-of-parameter values "mu"))
              (v0 (value-of-parameter values "v0")) (r (value-of-parameter values "r"))
              (event (witness-event answer :stops-sliding))
@@ -105,7 +108,7 @@ accelerates at (2/3) g sin a, the hoop at (1/2) g sin a, so the disc arrives fir
 (defun ladder-lift-off-height (step)
   "The height of the ladder's top when the witness (time STEP) has it leave the wall, and
 the ladder's values."
-  (multiple-value-bind (answer values) (rotation-witness "ladder-against-wall" 0.5d0 :step step)
+  (multiple-value-bind (answer values) (rotation-witness "ladder-against-wall" 0.35d0 :step step)
     (let* ((event (witness-event answer :lift-off))
            (l (value-of-parameter values "l")))
       (is (equal '(:lift-off "ladder" "wall") (first (getf event :pairs))))
@@ -132,7 +135,7 @@ witness converges to it at first order (the error halves with the step)."
 query (reaches (angle rod) (- (/ pi 2)))) at angular velocity -sqrt(3 g / l), the hinge
 pulling up with (5/2) m g: within 2 h."
   (with-siconos
-    (multiple-value-bind (answer values) (rotation-witness "rod-hinged-released-horizontal" 0.6d0)
+    (multiple-value-bind (answer values) (rotation-witness "rod-hinged-released-horizontal" 0.5d0)
       (let* ((g (value-of-parameter values "g")) (l (value-of-parameter values "l"))
              (m (value-of-parameter values "m"))
              (event (witness-event answer :reaches)))

@@ -42,7 +42,9 @@ checks that at every step and answers :unsupported when one turns. A rope is the
 unilateral constraint L - (sum of its pieces) >= 0 with Newton's law e = 0: its closing is
 (:tightens ROPE ROPE), its opening (:slackens ROPE ROPE).
 
-Bodies translate (no rotation). Every possible contact is a face (of an obstacle or of a
+A model with a rotating body (an "inertia") or a hinge is simulated by siconos_rotation.py
+(three degrees of freedom per body, Moreau-Jean time stepping; see there). Otherwise
+bodies translate (no rotation). Every possible contact is a face (of an obstacle or of a
 free polygon body) against the support point of another free body: its gap is linear in
 the positions, so each is a LagrangianLinearTIR with a NewtonImpactNSL. The driver keeps
 the set of contacts whose face extent covers the body (and that the body is not behind);

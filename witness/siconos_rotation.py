@@ -432,7 +432,7 @@ class RotationDriver:
             # a block sliding flat on two corners turning at 1e-6 rad/s)
             options = self.osnsp.numericsSolverOptions()
             options.dparam[sn.SICONOS_DPARAM_TOL] = 1e-12
-            options.iparam[sn.SICONOS_IPARAM_MAX_ITER] = 10000
+            options.iparam[sn.SICONOS_IPARAM_MAX_ITER] = 1000
         else:
             self.osnsp = sk.MLCP()
         self.sim.insertNonSmoothProblem(self.osnsp)
