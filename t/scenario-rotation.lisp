@@ -216,3 +216,19 @@ body), rather than simulating it as a translating one; bin/ames exits non-zero."
       (when condition
         (is (string= "WHEEL" (symbol-name (ames-error-datum condition))))
         (is (search "rotat" (princ-to-string condition)))))))
+
+(test start-shape-is-turned-by-the-angle
+  "A rotating body's start shape is its shape turned by its :angle: a 2 by 1 rectangle
+turned by pi/2 has its vertices at (1/2 -1) (1/2 1) (-1/2 1) (-1/2 -1), numerically; a
+translating body's is its own."
+  (let* ((scenario (ames:parse-scenario
+                    (rotating-scenario '(body b :mass m :position (0 0) :velocity (0 0) :inertia :uniform
+                                         :angle (/ pi 2) :shape (polygon (-1 -1/2) (1 -1/2) (1 1/2) (-1 1/2)))
+                                       '(body c :mass m :position (5 0) :velocity (0 0) :shape (circle 1)))))
+         (turned (ames.scenario:scenario-body-start-shape (ames:find-scenario-body 'b scenario))))
+    (loop for (x y) in (rest turned)
+          for (ex ey) in '((1/2 -1) (1/2 1) (-1/2 1) (-1/2 -1))
+          do (is (< (abs (- (ames.base:expression-value x) ex)) 1d-12))
+             (is (< (abs (- (ames.base:expression-value y) ey)) 1d-12)))
+    (let ((c (ames:find-scenario-body 'c scenario)))
+      (is (eq (ames:scenario-body-shape c) (ames.scenario:scenario-body-start-shape c))))))

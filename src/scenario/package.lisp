@@ -71,7 +71,7 @@ and Maxima (assumptions, overlaps).")
    #:scenario-force-point #:scenario-rope-wound-ends
    #:scenario-hinge #:scenario-hinges #:scenario-hinge-name #:scenario-hinge-body
    #:scenario-hinge-point #:find-scenario-hinge #:shape-inertia #:centroid
-   #:scenario-awaiting
+   #:scenario-awaiting #:scenario-body-start-shape #:turned-shape
    #:scenario-force #:scenario-force-name #:scenario-force-body #:scenario-force-value
    #:scenario-frictions #:scenario-friction #:scenario-friction-bodies
    #:scenario-friction-static #:scenario-friction-kinetic #:find-scenario-friction

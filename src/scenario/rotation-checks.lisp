@@ -184,10 +184,15 @@ naming the clause at fault."
 
 ;;; What the assumptions decide
 
+(defun within-disc (point circle)
+  "The relation: POINT (own frame) lies in the checked CIRCLE about the origin."
+  `(<= (+ (expt ,(first point) 2) (expt ,(second point) 2)) (expt ,(second circle) 2)))
+
 (defun rotation-facts (scenario)
   "The facts of the rotation section that symbols leave open, as SCENARIO-FACTS lists
 them: a positive inertia, at most m r^2 for a disc; a :uniform body's centroid at its
-reference point; a hinge's pin at rest; a disc's :at and wound points within it."
+reference point; a hinge's pin at rest; a disc's :at and wound points within it (and
+the wound one off its centre)."
   (append
    (loop for body in (scenario-rotating-bodies scenario)
          for location = (format nil "body ~A" (symbol-name (scenario-body-name body)))
@@ -207,6 +212,24 @@ reference point; a hinge's pin at rest; a disc's :at and wound points within it.
                            collect (list location `(= ,c 0)
                                          "the reference point is the shape's centroid (:inertia :uniform)"
                                          'scenario-shape-error)))))
+   (loop for force in (scenario-forces scenario)
+         for point = (scenario-force-point force)
+         for body = (find-scenario-body (scenario-force-body force) scenario)
+         when (and point (eq (shape-kind (scenario-body-shape body)) :circle))
+           collect (list (format nil "force ~A" (symbol-name (scenario-force-name force)))
+                         (within-disc point (scenario-body-shape body))
+                         "the force's :at is a point of the disc" 'scenario-syntax-error :lenient t))
+   (loop for rope in (scenario-ropes scenario)
+         for location = (format nil "rope ~A" (symbol-name (scenario-rope-name rope)))
+         append (loop for end in (scenario-rope-wound-ends rope)
+                      for (name point) = (if (eq end :first)
+                                             (first (scenario-rope-through rope))
+                                             (car (last (scenario-rope-through rope))))
+                      for shape = (scenario-body-shape (find-scenario-body name scenario))
+                      collect (list location `(> (+ (expt ,(first point) 2) (expt ,(second point) 2)) 0)
+                                    "the wound end is off the disc's centre" 'scenario-syntax-error)
+                      collect (list location (within-disc point shape)
+                                    "the wound end is within the disc" 'scenario-syntax-error :lenient t)))
    (loop for hinge in (scenario-hinges scenario)
          for body = (find-scenario-body (scenario-hinge-body hinge) scenario)
          append (loop for v in (point-velocity body (scenario-hinge-point hinge))

@@ -146,3 +146,42 @@ true as a second value when it is wound."
   (if (wound-end-p x)
       (values (checked-attachment validation (butlast x) what) t)
       (values (checked-attachment validation x what) nil)))
+
+;;; A rotating body's shape at its start angle (for the geometry, once rotation runs)
+
+(defun turned (point angle)
+  "POINT (X Y) turned counter-clockwise by ANGLE about the origin, as expressions."
+  (if (eql angle 0)
+      point
+      (destructuring-bind (x y) point
+        (list (folded `(- (* (cos ,angle) ,x) (* (sin ,angle) ,y)))
+              (folded `(+ (* (sin ,angle) ,x) (* (cos ,angle) ,y)))))))
+
+(defun turned-shape (shape angle)
+  "The checked SHAPE (own frame) turned counter-clockwise by ANGLE about its reference
+point: the points of a polygon, segment or half-plane turned, an arc's or outline's
+centres turned and angles shifted by ANGLE; a circle and a point unchanged."
+  (flet ((arc (piece)
+           (destructuring-bind (word &key center radius from to (solid nil solid-p)) piece
+             (append (list word :center (turned center angle) :radius radius
+                           :from (folded `(+ ,from ,angle)) :to (folded `(+ ,to ,angle)))
+                     (and solid-p (list :solid solid))))))
+    (if (eql angle 0)
+        shape
+        (ecase (shape-kind shape)
+          ((:point :circle) shape)
+          ((:polygon :segment :half-plane)
+           (cons (first shape) (mapcar (lambda (p) (turned p angle)) (rest shape))))
+          (:arc (arc shape))
+          (:outline (cons (first shape)
+                          (mapcar (lambda (piece)
+                                    (if (eq (first piece) 'ames-scenario:line)
+                                        (list (first piece) (turned (second piece) angle)
+                                              (turned (third piece) angle))
+                                        (arc piece)))
+                                  (rest shape))))))))
+
+(defun scenario-body-start-shape (body)
+  "BODY's shape as it stands at the start: turned by its :angle (its own shape for a body
+that does not rotate). What the geometry's checks at the start (overlaps) must see."
+  (turned-shape (scenario-body-shape body) (scenario-body-angle body)))
