@@ -75,18 +75,45 @@ L = h / (2 sin a) away, after sqrt(3 L / (g sin a)): (:leaves disc incline), wit
         (is (relatively-near (* 2/3 g (sin a) time) (sqrt (reduce #'+ (mapcar (lambda (v) (* v v)) velocity))) 1d-9))
         (is (relatively-near (/ (* -2/3 g (sin a) time) r) (state-entry event :angular-velocities "disc") 1d-9))))))
 
-(test witness-hoop-and-disc-race
-  "A hoop (I = m r^2) and a disc (m r^2 / 2) rolling down identical inclines: the disc
-accelerates at (2/3) g sin a, the hoop at (1/2) g sin a, so the disc arrives first."
+(test witness-disc-slips-on-a-slippery-incline
+  "With mu < tan(a)/3 the disc rolls with slipping: g (sin a - mu cos a) down the slope,
+angular acceleration -2 mu g cos a / r, and no event while it is on the slope."
   (with-siconos
-    (multiple-value-bind (answer values) (rotation-witness "hoop-and-disc-race" 0.5d0)
+    (multiple-value-bind (answer values) (rotation-witness "disc-rolling-down-incline" 0.5d0
+                                                           :name "disc-slipping-down-incline")
       (let* ((g (value-of-parameter values "g")) (a (value-of-parameter values "a"))
+             (r (value-of-parameter values "r")) (mu (value-of-parameter values "mu"))
              (end (ames.witness:witness-end answer))
              (time (getf end :time)))
-        (flet ((speed (body) (sqrt (reduce #'+ (mapcar (lambda (v) (* v v)) (state-entry end :velocities body))))))
-          (is (eq :ok (ames.witness:witness-status answer)))
-          (is (relatively-near (* 2/3 g (sin a) time) (speed "disc") 1d-9))
-          (is (relatively-near (* 1/2 g (sin a) time) (speed "hoop") 1d-9)))))))
+        (is (eq :ok (ames.witness:witness-status answer)))
+        (is (null (ames.witness:witness-events answer)))
+        (is (relatively-near (* g (- (sin a) (* mu (cos a))) time)
+                             (sqrt (reduce #'+ (mapcar (lambda (v) (* v v)) (state-entry end :velocities "disc"))))
+                             1d-9))
+        (is (relatively-near (/ (* -2 mu g (cos a) time) r) (state-entry end :angular-velocities "disc") 1d-9))))))
+
+(test witness-hoop-and-disc-race
+  "A hoop (I = m r^2) and a disc (m r^2 / 2) released side by side on identical inclines
+roll the half slope L = h / (2 sin a) down: the disc, at (2/3) g sin a, reaches the foot
+after sqrt(3 L / (g sin a)), before the hoop, at (1/2) g sin a, after sqrt(4 L / (g sin a))
+((:leaves BODY INCLINE), within 2 h)."
+  (with-siconos
+    (multiple-value-bind (answer values) (rotation-witness "hoop-and-disc-race" 1.32d0)
+      (let* ((g (value-of-parameter values "g")) (a (value-of-parameter values "a"))
+             (h (value-of-parameter values "h"))
+             (half (/ h (* 2 (sin a))))
+             (events (ames.witness:witness-events answer)))
+        (is (eq :ok (ames.witness:witness-status answer)))
+        (is (equal '((:leaves "disc" "incline-1") (:leaves "hoop" "incline-2"))
+                   (mapcar (lambda (e) (first (getf e :pairs))) events)))
+        (when (= 2 (length events))
+          (destructuring-bind (disc hoop) events
+            (is (<= (abs (- (getf disc :time) (sqrt (/ (* 3 half) (* g (sin a)))))) (* 2 *witness-step*)))
+            (is (<= (abs (- (getf hoop :time) (sqrt (/ (* 4 half) (* g (sin a)))))) (* 2 *witness-step*)))
+            (flet ((speed (event body)
+                     (sqrt (reduce #'+ (mapcar (lambda (v) (* v v)) (state-entry event :velocities body))))))
+              (is (relatively-near (* 2/3 g (sin a) (getf disc :time)) (speed disc "disc") 1d-9))
+              (is (relatively-near (* 1/2 g (sin a) (getf hoop :time)) (speed hoop "hoop") 1d-9)))))))))
 
 (test witness-disc-launched-sliding
   "A disc launched at v0 without spin on a rough floor rolls from t = v0 / (3 mu g)

@@ -23,3 +23,21 @@
   (friction disc incline :static mu)
   (query a-along-slope (value (speed disc) :at (end 0)))
   (simulate :states 2))
+
+;;;; The same disc where friction is too weak to hold it rolling (mu < tan(a)/3): it rolls
+;;;; with slipping. Expected results (textbook): kinetic friction mu m g cos a up the slope,
+;;;; acceleration g (sin a - mu cos a) down the slope, angular acceleration
+;;;; -2 mu g cos a / r; it never rolls without slipping on the slope.
+
+(scenario disc-slipping-down-incline
+  "A uniform disc on an incline too slippery for rolling slides while it spins up."
+  (parameters (m :positive (:value 2)) (g :positive (:value 981/100)) (r :positive (:value 1/5))
+              (h :positive (> h r) (:value 2)) (a (> a 0) (< a (/ pi 2)) (:value (deg 30)))
+              (mu :positive (< mu (/ (tan a) 3)) (:value 1/10)))
+  (gravity g)
+  (body incline :fixed t :shape (polygon (0 0) ((/ h (tan a)) 0) (0 h)))
+  (body disc :mass m :inertia :uniform :shape (circle r)
+             :position ((+ (/ h (* 2 (tan a))) (* r (sin a))) (+ (/ h 2) (* r (cos a))))
+             :velocity (0 0))
+  (friction disc incline :static mu)
+  (simulate :states 2))
