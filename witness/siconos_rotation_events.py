@@ -29,11 +29,12 @@ class Events:
             vn0, vn1 = r.normal_speed(qp, vp), r.normal_speed(q, v)
             if pressing and not s["pressing"] and vn0 < -collide and vn1 - vn0 > JUMP:
                 self.record(t, [(r.kinds["close"],) + r.names], qp, vp)
-            if pressing:
-                s["left"] = False
-            elif s["pressing"] and isinstance(r, Contact) and not r.face.covers(r.point(q)):
+            if isinstance(r, Contact) and r.front and (pressing or s["pressing"]) \
+                    and not r.face.covers(r.point(q)):
                 self.leaves(r, tp, qp, vp, q, v)   # off the end of its face: not a lift-off
                 s["left"] = True
+            elif pressing:
+                s["left"] = False
             if s["left"]:
                 s["pending"] = None
             elif s["pending"] is not None:
@@ -53,13 +54,21 @@ class Events:
             # the contact point's tangential speed as the step saw it: its point at QP (where
             # the relation was linearised) moving with the new velocities V, 0 when it sticks
             s1 = r.tangential_speed(qp, v) if r.friction else 0.0   # ropes have no friction
-            s0 = s.get("slip")
-            s["slip"] = s1
+            s0, s_1 = s.get("slip"), s.get("slip before")
+            s["slip"], s["slip before"] = s1, s0
             if pressing and r.friction and s["pressing"] and tp > 2 * h and s0 is not None:
                 if abs(s0) > SPEED_TOL and (abs(s1) <= SPEED_TOL or s0 * s1 < 0):
-                    f = s0 / (s0 - s1)
-                    self.record(tp + f * h, [(":stops-sliding",) + r.names], qp + f * (q - qp),
-                                vp + f * (v - vp))
+                    if abs(s1) <= SPEED_TOL and s_1 is not None and s_1 * s0 > 0 and abs(s_1) > abs(s0):
+                        # stuck by the end of the step: where the slip, falling as in the
+                        # step before, reached 0 (exact under a constant friction); from then
+                        # on the body moved with the step's end velocities V
+                        f = min(1.0, s0 / (s_1 - s0))
+                        self.record(tp + f * h, [(":stops-sliding",) + r.names],
+                                    q - (1.0 - f) * h * v, v)
+                    else:
+                        f = s0 / (s0 - s1)
+                        self.record(tp + f * h, [(":stops-sliding",) + r.names], qp + f * (q - qp),
+                                    vp + f * (v - vp))
                 elif abs(s0) <= SPEED_TOL and abs(s1) > SPEED_TOL:
                     self.record(tp, [(":starts-sliding",) + r.names], qp, vp)
             s["forces"] = (s["forces"] + [force])[-2:] if pressing else []
