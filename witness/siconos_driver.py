@@ -42,7 +42,9 @@ checks that at every step and answers :unsupported when one turns. A rope is the
 unilateral constraint L - (sum of its pieces) >= 0 with Newton's law e = 0: its closing is
 (:tightens ROPE ROPE), its opening (:slackens ROPE ROPE).
 
-Bodies translate (no rotation). Every possible contact is a face (of an obstacle or of a
+A model with a rotating body (an "inertia") or a hinge is simulated by siconos_rotation.py
+(three degrees of freedom per body, Moreau-Jean time stepping; see there). Otherwise
+bodies translate (no rotation). Every possible contact is a face (of an obstacle or of a
 free polygon body) against the support point of another free body: its gap is linear in
 the positions, so each is a LagrangianLinearTIR with a NewtonImpactNSL. The driver keeps
 the set of contacts whose face extent covers the body (and that the body is not behind);
@@ -500,6 +502,10 @@ def sx_states(names, qs, key):
 def main():
     text = open(sys.argv[1]).read() if len(sys.argv) > 1 else sys.stdin.read()
     model = json.loads(text)
+    if model.get("hinges") or any("inertia" in b for b in model.get("bodies", [])):
+        from siconos_rotation import main_rotation   # bodies that turn: 3 degrees of freedom
+        main_rotation(model)
+        return
     try:
         if model.get("friction"):
             from siconos_friction import FrictionDriver

@@ -18,7 +18,9 @@
          (what (format nil "body ~A" (symbol-name name))))
     (enter validation what clause)
     (let* ((arguments (checked-keywords validation (cddr clause)
-                                        '(:shape :mass :position :velocity :fixed :driven) what))
+                                        '(:shape :mass :position :velocity :fixed :driven
+                                          :inertia :angle :angular-velocity)
+                                        what))
            (fixed (body-flag validation arguments :fixed))
            (driven (body-flag validation arguments :driven))
            (missing (remove-if (lambda (key) (assoc key arguments))
@@ -46,9 +48,10 @@
         (when (and fixed (not (zero-vector-p velocity)))
           (reject validation 'scenario-syntax-error (keyword-value :velocity arguments)
                   "a fixed body does not move: its :velocity can only be (0 0)"))
-        (make-instance 'scenario-body :name name :shape shape :mass mass
-                                      :position position :velocity velocity
-                                      :fixed-p fixed :driven-p driven)))))
+        (apply #'make-instance 'scenario-body :name name :shape shape :mass mass
+                                              :position position :velocity velocity
+                                              :fixed-p fixed :driven-p driven
+               (checked-rotation validation arguments shape mass fixed driven))))))
 
 (defun body-flag (validation arguments key)
   "The value of the body's flag KEY (:fixed, :driven) in ARGUMENTS: T or NIL."
@@ -64,7 +67,7 @@
   (let* ((name (cdr (declared validation (second clause))))
          (what (format nil "force ~A" (symbol-name name))))
     (enter validation what clause)
-    (let* ((arguments (checked-keywords validation (cddr clause) '(:on :value) what))
+    (let* ((arguments (checked-keywords validation (cddr clause) '(:on :value :at) what))
            (missing (remove-if (lambda (key) (assoc key arguments)) '(:on :value))))
       (when missing
         (reject validation 'missing-property-error clause "the force has no ~{~S~^, ~}" missing))
@@ -82,7 +85,10 @@
         (make-instance 'scenario-force
                        :name name :body (cdr declaration)
                        :value (checked-vector validation (keyword-value :value arguments)
-                                              "the force's :value"))))))
+                                              "the force's :value")
+                       :point (and (assoc :at arguments)
+                                   (checked-vector validation (keyword-value :at arguments)
+                                                   "the force's :at")))))))
 
 (defun single-clause (validation word clauses)
   "The only clause of CLAUSES, the scenario's (WORD ...) clauses, entered for checking;
@@ -207,7 +213,7 @@ order."
              (reject validation 'unknown-clause-error clause
                      "~A is not a clause of the scenario language~A; the clauses are ~
                       parameters, gravity, body, force, simulate, query, restitution, ~
-                      friction, spring, pulley, rope and gravitation"
+                      friction, spring, pulley, rope, gravitation and hinge"
                      (show (car clause))
                      (if (symbolp (car clause))
                          (did-you-mean (symbol-name (car clause))
@@ -230,7 +236,7 @@ order."
         (declare-name validation name :parameter))))
   (loop for (word kind) in '((ames-scenario:body :body) (ames-scenario:force :force)
                              (ames-scenario:spring :spring) (ames-scenario:pulley :pulley)
-                             (ames-scenario:rope :rope))
+                             (ames-scenario:rope :rope) (ames-scenario:hinge :hinge))
         do (dolist (clause (cdr (assoc word sorted)))
              (enter validation (format nil "clause ~A" word) clause)
              (when (null (rest clause))
@@ -291,7 +297,9 @@ CHECK-SCENARIO-GEOMETRY, which the caller runs when it has those layers."
                 (reject validation 'missing-property-error form "the scenario has no body"))
               (multiple-value-bind (states until branch all-branches)
                   (checked-simulate validation (clauses 'ames-scenario:simulate))
-                (make-instance 'scenario
+                (check-rotation
+                 validation
+                 (make-instance 'scenario
                                :name name :description description
                                :parameters parameters :gravity gravity
                                :bodies bodies :forces forces :frictions frictions
@@ -301,4 +309,4 @@ CHECK-SCENARIO-GEOMETRY, which the caller runs when it has those layers."
                                :restitutions (checked-restitutions
                                               validation (clauses 'ames-scenario:restitution))
                                :extensions (checked-extensions validation sorted bodies)
-                               :source source :positions positions :form form)))))))))
+                               :source source :positions positions :form form))))))))))

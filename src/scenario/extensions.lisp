@@ -47,7 +47,10 @@ bumper with a free end that only pushes."))
    (length :initarg :length :reader scenario-rope-length)
    (through :initarg :through :reader scenario-rope-through
             :documentation "The rope's points in order: (BODY (X Y)) at the ends, pulley
-names between."))
+names between.")
+   (wound :initarg :wound :initform '() :reader scenario-rope-wound-ends
+          :documentation "The ends wound on a rotating disc (:wound): a list of :FIRST and
+:LAST (see rotation.lisp)."))
   (:documentation "A massless, inextensible rope over pulleys."))
 
 (defun scenario-extension (scenario key)
@@ -167,8 +170,11 @@ names between."))
         (unless (and (proper-list-p through) (>= (length through) 2))
           (reject validation 'scenario-syntax-error through
                   ":through lists the rope's end, its pulleys and its other end"))
-        (let* ((first (checked-attachment validation (first through) "the rope's first end"))
-               (last (checked-attachment validation (car (last through)) "the rope's last end"))
+        (multiple-value-bind (first first-wound)
+            (checked-rope-end validation (first through) "the rope's first end")
+         (multiple-value-bind (last last-wound)
+             (checked-rope-end validation (car (last through)) "the rope's last end")
+        (let* (
                (middle (mapcar (lambda (x)
                                  (let ((declaration (declared validation x)))
                                    (unless (and declaration (eq (car declaration) :pulley))
@@ -183,7 +189,8 @@ names between."))
                          :name name
                          :length (checked-positive validation (keyword-value :length arguments)
                                                    "a rope's length")
-                         :through points))))))
+                         :through points
+                         :wound (append (and first-wound '(:first)) (and last-wound '(:last)))))))))))
 
 (defun checked-gravitation (validation clauses)
   "The constant of the (gravitation G) clause among CLAUSES, or NIL."
@@ -205,4 +212,6 @@ names between."))
             :pulleys pulleys
             :ropes (mapcar (lambda (c) (checked-rope validation c))
                            (clauses 'ames-scenario:rope))
-            :gravitation (checked-gravitation validation (clauses 'ames-scenario:gravitation))))))
+            :gravitation (checked-gravitation validation (clauses 'ames-scenario:gravitation))
+            :hinges (mapcar (lambda (c) (checked-hinge validation c))
+                            (clauses 'ames-scenario:hinge))))))

@@ -140,8 +140,20 @@ words (POINT, (POLYGON (X Y) ...), ...) and checked expressions.")
             :documentation "True when the body is glued to the fixed frame.")
    (driven-p :initarg :driven-p :initform nil :reader scenario-body-driven-p
              :documentation "True when the body moves at its prescribed constant :velocity
-whatever acts on it (a conveyor belt); it has no mass."))
-  (:documentation "A rigid body of a scenario (it translates and does not rotate)."))
+whatever acts on it (a conveyor belt); it has no mass.")
+   (inertia :initarg :inertia :initform nil :reader scenario-body-inertia
+            :documentation "The moment of inertia about the reference point (the centre of
+mass), an expression; NIL for a body that translates only (see rotation.lisp).")
+   (inertia-kind :initarg :inertia-kind :initform nil :reader scenario-body-inertia-kind
+                 :documentation "How the inertia was given: :VALUE, :UNIFORM or :RING; NIL.")
+   (angle :initarg :angle :initform 0 :reader scenario-body-angle
+          :documentation "The orientation at the start, radians counter-clockwise (0 for a
+body that does not rotate).")
+   (angular-velocity :initarg :angular-velocity :initform 0
+                     :reader scenario-body-angular-velocity
+                     :documentation "The angular velocity at the start, counter-clockwise."))
+  (:documentation "A rigid body of a scenario: it translates, and rotates when it has an
+inertia."))
 
 (defclass scenario-force ()
   ((name :initarg :name :reader scenario-force-name
@@ -149,7 +161,10 @@ whatever acts on it (a conveyor belt); it has no mass."))
    (body :initarg :body :reader scenario-force-body
          :documentation "The symbol of the body it acts on.")
    (value :initarg :value :reader scenario-force-value
-          :documentation "The constant force (FX FY) in the fixed frame."))
+          :documentation "The constant force (FX FY) in the fixed frame.")
+   (point :initarg :point :initform nil :reader scenario-force-point
+          :documentation "Where it acts, (X Y) in the body's own frame (:at), or NIL: at the
+reference point."))
   (:documentation "A constant external force on one body."))
 
 (defclass scenario-friction ()

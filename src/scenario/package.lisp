@@ -17,7 +17,7 @@
    #:scenario #:parameters #:gravity #:body #:force #:simulate #:query
    #:restitution
    #:friction
-   #:spring #:pulley #:rope #:gravitation
+   #:spring #:pulley #:rope #:gravitation #:hinge
    #:point #:circle #:polygon #:outline #:line #:arc #:segment #:half-plane)
   (:documentation "The package scenario files are read into (with *READ-EVAL* nil and
 a restricted readtable). It uses no package: it holds the user's names, and imports
@@ -65,6 +65,13 @@ and Maxima (assumptions, overlaps).")
    #:scenario-body #:scenario-body-name #:scenario-body-shape #:scenario-body-mass
    #:scenario-body-position #:scenario-body-velocity #:scenario-body-fixed-p
    #:scenario-body-driven-p
+   ;; rotation (rotation.lisp, inertia.lisp)
+   #:scenario-body-inertia #:scenario-body-inertia-kind #:scenario-body-angle
+   #:scenario-body-angular-velocity #:scenario-body-rotating-p #:scenario-rotating-bodies
+   #:scenario-force-point #:scenario-rope-wound-ends
+   #:scenario-hinge #:scenario-hinges #:scenario-hinge-name #:scenario-hinge-body
+   #:scenario-hinge-point #:find-scenario-hinge #:shape-inertia #:centroid
+   #:scenario-awaiting #:scenario-body-start-shape #:turned-shape
    #:scenario-force #:scenario-force-name #:scenario-force-body #:scenario-force-value
    #:scenario-frictions #:scenario-friction #:scenario-friction-bodies
    #:scenario-friction-static #:scenario-friction-kinetic #:find-scenario-friction

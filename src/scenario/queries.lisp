@@ -10,7 +10,9 @@
 ;;;; where a QUANTITY is an arithmetic expression of the algebra whose atoms may also be
 ;;;; quantity forms (:x B) (:y B) (:position B) (:velocity B) (:speed B) (:acceleration B)
 ;;;; (:normal-force A B) (:friction A B) (:tension ROPE) (:kinetic-energy B) (:momentum B)
-;;;; (:energy) (:time), or (:component :x-or-:y VECTOR-QUANTITY); a WHEN is (:start N), (:end N), (:event PATTERN) with PATTERN a list
+;;;; (:energy) (:time) (:angle B) (:angular-velocity B) (:angular-acceleration B)
+;;;; (:hinge-force HINGE), or (:component :x-or-:y VECTOR-QUANTITY); a WHEN is (:start N), (:end N), (:reaches QUANTITY VALUE) (the first time QUANTITY
+;;;; takes VALUE: scenario-language.md, "Rotation"), (:event PATTERN) with PATTERN a list
 ;;;; (:KIND NAME...) as an event is printed, or (:time EXPR); a CONDITION is a relation
 ;;;; over quantities and parameters, (:outcome PATTERN) or (:not (:outcome PATTERN)).
 ;;;; Words are recognised by name; every body, rope or parameter a query names must be
@@ -21,7 +23,8 @@
 (defparameter +quantity-words+
   '(("X" . 1) ("Y" . 1) ("POSITION" . 1) ("VELOCITY" . 1) ("SPEED" . 1) ("ACCELERATION" . 1)
     ("NORMAL-FORCE" . 2) ("FRICTION" . 2) ("TENSION" . 1) ("KINETIC-ENERGY" . 1)
-    ("MOMENTUM" . 1) ("ENERGY" . 0) ("TIME" . 0))
+    ("MOMENTUM" . 1) ("ENERGY" . 0) ("TIME" . 0)
+    ("ANGLE" . 1) ("ANGULAR-VELOCITY" . 1) ("ANGULAR-ACCELERATION" . 1) ("HINGE-FORCE" . 1))
   "The quantities a query may ask for, with how many names each takes.")
 
 (defun query-reject (validation datum control &rest arguments)
@@ -42,7 +45,7 @@ UNDECLARED-SYMBOL-ERROR naming X when nothing of that name is declared."
   (and (consp x) (symbolp (car x)) (not (keywordp (car x)))
        (assoc (symbol-name (car x)) +quantity-words+ :test #'string=)))
 
-(defparameter +vector-quantities+ '(:position :velocity :acceleration :momentum)
+(defparameter +vector-quantities+ '(:position :velocity :acceleration :momentum :hinge-force)
   "The quantities whose value is a vector, whose components (x Q) and (y Q) are asked.")
 
 (defun checked-quantity (validation x)
@@ -85,6 +88,11 @@ UNDECLARED-SYMBOL-ERROR naming X when nothing of that name is declared."
            (query-reject validation x "a state is named by its index, 0, 1, ..."))
          (list (intern (symbol-name (car x)) :keyword) (second x)))
         ((and (consp x) (keywordp (car x))) (list :event (checked-pattern validation x)))
+        ((and (consp x) (named-p (car x) "REACHES"))
+         (unless (and (proper-list-p x) (= 3 (length x)))
+           (query-reject validation x "(reaches QUANTITY VALUE)"))
+         (list :reaches (checked-quantity validation (second x))
+               (checked-quantity validation (third x))))
         (t (list :time (checked-expression validation x)))))
 
 (defun checked-condition (validation x)

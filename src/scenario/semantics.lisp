@@ -146,7 +146,8 @@ false (the vertices in the right order, say)."
    (when (scenario-until scenario)
      (list (list "clause SIMULATE" `(> ,(scenario-until scenario) 0)
                  "the :until time is positive" 'scenario-expression-error)))
-   (coefficient-facts scenario)))
+   (coefficient-facts scenario)
+   (rotation-facts scenario)))
 
 (defun decide-fact (bridge relation)
   "The truth of RELATION under the bridge's current assumptions; when Maxima's first

@@ -190,9 +190,23 @@ names and cache), so that what a run prints does not depend on what ran before i
          (parameter-values (check-parameter-values parameter-values scenario)))
     (unless (ames.maxima:bridge-in-scope-p bridge)
       (ames.maxima:reset-bridge bridge))
+    (refuse-awaiting scenario bridge)
     (call-with-budget
      (lambda () (simulate-within-budget scenario bridge parameter-values check-incremental))
      :limits limits :subject (scenario-name scenario))))
+
+(defun refuse-awaiting (scenario bridge)
+  "Signal UNSUPPORTED-SITUATION naming the first thing SCENARIO asks that AMES does not
+simulate yet (SCENARIO-AWAITING: a rotating body...), after the checks of its
+assumptions (so that a mistake in it is reported first). Never runs such a scenario
+without it (a rotating body as a translating one)."
+  (let ((awaiting (scenario-awaiting scenario)))
+    (when awaiting
+      (check-scenario-assumptions scenario bridge)
+      (error 'unsupported-situation
+             :datum (first (first awaiting))
+             :detail (format nil "~{~A~^; ~}. The scenario is refused rather than simulated ~
+                                  without it." (mapcar #'second awaiting))))))
 
 (defun simulate-within-budget (scenario bridge parameter-values check-incremental)
   "SIMULATE's run of the validated SCENARIO, once its budget is set."

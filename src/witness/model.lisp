@@ -4,9 +4,11 @@
 ;;;; the free bodies with their masses, shapes, initial state and constant forces, the
 ;;;; fixed bodies as faces (a half-plane one infinite face, a segment one finite face, a
 ;;;; polygon its edges), gravity, the coefficients of restitution, springs and ropes over
-;;;; pulleys (points given by body index and offset, or fixed points). What the witness
-;;;; cannot model (bumpers, gravitation, arcs, rotation, drag) is refused with
-;;;; WITNESS-UNSUPPORTED, never approximated.
+;;;; pulleys (points given by body index and offset, or fixed points), and for rotating
+;;;; bodies (rotation.lisp) their inertia, angle and angular velocity, the hinges, the wound
+;;;; rope ends, the forces at points and the angles the queries ask about. What the witness
+;;;; cannot model (bumpers, gravitation, arcs, drag) is refused with WITNESS-UNSUPPORTED,
+;;;; never approximated.
 
 (in-package #:ames.witness)
 
@@ -19,8 +21,7 @@ thing; DETAIL says why."))
   (error 'witness-unsupported :datum datum :detail (apply #'format nil control arguments)))
 
 (defparameter +unsupported-words+
-  '(:inertia :driven :angle :angular-velocity :hinge :drag :toward
-    :gravitation :arc :outline)
+  '(:driven :drag :toward :gravitation :arc :outline)
   "Words of the scenario language that name what the witness does not model.")
 
 (defun check-modelled (form)
@@ -54,6 +55,11 @@ when it has none."
       (:polygon `(("kind" . "polygon")
                   ("vertices" . (:array ,@(mapcar (lambda (p) (cons :array (point-of p values "a vertex")))
                                                   (rest shape))))))
+      (:segment (if (scenario-body-rotating-p body)
+                    `(("kind" . "segment")
+                      ("vertices" . (:array ,@(mapcar (lambda (p) (cons :array (point-of p values "an end")))
+                                                      (rest shape)))))
+                    (unsupported (scenario-body-name body) "the witness models moving segments as rotating rods only")))
       (t (unsupported (scenario-body-name body) "the witness models moving points, discs and polygons only")))))
 
 (defun offset-point (point origin values)
@@ -78,10 +84,11 @@ when it has none."
       (t (unsupported (scenario-body-name body) "the witness models fixed polygons, segments and half-planes only")))))
 
 (defun body-force (scenario body values)
-  "The sum of the constant forces on BODY."
+  "The sum of the constant forces on BODY that act at its reference point."
   (let ((fx 0d0) (fy 0d0))
     (dolist (force (scenario-forces scenario) (list fx fy))
-      (when (eq (scenario-force-body force) (scenario-body-name body))
+      (when (and (eq (scenario-force-body force) (scenario-body-name body))
+                 (null (scenario-force-point force)))
         (destructuring-bind (x y) (point-of (scenario-force-value force) values "a force")
           (incf fx x) (incf fy y))))))
 
@@ -109,11 +116,17 @@ offset, or a fixed body's point in the world."
 
 (defun ropes-model (scenario values)
   (loop for rope in (scenario-ropes scenario)
+        for through = (scenario-rope-through rope)
         collect `(("name" . ,(string-downcase (scenario-rope-name rope)))
                   ("length" . ,(value-of (scenario-rope-length rope) values "a rope's length"))
-                  ("points" . (:array ,@(loop for point in (scenario-rope-through rope)
+                  ("points" . (:array ,@(loop for point in through
                                               for (body where) = (rope-point-position scenario point)
-                                              collect (model-point scenario body where values)))))))
+                                              for wound = (or (and (eq point (first through))
+                                                                   (member :first (scenario-rope-wound-ends rope)))
+                                                              (and (eq point (car (last through)))
+                                                                   (member :last (scenario-rope-wound-ends rope))))
+                                              collect (append (model-point scenario body where values)
+                                                              (and wound '(("wound" . :true))))))))))
 
 (defun scenario-model (scenario values t-end)
   "The witness's model (an alist for MODEL-JSON) of the validated SCENARIO with the
@@ -136,7 +149,8 @@ WITNESS-UNSUPPORTED for what the witness cannot model."
                                             ("q" . (:array ,@(point-of (scenario-body-position body) values "a position")))
                                             ("v" . (:array ,@(point-of (scenario-body-velocity body) values "a velocity")))
                                             ("shape" . ,(shape-model body values))
-                                            ("force" . (:array ,@(body-force scenario body values)))))))
+                                            ("force" . (:array ,@(body-force scenario body values)))
+                                            ,@(body-rotation-model scenario body values)))))
       ("springs" . (:array ,@(springs-model scenario values)))
       ("friction" . (:array ,@(loop for friction in (scenario-frictions scenario)
                                     for (a b) = (scenario-friction-bodies friction)
@@ -144,6 +158,7 @@ WITNESS-UNSUPPORTED for what the witness cannot model."
                                                      ,(value-of (scenario-friction-static friction) values "a friction coefficient")
                                                      ,(value-of (scenario-friction-kinetic friction) values "a friction coefficient")))))
       ("ropes" . (:array ,@(ropes-model scenario values)))
+      ,@(rotation-model scenario values)
       ("obstacles" . (:array ,@(loop for body in (scenario-fixed-bodies scenario)
                                      collect `(("name" . ,(string-downcase (scenario-body-name body)))
                                                ("faces" . (:array ,@(obstacle-faces body values))))))))))

@@ -1,0 +1,23 @@
+;;;; scenarios/awaiting-rotation/atwood-massive-pulley.lisp -- an Atwood machine whose pulley is
+;;;; a disc of inertia I hinged at its centre: a rope wound on each side.
+;;;;
+;;;; Expected results (textbook): a = (m1 - m2) g / (m1 + m2 + I / R^2) (m1 down, m2 up),
+;;;; the pulley's angular acceleration a / R (counter-clockwise: m1 hangs on its left), the
+;;;; tensions T1 = m1 (g - a) and T2 = m2 (g + a), different since the pulley has inertia;
+;;;; the hinge holds M g + T1 + T2. m1 reaches the floor after sqrt(2 h / a).
+
+(scenario atwood-massive-pulley
+  "An Atwood machine over a disc pulley of inertia I."
+  (parameters (m1 :positive (:value 3)) (m2 :positive (< m2 m1) (:value 1))
+              (big-m :positive (:value 2)) (big-r :positive (:value 1/5))
+              (i :positive (:value 1/25)) (g :positive (:value 981/100))
+              (h :positive (:value 1)) (top :positive (> top (* 2 h)) (:value 3)))
+  (gravity g)
+  (body floor :fixed t :shape (half-plane (1 0) (0 0)))
+  (body pulley :mass big-m :inertia i :shape (circle big-r) :position (0 top) :velocity (0 0))
+  (hinge axle :body pulley :at (0 0))
+  (body heavy :mass m1 :shape point :position ((- big-r) h) :velocity (0 0))
+  (body light :mass m2 :shape point :position (big-r (/ h 2)) :velocity (0 0))
+  (rope left :length (- top h) :through ((heavy (0 0)) (pulley ((- big-r) 0) :wound)))
+  (rope right :length (- top (/ h 2)) :through ((light (0 0)) (pulley (big-r 0) :wound)))
+  (simulate :states 2))

@@ -1,0 +1,26 @@
+;;;; scenarios/awaiting-rotation/block-tipping-on-incline.lisp -- a tall block on a rough incline
+;;;; tips over its downhill edge instead of sliding.
+;;;;
+;;;; The block (width w along the slope, height k, uniform: m (w^2 + k^2) / 12) stands on the
+;;;; middle of the slope, turned by -a to sit flat on it. With mu > tan a it cannot slide;
+;;;; with tan a > w / k its weight's line falls outside its base (downhill of its downhill
+;;;; edge), so it tips at once: its uphill corner lifts off ((:lift-off block incline)) and
+;;;; it turns about its downhill edge, at the start with the angular acceleration
+;;;; -m g ((k/2) sin a - (w/2) cos a) / I_edge (clockwise), I_edge = m (w^2 + k^2) / 3 the
+;;;; inertia about that edge and m g ((k/2) sin a - (w/2) cos a) the torque of its weight.
+
+(scenario block-tipping-on-incline
+  "A tall block on a rough incline tips over its downhill edge rather than sliding."
+  (parameters (m :positive (:value 1)) (g :positive (:value 981/100))
+              (h :positive (:value 3)) (a (> a 0) (< a (/ pi 2)) (:value (deg 30)))
+              (w :positive (:value 1/5)) (k :positive (> k (/ w (tan a))) (< k h) (:value 1))
+              (mu :positive (> mu (tan a)) (:value 1)))
+  (gravity g)
+  (body incline :fixed t :shape (polygon (0 0) ((/ h (tan a)) 0) (0 h)))
+  (body block :mass m :inertia :uniform :angle (- a)
+              :shape (polygon ((- (/ w 2)) (- (/ k 2))) ((/ w 2) (- (/ k 2)))
+                              ((/ w 2) (/ k 2)) ((- (/ w 2)) (/ k 2)))
+              :position ((+ (/ h (* 2 (tan a))) (* (/ k 2) (sin a))) (+ (/ h 2) (* (/ k 2) (cos a))))
+              :velocity (0 0))
+  (friction block incline :static mu)
+  (simulate :states 2))
