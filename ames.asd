@@ -42,7 +42,6 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "sturm")
                  (:file "truth")
                  (:file "values")
-                 (:file "value-witnesses")
                  (:file "roots")
                  (:file "ode")
                  (:file "integrator-support")

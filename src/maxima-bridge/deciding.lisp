@@ -196,8 +196,7 @@ first where they settle it (QUICK-VERDICT, no Maxima)."
         (and (not *substituting-orders*)
              (relation-witnesses bridge (if equation
                                             (list '> (relation-lhs relation) (relation-rhs relation))
-                                            relation)
-                                 :seeds t))
+                                            relation)))
       (when (and holds
                  (or (not equation)
                      (continuous-and-admissible-between-p

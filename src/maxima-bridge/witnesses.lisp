@@ -172,18 +172,11 @@ from its ends; log-uniform in size over four decades where a side is open-ended.
           ((zerop (random 2 random-state)) size)
           (t (- size)))))
 
-(defvar *seed-with-values* nil
-  "True while CALL-WITH-ADMISSIBLE-POINTS, after its random points, also offers the points
-at and around the run's parameter values (see VALUE-SEED-POINTS): bound by the quick
-proofs of DECIDE and HOLDS-P only, whose answers no witness can change.")
-
 (defun call-with-admissible-points (bridge relation function &optional assuming)
   "Call FUNCTION on random points (alists subject -> double float, over the subjects of
 RELATION and of the facts in force) that surely satisfy the facts in force and the
 facts ASSUMING, until it returns true or the limits (*WITNESS-DRAWS*,
-*WITNESS-ADMISSIBLE-POINTS*) are reached; then, under *SEED-WITH-VALUES*, on those of
-the points at and around the run's parameter values that satisfy them too. Returns the
-flattened facts."
+*WITNESS-ADMISSIBLE-POINTS*) are reached. Returns the flattened facts."
   (let* ((facts (flatten-facts (append (current-assumptions bridge) assuming)))
          (intervals (subject-intervals facts))
          (subjects (remove-duplicates (append (expression-variables relation)
@@ -199,21 +192,14 @@ flattened facts."
                                   subjects)))
                (when (every (lambda (fact) (eq (condition-truth fact point) :true)) facts)
                  (incf admissible)
-                 (when (funcall function point) (return-from call-with-admissible-points facts)))))
-    (when *seed-with-values*
-      (dolist (point (value-seed-points subjects intervals random-state))
-        (when (and (every (lambda (fact) (eq (condition-truth fact point) :true)) facts)
-                   (funcall function point))
-          (return))))
+                 (when (funcall function point) (return)))))
     facts))
 
-(defun relation-witnesses (bridge relation &key seeds)
+(defun relation-witnesses (bridge relation)
   "Two points that surely satisfy the facts in force, RELATION (an inequality) surely
 holding at the first and surely failing at the second, as (values HOLDS FAILS FACTS):
-alists subject -> double float, and the facts (flattened). NIL when none are found.
-With SEEDS, the points around the run's parameter values are tried too (see
-*SEED-WITH-VALUES*)."
-  (let ((holds nil) (fails nil) (*seed-with-values* seeds))
+alists subject -> double float, and the facts (flattened). NIL when none are found."
+  (let ((holds nil) (fails nil))
     (let ((facts (call-with-admissible-points
                   bridge relation
                   (lambda (point)
@@ -226,7 +212,7 @@ With SEEDS, the points around the run's parameter values are tried too (see
 (defun relation-refuted-p (bridge relation &optional assuming)
   "True when the condition RELATION surely fails at a point that surely satisfies the
 facts in force and the facts ASSUMING: then no sound strategy proves it under them."
-  (let ((refuted nil) (*seed-with-values* t))
+  (let ((refuted nil))
     (call-with-admissible-points bridge relation
                                  (lambda (point)
                                    (setf refuted (eq (condition-truth relation point) :false)))
