@@ -219,6 +219,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "bridge-roots")
                (:file "bridge-safety")
                (:file "bridge-shortcuts")
+               (:file "quick-signs")
                (:file "bridge-integrators")
                (:file "bridge-truth")
                (:file "truth-table")

@@ -13,6 +13,10 @@
 
 (in-package #:ames.maxima)
 
+(defvar *quick-verdicts* t
+  "True when DECIDE first tries QUICK-VERDICT; NIL takes the long way only (for tests
+that compare the two).")
+
 (defvar *quick-ranges* nil
   "The bridge and assumption frames QUICK-RANGES last saw, consed to the subject ranges
 they gave.")
@@ -75,7 +79,10 @@ X may be undefined somewhere."
 (defun quick-verdict (bridge relation)
   "The truth of the relation RELATION (= /= < > <= >=) under the facts in force by the
 rules of signs alone (QUICK-SIGNS of the difference of its sides): :TRUE, :FALSE, or
-:UNKNOWN when they do not settle it. Asks Maxima nothing."
+:UNKNOWN when they do not settle it (and always when *QUICK-VERDICTS* is NIL). Asks
+Maxima nothing."
+  (unless *quick-verdicts*
+    (return-from quick-verdict :unknown))
   (let* ((prover (make-prover bridge (quick-ranges bridge)))
          (lhs (quick-signs prover (relation-lhs relation)))
          (rhs (and lhs (quick-signs prover (relation-rhs relation))))
