@@ -148,7 +148,11 @@ signs of the difference of its sides, after clearing a square root, equivalence 
 and /=), what a physicist knows (truth.lisp) and the order substitution. A relation
 with a product of square roots of negative radicands, which Maxima's is() and sign()
 would take for real (or imaginary) square roots, is first decided in real terms by
-DECIDE-WITH-IMAGINARY-RADICANDS."
+DECIDE-WITH-IMAGINARY-RADICANDS. The rules of signs over the subjects' ranges answer
+first where they settle it (QUICK-VERDICT, no Maxima)."
+  (let ((quick (quick-verdict bridge relation)))
+    (unless (eq quick :unknown)
+      (return-from decide-relation quick)))
   (when (imaginary-radicands bridge relation)
     (let ((verdict (decide-with-imaginary-radicands bridge relation)))
       (unless (eq verdict :fall-back)

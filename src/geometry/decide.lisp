@@ -223,13 +223,14 @@ decide it."
 
 (defun fact-known-p (decider relation)
   "True when RELATION is known to hold (by arithmetic or the bridge); NIL when it fails
-or cannot be decided. Never signals: for optional simplifications only."
+or cannot be decided. Never signals: for optional simplifications only. (The bridge's
+HOLDS-P: a relation seen to fail at an admissible point costs no round trip.)"
   (let* ((operator (car relation))
          (difference (e- (relation-lhs relation) (relation-rhs relation)))
-         (sign (fast-sign difference)))
-    (if sign
-        (sign-satisfies-p operator sign)
-        (eq (bridge-truth decider (list operator difference 0)) :true))))
+         (sign (fast-sign difference))
+         (bridge (decider-bridge decider)))
+    (cond (sign (sign-satisfies-p operator sign))
+          (bridge (ames.maxima:holds-p bridge (list operator difference 0))))))
 
 (defun positive-p (decider x) "X > 0." (fact-holds-p decider (list '> x 0)))
 (defun negative-p (decider x) "X < 0." (fact-holds-p decider (list '< x 0)))

@@ -240,9 +240,27 @@ Signals MAXIMA-PROCESS-DIED when Maxima cannot be started."
 
 ;;; Requests
 
+(defvar *assumption-ids* (make-cache)
+  "The facts in force of every scope seen (lists of the frames' Maxima facts), each to a
+number of its own: two scopes with the same facts have the same number. Never emptied,
+so a number always stands for the same facts.")
+
+(defvar *assumption-key-memo* nil
+  "(BRIDGE FRAMES . NUMBER): the last ASSUMPTION-KEY given, and for which frames.")
+
 (defun assumption-key (bridge)
-  "What the answer to a request may depend on besides the request: the facts in force."
-  (mapcar #'assumption-frame-maxima-facts (bridge-frames bridge)))
+  "What the answer to a request may depend on besides the request: the facts in force,
+as the number *ASSUMPTION-IDS* gives them (the same facts, the same number), so that a
+cache key holds the facts without being hashed and compared over all of them each time."
+  (let ((frames (bridge-frames bridge))
+        (memo *assumption-key-memo*))
+    (if (and memo (eq (first memo) bridge) (eq (second memo) frames))
+        (cddr memo)
+        (let* ((facts (mapcar #'assumption-frame-maxima-facts frames))
+               (id (or (gethash facts *assumption-ids*)
+                       (setf (gethash facts *assumption-ids*) (hash-table-count *assumption-ids*)))))
+          (setf *assumption-key-memo* (list* bridge frames id))
+          id))))
 
 (defun unmangle-text (bridge text)
   "TEXT (printed by Maxima) with each mangled name replaced by the AMES name it stands for."

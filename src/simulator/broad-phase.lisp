@@ -67,9 +67,15 @@ expressions the broad phase evaluates (positions and bounds) is below 1e-12.")
 (defun cheap-sign (reach expression)
   "The sign of EXPRESSION for every admissible parameter value, by exact arithmetic (a
 constant evaluated in floating point only beyond *FLOAT-SIGN-MARGIN*) or the rules of
-signs: 1, -1, 0, :NONNEGATIVE, :NONPOSITIVE or :UNKNOWN. Never asks Maxima."
+signs, as written or after its like terms cancel (EXPANDED-SIGN): 1, -1, 0,
+:NONNEGATIVE, :NONPOSITIVE or :UNKNOWN. Never asks Maxima."
   (or (ames.algebra:constant-sign expression *float-sign-margin*)
-      (sign-algebra (reach-signs-of-parameters reach) expression)))
+      (let ((sign (sign-algebra (reach-signs-of-parameters reach) expression)))
+        (if (member sign '(1 -1 0))
+            sign
+            ;; like terms cancelled first (polynomial-signs.lisp)
+            (let ((expanded (expanded-sign (reach-signs-of-parameters reach) expression)))
+              (if (eq expanded :unknown) sign expanded))))))
 
 ;;; Each body's coordinates over the state
 

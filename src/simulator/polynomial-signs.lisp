@@ -1,0 +1,108 @@
+;;;; src/simulator/polynomial-signs.lisp -- the sign of a polynomial in the parameters after its like terms cancel.
+;;;;
+;;;; The broad phase (broad-phase.lisp) compares bodies' coordinates with the bounds of a
+;;;; contact's locus: (w1 + w2 + w3) - w1 - (w2 + w3/2) is w3/2, of the sign of w3, but the
+;;;; rules of signs applied to the expression as written see a positive sum minus a
+;;;; positive sum and say nothing. EXPANDED-SIGN first expands the expression into a sum
+;;;; of monomials with exact rational coefficients (like terms cancelled), then applies the
+;;;; rules of signs to the monomials: an exact rewriting followed by a sound rule, so it
+;;;; answers only what is proven. An expression with anything but sums, differences,
+;;;; products, integer powers and division by numbers, or one that expands to more than
+;;;; *LARGEST-EXPANSION* monomials, is left :UNKNOWN. Never asks Maxima.
+
+(in-package #:ames.simulator)
+
+(defparameter *largest-expansion* 400
+  "EXPANDED-MONOMIALS gives up on an expression with more monomials than this.")
+
+(defun monomial-product (a b)
+  "The product of the monomials A and B (sorted alists symbol -> positive exponent)."
+  (let ((result (copy-alist a)))
+    (dolist (factor b)
+      (let ((entry (assoc (car factor) result)))
+        (if entry
+            (setf result (substitute (cons (car entry) (+ (cdr entry) (cdr factor))) entry result))
+            (push factor result))))
+    (sort result #'string< :key (lambda (factor) (symbol-name (car factor))))))
+
+(defun polynomial-sum (a b)
+  "The sum of the polynomials A and B (alists monomial -> nonzero rational), like terms
+cancelled."
+  (let ((table (make-hash-table :test #'equal)))
+    (dolist (term (append a b))
+      (incf (gethash (car term) table 0) (cdr term)))
+    (let ((result '()))
+      (maphash (lambda (monomial coefficient)
+                 (unless (zerop coefficient) (push (cons monomial coefficient) result)))
+               table)
+      result)))
+
+(defun polynomial-scaled (a k)
+  "The polynomial A times the rational K."
+  (if (zerop k) '() (mapcar (lambda (term) (cons (car term) (* k (cdr term)))) a)))
+
+(defun polynomial-product (a b)
+  "The product of the polynomials A and B."
+  (when (> (* (length a) (length b)) *largest-expansion*)
+    (throw 'too-large nil))
+  (let ((result '()))
+    (dolist (x a result)
+      (setf result (polynomial-sum result
+                                   (mapcar (lambda (y) (cons (monomial-product (car x) (car y))
+                                                             (* (cdr x) (cdr y))))
+                                           b))))))
+
+(defun expanded-monomials (expression)
+  "EXPRESSION expanded into an alist monomial -> nonzero rational coefficient (a
+monomial a sorted alist symbol -> exponent, NIL for the constant), or :UNKNOWN when it
+is not a polynomial with rational coefficients in symbols or expands too far."
+  (labels ((expand (x)
+             (cond ((rationalp x) (if (zerop x) '() (list (cons '() x))))
+                   ((and (symbolp x) (variable-symbol-p x)) (list (cons (list (cons x 1)) 1)))
+                   ((not (consp x)) (throw 'too-large nil))
+                   (t (let ((arguments (rest x)))
+                        (case (first x)
+                          (+ (reduce #'polynomial-sum (mapcar #'expand arguments) :initial-value '()))
+                          (- (if (rest arguments)
+                                 (polynomial-sum (expand (first arguments))
+                                                 (polynomial-scaled
+                                                  (reduce #'polynomial-sum (mapcar #'expand (rest arguments))
+                                                          :initial-value '())
+                                                  -1))
+                                 (polynomial-scaled (expand (first arguments)) -1)))
+                          (* (reduce #'polynomial-product (mapcar #'expand arguments)
+                                     :initial-value (list (cons '() 1))))
+                          (/ (if (and (rest arguments) (every #'rationalp (rest arguments))
+                                      (notany #'zerop (rest arguments)))
+                                 (polynomial-scaled (expand (first arguments))
+                                                    (/ 1 (reduce #'* (rest arguments))))
+                                 (throw 'too-large nil)))
+                          (expt (let ((power (second arguments)))
+                                  (if (and (integerp power) (<= 0 power 8))
+                                      (let ((base (expand (first arguments)))
+                                            (result (list (cons '() 1))))
+                                        (dotimes (i power result)
+                                          (setf result (polynomial-product result base))))
+                                      (throw 'too-large nil))))
+                          (t (throw 'too-large nil))))))))
+    (let ((result (catch 'too-large (list :done (expand expression)))))
+      (if (and result (<= (length (second result)) *largest-expansion*))
+          (second result)
+          :unknown))))
+
+(defun expanded-sign (signs expression)
+  "The sign of EXPRESSION for every admissible value of the parameters, whose signs
+SIGNS gives (see SIGN-ALGEBRA), from its expanded monomials: 1, -1, 0, :NONNEGATIVE,
+:NONPOSITIVE or :UNKNOWN."
+  (let ((monomials (expanded-monomials expression)))
+    (if (eq monomials :unknown)
+        :unknown
+        (reduce #'sign-sum
+                (mapcar (lambda (term)
+                          (reduce #'sign-product
+                                  (mapcar (lambda (factor)
+                                            (sign-algebra signs `(expt ,(car factor) ,(cdr factor))))
+                                          (car term))
+                                  :initial-value (signum (cdr term))))
+                        monomials)
+                :initial-value 0))))
