@@ -145,6 +145,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "oscillation")
                  (:file "numeric")
                  (:file "earliest")
+                 (:file "numeric-roots")
                  (:file "states")
                  (:file "impacts")
                  (:file "simulate")

@@ -301,7 +301,7 @@ NEVER the events of the conditions proven never to fire in this state. Condition
 a :NUMERIC group are watched by a numeric integration (under parameter values) up to
 the earliest of the others. A contact the broad phase proves out of reach (see
 broad-phase.lisp) never fires."
-  (let ((candidates '()) (unknown '()) (numeric '()) (never '())
+  (let ((candidates '()) (unknown '()) (numeric '()) (never '()) (rooted '())
         (reach (make-reach run solved groups)))
     (dolist (condition (ames.engine:model-termination-conditions (run-model run)))
       (let* ((relation (ames.engine:termination-condition-relation condition))
@@ -319,12 +319,17 @@ broad-phase.lisp) never fires."
                    (path-candidate run solved (first involved) condition))
                   (t (values :unknown `(:no-closed-form ,(condition-event condition nil)))))
           (cond ((candidate-p result) (push result candidates))
+                ((and (eq result :unknown) (numeric-root-fallback-p run fact))
+                 (push (cons condition fact) rooted))
                 ((eq result :unknown)
                  (push (list* fact (condition-event condition nil)
                               (and not-before (list not-before)))
                        unknown))
                 ((not (member condition numeric))
                  (push (condition-event condition nil) never))))))
+    ;; roots with no closed form, searched with numbers (numeric-roots.lisp)
+    (multiple-value-setq (candidates unknown)
+      (add-numeric-roots run solved groups (reverse rooted) candidates unknown))
     (when (some (lambda (g) (eq (group-kind g) :numeric)) groups)
       ;; the scenario's time limit bounds the integration too
       (let* ((bounds (append candidates (let ((limit (time-limit-candidate run)))
