@@ -229,12 +229,30 @@ fire before it are left out; with no earlier candidate, those not found stay UNK
 
 ;;; The end of a state ended by such a root
 
+(defun closed-form-in-time-p (groups)
+  "True when every group of GROUPS has a closed form in TAU."
+  (every (lambda (group) (member (group-kind group) '(:constant :linear))) groups))
+
 (defun numeric-root-end-p (groups fired)
   "True when the FIRED candidates were found by the numeric root search (numeric times)
 and every group has a closed form in TAU."
   (and fired
        (every (lambda (candidate) (floatp (candidate-time candidate))) fired)
-       (every (lambda (group) (member (group-kind group) '(:constant :linear))) groups)))
+       (closed-form-in-time-p groups)))
+
+(defun end-values (run groups fired what)
+  "Every body's position (WHAT :POS) or velocity (:VEL) at the end of the state: see
+FINAL-VALUES; at a numeric time (NUMERIC-ROOT-END-P), or when the closed forms there are
+too large for Maxima to simplify within a request while every parameter has a number,
+their numbers (NUMERIC-ROOT-FINAL-VALUES)."
+  (if (numeric-root-end-p groups fired)
+      (numeric-root-final-values run groups fired what)
+      (handler-case (final-values run groups fired what)
+        ((or ames.maxima:maxima-timeout ames.maxima:maxima-output-overflow) (condition)
+          (if (and (run-numbers-known-p run) (closed-form-in-time-p groups)
+                   (numeric-time run (candidate-time (first fired))))
+              (numeric-root-final-values run groups fired what)
+              (error condition))))))
 
 (defun flat-gap-normal (run contact positions)
   "For CONTACT, whose gap is linear in the relative position (a face), the gap at
@@ -278,7 +296,7 @@ bodies exactly in contact."
   "Every body's position (WHAT :POS) or velocity (:VEL) at the numeric time of FIRED:
 its closed form evaluated there, carried over as exact rationals (see RATIONAL-OF), the
 positions put exactly on the contacts reached (SNAP-ONTO-CONTACTS)."
-  (let* ((time (coerce (candidate-time (first fired)) 'double-float))
+  (let* ((time (coerce (numeric-time run (candidate-time (first fired))) 'double-float))
          (bindings (numeric-bindings run))
          (values (mapcar (lambda (body)
                            (list body

@@ -60,9 +60,12 @@ assumptions do not decide; else (:EARLIEST-ROOT-OF (= G 0) :CANDIDATES ...)."
                      (loop for c in (list c2 c1 c0 discriminant)
                            collect `(> ,c 0) collect `(< ,c 0))
                      :key (lambda (fact) (decide run fact)))))
+        ;; no candidates for a trigonometric G: Maxima's solve gives principal roots
+        ;; at best, and can take longer than a request may
         `(:earliest-root-of (= ,g 0)
-          :candidates ,(nth-value 1 (ames.maxima:earliest-root (run-bridge run) g 'tau
-                                                               :after after :strictly t))))))
+          :candidates ,(and (not (trigonometric-in-time-p g))
+                            (nth-value 1 (ames.maxima:earliest-root (run-bridge run) g 'tau
+                                                                    :after after :strictly t)))))))
 
 (defun first-time-negative (run g)
   "The earliest time TAU > 0 from which G(TAU) < 0 (G a polynomial in TAU or a constant,
