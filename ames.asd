@@ -248,6 +248,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "friction-scenarios")
                (:file "springs-ropes-gravitation")
                (:file "failure-classes")
+               (:file "refusals")
                (:file "witness")
                (:file "simulator-fuzz")
                (:file "truth-scenarios")
