@@ -205,7 +205,9 @@ RATE is the gap's rate then (negative: an impact)."
                         (return-from meeting-time
                           (if (roots-outside-extent-p run gap after extent)
                               (values :never)
-                              (values :unknown (undecided-sign-fact run gap after)))))
+                              ;; the roots up to AFTER were no meeting: not before it
+                              (values :unknown (undecided-sign-fact run gap after)
+                                      (and (not (eql after 0)) after)))))
                        (t
                         (let* ((root (tidy run root :full))
                                (rate (funcall rate-of root))
