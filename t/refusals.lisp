@@ -160,3 +160,46 @@ modelled (a body caught at a pulley), not with an answer."
         (is (= a 1809/884))
         (is-same bridge "the time the weight reaches the pulley"
                  (ames:state-duration (first states)) `(sqrt ,(/ (* 2 1/2) a)))))))
+
+(defparameter *disc-onto-block-corner*
+  "(scenario disc-onto-block-corner \"A disc falls onto the top corner of a block.\"
+     (gravity 10)
+     (body block :fixed t :shape (polygon (0 0) (2 0) (2 1) (0 1)))
+     (body disc :mass 1 :position (5/2 3) :velocity (0 0) :shape (circle 1))
+     (simulate :states 1))"
+  "A unit disc whose centre is 1/2 to the right of a block's right side falls from rest.")
+
+(test disc-falls-onto-a-block-corner
+  "The disc's rim meets the block's top corner (2, 1) when (1/2)^2 + (2 - g t^2/2)^2 = 1,
+the centre then sqrt(3)/2 above the corner: t = sqrt((4 - sqrt 3)/10), y = 1 + sqrt(3)/2,
+v = -g t. The gap to the bottom corner (2, 0), a quartic in t, has roots Maxima writes
+in Cardano's form; its sign() refused them as imaginary ('sign: argument cannot be
+imaginary'), which stopped the run."
+  (with-fixture simulator-bridge ()
+    (let* ((history (ames::simulate (scenario-of-text *disc-onto-block-corner*) :bridge bridge))
+           (state (first (ames:history-states history)))
+           (g 10) (time '(sqrt (/ (- 4 (sqrt 3)) 10))))
+      (is (eq :collision (first (ames:state-end-event state))))
+      (is-same bridge "the time the rim meets the corner" (ames:state-duration state) time)
+      (is-same-vector bridge "the disc's centre then"
+                      (position-of (ames:state-final-positions state) "DISC")
+                      '(5/2 (+ 1 (/ (sqrt 3) 2))))
+      (is-same-vector bridge "the disc's velocity then"
+                      (position-of (ames:state-final-velocities state) "DISC")
+                      `(0 (- (* ,g ,time)))))))
+
+(defun substitute-string (text old new)
+  "TEXT with its first OLD replaced by NEW."
+  (let ((at (search old text)))
+    (assert at)
+    (concatenate 'string (subseq text 0 at) new (subseq text (+ at (length old))))))
+
+(test weight-into-its-pulley-at-the-state-limit-answers
+  "With one state allowed, the run that ends where the weight reaches its pulley answers
+(the next state, not modelled, is not needed): the state lasts sqrt(884/1809)."
+  (with-fixture simulator-bridge ()
+    (let* ((text (substitute-string *weight-into-pulley* "(simulate :states 2)" "(simulate :states 1)"))
+           (history (ames::simulate (scenario-of-text text) :bridge bridge)))
+      (is (eq :state-limit (ames:history-outcome history)))
+      (is-same bridge "the time the weight reaches the pulley"
+               (ames:state-duration (first (ames:history-states history))) '(sqrt 884/1809)))))
