@@ -187,6 +187,11 @@ that a fix shows up (then move the file to *WITNESSED-FIXES*). None is known now
 the start of the last simulated impact's state plus its duration (0.903 s for the
 bouncing ball), not the accumulation time 3 sqrt(2 h / g) = 1.3546 s that the closed
 form :start gives. Fixed: a state's start number is its start formula's value.")
+    ("refused-raised-ramp-quotient-by-zero.lisp"
+     "A particle sliding off a raised ramp was refused ('Maxima failed: quotient by zero'):
+a velocity component at the ramp's end was a zero written with nested radicals, on which
+Maxima's factor() divides by zero. Fixed: a simplification candidate Maxima fails on is
+left out.")
     ("refused-ramp-foot-impact.lisp"
      "A particle sliding off the foot of a ramp onto the floor with e > 0 was refused ('no
 set of contacts and modes is consistent'). Fixed: a face a non-concave corner excuses is

@@ -52,10 +52,25 @@ when FORM has no sin, cos or tan, for which trigsimp gives the same form, slower
 under the current assumptions: the intersection of what sign() says of its forms (see
 SIGN-REQUESTS). One round trip."
   (let* ((count (length (sign-requests 0)))
-         (answers (request-list bridge (mapcan #'sign-requests forms) :datum datum)))
+         (requests (mapcan #'sign-requests forms))
+         (answers (let ((answers (imaginary-as-unknown
+                                  (lambda () (request-list bridge requests :datum datum)))))
+                    ;; one form refused as imaginary: none of them decided
+                    (if (listp answers) answers (mapcar (constantly answers) requests)))))
     (loop for rest on answers by (lambda (list) (nthcdr count list))
           collect (reduce #'narrowed-signs (subseq rest 0 count)
                           :initial-value (list :positive :negative :zero)))))
+
+(defun imaginary-as-unknown (function)
+  "FUNCTION's answer to a sign request, or Maxima's $PNZ (any sign) when Maxima's sign()
+refuses the form as imaginary (\"sign: argument cannot be imaginary\": a root written
+with the cube root of a complex number, Cardano's form of real roots): undecided, not
+an error."
+  (handler-case (funcall function)
+    (maxima-error (condition)
+      (if (search "imaginary" (or (maxima-error-message condition) ""))
+          '$pnz
+          (error condition)))))
 
 (defun form-signs (bridge form &key datum (enough (constantly nil)))
   "The signs the real Maxima FORM may have under the current assumptions: what the
@@ -65,7 +80,8 @@ ENOUGH, a predicate on the signs found so far, is true; further answers could on
 narrow the signs (an empty intersection would mean contradictory answers)."
   (let ((signs (list :positive :negative :zero)))
     (dolist (request (sign-requests form) signs)
-      (setf signs (narrowed-signs signs (maxima-request bridge request :datum datum)))
+      (setf signs (narrowed-signs signs (imaginary-as-unknown
+                                         (lambda () (maxima-request bridge request :datum datum)))))
       (when (or (null (rest signs)) (funcall enough signs))
         (return signs)))))
 

@@ -226,4 +226,40 @@ rope and pulley clauses)."
   (:impulse :rope-impulse :names 1 :words "impulse of the jerk along ~A")
   (:event :slackens :words "~A goes slack")
   (:event :tightens :words "~A becomes taut")
+  (:event :rope-piece-closes :words "~A closes up between ~A and ~A (a body reaches its pulley)")
   (:quantity :tension :force :tension))
+
+;;; A taut rope's piece closing up: a body reaching its pulley
+
+(defun caught-at-pulley (situation segment)
+  "Signal UNMODELLED-SITUATION: SEGMENT, a piece of a taut rope, has closed up (the body
+at one end reached the point at the other, its pulley). What follows (the body caught
+at the pulley, the rope jerked) is not modelled."
+  (let ((entity (entity-named situation segment)))
+    (multiple-value-bind (a b) (segment-points situation segment)
+      (error 'unmodelled-situation
+             :datum segment
+             :detail (format nil "The piece of rope ~(~A~) between ~(~A~) and ~(~A~) closes up: a body reaches the pulley its rope runs over (or the piece turns past a right angle); a body caught at a pulley is not modelled."
+                             (entity-property entity :rope) (point-body a) (point-body b))))))
+
+(register-template *mechanics* 'rope-piece-caught #'caught-at-pulley
+                   :documentation "Signals UNMODELLED-SITUATION: a taut rope's piece closed up.")
+
+(register-template *mechanics* 'rope-piece-along
+                   (lambda (situation segment)
+                     (multiple-value-bind (a b) (segment-points situation segment)
+                       `(aligned-span-length ,a ,b)))
+                   :documentation "A rope piece's length along its starting direction, (B - A).u0.")
+
+(defcomponent rope-piece-closing (:knowledge-base *mechanics*)
+  "A taut rope's straight piece shortens to nothing when the body at one end reaches the
+point at the other (a weight pulled up into its pulley). Its length is watched along its
+starting direction, (B - A).u0, which changes sign there (the distance |B - A| only
+touches zero): the event (:rope-piece-closes ROPE A B) ends the state, and the next
+state, which would need the body caught at the pulley, is not modelled (an honest stop,
+not the body passing through the pulley)."
+  (:arguments (?segment :entity rope-segment
+                        :where (:rope ?rope :from (?body1 ?_) :to (?body2 ?_) :within-one-body nil)))
+  (:activation (:believes (taut ?rope)) (<= (rope-piece-along ?segment) 0)
+               (:event (:rope-piece-closes ?rope ?body1 ?body2)))
+  (:equations (= (rope-piece-caught ?segment) 0)))

@@ -175,6 +175,21 @@ coefficients free of VAR and its denominator is free of VAR; false otherwise."
 again; ARGUMENT (already a value) is quoted, so that it is not evaluated twice."
   (meval (list (list function) (list '(mquote) argument))))
 
+(defun ames-call-or-nil (function argument)
+  "AMES-CALL's FUNCTION(ARGUMENT), or NIL when Maxima fails on it (factor(r) divides by
+zero when r is a zero written with nested radicals: `quotient' by `zero'), its
+bindings undone as AMES-EVALUATE undoes a failed request's."
+  (let ((saved (cons bindlist loclist)))
+    (handler-case (rat-error-to-merror (ames-call function argument))
+      (maxima-$error () (errlfun1 saved) nil))))
+
+(defun ames-big-integer-p (form)
+  "True when FORM holds an integer of more than 18 digits (factor() would factor it into
+primes, which can take longer than a request may)."
+  (if (atom form)
+      (and (integerp form) (> (abs form) 1000000000000000000))
+      (some #'ames-big-integer-p (cdr form))))
+
 (defun ames-mentions-head-p (form heads)
   "True when the Maxima FORM contains an operator form whose head is one of HEADS."
   (and (consp form)
@@ -220,12 +235,15 @@ radcan(EXPR) is left out; radcan(trigsimp(EXPR)) needs both (a square root whose
 argument is a square once sin^2 + cos^2 = 1 is used)."
   (let* ((ratsimped (ames-call '$ratsimp expr))
          (trigsimped (and trigonometric ($ames_trigsimp expr))))
+    ;; factor and radcan, which only offer a smaller form, are left out where they fail
     (cons '(mlist simp)
-          (append (list ratsimped)
-                  (and trigonometric (list trigsimped (ames-call '$ratsimp trigsimped)))
-                  (list (ames-call '$factor ratsimped))
-                  (and radicals (list (ames-call '$radcan expr)))
-                  (and radicals trigonometric (list (ames-call '$radcan trigsimped)))))))
+          (remove nil
+                  (append (list ratsimped)
+                          (and trigonometric (list trigsimped (ames-call '$ratsimp trigsimped)))
+                          (and (not (ames-big-integer-p ratsimped))
+                               (list (ames-call-or-nil '$factor ratsimped)))
+                          (and radicals (list (ames-call-or-nil '$radcan expr)))
+                          (and radicals trigonometric (list (ames-call-or-nil '$radcan trigsimped))))))))
 
 ;;; Presentation (src/maxima-bridge/presentation.lisp): the forms a textbook writes, and
 ;;; Maxima's tex() of a form exactly as the bridge structured it.
@@ -240,13 +258,14 @@ argument is a square once sin^2 + cos^2 = 1 is used)."
 algebra: [r, factor(r), scanmap(factorsum, factor(r)), multthru(r)] for r = ratsimp(EXPR)
 (multthru: a quotient of a sum split into a sum of quotients) and, when
 TRIGONOMETRIC is true, also for r = ratsimp(trigsimp(EXPR)) (sin^2 + cos^2 = 1, tan as
-sin/cos), in that order."
+sin/cos), in that order. A base with a big integer (AMES-BIG-INTEGER-P) stands for
+its factor(r) too."
   (let ((bases (cons (ames-call '$ratsimp expr)
                      (and trigonometric
                           (list (ames-call '$ratsimp ($ames_trigsimp expr)))))))
     (cons '(mlist simp)
           (loop for base in bases
-                for factored = (ames-call '$factor base)
+                for factored = (if (ames-big-integer-p base) base (ames-call '$factor base))
                 append (list base factored (ames-scanmap-factorsum factored)
                              (ames-call '$multthru base))))))
 

@@ -77,7 +77,7 @@ or below a threshold) before a comparison of two times that it would settle."
 (defun numeric-time (run time)
   "TIME as a number under the run's parameter values, or NIL."
   (let ((values (run-values run)))
-    (when values
+    (when (run-numbers-known-p run)
       (if (closed-form-time-p time)
           (numeric-or-nil (run-bridge run) time values)
           (numeric-travel-time (run-bridge run) (getf (rest time) :speed-squared)

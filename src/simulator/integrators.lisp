@@ -39,10 +39,26 @@ and SPEED-SQUARED, the energy integral E(s)."
           (when (and (member from free) (member on free) (not (eq from on)))
             (pushnew (list from on) edges :test #'equal)))))))
 
-(defun body-groups (run)
-  "The free bodies split into GROUPs of bodies that act on one another, in body order."
+(defun coupling-edges (run solved)
+  "Pairs (A B) of free bodies where A's accelerations in SOLVED depend on B's position or
+velocity: bodies coupled with no force between them (a rope over a pulley of a fixed body
+pulls each end from the pulley, yet its tension depends on both ends' motion)."
+  (let ((free (free-body-names run)) (edges '()))
+    (dolist (a free edges)
+      (dolist (axis '(:x :y))
+        (let ((rate (cdr (assoc `(ames.kb:vel ,a ,axis) (solved-model-rates solved) :test #'equal))))
+          (dolist (term (solved-model-state solved))
+            (when (and (member (first term) '(ames.kb:pos ames.kb:vel))
+                       (not (eq (second term) a))
+                       (member (second term) free)
+                       (not (free-of-p term rate)))
+              (pushnew (list a (second term)) edges :test #'equal))))))))
+
+(defun body-groups (run &optional solved)
+  "The free bodies split into GROUPs of bodies that act on one another (or, given the
+SOLVED model, whose accelerations depend on one another's motion), in body order."
   (let ((groups (mapcar #'list (free-body-names run))))
-    (dolist (edge (interaction-edges run))
+    (dolist (edge (append (interaction-edges run) (and solved (coupling-edges run solved))))
       (let ((a (find (first edge) groups :test #'member))
             (b (find (second edge) groups :test #'member)))
         (unless (eq a b)
@@ -194,7 +210,7 @@ of motion. Signals AMBIGUOUS-TRANSITION when the direction is not decided."
 A :LINEAR group goes to the bridge's linear ODE solver when it has one, else it is
 integrated numerically like a :NUMERIC group (when the termination conditions are
 searched, under parameter values: see numeric.lisp)."
-  (let ((groups (body-groups run)))
+  (let ((groups (body-groups run solved)))
     (dolist (group groups groups)
       (ecase (classify-group run solved group)
         (:constant (integrate-constant run solved group))

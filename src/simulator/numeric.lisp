@@ -147,9 +147,16 @@ event: the steps grow without bound)."
 
 ;;; The numeric groups of a state
 
+(defun run-numbers-known-p (run)
+  "True when every parameter of the run has a number: values were given (--set,
+--numeric), or the scenario has no parameters at all (its values are written in it)."
+  (or (run-values run) (null (scenario-parameters (run-scenario run)))))
+
 (defun numeric-bindings (run)
-  "The run's parameter values as an alist parameter -> double, or signal NO-CLOSED-FORM."
-  (or (mapcar (lambda (entry) (cons (car entry) (coerce (cdr entry) 'double-float)))
+  "The run's parameter values as an alist parameter -> double (none for a scenario
+without parameters), or signal NO-CLOSED-FORM when parameters have no values."
+  (if (run-numbers-known-p run)
+      (mapcar (lambda (entry) (cons (car entry) (coerce (cdr entry) 'double-float)))
               (run-values run))
       (error 'no-closed-form
              :datum (free-body-names run)

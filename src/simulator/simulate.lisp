@@ -169,6 +169,11 @@ noted in the history) for the rest of the run."
                     ;; the next state starts at a time without closed form: fine, its
                     ;; start is reported as such
                     (enter-next-state run state fired :check-incremental check-incremental))
+                   ((>= (1+ index) limit)
+                    ;; the last state allowed: its end (the impact) is carried over, but a
+                    ;; next state the knowledge base has no model for is not needed
+                    (handler-case (enter-next-state run state fired :check-incremental check-incremental)
+                      (ames.kb:unmodelled-situation () nil)))
                    (t (enter-next-state run state fired :check-incremental check-incremental))))))
 
 (defun simulate (scenario &key (bridge (current-bridge)) parameter-values

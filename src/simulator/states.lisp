@@ -306,8 +306,8 @@ known."
           (let ((time (candidate-time (first fired))))
             (setf (state-duration state) time
                   (state-end-event state) (end-event-of fired)
-                  (state-final-positions state) (final-values run groups fired :pos)
-                  (state-final-velocities state) (final-values run groups fired :vel))
+                  (state-final-positions state) (end-values run groups fired :pos)
+                  (state-final-velocities state) (end-values run groups fired :vel))
             (when (rest fired)
               (setf (state-simultaneous-events state) (mapcar #'candidate-event fired)))
             (let ((numeric (remove nil (mapcar #'group-samples groups))))

@@ -60,9 +60,12 @@ assumptions do not decide; else (:EARLIEST-ROOT-OF (= G 0) :CANDIDATES ...)."
                      (loop for c in (list c2 c1 c0 discriminant)
                            collect `(> ,c 0) collect `(< ,c 0))
                      :key (lambda (fact) (decide run fact)))))
+        ;; no candidates for a trigonometric G: Maxima's solve gives principal roots
+        ;; at best, and can take longer than a request may
         `(:earliest-root-of (= ,g 0)
-          :candidates ,(nth-value 1 (ames.algebra:earliest-root (run-bridge run) g 'tau
-                                                               :after after :strictly t))))))
+          :candidates ,(and (not (trigonometric-in-time-p g))
+                            (nth-value 1 (ames.algebra:earliest-root (run-bridge run) g 'tau
+                                                                     :after after :strictly t)))))))
 
 (defun first-time-negative (run g)
   "The earliest time TAU > 0 from which G(TAU) < 0 (G a polynomial in TAU or a constant,
@@ -202,7 +205,9 @@ RATE is the gap's rate then (negative: an impact)."
                         (return-from meeting-time
                           (if (roots-outside-extent-p run gap after extent)
                               (values :never)
-                              (values :unknown (undecided-sign-fact run gap after)))))
+                              ;; the roots up to AFTER were no meeting: not before it
+                              (values :unknown (undecided-sign-fact run gap after)
+                                      (and (not (eql after 0)) after)))))
                        (t
                         (let* ((root (tidy run root :full))
                                (rate (funcall rate-of root))
@@ -301,7 +306,7 @@ NEVER the events of the conditions proven never to fire in this state. Condition
 a :NUMERIC group are watched by a numeric integration (under parameter values) up to
 the earliest of the others. A contact the broad phase proves out of reach (see
 broad-phase.lisp) never fires."
-  (let ((candidates '()) (unknown '()) (numeric '()) (never '())
+  (let ((candidates '()) (unknown '()) (numeric '()) (never '()) (rooted '())
         (reach (make-reach run solved groups)))
     (dolist (condition (ames.engine:model-termination-conditions (run-model run)))
       (let* ((relation (ames.engine:termination-condition-relation condition))
@@ -319,12 +324,17 @@ broad-phase.lisp) never fires."
                    (path-candidate run solved (first involved) condition))
                   (t (values :unknown `(:no-closed-form ,(condition-event condition nil)))))
           (cond ((candidate-p result) (push result candidates))
+                ((and (eq result :unknown) (numeric-root-fallback-p run fact))
+                 (push (cons condition fact) rooted))
                 ((eq result :unknown)
                  (push (list* fact (condition-event condition nil)
                               (and not-before (list not-before)))
                        unknown))
                 ((not (member condition numeric))
                  (push (condition-event condition nil) never))))))
+    ;; roots with no closed form, searched with numbers (numeric-roots.lisp)
+    (multiple-value-setq (candidates unknown)
+      (add-numeric-roots run solved groups (reverse rooted) candidates unknown))
     (when (some (lambda (g) (eq (group-kind g) :numeric)) groups)
       ;; the scenario's time limit bounds the integration too
       (let* ((bounds (append candidates (let ((limit (time-limit-candidate run)))

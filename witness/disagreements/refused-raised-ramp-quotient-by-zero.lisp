@@ -1,4 +1,4 @@
-;;;; refused-raised-ramp-quotient-by-zero.lisp -- AMES stops with "Maxima failed:
+;;;; refused-raised-ramp-quotient-by-zero.lisp -- (fixed: now agrees) AMES stopped with "Maxima failed:
 ;;;; `quotient' by `zero'" on a particle at rest on a raised ramp (slope rising 3/2 over 1,
 ;;;; foot 3 above the floor); the witness has it leave the ramp's end and land on the
 ;;;; floor. Found by make crosscheck (family raised-ramp, several seeds).
