@@ -189,9 +189,12 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
     :depends-on ("base" "scenario")
     :components ((:file "package")
                  (:file "model")
+                 (:file "model-curved")
                  (:file "driver")
                  (:file "compare")
-                 (:file "generate")))
+                 (:file "compare-curved")
+                 (:file "generate")
+                 (:file "generate-curved")))
    (:module "interface" :pathname "src/interface/" :serial t
     :depends-on ("report" "check" "witness")
     :components ((:file "package")

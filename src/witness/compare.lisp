@@ -22,6 +22,12 @@ rebound speed under its tolerance), not events.")
   "Relative tolerance (absolute below 1) where the witness used Moreau-Jean time stepping
 (friction): its step is 1e-4 s and the scheme is first order.")
 
+(defvar *curved-tolerance* 1d-6
+  "Relative tolerance (absolute below 1) where the witness has a contact with an arc or a
+circle: Lsodar finds a lift-off from an arc as a root of the contact force that the
+acceleration-level LCP computes, to about 3e-8 relative (the bodies' motions themselves to
+about 1e-11).")
+
 (defvar *accumulation-tolerance* 1d-5
   "Relative tolerance of the time where a Zeno sequence of impacts accumulates.")
 
@@ -62,11 +68,12 @@ the values set side by side: (STATE WHAT AMES WITNESS DIFFERENCE OK)."
     ((:collision :contact) (member witness-kind '(:collision :contact)))
     (:leaves (eq witness-kind :leaves))
     (:lift-off (member witness-kind '(:lift-off :leaves)))
+    (:turns (eq witness-kind :turns))
     ((:tightens :slackens :stops-sliding :starts-sliding) (eq witness-kind ames-kind))
     (t nil)))
 
 (defparameter +witnessed-events+
-  '(:collision :contact :leaves :lift-off :tightens :slackens :stops-sliding :starts-sliding)
+  '(:collision :contact :leaves :lift-off :tightens :slackens :stops-sliding :starts-sliding :turns)
   "The kinds of end events the witness reports.")
 
 (defun event-head (event)
@@ -283,9 +290,10 @@ long pause is Siconos's residue); the next state's start is compared to
   "Compare AMES's s-expression answer AMES for one scenario with the witness's answer
 WITNESS (see RUN-WITNESS), the scenario's parameter VALUES (for closed forms) and the
 witness's horizon T-END. Returns a COMPARISON."
-  (let ((*value-tolerance* (if (eq (getf witness :scheme) :moreau-jean)
-                               *first-order-tolerance*
-                               *value-tolerance*)))
+  (let ((*value-tolerance* (case (getf witness :scheme)
+                              (:moreau-jean *first-order-tolerance*)
+                              (:curved *curved-tolerance*) ; compare-curved.lisp
+                              (t *value-tolerance*))))
     (catch 'comparison
       (let ((walk (make-walk witness values t-end (witness-events witness))))
         (dolist (state (ames-path (getf ames :states)))
@@ -297,7 +305,9 @@ witness's horizon T-END. Returns a COMPARISON."
             (compare-number walk "start" start (walk-time walk) (walk-time-tolerance walk))
             (setf (walk-time-tolerance walk) *value-tolerance*)
             (when (eq event :none)
-              (compare-last-state walk state start)
+              (if (path-state-p state)  ; compare-curved.lisp
+                  (compare-path-state walk state start)
+                  (compare-last-state walk state start))
               (return))
             (compare-event-state walk state numeric event (and (realp duration) (+ start duration)))))
         (finish walk :agree)))))
