@@ -83,16 +83,20 @@ a grid of 4000, then golden sections about the best."
                    (if (< (distance c) (distance d)) (setf b d) (setf a c))))
         (/ (+ a b) 2)))))
 
-(defun path-range (state velocity-entry start-s elapsed values)
-  "Where to look for the arc length of a body on STATE's path after ELAPSED seconds:
-between a periodic state's turning points, else within twice the start speed's reach."
+(defun path-range (state velocity-entry start-s elapsed values point speed)
+  "Where to look for the arc length of a body on STATE's path at POINT with SPEED (the
+witness's) after ELAPSED seconds: between a periodic state's turning points, else about
+the start's arc length START-S within twice the reach of the larger of the start speed and
+SPEED (or, without START-S, about 0 within POINT's distance from the origin besides)."
   (let ((between (getf (getf state :periodic) :between)))
     (if between
         (let ((ends (sort (mapcar (lambda (x) (coerce (or (expression-value x values) 0) 'double-float)) between) #'<)))
           (list (- (first ends) 1d-6) (+ (second ends) 1d-6)))
-        (let* ((v (path-value (second velocity-entry) start-s values))
-               (reach (+ 1 (* 2 elapsed (if v (sqrt (+ (expt (first v) 2) (expt (second v) 2))) 10)))))
-          (list (- start-s reach) (+ start-s reach))))))
+        (let* ((v (and start-s (path-value (second velocity-entry) start-s values)))
+               (start-speed (if v (sqrt (+ (expt (first v) 2) (expt (second v) 2))) 0))
+               (reach (+ 1 (* 2 elapsed (max start-speed speed))
+                         (if start-s 0 (* 2 (sqrt (+ (expt (first point) 2) (expt (second point) 2))))))))
+          (list (- (or start-s 0) reach) (+ (or start-s 0) reach))))))
 
 (defun compare-sample (walk state start sample)
   "Set the witness's SAMPLE beside AMES's STATE (started at START) at the sample's time."
@@ -109,12 +113,13 @@ between a periodic state's turning points, else within twice the start speed's r
           for what = (format nil "~A at ~,4F s" name time)
           do (cond ((null entry) (finish walk :ames-wrong "AMES has no ~A" name))
                    ((on-path-p (second entry))
-                    (unless (and start-s (on-path-p (second ventry)))
-                      (finish walk :unsupported "~A's path has no start or velocity along it" name))
+                    (unless (on-path-p (second ventry))
+                      (finish walk :unsupported "~A's velocity is not given along its path" name))
                     (let* ((*arc-length* (or (path-symbol (second entry)) *arc-length*))
                            (form (second (second entry)))
                            (s (nearest-on-path form (list wx wy)
-                                               (path-range state ventry start-s elapsed values) values))
+                                               (path-range state ventry start-s elapsed values (list wx wy)
+                                                           (sqrt (+ (* wvx wvx) (* wvy wvy)))) values))
                            (p (path-value form s values))
                            (v (path-value (second (second ventry)) s values))
                            (sign (if back -1 1)))

@@ -221,7 +221,7 @@ state)."
   "A state that lasts forever: the witness has no more events before its horizon, and
 AMES's closed forms at the witness's end give its positions and velocities."
   (let ((late (find-if (lambda (e) (and (< (getf e :time) (- (walk-t-end walk) 1d-9))
-                                        (not (settling-p e))))
+                                        (not (settling-p e)) (not (turns-only-p e))))
                        (walk-events walk))))
     (when late
       (finish walk :ames-wrong "AMES has no more events; the witness has ~S at ~A"
@@ -250,9 +250,19 @@ kind it does not model, a run it cut short, or a contact reached with no approac
       (finish walk :unsupported "it ends with ~S, a contact reached with no approach speed (a double root the witness cannot locate)"
               (event-head event)))))
 
+(defun turns-only-p (event)
+  "True when the witness's EVENT is only turning points (compare-curved.lisp)."
+  (every (lambda (pair) (eq (first pair) :turns)) (getf event :pairs)))
+
 (defun compare-event-state (walk state numeric event end)
   "A state that ends with EVENT at END: the witness's next event is at that time, of that
-kind and bodies, with AMES's final positions and velocities just before it."
+kind and bodies, with AMES's final positions and velocities just before it. The
+witness's turning points before it are passed over unless EVENT is one: AMES splits a
+state at a turning point only where its motion is given along a path (a mass on a
+bumper turns within one state of closed forms in time)."
+  (unless (eq (event-kind event) :turns)
+    (loop while (and (walk-events walk) (turns-only-p (first (walk-events walk))))
+          do (pop (walk-events walk))))
   (check-witnessable walk event)
   (unless (walk-events walk)
     (finish walk :ames-wrong "AMES ends the state with ~S at ~A; the witness has no more events"
