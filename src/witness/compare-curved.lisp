@@ -16,6 +16,19 @@
 
 (in-package #:ames.witness)
 
+(defun canonical-expression (expression)
+  "EXPRESSION (read from AMES's answer in the scenario package) with each operator that
+is no Common Lisp symbol (ELLIPTIC-K, ELLIPTIC-F, ...) replaced by the base layer's
+symbol of that name, which EXPRESSION-VALUE knows."
+  (if (atom expression)
+      expression
+      (let ((operator (first expression)))
+        (cons (or (and (symbolp operator)
+                       (not (eq (symbol-package operator) (find-package '#:common-lisp)))
+                       (find-symbol (symbol-name operator) '#:ames.base))
+                  operator)
+              (mapcar #'canonical-expression (rest expression))))))
+
 (defun on-path-p (value)
   "True when VALUE (a position or velocity entry's vector) is given along a path."
   (and (consp value) (eq (first value) :on-path)))
@@ -26,9 +39,12 @@
        (or (getf state :periodic)
            (some (lambda (entry) (on-path-p (second entry))) (getf state :positions)))))
 
-(defun state-period (state)
-  "The numeric period AMES gives a periodic STATE, or NIL."
-  (let ((period (getf (getf state :numeric) :period)))
+(defun state-period (state values)
+  "The period of a periodic STATE: the number AMES printed beside it, or its closed form
+under VALUES; NIL when it has none."
+  (let ((period (or (getf (getf state :numeric) :period)
+                    (let ((form (getf (getf state :periodic) :period)))
+                      (and form (number-of form values))))))
     (and (realp period) (plusp period) period)))
 
 (defun witness-sample-times (ames values)
@@ -38,15 +54,15 @@ second of another state along a path; NIL otherwise."
   (let* ((state (car (last (ames-path (getf ames :states)))))
          (start (and state (getf (state-numbers state values) :start))))
     (when (and state (realp start) (path-state-p state))
-      (let ((span (or (state-period state) 1/2)))
+      (let ((span (or (state-period state values) 1/2)))
         (mapcar (lambda (f) (+ start (* f span))) '(1/10 1/4 2/5 3/5 4/5 19/20))))))
 
 (defun witness-horizon-extra (ames values)
   "How much longer than usual the witness runs for AMES's answer: a period and a bit
 for a periodic last state."
-  (declare (ignore values))
-  (let ((state (car (last (ames-path (getf ames :states))))))
-    (if (and state (state-period state)) (* 11/10 (state-period state)) 0)))
+  (let* ((state (car (last (ames-path (getf ames :states)))))
+         (period (and state (state-period state values))))
+    (if period (* 11/10 period) 0)))
 
 (defvar *arc-length* 'ames-scenario::s
   "The arc-length symbol of the on-path entry being compared (its :ARC-LENGTH).")
@@ -54,7 +70,8 @@ for a periodic last state."
 (defun path-value (form s values)
   "The double value of the path's FORM ((X Y) of *ARC-LENGTH*) at S, or NIL."
   (let ((bindings (acons *arc-length* s values)))
-    (let ((x (expression-value (first form) bindings)) (y (expression-value (second form) bindings)))
+    (let ((x (expression-value (canonical-expression (first form)) bindings))
+          (y (expression-value (canonical-expression (second form)) bindings)))
       (and x y (list (coerce x 'double-float) (coerce y 'double-float))))))
 
 (defun path-symbol (entry)
@@ -102,7 +119,7 @@ SPEED (or, without START-S, about 0 within POINT's distance from the origin besi
   "Set the witness's SAMPLE beside AMES's STATE (started at START) at the sample's time."
   (let* ((time (getf sample :time)) (elapsed (- time start))
          (values (walk-values walk))
-         (period (state-period state))
+         (period (state-period state values))
          (back (and period (> (mod elapsed period) (/ period 2))))
          (start-s (let ((from (getf (getf state :path-coordinates) :arc-length-from)))
                     (and from (expression-value from values)))))
@@ -136,7 +153,7 @@ SPEED (or, without START-S, about 0 within POINT's distance from the origin besi
   "A periodic STATE: the witness's first two turning points after START at START + P/2
 and START + P (those within its horizon); any other event, or a turn where AMES has no
 period, is a disagreement."
-  (let* ((period (state-period state))
+  (let* ((period (state-period state (walk-values walk)))
          (events (remove-if (lambda (e) (or (settling-p e) (< (getf e :time) (+ start 1d-9))
                                             (> (getf e :time) (- (walk-t-end walk) 1d-9))))
                             (walk-events walk))))

@@ -152,7 +152,8 @@ NIL when it has none."
 the cancellations of AMES's nested radicals do not count against it), EXPRESSION itself
 when it is a keyword (:FOREVER), NIL when it has none."
   (cond ((keywordp expression) expression)
-        (t (let ((value (or (precise-value expression bindings)
+        (t (let* ((expression (canonical-expression expression)) ; compare-curved.lisp
+                  (value (or (precise-value expression bindings)
                             (expression-value expression bindings))))
              (and value (coerce value 'double-float))))))
 
