@@ -365,6 +365,17 @@ class ArcDriver(Driver):
         self.record(t, [(":collision",) + c.names(self.bodies)], qs, vs, after, -rate)
         return t, [np.array(q) for q in qs], after, []
 
+    def lift_offs(self, opened, tp, vs):
+        """As the driver's, but a contact that an impact at TP left closed with no approach
+        speed and that the forces open at once (a block thrown back by the bumper it
+        pressed against the wall) never held: no lift-off, the impact is its end."""
+        last = self.events[-1] if self.events else None
+        if opened and last and abs(last["time"] - tp) <= 1e-9 and \
+                any(p[0] == ":collision" for p in last["pairs"]) and \
+                not (self.smooth_event and self.smooth_event[0] >= tp - 1e-12):
+            return
+        Driver.lift_offs(self, opened, tp, vs)
+
     def interpolate(self, t0, q0, v0, t1, q1, v1, t):
         q, v = hermite(t0, np.array(q0), np.array(v0), t1, np.array(q1), np.array(v1), t)
         return [np.array(x) for x in q], [np.array(x) for x in v]
