@@ -251,6 +251,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "springs-ropes-gravitation")
                (:file "failure-classes")
                (:file "witness")
+               (:file "witness-curved")
                (:file "simulator-fuzz")
                (:file "truth-scenarios")
                (:file "truth-branches")
