@@ -2,7 +2,7 @@
 #   make demo   install missing Debian packages, then run the main job: bin/ames on the wedge
 #   make test   install missing Debian packages, then run every FiveAM suite
 #   make bench  run the benchmarks (they print numbers)
-#   make crosscheck  N random scenarios (default 1000; N=, SEED= settable) through AMES and
+#   make crosscheck  N random scenarios (default 1000; N=, SEED=, FAMILIES=a,b settable) through AMES and
 #               the witness (Siconos), counts per family and verdict printed; disagreements
 #               written under witness/disagreements/
 #   make fuzz   the nightly-size fuzz: 10,000 whole-path cases and 500 runs with a kill -9 of
@@ -15,6 +15,7 @@ LISP  = $(SBCL) --noinform --non-interactive --no-sysinit --no-userinit
 
 N    ?= 1000
 SEED ?= 1
+FAMILIES ?=
 
 .PHONY: deps demo test bench fuzz crosscheck clean
 
@@ -43,7 +44,7 @@ fuzz: deps
 	$(LISP) --load t/fuzz.lisp
 
 crosscheck: deps
-	N=$(N) SEED=$(SEED) $(LISP) --load t/crosscheck.lisp
+	N=$(N) SEED=$(SEED) FAMILIES="$(FAMILIES)" $(LISP) --load t/crosscheck.lisp
 
 clean:
 	rm -rf build

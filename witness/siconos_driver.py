@@ -310,10 +310,12 @@ class Segment:
 
 
 class Driver:
+    segment_class = Segment   # the kind of Siconos model built for each segment
+
     def __init__(self, model):
         self.model = model
         self.bodies = [Body(b) for b in model["bodies"]]
-        self.contacts = make_contacts(model, self.bodies)
+        self.contacts = self.make_contacts(model)
         qs = [b.q.copy() for b in self.bodies]
         self.springs = [Spring(spec, qs) for spec in model.get("springs", [])]
         self.ropes = [Rope(spec, qs) for spec in model.get("ropes", [])]
@@ -329,6 +331,9 @@ class Driver:
         self.smooth_event = None
         self.truncated = None
         self.excluded, self.last_left = set(), []
+
+    def make_contacts(self, model):
+        return make_contacts(model, self.bodies)
 
     def record(self, t, pairs, qs, vs, after, speed=0.0):
         if self.events and abs(self.events[-1]["time"] - t) <= 1e-9 * max(1.0, abs(t)):
@@ -374,8 +379,8 @@ class Driver:
         if leaving and t0 > 0:
             self.record(t0, [(":leaves",) + pair_names(c, self.bodies) for c in leaving], qs, vs, vs)
         resting = {c for c in active if self.touching(c, qs, vs)}
-        seg = Segment(self.model, self.bodies, active, t0, qs, vs, self.t_end, self.dt,
-                      self.springs, resting)
+        seg = self.segment_class(self.model, self.bodies, active, t0, qs, vs, self.t_end, self.dt,
+                                 self.springs, resting)
         tp, qp, vp = t0, qs, vs
         count = 0
         while seg.sim.hasNextEvent():
@@ -507,7 +512,10 @@ def main():
         main_rotation(model)
         return
     try:
-        if model.get("friction"):
+        from siconos_arcs import ArcDriver, curved_model_p
+        if curved_model_p(model):
+            driver = ArcDriver(model)
+        elif model.get("friction"):
             from siconos_friction import FrictionDriver
             driver = FrictionDriver(model)
         else:
@@ -530,6 +538,11 @@ def main():
     out.append(" )")
     if driver.truncated:
         out.append(" :truncated %s" % sx_string(driver.truncated))
+    if getattr(driver, "samples", None):
+        out.append(" :samples (%s)" % " ".join(
+            "(:time %s :positions %s :velocities %s)" % (
+                sx_number(s["time"]), sx_states(names, s["q"], 0), sx_states(names, s["v"], 0))
+            for s in driver.samples))
     out.append(" :end (:time %s :positions %s :velocities %s))" % (
         sx_number(t), sx_states(names, qs, 0), sx_states(names, vs, 0)))
     print("\n".join(out))

@@ -40,7 +40,7 @@ state that lasts forever."
     (when end
       (let ((last-event (getf (car (last states)) :end-event)))
         (if (eq last-event :none)
-            (+ end 1/2)
+            (+ end 1/2 (ames.witness:witness-horizon-extra answer values))
             (+ end (* 1d-6 (+ 1 end))))))))
 
 (defun witness-check (scenario &key settings numeric (limits *limits*))
@@ -58,7 +58,8 @@ state that lasts forever."
                 :reason "AMES's run has no numeric end time (values missing?)")))
       (handler-case
           (let ((witness (ames.witness:run-witness
-                          (ames.witness:scenario-model scenario values horizon))))
+                          (ames.witness:scenario-model scenario values horizon
+                                                       :samples (ames.witness:witness-sample-times answer values)))))
             (case (ames.witness:witness-status witness)
               (:ok (let ((comparison (ames.witness:compare-results answer witness values
                                                                    :t-end horizon)))

@@ -22,6 +22,12 @@ rebound speed under its tolerance), not events.")
   "Relative tolerance (absolute below 1) where the witness used Moreau-Jean time stepping
 (friction): its step is 1e-4 s and the scheme is first order.")
 
+(defvar *curved-tolerance* 1d-6
+  "Relative tolerance (absolute below 1) where the witness has a contact with an arc or a
+circle: Lsodar finds a lift-off from an arc as a root of the contact force that the
+acceleration-level LCP computes, to about 3e-8 relative (the bodies' motions themselves to
+about 1e-11).")
+
 (defvar *accumulation-tolerance* 1d-5
   "Relative tolerance of the time where a Zeno sequence of impacts accumulates.")
 
@@ -62,11 +68,12 @@ the values set side by side: (STATE WHAT AMES WITNESS DIFFERENCE OK)."
     ((:collision :contact) (member witness-kind '(:collision :contact)))
     (:leaves (eq witness-kind :leaves))
     (:lift-off (member witness-kind '(:lift-off :leaves)))
+    (:turns (eq witness-kind :turns))
     ((:tightens :slackens :stops-sliding :starts-sliding) (eq witness-kind ames-kind))
     (t nil)))
 
 (defparameter +witnessed-events+
-  '(:collision :contact :leaves :lift-off :tightens :slackens :stops-sliding :starts-sliding)
+  '(:collision :contact :leaves :lift-off :tightens :slackens :stops-sliding :starts-sliding :turns)
   "The kinds of end events the witness reports.")
 
 (defun event-head (event)
@@ -145,7 +152,8 @@ NIL when it has none."
 the cancellations of AMES's nested radicals do not count against it), EXPRESSION itself
 when it is a keyword (:FOREVER), NIL when it has none."
   (cond ((keywordp expression) expression)
-        (t (let ((value (or (precise-value expression bindings)
+        (t (let* ((expression (canonical-expression expression)) ; compare-curved.lisp
+                  (value (or (precise-value expression bindings)
                             (expression-value expression bindings))))
              (and value (coerce value 'double-float))))))
 
@@ -214,7 +222,7 @@ state)."
   "A state that lasts forever: the witness has no more events before its horizon, and
 AMES's closed forms at the witness's end give its positions and velocities."
   (let ((late (find-if (lambda (e) (and (< (getf e :time) (- (walk-t-end walk) 1d-9))
-                                        (not (settling-p e))))
+                                        (not (settling-p e)) (not (turns-only-p e))))
                        (walk-events walk))))
     (when late
       (finish walk :ames-wrong "AMES has no more events; the witness has ~S at ~A"
@@ -243,9 +251,19 @@ kind it does not model, a run it cut short, or a contact reached with no approac
       (finish walk :unsupported "it ends with ~S, a contact reached with no approach speed (a double root the witness cannot locate)"
               (event-head event)))))
 
+(defun turns-only-p (event)
+  "True when the witness's EVENT is only turning points (compare-curved.lisp)."
+  (every (lambda (pair) (eq (first pair) :turns)) (getf event :pairs)))
+
 (defun compare-event-state (walk state numeric event end)
   "A state that ends with EVENT at END: the witness's next event is at that time, of that
-kind and bodies, with AMES's final positions and velocities just before it."
+kind and bodies, with AMES's final positions and velocities just before it. The
+witness's turning points before it are passed over unless EVENT is one: AMES splits a
+state at a turning point only where its motion is given along a path (a mass on a
+bumper turns within one state of closed forms in time)."
+  (unless (eq (event-kind event) :turns)
+    (loop while (and (walk-events walk) (turns-only-p (first (walk-events walk))))
+          do (pop (walk-events walk))))
   (check-witnessable walk event)
   (unless (walk-events walk)
     (finish walk :ames-wrong "AMES ends the state with ~S at ~A; the witness has no more events"
@@ -283,9 +301,10 @@ long pause is Siconos's residue); the next state's start is compared to
   "Compare AMES's s-expression answer AMES for one scenario with the witness's answer
 WITNESS (see RUN-WITNESS), the scenario's parameter VALUES (for closed forms) and the
 witness's horizon T-END. Returns a COMPARISON."
-  (let ((*value-tolerance* (if (eq (getf witness :scheme) :moreau-jean)
-                               *first-order-tolerance*
-                               *value-tolerance*)))
+  (let ((*value-tolerance* (case (getf witness :scheme)
+                              (:moreau-jean *first-order-tolerance*)
+                              (:curved *curved-tolerance*) ; compare-curved.lisp
+                              (t *value-tolerance*))))
     (catch 'comparison
       (let ((walk (make-walk witness values t-end (witness-events witness))))
         (dolist (state (ames-path (getf ames :states)))
@@ -297,7 +316,9 @@ witness's horizon T-END. Returns a COMPARISON."
             (compare-number walk "start" start (walk-time walk) (walk-time-tolerance walk))
             (setf (walk-time-tolerance walk) *value-tolerance*)
             (when (eq event :none)
-              (compare-last-state walk state start)
+              (if (path-state-p state)  ; compare-curved.lisp
+                  (compare-path-state walk state start)
+                  (compare-last-state walk state start))
               (return))
             (compare-event-state walk state numeric event (and (realp duration) (+ start duration)))))
         (finish walk :agree)))))

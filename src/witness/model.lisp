@@ -6,9 +6,9 @@
 ;;;; polygon its edges), gravity, the coefficients of restitution, springs and ropes over
 ;;;; pulleys (points given by body index and offset, or fixed points), and for rotating
 ;;;; bodies (rotation.lisp) their inertia, angle and angular velocity, the hinges, the wound
-;;;; rope ends, the forces at points and the angles the queries ask about. What the witness
-;;;; cannot model (bumpers, gravitation, arcs, drag) is refused with WITNESS-UNSUPPORTED,
-;;;; never approximated.
+;;;; rope ends, the forces at points and the angles the queries ask about; arcs, circles,
+;;;; gravitation and bumpers in model-curved.lisp. What the witness cannot model (outlines,
+;;;; drag, driven bodies) is refused with WITNESS-UNSUPPORTED, never approximated.
 
 (in-package #:ames.witness)
 
@@ -21,7 +21,7 @@ thing; DETAIL says why."))
   (error 'witness-unsupported :datum datum :detail (apply #'format nil control arguments)))
 
 (defparameter +unsupported-words+
-  '(:driven :drag :toward :gravitation :arc :outline)
+  '(:driven :drag :outline)
   "Words of the scenario language that name what the witness does not model.")
 
 (defun check-modelled (form)
@@ -74,6 +74,7 @@ when it has none."
         (origin (point-of (scenario-body-position body) values "a position")))
     (case (shape-kind shape)
       (:point '())                      ; a fixed point (a pulley's support) has no face
+      ((:arc :circle) '())              ; model-curved.lisp: OBSTACLE-ARCS
       (:half-plane (list (face-model (offset-point (second shape) origin values)
                                      (offset-point (third shape) origin values) t)))
       (:segment (list (face-model (offset-point (second shape) origin values)
@@ -103,7 +104,7 @@ offset, or a fixed body's point in the world."
           ("offset" . (:array ,@offset))))))
 
 (defun springs-model (scenario values)
-  (loop for spring in (scenario-springs scenario)
+  (loop for spring in (remove-if-not #'scenario-spring-to (scenario-springs scenario)) ; bumpers: model-curved
         for (a-body a-point) = (scenario-spring-from spring)
         for (b-body b-point) = (scenario-spring-to spring)
         collect `(("name" . ,(string-downcase (scenario-spring-name spring)))
@@ -128,10 +129,11 @@ offset, or a fixed body's point in the world."
                                               collect (append (model-point scenario body where values)
                                                               (and wound '(("wound" . :true))))))))))
 
-(defun scenario-model (scenario values t-end)
+(defun scenario-model (scenario values t-end &key samples)
   "The witness's model (an alist for MODEL-JSON) of the validated SCENARIO with the
-parameter VALUES (an alist (PARAMETER . NUMBER)), simulated from 0 to T-END. Signals
-WITNESS-UNSUPPORTED for what the witness cannot model."
+parameter VALUES (an alist (PARAMETER . NUMBER)), simulated from 0 to T-END, the state
+reported at the times SAMPLES too. Signals WITNESS-UNSUPPORTED for what the witness
+cannot model."
   (check-modelled (scenario-form scenario))
   (let ((default 0) (pairs '()))
     (dolist (entry (scenario-restitutions scenario))
@@ -161,7 +163,9 @@ WITNESS-UNSUPPORTED for what the witness cannot model."
       ,@(rotation-model scenario values)
       ("obstacles" . (:array ,@(loop for body in (scenario-fixed-bodies scenario)
                                      collect `(("name" . ,(string-downcase (scenario-body-name body)))
-                                               ("faces" . (:array ,@(obstacle-faces body values))))))))))
+                                               ("faces" . (:array ,@(obstacle-faces body values)))
+                                               ("arcs" . (:array ,@(obstacle-arcs body values)))))))
+      ,@(curved-model-entries scenario values samples))))
 
 (defun write-json (value stream)
   "Write VALUE as JSON: an alist with string keys is an object, (:ARRAY ...) an array,

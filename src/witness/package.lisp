@@ -19,6 +19,8 @@ AMES's geometry, knowledge base or simulator, so that its answers are independen
    #:compare-results #:comparison-verdict #:comparison-rows #:comparison-reason
    #:print-comparison #:*time-tolerance* #:*value-tolerance* #:*accumulation-tolerance* #:*first-order-tolerance*
    #:ames-end-time #:ames-path
+   #:*curved-tolerance* #:witness-sample-times #:witness-horizon-extra
    ;; generation (generate.lisp)
    #:*families* #:*random* #:*symbolic* #:random-scenario #:generator-families
+   #:*curved-families*
    #:write-disagreement))
