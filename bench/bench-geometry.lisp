@@ -53,7 +53,7 @@
         do (let ((bridge (ames.maxima:make-bridge)))
              (unwind-protect
                   (ames.maxima:with-assumptions (bridge facts)
-                    (ames.maxima:decide bridge '(> h 0))
+                    (ames.algebra:decide bridge '(> h 0))
                     (ames.maxima:reset-bridge-statistics bridge)
                     (let* ((pair nil)
                            (time (bench-milliseconds 1 (lambda () (setf pair (bench-pair form-1 form-2 bridge)))))

@@ -43,8 +43,8 @@ AMES.MAXIMA:SOLVE-EQUATIONS request made meanwhile (FACTS: the assumptions in fo
       (sb-int:unencapsulate 'ames.maxima:solve-equations 'bench-record))))
 
 (defparameter *bridge-operations*
-  '(ames.maxima:simplify ames.maxima:solve-equations ames.maxima:decide ames.maxima:equivalent-p
-    ames.maxima:earliest-root ames.maxima:numeric-value ames.maxima:call-with-assumptions)
+  '(ames.maxima:simplify ames.maxima:solve-equations ames.algebra:decide ames.maxima:equivalent-p
+    ames.algebra:earliest-root ames.maxima:numeric-value ames.maxima:call-with-assumptions)
   "The bridge's operations whose calls and time the benchmark breaks the run down by.")
 
 (defun call-timing-bridge-operations (function)

@@ -2,7 +2,7 @@
 ;;;;
 ;;;; Every scenario of scenarios/ is simulated on a fresh bridge twice: with its parameters
 ;;;; symbolic, and with its (:value N) defaults as parameter values (when it has any), an
-;;;; ambiguity stopping the run. Every call of AMES.MAXIMA:DECIDE made by the layers above
+;;;; ambiguity stopping the run. Every call of ames.algebra:DECIDE made by the layers above
 ;;;; the bridge (not the bridge's own nested calls; cache hits included) is counted by
 ;;;; verdict, by encapsulating the function, so the script runs unchanged on an older
 ;;;; checkout (load that checkout's ames.asd first, then this file) for a before/after
@@ -27,7 +27,7 @@
   "Call FUNCTION and return its value and the tally (:TRUE N :FALSE N :UNKNOWN N) of the
 outermost DECIDE calls made meanwhile."
   (let ((*tally* (list :true 0 :false 0 :unknown 0)))
-    (sb-int:encapsulate 'ames.maxima:decide 'bench-truth
+    (sb-int:encapsulate 'ames.algebra:decide 'bench-truth
                         (lambda (decide bridge relation)
                           (let ((verdict (let ((*depth* (1+ *depth*)))
                                            (funcall decide bridge relation))))
@@ -35,7 +35,7 @@ outermost DECIDE calls made meanwhile."
                               (incf (getf *tally* verdict)))
                             verdict)))
     (unwind-protect (values (funcall function) *tally*)
-      (sb-int:unencapsulate 'ames.maxima:decide 'bench-truth))))
+      (sb-int:unencapsulate 'ames.algebra:decide 'bench-truth))))
 
 (defun run-outcome (scenario bridge values)
   "Simulate SCENARIO on BRIDGE with the parameter VALUES; its outcome, or the type of

@@ -32,18 +32,18 @@
      (ames.maxima:with-assumptions (b '((> w1 0) (> w2 0) (> w3 0) (>= h 0) (< k 0)))
        (loop for (relation expected) in *quick-relations*
              do (let ((before (round-trips b))
-                      (quick (ames.maxima::quick-verdict b relation)))
+                      (quick (ames.algebra::quick-verdict b relation)))
                   (is (eq expected quick) "~S: ~S, expected ~S" relation quick expected)
                   (is (= before (round-trips b)) "~S asked Maxima" relation)
                   (unless (eq quick :unknown)
                     (ames.maxima:clear-bridge-cache b)
-                    (let ((long (let ((ames.maxima::*quick-verdicts* nil))
-                                  (ames.maxima:decide b relation))))
+                    (let ((long (let ((ames.algebra::*quick-verdicts* nil))
+                                  (ames.algebra:decide b relation))))
                       (is (eq quick long) "~S: quick ~S, long way ~S" relation quick long)))))
        ;; DECIDE takes the shortcut: no round trip for what the signs settle
        (ames.maxima:clear-bridge-cache b)
        (let ((before (round-trips b)))
-         (is (eq :true (ames.maxima:decide b '(> (+ w1 (* w2 w3) (expt w3 2)) 0))))
+         (is (eq :true (ames.algebra:decide b '(> (+ w1 (* w2 w3) (expt w3 2)) 0))))
          (is (= before (round-trips b))))))))
 
 (defun polynomial-value (monomials point)

@@ -42,7 +42,7 @@ zero on it ('quotient by zero'), which refused the run. It simplifies to 0."
            (zero `(- (/ (- (+ (* 54 ,u) (* 9 (sqrt 6) (sqrt 13) (expt ,u 2)))
                            (* (expt 6 3/2) (sqrt 13)))
                         (* (sqrt 6) (sqrt 13) 2)))))
-      (is (eql 0 (ames.maxima:simplify-real bridge zero))))))
+      (is (eql 0 (ames.algebra:simplify-real bridge zero))))))
 
 (defparameter *rope-swing*
   "(scenario rope-swing \"A particle swings on a rope over a pulley; a weight hangs at the other end.\"
@@ -125,7 +125,7 @@ double precision, and the state ends with the second block exactly against the t
       (let ((second (position-of (ames:state-final-positions state) "SECOND"))
             (third (position-of (ames:state-final-positions state) "THIRD")))
         ;; touching exactly: the front face of the second on the back face of the third
-        (is (eql 0 (ames.maxima:simplify-real bridge `(- (+ ,(first second) 1/2) ,(first third)))))))))
+        (is (eql 0 (ames.algebra:simplify-real bridge `(- (+ ,(first second) 1/2) ,(first third)))))))))
 
 (defparameter *weight-into-pulley*
   "(scenario weight-into-pulley \"A particle slides down an incline and pulls the weight up into its pulley.\"

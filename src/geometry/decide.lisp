@@ -230,7 +230,7 @@ HOLDS-P: a relation seen to fail at an admissible point costs no round trip.)"
          (sign (fast-sign difference))
          (bridge (decider-bridge decider)))
     (cond (sign (sign-satisfies-p operator sign))
-          (bridge (ames.maxima:holds-p bridge (list operator difference 0))))))
+          (bridge (ames.algebra:holds-p bridge (list operator difference 0))))))
 
 (defun positive-p (decider x) "X > 0." (fact-holds-p decider (list '> x 0)))
 (defun negative-p (decider x) "X < 0." (fact-holds-p decider (list '< x 0)))

@@ -6,7 +6,7 @@
 ;;;; from a report, or print wrong-signed positions; they are a PARAMETER-VALUE-ERROR
 ;;;; naming the parameter and the assumption instead. An assumption is checked when every
 ;;;; parameter it names has a value: exactly where its sides are rational, else with
-;;;; intervals that enclose the exact values (AMES.MAXIMA:VALUE-TRUTH); a value too close
+;;;; intervals that enclose the exact values (ames.algebra:VALUE-TRUTH); a value too close
 ;;;; to a bound to tell which side it lies on is refused too.
 
 (in-package #:ames.scenario)

@@ -66,7 +66,7 @@ impact (AMES.KB:IMPACT-ENTITIES-OF: the ropes)."
   "The decider of an impact's model: whether a touching contact pushes is always a
 choice (settled by consistency); everything else goes to Maxima, and what the
 assumptions leave open to the run's parameter values when it has them (the fact is
-recorded as assumed from the values: AMES.MAXIMA:DECIDE-BY-VALUES). An impact is no
+recorded as assumed from the values: ames.algebra:DECIDE-BY-VALUES). An impact is no
 place to branch: its outcome is one, the question only how the algebra shows it."
   (lambda (relation)
     (if (and (consp relation) (consp (second relation))

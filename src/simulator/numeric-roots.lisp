@@ -258,11 +258,11 @@ their numbers (NUMERIC-ROOT-FINAL-VALUES)."
   "For CONTACT, whose gap is linear in the relative position (a face), the gap at
 POSITIONS (an alist body -> (X Y)) and its gradient (NX NY); NIL for a curved one."
   (destructuring-bind (observer obstacle) (contact-bodies run contact)
-    (let* ((q (vec- (second (assoc observer positions)) (second (assoc obstacle positions))))
+    (let* ((q (ames.geometry:v- (second (assoc observer positions)) (second (assoc obstacle positions))))
            (geometry (contact-geometry run contact))
            (gap (lambda (dx dy)
                   (tidy run (ames.geometry:meeting-gap
-                             (ames.geometry:contact-meeting geometry (vec+ q (list dx dy)))))))
+                             (ames.geometry:contact-meeting geometry (ames.geometry:v+ q (list dx dy)))))))
            (g (funcall gap 0 0))
            (nx (tidy run `(- ,(funcall gap 1 0) ,g)))
            (ny (tidy run `(- ,(funcall gap 0 1) ,g))))
@@ -285,7 +285,7 @@ bodies exactly in contact."
             (destructuring-bind (observer obstacle) (contact-bodies run contact)
               (let* ((moved (if (body-fixed-p run observer) obstacle observer))
                      (sign (if (eq moved observer) -1 1))
-                     (scale `(/ (* ,sign ,gap) ,(vec-dot normal normal)))
+                     (scale `(/ (* ,sign ,gap) ,(ames.geometry:dot normal normal)))
                      (entry (assoc moved positions)))
                 (setf positions
                       (substitute (list moved (mapcar (lambda (x n) (tidy run `(+ ,x (* ,scale ,n))))

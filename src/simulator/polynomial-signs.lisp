@@ -97,12 +97,15 @@ SIGNS gives (see SIGN-ALGEBRA), from its expanded monomials: 1, -1, 0, :NONNEGAT
   (let ((monomials (expanded-monomials expression)))
     (if (eq monomials :unknown)
         :unknown
-        (reduce #'sign-sum
-                (mapcar (lambda (term)
-                          (reduce #'sign-product
-                                  (mapcar (lambda (factor)
-                                            (sign-algebra signs `(expt ,(car factor) ,(cdr factor))))
-                                          (car term))
-                                  :initial-value (signum (cdr term))))
-                        monomials)
-                :initial-value 0))))
+        ;; the one sign system's rules (AMES.ALGEBRA sign sets) over the monomials
+        (let ((signs-of-sum
+                (ames.algebra:sum-signs
+                 (mapcar (lambda (term)
+                           (reduce #'ames.algebra:sign-product
+                                   (mapcar (lambda (factor)
+                                             (ames.algebra:signum-sign-set
+                                              (sign-algebra signs `(expt ,(car factor) ,(cdr factor)))))
+                                           (car term))
+                                   :initial-value (ames.algebra:number-signs (cdr term))))
+                         monomials))))
+          (if signs-of-sum (ames.algebra:sign-set-signum signs-of-sum) :unknown)))))

@@ -223,7 +223,7 @@ the zeros of the cosine and of the sine, each found by the root finder of its ki
 
 (defun query-root (bridge g variable after)
   "The earliest root of G in VARIABLE strictly after AFTER, :NONE or :UNKNOWN: through
-AMES.MAXIMA:EARLIEST-TRIGONOMETRIC-ROOT for a sinusoid in time, else EARLIEST-ROOT."
+ames.algebra:EARLIEST-TRIGONOMETRIC-ROOT for a sinusoid in time, else EARLIEST-ROOT."
   (if (and (eq variable 'tau) (trigonometric-in-time-p g))
       (let ((root (ames.algebra:earliest-trigonometric-root bridge g 'tau :after after :strictly t)))
         root)

@@ -74,7 +74,7 @@ of (:state N :fact RELATION).")
 
 (defun tidy-real (run expression)
   "EXPRESSION simplified fully, products of square roots of negative quantities written
-with real roots (AMES.MAXIMA:SIMPLIFY-REAL): how values at a state's end are reported."
+with real roots (ames.algebra:SIMPLIFY-REAL): how values at a state's end are reported."
   (ames.algebra:simplify-real (run-bridge run) expression))
 
 (defun decide (run relation)

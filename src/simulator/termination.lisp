@@ -37,8 +37,8 @@ condition is reached (an impact when not zero)."
 
 (defun earliest-root-after (run g after)
   "The earliest root of G (a function of TAU) strictly after AFTER, through the bridge:
-what AMES.MAXIMA:EARLIEST-ROOT returns, without the candidates of an undecided answer;
-for a trigonometric function of TAU, AMES.MAXIMA:EARLIEST-TRIGONOMETRIC-ROOT's."
+what ames.algebra:EARLIEST-ROOT returns, without the candidates of an undecided answer;
+for a trigonometric function of TAU, ames.algebra:EARLIEST-TRIGONOMETRIC-ROOT's."
   (if (trigonometric-in-time-p g)
       (multiple-value-bind (root status)
           (ames.algebra:earliest-trigonometric-root (run-bridge run) g 'tau :after after :strictly t)

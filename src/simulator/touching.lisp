@@ -26,4 +26,4 @@ observer (the first), both expressions; NIL for the locus of a point attached to
             ;; the state says nothing of where it touches rather than guess
             (ames.geometry:position-not-on-contact () nil))
         (when point
-          (list :point (vec+ (body-position run obstacle) point) :normal normal))))))
+          (list :point (ames.geometry:v+ (body-position run obstacle) point) :normal normal))))))
