@@ -34,4 +34,6 @@ components share.")
    #:spring #:bumper #:point-contact #:rope #:rope-segment #:gravitation-field #:body-pair
    #:initial-pos #:span #:span-length #:span-direction #:span-acceleration #:tension
    #:kinetic-energy #:momentum #:potential-energy #:pressing #:taut
-   #:unmodelled-situation))
+   #:unmodelled-situation
+   ;; the entities of clauses the kb reads itself (clause-entities.lisp; drag.lisp)
+   #:clause-entity))

@@ -168,7 +168,8 @@ of wedge\", \"the right side of block-b against the face of wall\"."
     (:friction "friction of ~*~A on ~:*~:*~A" 2 "F")
     (:spring "spring ~A on ~A" 2 nil)
     (:tension "tension in ~A" 1 "T")
-    (:gravitation "gravitation of ~*~A on ~:*~:*~A" 2 nil))
+    (:gravitation "gravitation of ~*~A on ~:*~:*~A" 2 nil)
+    (:drag "drag ~A on ~A" 2 nil))
   "Each force kind with the FORMAT control of its label (over its leading names), how
 many names lead its entry, and the symbol of a scalar value.")
 

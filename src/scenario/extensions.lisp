@@ -195,7 +195,7 @@ names between."))
       (checked-positive validation (second clause) "the gravitational constant"))))
 
 (defun checked-extensions (validation sorted bodies)
-  "The extensions plist (:SPRINGS :PULLEYS :ROPES :GRAVITATION) of the SORTED clauses
+  "The extensions plist (:SPRINGS :PULLEYS :ROPES :GRAVITATION :KB-CLAUSES) of the SORTED clauses
 (an alist WORD -> clauses, as SORTED-CLAUSES makes it), the checked BODIES given."
   (flet ((clauses (word) (cdr (assoc word sorted))))
     (let ((pulleys (mapcar (lambda (c) (checked-pulley validation c))
@@ -205,4 +205,5 @@ names between."))
             :pulleys pulleys
             :ropes (mapcar (lambda (c) (checked-rope validation c))
                            (clauses 'ames-scenario:rope))
-            :gravitation (checked-gravitation validation (clauses 'ames-scenario:gravitation))))))
+            :gravitation (checked-gravitation validation (clauses 'ames-scenario:gravitation))
+            :kb-clauses (checked-kb-clauses validation sorted bodies)))))

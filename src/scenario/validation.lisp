@@ -101,7 +101,8 @@ under the print settings REJECT-BECAUSE binds (short, in the form's package)."
     ames-scenario:force ames-scenario:simulate ames-scenario:query
     ames-scenario:restitution
     ames-scenario:friction
-    ames-scenario:spring ames-scenario:pulley ames-scenario:rope ames-scenario:gravitation)
+    ames-scenario:spring ames-scenario:pulley ames-scenario:rope ames-scenario:gravitation
+    ames-scenario:drag)
   "The clauses of a scenario.")
 
 (defun check-name (validation name what)

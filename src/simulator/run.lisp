@@ -249,7 +249,9 @@ files it names)."
                          :between (scenario-friction-bodies friction)
                          :static (scenario-friction-static friction)
                          :kinetic (scenario-friction-kinetic friction)))
-     (attachment-entities run))))
+     (attachment-entities run)
+     ;; the clauses the kb reads itself (src/scenario/kb-clauses.lisp)
+     (mapcar #'ames.kb:clause-entity (scenario-kb-clauses scenario)))))
 
 ;;; Which contacts touch at the start of a state
 

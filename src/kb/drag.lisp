@@ -1,0 +1,75 @@
+;;;; src/kb/drag.lisp -- drag: a body moving through a medium at rest (the language's "Drag";
+;;;; thesis 3.3.2 asks for new force laws to be knowledge-base additions).
+;;;;
+;;;; The scenario's (drag NAME :on BODY :linear B) and (drag NAME :on BODY :quadratic C)
+;;;; clauses (src/scenario/drag.lisp) come to the situation as the entities
+;;;;   (drag NAME :on BODY :law :linear :coefficient B)
+;;;;   (drag NAME :on BODY :law :quadratic :coefficient C)
+;;;; The force on BODY is -B v (viscous, Stokes) or -C |v| v (air resistance, Newton), v its
+;;;; velocity in the fixed frame, where the medium is at rest. A drag on a fixed or driven
+;;;; body does nothing. Drag is not conservative: it has no potential energy, and the
+;;;; reported total K + U falls over a state by the energy the drag dissipates.
+;;;; Reported in :forces as (:drag NAME BODY (FX FY)).
+;;;;
+;;;; Nothing else is needed for the dynamics: the force depends on the velocities, so the
+;;;; state's rates do, and the simulator's integrators take them as they come. Linear drag
+;;;; keeps the rates linear with constant coefficients: closed forms (the exponential
+;;;; approach to the terminal velocity m g / B; with a spring, the damped oscillator, under-,
+;;;; critically or over-damped as the assumptions decide, a branch where they do not).
+;;;; Quadratic drag along a fixed line is a first-order Riccati equation in the speed along
+;;;; it (tanh falling, tan rising); in two dimensions it has no closed form (numbers under
+;;;; values).
+;;;;
+;;;; Turning back: along a line, |v| v changes its form where the velocity changes sign, so
+;;;; a quadratic drag watches the velocity's component along the velocity the state starts
+;;;; with (the state's constant (initial-vel BODY :x)); where it turns negative the body has
+;;;; turned: event (:turns BODY), and the next state starts from rest there (a ball thrown up
+;;;; stops at the top of its flight, then falls). A body that starts from rest watches
+;;;; nothing (its velocity grows along the force).
+
+(in-package #:ames.kb)
+
+;;; ------------------------------------------------------------------------------------
+;;; NAMING (for the phenomena registry): how drag appears in reports.
+;;;   clause word      drag
+;;;   force entry      (:drag NAME BODY (FX FY))
+;;;   words            "drag NAME on BODY"        (src/report/phrases.lisp *force-phrases*)
+;;;   symbol / LaTeX   F_D  /  F_{\mathrm{D}}     (a vector: no scalar symbol is printed)
+;;;   picture glyph    an arrow at the body, labelled "drag" (src/report/svg.lisp, generic)
+;;;   energy terms     none (not conservative; the dissipated energy is the fall of K + U)
+;;;   query quantities none of its own (the force is in the state's :forces)
+;;;   events           (:turns BODY) -- quadratic drag, the velocity reverses along its line
+(defparameter *drag-naming*
+  '(:clause drag :force :drag :words "drag ~A on ~A" :symbol "F_D" :latex "F_{\\mathrm{D}}"
+    :glyph "drag" :energy () :queries () :events ((:turns body)))
+  "How drag is named in reports (see the block above), as data for the phenomena registry.")
+;;; ------------------------------------------------------------------------------------
+
+(define-clause-entity :drag drag)
+
+(register-template *mechanics* 'drag-coefficient
+                   (lambda (situation drag) (entity-property (entity-named situation drag) :coefficient))
+                   :documentation "A drag's coefficient: B of -B v, or C of -C |v| v.")
+
+(defcomponent linear-drag (:knowledge-base *mechanics*)
+  "A viscous medium at rest pushes a body against its velocity with B times it: F = -B v."
+  (:arguments (?drag :entity drag :where (:on ?body :law :linear))
+              (?body :entity body :where (:fixed nil :driven nil)))
+  (:assert (force (drag ?drag) :type drag :from environment :on ?body)
+           (reported :forces (:drag ?drag ?body ((fx drag ?drag) (fy drag ?drag)))))
+  (:equations (= (force-x (drag ?drag)) (* -1 (drag-coefficient ?drag) (vel ?body :x)))
+              (= (force-y (drag ?drag)) (* -1 (drag-coefficient ?drag) (vel ?body :y)))))
+
+(defcomponent quadratic-drag (:knowledge-base *mechanics*)
+  "Air at rest pushes a body against its velocity with C times its speed squared:
+F = -C |v| v."
+  (:arguments (?drag :entity drag :where (:on ?body :law :quadratic))
+              (?body :entity body :where (:fixed nil :driven nil)))
+  (:assert (force (drag ?drag) :type drag :from environment :on ?body)
+           (reported :forces (:drag ?drag ?body ((fx drag ?drag) (fy drag ?drag)))))
+  (:equations (= (force-x (drag ?drag))
+                 (* -1 (drag-coefficient ?drag)
+                    (sqrt (+ (expt (vel ?body :x) 2) (expt (vel ?body :y) 2))) (vel ?body :x)))
+              (= (force-y (drag ?drag))
+                 (* -1 (drag-coefficient ?drag)
+                    (sqrt (+ (expt (vel ?body :x) 2) (expt (vel ?body :y) 2))) (vel ?body :y)))))
