@@ -140,6 +140,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "conditions-over-time")
                  (:file "choice")
                  (:file "integrators")
+                 (:file "open-questions")
                  (:file "line")
                  (:file "broad-phase")
                  (:file "termination")

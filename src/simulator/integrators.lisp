@@ -227,7 +227,10 @@ assumptions leave open."
                 (mapcar (lambda (entry) (cons (car entry) (tidy run (cdr entry) :full)))
                         (append position-values velocity-values)))
           group)
-      ((or ames.maxima:solve-failed ames.maxima:maxima-question) () nil))))
+      (ames.maxima:solve-failed () nil)
+      ;; a sign the assumptions leave open (a damped system's discriminant): a branch
+      (ames.maxima:maxima-question (question)
+        (question-as-ambiguity run question "the sign that selects the closed form of a linear motion")))))
 
 (defun group-of-term (groups term)
   "The GROUP among GROUPS whose state term TERM is, or NIL."
