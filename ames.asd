@@ -142,6 +142,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "integrators")
                  (:file "open-questions")
                  (:file "line")
+                 (:file "speed-line")
                  (:file "broad-phase")
                  (:file "termination")
                  (:file "check-model")

@@ -313,7 +313,7 @@ broad-phase.lisp) never fires."
                   ((some (lambda (g) (eq (group-kind g) :numeric)) involved)
                    (push condition numeric)
                    :never)
-                  ((every (lambda (g) (member (group-kind g) '(:constant :linear))) involved)
+                  ((every (lambda (g) (member (group-kind g) '(:constant :linear :speed-line))) involved)
                    (tau-candidate run solved groups condition))
                   ((and (null (rest involved)) (member (group-kind (first involved)) '(:path :line)))
                    (path-candidate run solved (first involved) condition))
