@@ -145,6 +145,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "speed-line")
                  (:file "broad-phase")
                  (:file "termination")
+                 (:file "speed-line-roots")
                  (:file "check-model")
                  (:file "path")
                  (:file "turns")

@@ -9,7 +9,7 @@
 (scenario quadratic-drag-thrown-up
   "A ball thrown straight up through air, quadratic drag -k |v| v."
   (parameters (m :positive (:value 1)) (g :positive (:value 981/100))
-              (k :positive (:value 1/10)) (h :positive (:value 0)) (v0 :positive (:value 20)))
+              (k :positive (:value 1/10)) (h :nonnegative (:value 0)) (v0 :positive (:value 20)))
   (gravity g)
   (body ball :mass m :position (0 h) :velocity (0 v0) :shape point)
   (drag air :on ball :quadratic k)

@@ -21,11 +21,13 @@
 ;;;; values).
 ;;;;
 ;;;; Turning back: along a line, |v| v changes its form where the velocity changes sign, so
-;;;; a quadratic drag watches the velocity's component along the velocity the state starts
-;;;; with (the state's constant (initial-vel BODY :x)); where it turns negative the body has
-;;;; turned: event (:turns BODY), and the next state starts from rest there (a ball thrown up
-;;;; stops at the top of its flight, then falls). A body that starts from rest watches
-;;;; nothing (its velocity grows along the force).
+;;;; a quadratic drag on a body that starts moving watches the velocity's component along the
+;;;; velocity the state starts with (the state's constant (initial-vel BODY :x)); where it
+;;;; turns negative the body has turned: event (:turns BODY), and the next state starts from
+;;;; rest there (a ball thrown up stops at the top of its flight, then falls). A body that
+;;;; starts from rest watches nothing (its velocity grows along the force: it never turns
+;;;; back within the state). In two dimensions (no closed form) the same event marks where
+;;;; the velocity has turned at right angles to its start.
 
 (in-package #:ames.kb)
 
@@ -73,3 +75,27 @@ F = -C |v| v."
               (= (force-y (drag ?drag))
                  (* -1 (drag-coefficient ?drag)
                     (sqrt (+ (expt (vel ?body :x) 2) (expt (vel ?body :y) 2))) (vel ?body :y)))))
+
+(register-template *mechanics* 'velocity-along-start
+                   (lambda (situation body)
+                     (declare (ignore situation))
+                     `(+ (* (vel ,body :x) (initial-vel ,body :x)) (* (vel ,body :y) (initial-vel ,body :y))))
+                   :documentation "A body's velocity dotted with its velocity at the start of the state.")
+(register-template *mechanics* 'start-speed-squared
+                   (lambda (situation body)
+                     (declare (ignore situation))
+                     `(+ (expt (initial-vel ,body :x) 2) (expt (initial-vel ,body :y) 2)))
+                   :documentation "The square of a body's speed at the start of the state.")
+
+(defcomponent drag-turning-point (:knowledge-base *mechanics*)
+  "A body moving against quadratic drag turns where its velocity's component along its
+starting velocity changes sign (a ball thrown up stops at the top): event (:turns BODY);
+the next state starts from rest. A body starting from rest watches nothing."
+  (:arguments (?drag :entity drag :where (:on ?body :law :quadratic))
+              (?body :entity body :where (:fixed nil :driven nil)))
+  (:mode :moving
+   (:entry (> (start-speed-squared ?body) 0))
+   (:transition :to :from-rest :when (< (velocity-along-start ?body) 0)
+                :event (:turns ?body)))
+  (:mode :from-rest
+   (:entry (<= (start-speed-squared ?body) 0))))

@@ -32,7 +32,7 @@ components share.")
    ;; gravitation.lisp, energy.lisp): the entity kinds the simulator describes, the
    ;; quantities it provides (a free body's position at the state's start) and reads
    #:spring #:bumper #:point-contact #:rope #:rope-segment #:gravitation-field #:body-pair
-   #:initial-pos #:span #:span-length #:span-direction #:span-acceleration #:tension
+   #:initial-pos #:initial-vel #:span #:span-length #:span-direction #:span-acceleration #:tension
    #:kinetic-energy #:momentum #:potential-energy #:pressing #:taut
    #:unmodelled-situation
    ;; the entities of clauses the kb reads itself (clause-entities.lisp; drag.lisp)

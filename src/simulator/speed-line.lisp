@@ -29,6 +29,15 @@
 ;;;; while p >= 0 only, where the formulas are the solution. Each is checked by Maxima:
 ;;;; p' - f(p) and P' - p simplify to 0, p(0) = p0 and P(0) = 0; otherwise the group is
 ;;;; integrated numerically. Nothing here knows which force it integrates.
+;;;;
+;;;; When a condition ends the state: over such a motion a condition that depends on the
+;;;; motion through the speed p alone, or through the distance P alone, is monotone in time
+;;;; while the state lasts (p is the solution of an autonomous first-order equation, so
+;;;; monotone; P' = p >= 0). Where Maxima's solve() finds its root but cannot prove it the
+;;;; earliest (roots of tan, exp and log), a root checked to be one, positive and crossing
+;;;; downward is then the condition's only one in the state (SPEED-LINE-CANDIDATE). The
+;;;; formulas hold while p >= 0: the knowledge base must end the state where the velocity
+;;;; reverses (src/kb/drag.lisp does, for quadratic drag).
 
 (in-package #:ames.simulator)
 
@@ -151,6 +160,7 @@ rest in equilibrium. Returns GROUP, or NIL (it is then integrated numerically)."
                 (unless (and speed (riccati-verified-p run f p0 speed distance))
                   (return-from integrate-speed-line nil))
                 (setf (group-kind group) :speed-line
+                      (group-line group) (list :direction direction :from q0)
                       (group-motion group)
                       (append (mapcar (lambda (q p e) (cons q (tidy run `(+ ,p (* ,e ,distance)) :full)))
                                       positions q0 direction)

@@ -310,6 +310,8 @@ broad-phase.lisp) never fires."
                             (condition-groups run solved groups relation))))
         (multiple-value-bind (result fact not-before)
             (cond ((null involved) :never)
+                  ((and (null (rest involved)) (eq (group-kind (first involved)) :speed-line))
+                   (speed-line-candidate run solved groups (first involved) condition))
                   ((some (lambda (g) (eq (group-kind g) :numeric)) involved)
                    (push condition numeric)
                    :never)

@@ -1,0 +1,68 @@
+;;;; src/simulator/speed-line-roots.lisp -- when a termination condition fires over a
+;;;; :SPEED-LINE motion (speed-line.lisp): the root Maxima finds, proven the only one in the
+;;;; state by the motion's monotony.
+;;;;
+;;;; Over a :SPEED-LINE group the velocities are e p(tau) and the positions q0 + e P(tau),
+;;;; with p monotone and P nondecreasing while the state lasts. A condition whose violation
+;;;; function depends on the motion through p alone (written over the state it has no
+;;;; position), or through P alone (no velocity), and linearly, is monotone in time: it has at
+;;;; most one root in the state. TAU-CANDIDATE answers first; where it leaves the root
+;;;; undecided (solve() found it, the earliest-root proof does not cover tan, exp and log),
+;;;; the one candidate that is positive and a root (simplified to 0 by Maxima) and at which
+;;;; the function is proven to cross downward is that root.
+
+(in-package #:ames.simulator)
+
+(defun through-one-coordinate-p (run solved group function)
+  "True when FUNCTION (over SOLVED's state terms) depends on GROUP's motion linearly
+through its speed along the line alone or its distance along it alone."
+  (multiple-value-bind (positions velocities) (group-positions-and-velocities group)
+    (let* ((direction (getf (group-line group) :direction))
+           (q0 (getf (group-line group) :from))
+           (speed (make-symbol "P")) (distance (make-symbol "X"))
+           (others (set-difference (solved-model-state solved) (append positions velocities)
+                                   :test #'equal))
+           (h (tidy run (substitute-expressions
+                         (append (mapcar (lambda (v e) (cons v `(* ,speed ,e))) velocities direction)
+                                 (mapcar (lambda (q p e) (cons q `(+ ,p (* ,distance ,e))))
+                                         positions q0 direction))
+                         function)
+                    :full)))
+      (and direction (free-of-all-p others h)
+           (flet ((linear-in-p (x) (let ((d (ames.geometry:differentiate h x)))
+                                     (and (free-of-p x d) (free-of-p speed d) (free-of-p distance d)))))
+             (or (and (free-of-p distance h) (linear-in-p speed))
+                 (and (free-of-p speed h) (linear-in-p distance))))))))
+
+(defun monotone-root (run g)
+  "The one root of G (a function of TAU) that Maxima finds after 0 which is proven
+positive, a root, and a downward crossing; NIL unless there is exactly one such."
+  (multiple-value-bind (root candidates)
+      (ames.maxima:earliest-root (run-bridge run) g 'tau :after 0 :strictly t :candidates t)
+    (when (eq root :unknown)
+      (let ((roots (remove-if-not
+                    (lambda (c)
+                      (and (free-of-p 'tau c)
+                           (holds run `(> ,c 0))
+                           (eql 0 (tidy run (at-time g c) :full))
+                           (holds run `(< ,(tidy run (at-time (time-derivative g) c) :full) 0))))
+                    candidates)))
+        (and roots (null (rest roots)) (tidy run (first roots) :full))))))
+
+(defun speed-line-candidate (run solved groups group condition)
+  "TAU-CANDIDATE's answer for CONDITION over the :SPEED-LINE GROUP, with an undecided
+root settled by the motion's monotony where it applies (see the file header)."
+  (multiple-value-bind (result fact not-before) (tau-candidate run solved groups condition)
+    (let ((relation (ames.engine:termination-condition-relation condition)))
+      (if (or (not (eq result :unknown)) (gap-relation-contact relation)
+              (not (member (first relation) '(< <= > >=))))
+          (values result fact not-before)
+          (let* ((function (over-state-terms run solved (violation-function relation)))
+                 (root (and (through-one-coordinate-p run solved group function)
+                            (monotone-root run (motion-value groups function)))))
+            (if root
+                (let ((rate (and (ames.engine:termination-condition-impact condition)
+                                 (tidy run (at-time (time-derivative (motion-value groups function)) root)
+                                       :full))))
+                  (make-candidate condition (condition-event condition rate) root :rate rate))
+                (values result fact not-before)))))))
