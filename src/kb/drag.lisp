@@ -21,13 +21,14 @@
 ;;;; values).
 ;;;;
 ;;;; Turning back: along a line, |v| v changes its form where the velocity changes sign, so
-;;;; a quadratic drag on a body that starts moving watches the velocity's component along the
-;;;; velocity the state starts with (the state's constant (initial-vel BODY :x)); where it
-;;;; turns negative the body has turned: event (:turns BODY), and the next state starts from
-;;;; rest there (a ball thrown up stops at the top of its flight, then falls). A body that
-;;;; starts from rest watches nothing (its velocity grows along the force: it never turns
-;;;; back within the state). In two dimensions (no closed form) the same event marks where
-;;;; the velocity has turned at right angles to its start.
+;;;; a quadratic drag on a body that starts moving watches v.v0 + |v| |v0|, v0 the velocity
+;;;; the state starts with (the state's constant (initial-vel BODY :x)): positive while v has
+;;;; a part along v0, it reaches zero when the body stops and stays there once it moves
+;;;; back: event (:turns BODY), and the next state starts from rest there (a ball thrown up
+;;;; stops at the top of its flight, then falls). In two dimensions it stays positive (v is
+;;;; never opposite to v0 without passing through rest): nothing is watched in effect. A
+;;;; body that starts from rest watches nothing (its velocity grows along the force: it
+;;;; never turns back within the state).
 
 (in-package #:ames.kb)
 
@@ -76,11 +77,14 @@ F = -C |v| v."
                  (* -1 (drag-coefficient ?drag)
                     (sqrt (+ (expt (vel ?body :x) 2) (expt (vel ?body :y) 2))) (vel ?body :y)))))
 
-(register-template *mechanics* 'velocity-along-start
+(register-template *mechanics* 'reversal-margin
                    (lambda (situation body)
                      (declare (ignore situation))
-                     `(+ (* (vel ,body :x) (initial-vel ,body :x)) (* (vel ,body :y) (initial-vel ,body :y))))
-                   :documentation "A body's velocity dotted with its velocity at the start of the state.")
+                     `(+ (* (vel ,body :x) (initial-vel ,body :x)) (* (vel ,body :y) (initial-vel ,body :y))
+                         (* (sqrt (+ (expt (vel ,body :x) 2) (expt (vel ,body :y) 2)))
+                            (sqrt (+ (expt (initial-vel ,body :x) 2) (expt (initial-vel ,body :y) 2))))))
+                   :documentation "v.v0 + |v| |v0|, v a body's velocity and v0 its velocity at the start of
+the state: positive while v has a part along v0, zero once v is at rest or reversed.")
 (register-template *mechanics* 'start-speed-squared
                    (lambda (situation body)
                      (declare (ignore situation))
@@ -95,7 +99,7 @@ the next state starts from rest. A body starting from rest watches nothing."
               (?body :entity body :where (:fixed nil :driven nil)))
   (:mode :moving
    (:entry (> (start-speed-squared ?body) 0))
-   (:transition :to :from-rest :when (< (velocity-along-start ?body) 0)
+   (:transition :to :from-rest :when (<= (reversal-margin ?body) 0)
                 :event (:turns ?body)))
   (:mode :from-rest
    (:entry (<= (start-speed-squared ?body) 0))))

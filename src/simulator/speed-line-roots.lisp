@@ -6,33 +6,41 @@
 ;;;; with p monotone and P nondecreasing while the state lasts. A condition whose violation
 ;;;; function depends on the motion through p alone (written over the state it has no
 ;;;; position), or through P alone (no velocity), and linearly, is monotone in time: it has at
-;;;; most one root in the state. TAU-CANDIDATE answers first; where it leaves the root
+;;;; most one root in the state (|p| and |P| are p and P there: a speed or distance is no
+;;;; obstacle). TAU-CANDIDATE answers first; where it leaves the root
 ;;;; undecided (solve() found it, the earliest-root proof does not cover tan, exp and log),
 ;;;; the one candidate that is positive and a root (simplified to 0 by Maxima) and at which
 ;;;; the function is proven to cross downward is that root.
 
 (in-package #:ames.simulator)
 
-(defun through-one-coordinate-p (run solved group function)
-  "True when FUNCTION (over SOLVED's state terms) depends on GROUP's motion linearly
-through its speed along the line alone or its distance along it alone."
+(defun one-coordinate-function (run solved group function)
+  "FUNCTION (over SOLVED's state terms) as a function of TAU over GROUP's motion, when it
+depends on the motion linearly through its speed p along the line alone or its distance P
+along it alone (|p| and |P| are p and P: neither is negative while the state lasts);
+else NIL."
   (multiple-value-bind (positions velocities) (group-positions-and-velocities group)
-    (let* ((direction (getf (group-line group) :direction))
-           (q0 (getf (group-line group) :from))
-           (speed (make-symbol "P")) (distance (make-symbol "X"))
-           (others (set-difference (solved-model-state solved) (append positions velocities)
-                                   :test #'equal))
-           (h (tidy run (substitute-expressions
-                         (append (mapcar (lambda (v e) (cons v `(* ,speed ,e))) velocities direction)
-                                 (mapcar (lambda (q p e) (cons q `(+ ,p (* ,distance ,e))))
-                                         positions q0 direction))
-                         function)
-                    :full)))
-      (and direction (free-of-all-p others h)
-           (flet ((linear-in-p (x) (let ((d (ames.geometry:differentiate h x)))
-                                     (and (free-of-p x d) (free-of-p speed d) (free-of-p distance d)))))
-             (or (and (free-of-p distance h) (linear-in-p speed))
-                 (and (free-of-p speed h) (linear-in-p distance))))))))
+    (destructuring-bind (&key direction from speed distance) (group-line group)
+      (let* ((p (make-symbol "P")) (x (make-symbol "X"))
+             (others (set-difference (solved-model-state solved) (append positions velocities)
+                                     :test #'equal))
+             (h (with-abs-speed-taken
+                    (with-abs-speed-taken
+                        (tidy run (substitute-expressions
+                                   (append (mapcar (lambda (v e) (cons v `(* ,p ,e))) velocities direction)
+                                           (mapcar (lambda (q q0 e) (cons q `(+ ,q0 (* ,x ,e))))
+                                                   positions from direction))
+                                   function)
+                              :full)
+                      p)
+                  x)))
+        (flet ((linear-in (y) (let ((d (ames.geometry:differentiate h y)))
+                                (and (free-of-p p d) (free-of-p x d)))))
+          (when (and direction (free-of-all-p others h))
+            (cond ((and (free-of-p x h) (linear-in p))
+                   (tidy run (substitute-expressions (list (cons p speed)) h) :full))
+                  ((and (free-of-p p h) (linear-in x))
+                   (tidy run (substitute-expressions (list (cons x distance)) h) :full)))))))))
 
 (defun monotone-root (run g)
   "The one root of G (a function of TAU) that Maxima finds after 0 which is proven
@@ -57,12 +65,11 @@ root settled by the motion's monotony where it applies (see the file header)."
       (if (or (not (eq result :unknown)) (gap-relation-contact relation)
               (not (member (first relation) '(< <= > >=))))
           (values result fact not-before)
-          (let* ((function (over-state-terms run solved (violation-function relation)))
-                 (root (and (through-one-coordinate-p run solved group function)
-                            (monotone-root run (motion-value groups function)))))
+          (let* ((g (one-coordinate-function run solved group
+                                             (over-state-terms run solved (violation-function relation))))
+                 (root (and g (monotone-root run g))))
             (if root
                 (let ((rate (and (ames.engine:termination-condition-impact condition)
-                                 (tidy run (at-time (time-derivative (motion-value groups function)) root)
-                                       :full))))
+                                 (tidy run (at-time (time-derivative g) root) :full))))
                   (make-candidate condition (condition-event condition rate) root :rate rate))
                 (values result fact not-before)))))))

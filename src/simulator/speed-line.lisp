@@ -44,12 +44,13 @@
 (defconstant +speed-along-line+ 'speed-along-line
   "The variable standing for the speed p along the line of a :SPEED-LINE motion.")
 
-(defun with-abs-speed-taken (expression)
-  "EXPRESSION with |p| written p, p (+SPEED-ALONG-LINE+) being >= 0 over the state."
-  (cond ((and (consp expression) (eq (first expression) 'abs)
-              (eq (second expression) +speed-along-line+))
-         +speed-along-line+)
-        ((consp expression) (cons (first expression) (mapcar #'with-abs-speed-taken (rest expression))))
+(defun with-abs-speed-taken (expression &optional (variable +speed-along-line+))
+  "EXPRESSION with |p| written p, p (VARIABLE, by default +SPEED-ALONG-LINE+) being >= 0
+over the state."
+  (cond ((and (consp expression) (eq (first expression) 'abs) (eq (second expression) variable))
+         variable)
+        ((consp expression)
+         (cons (first expression) (mapcar (lambda (x) (with-abs-speed-taken x variable)) (rest expression))))
         (t expression)))
 
 (defun speed-line-direction (run velocities accelerations v0)
@@ -160,7 +161,8 @@ rest in equilibrium. Returns GROUP, or NIL (it is then integrated numerically)."
                 (unless (and speed (riccati-verified-p run f p0 speed distance))
                   (return-from integrate-speed-line nil))
                 (setf (group-kind group) :speed-line
-                      (group-line group) (list :direction direction :from q0)
+                      (group-line group) (list :direction direction :from q0
+                                               :speed speed :distance distance)
                       (group-motion group)
                       (append (mapcar (lambda (q p e) (cons q (tidy run `(+ ,p (* ,e ,distance)) :full)))
                                       positions q0 direction)
