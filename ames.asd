@@ -253,6 +253,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "friction")
                (:file "friction-scenarios")
                (:file "springs-ropes-gravitation")
+               (:file "drag")
                (:file "failure-classes")
                (:file "witness")
                (:file "simulator-fuzz")

@@ -226,16 +226,16 @@ assumptions leave open."
                             terms))))
     (handler-case
         (multiple-value-bind (position-values velocity-values)
-            (ames.maxima:solve-linear-odes (run-bridge run) accelerations positions velocities
-                                           (funcall initial positions) (funcall initial velocities))
+            (call-answering-sign-questions
+             run "the sign that selects the closed form of a linear motion"
+             (lambda ()
+               (ames.maxima:solve-linear-odes (run-bridge run) accelerations positions velocities
+                                              (funcall initial positions) (funcall initial velocities))))
           (setf (group-motion group)
                 (mapcar (lambda (entry) (cons (car entry) (tidy run (cdr entry) :full)))
                         (append position-values velocity-values)))
           group)
-      (ames.maxima:solve-failed () nil)
-      ;; a sign the assumptions leave open (a damped system's discriminant): a branch
-      (ames.maxima:maxima-question (question)
-        (question-as-ambiguity run question "the sign that selects the closed form of a linear motion")))))
+      ((or ames.maxima:solve-failed ames.maxima:maxima-question) () nil))))
 
 (defun group-of-term (groups term)
   "The GROUP among GROUPS whose state term TERM is, or NIL."

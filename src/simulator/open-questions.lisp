@@ -33,3 +33,29 @@ one expression over the parameters that the assumptions leave open, the run's am
   (let ((expressions (ames.maxima:maxima-question-expressions question)))
     (when (and expressions (null (rest expressions)))
       (open-sign-question run (first expressions) what))))
+
+(defparameter *sign-answers* 3
+  "The most sign questions one integration gets answered from the assumptions before it
+gives up (Maxima asking again what it was told would otherwise never end).")
+
+(defun call-answering-sign-questions (run what function)
+  "Call FUNCTION, answering each sign question Maxima asks during it: a sign the
+assumptions decide (SIGN-OF, which also reasons where Maxima's own database does not, as
+from k > c^2 / (4 m) to c^2 - 4 m k < 0) is assumed and the request retried (the
+bridge's restart ASSUME-AND-RETRY); an open one is the run's ambiguity (see
+QUESTION-AS-AMBIGUITY, WHAT saying what needs it). Other questions, and more than
+*SIGN-ANSWERS*, end the call with the MAXIMA-QUESTION as before."
+  (let ((answered 0))
+    (handler-bind
+        ((ames.maxima:maxima-question
+           (lambda (question)
+             (let* ((expressions (ames.maxima:maxima-question-expressions question))
+                    (x (and expressions (null (rest expressions)) (first expressions)))
+                    (sign (and x (parameter-expression-p run x) (sign-of run x))))
+               (cond ((and (member sign '(1 -1 0)) (< answered *sign-answers*)
+                           (find-restart 'ames.maxima:assume-and-retry question))
+                      (incf answered)
+                      (invoke-restart 'ames.maxima:assume-and-retry
+                                      (list (list (case sign (1 '>) (-1 '<) (0 '=)) x 0))))
+                     ((eq sign :unknown) (question-as-ambiguity run question what)))))))
+      (funcall function))))
