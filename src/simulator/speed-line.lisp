@@ -169,3 +169,25 @@ rest in equilibrium. Returns GROUP, or NIL (it is then integrated numerically)."
                               (mapcar (lambda (v e) (cons v (tidy run `(* ,e ,speed) :full)))
                                       velocities direction))))))
         group))))
+
+(defun speed-line-signs-taken (run groups expression)
+  "EXPRESSION (over state terms) with the velocities and positions of each :SPEED-LINE
+group among GROUPS written e p and q0 + e P, |p| and |P| taken as p and P (neither is
+negative while the state lasts), then p and P put to their closed forms: so that a speed
+|v| = sqrt(v.v) in a force comes out as p |e|, not as the absolute value of a formula
+Maxima cannot sign. EXPRESSION itself when no such group moves in it."
+  (dolist (group groups expression)
+    (when (and (eq (group-kind group) :speed-line)
+               (some (lambda (term) (not (free-of-p term expression))) (group-terms group)))
+      (multiple-value-bind (positions velocities) (group-positions-and-velocities group)
+        (destructuring-bind (&key direction from speed distance) (group-line group)
+          (let* ((p (make-symbol "P")) (x (make-symbol "X"))
+                 (h (tidy run (substitute-expressions
+                               (append (mapcar (lambda (v e) (cons v `(* ,p ,e))) velocities direction)
+                                       (mapcar (lambda (q q0 e) (cons q `(+ ,q0 (* ,x ,e))))
+                                               positions from direction))
+                               expression)
+                          :full)))
+            (setf expression
+                  (substitute-expressions (list (cons p speed) (cons x distance))
+                                          (with-abs-speed-taken (with-abs-speed-taken h p) x)))))))))
