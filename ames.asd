@@ -146,6 +146,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "broad-phase")
                  (:file "termination")
                  (:file "speed-line-roots")
+                 (:file "numeric-roots")
                  (:file "check-model")
                  (:file "path")
                  (:file "turns")

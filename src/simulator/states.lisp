@@ -94,8 +94,9 @@ then has no closed form)."
                       (let* ((group (body-group groups body))
                              (at (group-at-end run groups group fired)))
                         (mapcar (lambda (x)
-                                  (end-value run (substitute-expressions
-                                                  (list (cons (group-variable group) at)) x)))
+                                  (end-value-or-number run (substitute-expressions
+                                                            (list (cons (group-variable group) at)) x)
+                                                       at))
                                 (body-motion run groups body what)))))))
           (body-names run)))
 
@@ -306,7 +307,7 @@ known."
           (let ((time (candidate-time (first fired))))
             (setf (state-duration state) time
                   (state-end-event state) (end-event-of (mapcar #'candidate-event fired))
-                  (state-final-positions state) (final-values run groups fired :pos)
+                  (state-final-positions state) (snapped-to-contacts run fired (final-values run groups fired :pos))
                   (state-final-velocities state) (final-values run groups fired :vel))
             (when (rest fired)
               (setf (getf (state-notes state) :events) (mapcar #'candidate-event fired)))
