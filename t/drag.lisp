@@ -231,3 +231,42 @@ velocity never reverses)."
     (is (equal '(:drag "AIR" :on "BALL" :law :quadratic :coefficient "B")
                (mapcar (lambda (x) (if (and (symbolp x) (not (keywordp x))) (string x) x))
                        (first (ames.scenario:scenario-kb-clauses scenario)))))))
+
+(defparameter *drag-onto-ground*
+  "(scenario drag-onto-ground
+     \"A ball dropped through a viscous medium onto the ground.\"
+     (parameters (m :positive (:value 1)) (g :positive (:value 981/100))
+                 (c :positive (:value 1/2)) (h :positive (:value 10)))
+     (gravity g)
+     (body ground :fixed t :shape (half-plane (1 0) (0 0)))
+     (body ball :mass m :position (0 h) :velocity (0 0) :shape point)
+     (drag air :on ball :linear c)
+     (simulate :states 3))"
+  "Linear drag to the ground: the landing time is a Lambert W (no closed form from solve()).")
+
+(test linear-drag-lands-at-a-number
+  "Under values the ball lands where its closed-form height is zero (a number: the root has
+no closed form), with the closed-form velocity then; the plastic impact stops it on the
+ground, where it rests; the self-check passes."
+  (with-fixture simulator-bridge ()
+    (let* ((scenario (first (ames:read-scenarios-from-string *drag-onto-ground*)))
+           (history (ames:run-scenario scenario :bridge bridge :numeric t))
+           (states (ames::history-states history))
+           (falling (first states))
+           (values (ames:scenario-parameter-values scenario))
+           (check (ames.check:self-check-result history)))
+      (is (= 2 (length states)))
+      (is (equal '(:collision "BALL" "GROUND") (event-names (ames::state-end-event falling))))
+      (let ((time (ames::state-duration falling)))
+        (is (realp time))
+        (when (realp time)
+          (flet ((at-landing (expression)
+                   (ames.maxima:numeric-value bridge (at-variable expression 'tau (rational time)) values)))
+            (is (< (abs (at-landing (y-of falling :pos))) 1d-9) "height at landing")
+            (is (< (abs (- (at-landing (y-of falling :vel))
+                           (second (per-body (ames::state-final-velocities falling) "BALL"))))
+                   1d-9)
+                "velocity at landing"))))
+      (is (equal '(0 0) (per-body (ames::state-final-positions falling) "BALL")))
+      (is (eq :forever (ames::state-duration (second states))))
+      (is (null (getf check :failures)) "self-check failures ~S" (getf check :failures)))))
