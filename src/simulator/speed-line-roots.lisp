@@ -17,30 +17,20 @@
 (defun one-coordinate-function (run solved group function)
   "FUNCTION (over SOLVED's state terms) as a function of TAU over GROUP's motion, when it
 depends on the motion linearly through its speed p along the line alone or its distance P
-along it alone (|p| and |P| are p and P: neither is negative while the state lasts);
-else NIL."
+along it alone (see ALONG-SPEED-LINE); else NIL."
   (multiple-value-bind (positions velocities) (group-positions-and-velocities group)
-    (destructuring-bind (&key direction from speed distance) (group-line group)
-      (let* ((p (make-symbol "P")) (x (make-symbol "X"))
-             (others (set-difference (solved-model-state solved) (append positions velocities)
-                                     :test #'equal))
-             (h (with-abs-speed-taken
-                    (with-abs-speed-taken
-                        (tidy run (substitute-expressions
-                                   (append (mapcar (lambda (v e) (cons v `(* ,p ,e))) velocities direction)
-                                           (mapcar (lambda (q q0 e) (cons q `(+ ,q0 (* ,x ,e))))
-                                                   positions from direction))
-                                   function)
-                              :full)
-                      p)
-                  x)))
-        (flet ((linear-in (y) (let ((d (ames.geometry:differentiate h y)))
-                                (and (free-of-p p d) (free-of-p x d)))))
-          (when (and direction (free-of-all-p others h))
-            (cond ((and (free-of-p x h) (linear-in p))
-                   (tidy run (substitute-expressions (list (cons p speed)) h) :full))
-                  ((and (free-of-p p h) (linear-in x))
-                   (tidy run (substitute-expressions (list (cons x distance)) h) :full)))))))))
+    (let* ((p (make-symbol "P")) (x (make-symbol "X"))
+           (others (set-difference (solved-model-state solved) (append positions velocities)
+                                   :test #'equal))
+           (h (along-speed-line run group function p x)))
+      (flet ((linear-in (y) (let ((d (ames.geometry:differentiate h y)))
+                              (and (free-of-p p d) (free-of-p x d)))))
+        (when (free-of-all-p others h)
+          (cond ((and (free-of-p x h) (linear-in p))
+                 (tidy run (substitute-expressions (list (cons p (getf (group-line group) :speed))) h) :full))
+                ((and (free-of-p p h) (linear-in x))
+                 (tidy run (substitute-expressions (list (cons x (getf (group-line group) :distance))) h)
+                       :full))))))))
 
 (defun monotone-root (run g)
   "The one root of G (a function of TAU) that Maxima finds after 0 which is proven

@@ -170,6 +170,23 @@ rest in equilibrium. Returns GROUP, or NIL (it is then integrated numerically)."
                                       velocities direction))))))
         group))))
 
+(defun along-speed-line (run group expression p x)
+  "EXPRESSION (over state terms) with the :SPEED-LINE GROUP's velocities written e P and
+its positions q0 + e X (P and X symbols for the speed and the distance along the line),
+simplified, |P| and |X| taken as P and X (neither is negative while the state lasts)."
+  (multiple-value-bind (positions velocities) (group-positions-and-velocities group)
+    (destructuring-bind (&key direction from &allow-other-keys) (group-line group)
+      (with-abs-speed-taken
+          (with-abs-speed-taken
+              (tidy run (substitute-expressions
+                         (append (mapcar (lambda (v e) (cons v `(* ,p ,e))) velocities direction)
+                                 (mapcar (lambda (q q0 e) (cons q `(+ ,q0 (* ,x ,e))))
+                                         positions from direction))
+                         expression)
+                    :full)
+            p)
+        x))))
+
 (defun speed-line-signs-taken (run groups expression)
   "EXPRESSION (over state terms) with the velocities and positions of each :SPEED-LINE
 group among GROUPS written e p and q0 + e P, |p| and |P| taken as p and P (neither is
@@ -179,15 +196,8 @@ Maxima cannot sign. EXPRESSION itself when no such group moves in it."
   (dolist (group groups expression)
     (when (and (eq (group-kind group) :speed-line)
                (some (lambda (term) (not (free-of-p term expression))) (group-terms group)))
-      (multiple-value-bind (positions velocities) (group-positions-and-velocities group)
-        (destructuring-bind (&key direction from speed distance) (group-line group)
-          (let* ((p (make-symbol "P")) (x (make-symbol "X"))
-                 (h (tidy run (substitute-expressions
-                               (append (mapcar (lambda (v e) (cons v `(* ,p ,e))) velocities direction)
-                                       (mapcar (lambda (q q0 e) (cons q `(+ ,q0 (* ,x ,e))))
-                                               positions from direction))
-                               expression)
-                          :full)))
-            (setf expression
-                  (substitute-expressions (list (cons p speed) (cons x distance))
-                                          (with-abs-speed-taken (with-abs-speed-taken h p) x)))))))))
+      (let ((p (make-symbol "P")) (x (make-symbol "X")))
+        (setf expression
+              (substitute-expressions (list (cons p (getf (group-line group) :speed))
+                                            (cons x (getf (group-line group) :distance)))
+                                      (along-speed-line run group expression p x)))))))
