@@ -8,7 +8,8 @@
 ;;;; (the one the numeric integrator watches: numeric.lisp) is followed along the closed-form
 ;;;; motion itself, on a grid of times growing geometrically from 1e-6 by 0.1% a step (about
 ;;;; 23,000 evaluations up to 1e6), and the first crossing below zero is located by bisection:
-;;;; the candidate's time is that number. A crossing that starts and ends between two grid
+;;;; the candidate's time is that number. Only a root Maxima could not give is looked for so
+;;;; ((:EARLIEST-ROOT-OF ...)): an undecided sign is the run's branch, as before. A crossing that starts and ends between two grid
 ;;;; times (a grazing dip) is missed, as by the numeric integrator's own event search. No
 ;;;; crossing up to the grid's end (or where the function stops having a value) leaves the
 ;;;; condition undecided, as before.
@@ -117,5 +118,12 @@ where it is undecided and the run has parameter values, the numeric root."
       (if (and (null (rest involved)) (eq (group-kind (first involved)) :speed-line))
           (speed-line-candidate run solved groups (first involved) condition)
           (tau-candidate run solved groups condition))
-    (or (and (eq result :unknown) (numeric-root-candidate run solved groups condition))
+    (or (and (eq result :unknown) (root-not-found-p fact)
+             (numeric-root-candidate run solved groups condition))
         (values result fact not-before))))
+
+(defun root-not-found-p (fact)
+  "True when the undecided FACT says that Maxima found no provable root, (:EARLIEST-ROOT-OF
+...), rather than naming a sign the assumptions leave open (a fact to branch on, whose
+branches have closed forms)."
+  (and (consp fact) (eq (first fact) :earliest-root-of)))
