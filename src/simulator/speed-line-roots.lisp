@@ -63,3 +63,18 @@ root settled by the motion's monotony where it applies (see the file header)."
                                  (tidy run (at-time (time-derivative g) root) :full))))
                   (make-candidate condition (condition-event condition rate) root :rate rate))
                 (values result fact not-before)))))))
+
+(defun reversal-watched-p (run solved group)
+  "True when a termination condition of the state's model fires where GROUP's speed p
+along its line reaches 0: its function, written along the line, is linear in p alone and
+vanishes at p = 0 (a quadratic drag's turning point: src/kb/drag.lisp)."
+  (let ((p (make-symbol "P")) (x (make-symbol "X")))
+    (some (lambda (condition)
+            (let ((relation (ames.engine:termination-condition-relation condition)))
+              (and (member (first relation) '(< <= > >=))
+                   (let ((h (along-speed-line run group (over-state-terms run solved (violation-function relation))
+                                              p x)))
+                     (and (free-of-p x h) (not (free-of-p p h))
+                          (free-of-p p (ames.geometry:differentiate h p))
+                          (eql 0 (tidy run (substitute-expressions (list (cons p 0)) h) :full)))))))
+          (ames.engine:model-termination-conditions (run-model run)))))

@@ -26,7 +26,9 @@
 ;;;; with P = integral of p from 0 to tau. Positions are q0 + e P and velocities e p. A
 ;;;; body thrown up against gravity and drag slows to rest (p reaches 0): the knowledge
 ;;;; base's turning event ends the state there (src/kb/drag.lisp), so the motion is used
-;;;; while p >= 0 only, where the formulas are the solution. Each is checked by Maxima:
+;;;; while p >= 0 only, where the formulas are the solution: a motion that may reach p = 0
+;;;; (p0 = 1 and A not proven >= 0) is integrated so only when a termination condition of the
+;;;; model fires there (REVERSAL-WATCHED-P), else numerically. Each is checked by Maxima:
 ;;;; p' - f(p) and P' - p simplify to 0, p(0) = p0 and P(0) = 0; otherwise the group is
 ;;;; integrated numerically. Nothing here knows which force it integrates.
 ;;;;
@@ -160,9 +162,15 @@ rest in equilibrium. Returns GROUP, or NIL (it is then integrated numerically)."
                   (and coefficients (apply #'riccati-solution run (append coefficients (list p0))))
                 (unless (and speed (riccati-verified-p run f p0 speed distance))
                   (return-from integrate-speed-line nil))
+                (setf (group-line group) (list :direction direction :from q0
+                                               :speed speed :distance distance))
+                ;; a motion that may come to rest and reverse is used only where the
+                ;; model ends the state there (the formulas hold while p >= 0)
+                (unless (or (eql p0 0) (holds run `(>= ,(first coefficients) 0))
+                            (reversal-watched-p run solved group))
+                  (setf (group-line group) nil)
+                  (return-from integrate-speed-line nil))
                 (setf (group-kind group) :speed-line
-                      (group-line group) (list :direction direction :from q0
-                                               :speed speed :distance distance)
                       (group-motion group)
                       (append (mapcar (lambda (q p e) (cons q (tidy run `(+ ,p (* ,e ,distance)) :full)))
                                       positions q0 direction)
