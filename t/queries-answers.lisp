@@ -131,6 +131,8 @@ adds them) at AT, :START or :END, or NIL where it has none there in closed form.
          (arc (find "ARC-LENGTH" (alexandria:flatten total) :key (lambda (x) (and (symbolp x) (symbol-name x)))
                                                             :test #'equal)))
     (cond ((null total) nil)
+          ;; a motion with no closed form (numbers only): its total is over quantity terms
+          ((find-if #'ames.base:quantity-term-p (ames.base:expression-variables total)) nil)
           (arc (let ((s (if (eq at :start)
                             (or (getf (ames.simulator:state-path-coordinates state) :arc-length-from)
                                 (let ((lines (ames.simulator:state-line-coordinates state)))

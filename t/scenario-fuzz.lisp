@@ -77,8 +77,11 @@ of FUNCTION on that list and the element's index."
           collect i))
 
 (defun moving-body-indices (form)
-  "The indices in FORM of its clauses declaring a body that is not fixed."
-  (remove-if (lambda (i) (member :fixed (nth i form))) (clause-indices form "BODY")))
+  "The indices in FORM of its clauses declaring a body that is neither fixed nor driven
+(each of :mass, :position, :velocity and :shape is required of it: a driven body has no
+mass and its position defaults)."
+  (remove-if (lambda (i) (or (member :fixed (nth i form)) (member :driven (nth i form))))
+             (clause-indices form "BODY")))
 
 (defun malformed-mutation (form state)
   "A mutation of the valid scenario FORM that is malformed whatever the dice say, and

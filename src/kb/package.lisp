@@ -46,7 +46,7 @@ syntax in src/scenario/.")
    #:normal #:reaction #:gravity #:external #:environment
    ;; springs, ropes, universal gravitation, energy (spans.lisp, springs.lisp, ropes.lisp,
    ;; gravitation.lisp, energy.lisp): the quantities the simulator provides (a free body's
-   ;; position at the state's start) and reads
-   #:initial-pos #:span #:span-length #:span-direction #:span-acceleration #:tension
+   ;; position and velocity at the state's start) and reads
+   #:initial-pos #:initial-vel #:span #:span-length #:span-direction #:span-acceleration #:tension
    #:kinetic-energy #:momentum #:potential-energy #:pressing #:taut
    #:unmodelled-situation))

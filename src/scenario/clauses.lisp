@@ -213,7 +213,7 @@ order."
              (reject validation 'unknown-clause-error clause
                      "~A is not a clause of the scenario language~A; the clauses are ~
                       parameters, gravity, body, force, simulate, query, restitution, ~
-                      friction, spring, pulley, rope, gravitation and hinge"
+                      friction, spring, pulley, rope, gravitation, hinge and drag"
                      (show (car clause))
                      (if (symbolp (car clause))
                          (did-you-mean (symbol-name (car clause))
@@ -236,7 +236,8 @@ order."
         (declare-name validation name :parameter))))
   (loop for (word kind) in '((ames-scenario:body :body) (ames-scenario:force :force)
                              (ames-scenario:spring :spring) (ames-scenario:pulley :pulley)
-                             (ames-scenario:rope :rope) (ames-scenario:hinge :hinge))
+                             (ames-scenario:rope :rope) (ames-scenario:hinge :hinge)
+                             (ames-scenario:drag :drag))
         do (dolist (clause (cdr (assoc word sorted)))
              (enter validation (format nil "clause ~A" word) clause)
              (when (null (rest clause))

@@ -202,7 +202,7 @@ names between.")
       (checked-positive validation (second clause) "the gravitational constant"))))
 
 (defun checked-extensions (validation sorted bodies)
-  "The extensions plist (:SPRINGS :PULLEYS :ROPES :GRAVITATION) of the SORTED clauses
+  "The extensions plist (:SPRINGS :PULLEYS :ROPES :GRAVITATION :KB-CLAUSES) of the SORTED clauses
 (an alist WORD -> clauses, as SORTED-CLAUSES makes it), the checked BODIES given."
   (flet ((clauses (word) (cdr (assoc word sorted))))
     (let ((pulleys (mapcar (lambda (c) (checked-pulley validation c))
@@ -214,4 +214,5 @@ names between.")
                            (clauses 'ames-scenario:rope))
             :gravitation (checked-gravitation validation (clauses 'ames-scenario:gravitation))
             :hinges (mapcar (lambda (c) (checked-hinge validation c))
-                            (clauses 'ames-scenario:hinge))))))
+                            (clauses 'ames-scenario:hinge))
+            :kb-clauses (checked-kb-clauses validation sorted bodies)))))

@@ -18,6 +18,7 @@
    #:restitution
    #:friction
    #:spring #:pulley #:rope #:gravitation #:hinge
+   #:drag
    #:point #:circle #:polygon #:outline #:line #:arc #:segment #:half-plane)
   (:documentation "The package scenario files are read into (with *READ-EVAL* nil and
 a restricted readtable). It uses no package: it holds the user's names, and imports
@@ -60,6 +61,8 @@ and Maxima (assumptions, overlaps).")
    #:find-scenario-pulley
    #:scenario-rope #:scenario-rope-name #:scenario-rope-length #:scenario-rope-through
    #:rope-point-position
+   ;; clauses the knowledge base reads as entities (kb-clauses.lisp, drag.lisp)
+   #:scenario-kb-clauses
    #:scenario-parameter #:scenario-parameter-name #:scenario-parameter-assumptions
    #:scenario-parameter-value
    #:scenario-body #:scenario-body-name #:scenario-body-shape #:scenario-body-mass

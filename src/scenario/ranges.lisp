@@ -107,6 +107,7 @@ CLASS . OPTIONS) like SCENARIO-FACTS (see this file's header)."
           (mapcan #'restitution-facts (scenario-restitutions scenario))
           (mapcan #'spring-facts (scenario-springs scenario))
           (mapcan (lambda (rope) (rope-facts scenario rope)) (scenario-ropes scenario))
+          (kb-clause-facts scenario)
           (let ((g (scenario-gravitation scenario)))
             (when g
               (list (list "clause GRAVITATION" `(> ,g 0)

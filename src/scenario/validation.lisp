@@ -102,7 +102,7 @@ under the print settings REJECT-BECAUSE binds (short, in the form's package)."
     ames-scenario:restitution
     ames-scenario:friction
     ames-scenario:spring ames-scenario:pulley ames-scenario:rope ames-scenario:gravitation
-    ames-scenario:hinge)
+    ames-scenario:hinge ames-scenario:drag)
   "The clauses of a scenario.")
 
 (defun check-name (validation name what)

@@ -8,9 +8,9 @@
 ;;;; the start of the state.
 ;;;;
 ;;;; Generic rules this file adds (see STATE-RELATION-VERDICT and PROBE-VERDICT):
-;;;;   - (initial-pos B :x), a free body's coordinate at the start of the current state, is a
-;;;;     constant of the state: it is replaced by its value before the model is solved and
-;;;;     before a condition is examined;
+;;;;   - (initial-pos B :x) and (initial-vel B :x), a free body's coordinate and velocity at
+;;;;     the start of the current state, are constants of the state: they are replaced by their
+;;;;     values before the model is solved and before a condition is examined;
 ;;;;   - a relation over positions and velocities is decided on their values at the start; an
 ;;;;     equation X = 0 (or X /= 0) that holds at the start may stop holding at once, as a
 ;;;;     touching contact may: it is a :CHOICE, settled by consistency (src/simulator/choice.lisp);
@@ -148,25 +148,31 @@ touching case is recognised (a point behind it reads :FALSE)."
 
 (defun starting-values (run)
   "Alist of the state terms' values at the start of the state: every free body's
-(initial-pos B :x/:y), (pos B :x/:y) and (vel B :x/:y)."
+(initial-pos B :x/:y), (pos B :x/:y), (initial-vel B :x/:y) and (vel B :x/:y)."
   (loop for body in (free-body-names run)
         for p = (body-position run body) for v = (body-velocity run body)
         append (loop for axis in '(:x :y)
                      collect (cons (list 'ames.kb:initial-pos body axis) (axis-of p axis))
                      collect (cons (list 'ames.kb:pos body axis) (axis-of p axis))
+                     collect (cons (list 'ames.kb:initial-vel body axis) (axis-of v axis))
                      collect (cons (list 'ames.kb:vel body axis) (axis-of v axis)))))
 
 (defun with-initial-positions (run expression)
-  "EXPRESSION with every (initial-pos B :x) replaced by B's coordinate at the start of the
-state: a constant of the state; then square roots of the constants' perfect squares
-taken (see CONSTANT-ROOTS-TAKEN)."
+  "EXPRESSION with every (initial-pos B :x) and (initial-vel B :x) replaced by B's
+coordinate or velocity at the start of the state: constants of the state (see
+STATE-CONSTANT-TERM-P); then square roots of the constants' perfect squares taken (see
+CONSTANT-ROOTS-TAKEN)."
   (constant-roots-taken
-   run (if (some (lambda (term) (and (consp term) (eq (first term) 'ames.kb:initial-pos)))
-                 (expression-variables expression))
-           (substitute-expressions (remove 'ames.kb:initial-pos (starting-values run)
-                                           :key #'caar :test-not #'eq)
+   run (if (some #'state-constant-term-p (expression-variables expression))
+           (substitute-expressions (remove-if-not #'state-constant-term-p (starting-values run)
+                                                  :key #'car)
                                    expression)
            expression)))
+
+(defun state-constant-term-p (term)
+  "True when TERM is (initial-pos B :x) or (initial-vel B :x): a free body's coordinate or
+velocity at the start of the current state, a constant of the state."
+  (and (consp term) (member (first term) '(ames.kb:initial-pos ames.kb:initial-vel)) t))
 
 (defun constant-roots-taken (run expression)
   "EXPRESSION with each square root of a constant (no quantity term in it) whose radicand

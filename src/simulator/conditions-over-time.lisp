@@ -64,7 +64,7 @@ state terms."
          (straight-arc-speed-terms run solved (second term)))
         ((eq (first term) 'ames.kb:contact-gap)
          (ames.geometry:meeting-gap (contact-meeting-terms run solved (second term))))
-        ((eq (first term) 'ames.kb:initial-pos) (with-initial-positions run term))
+        ((state-constant-term-p term) (with-initial-positions run term))
         (t (quantity-value solved term))))
 
 (defun over-state-terms (run solved expression)

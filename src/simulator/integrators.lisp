@@ -15,6 +15,9 @@
 ;;;;   :LINE      one degree of freedom along a fixed line of the configuration space
 ;;;;              (two bodies falling together under gravitation): like :PATH, by its
 ;;;;              energy integral (line.lisp); when the group is no such motion, :NUMERIC;
+;;;;   :SPEED-LINE accelerations that depend on the velocities alone and keep the group on a
+;;;;              fixed line (quadratic drag): a Riccati equation in the speed along it,
+;;;;              closed forms in TAU (speed-line.lisp); else :NUMERIC;
 ;;;;   :NUMERIC   anything else: no closed form (numbers only under --set).
 
 (in-package #:ames.simulator)
@@ -217,7 +220,9 @@ searched, under parameter values: see numeric.lisp)."
         (:path (integrate-path run solved group))
         (:linear (unless (integrate-linear run solved group)
                    (setf (group-kind group) :numeric)))
-        (:line (unless (integrate-line run solved group)
+        (:line (unless (or (integrate-line run solved group)
+                           ;; velocity-dependent forces along a line (speed-line.lisp)
+                           (integrate-speed-line run solved group))
                  (setf (group-kind group) :numeric)))
         (:numeric)))))
 
@@ -237,8 +242,11 @@ assumptions leave open."
                             terms))))
     (handler-case
         (multiple-value-bind (position-values velocity-values)
-            (ames.algebra:solve-linear-odes (run-bridge run) accelerations positions velocities
-                                           (funcall initial positions) (funcall initial velocities))
+            (call-answering-sign-questions
+             run "the sign that selects the closed form of a linear motion"
+             (lambda ()
+               (ames.algebra:solve-linear-odes (run-bridge run) accelerations positions velocities
+                                              (funcall initial positions) (funcall initial velocities))))
           (setf (group-motion group)
                 (mapcar (lambda (entry) (cons (car entry) (tidy run (cdr entry) :full)))
                         (append position-values velocity-values)))

@@ -20,10 +20,10 @@
 
 (defun numeric-root-fallback-p (run fact)
   "True when an undecided FACT of a closed-form condition is the missing earliest root
-of a function of TAU with sines or cosines of TAU, and the run's numbers are known."
+of a function of TAU (with sines or cosines of TAU, or with no elementary root: a Lambert
+W, ln cosh = c), and the run's numbers are known."
   (and (run-numbers-known-p run)
-       (consp fact) (eq (first fact) :earliest-root-of)
-       (trigonometric-in-time-p (second (second fact)))))
+       (consp fact) (eq (first fact) :earliest-root-of)))
 
 (defun time-frequencies (expression)
   "The rates d(argument)/d(TAU) of the sines and cosines of TAU in EXPRESSION."
@@ -104,6 +104,26 @@ of TAU crosses below zero, or NIL."
              (setf time next before after rate-before rate-after))
     nil))
 
+(defparameter *geometric-root-grid* '(1d-6 1.001d0 1d6)
+  "The grid of times the search follows where the functions have no period: (FIRST
+RATIO LAST), about 23,000 times from 1e-6 growing by 0.1% a step.")
+
+(defun first-geometric-crossing (function horizon)
+  "The first TAU > 0 (up to HORIZON, or the grid's end) on *GEOMETRIC-ROOT-GRID* where
+FUNCTION of TAU goes from >= 0 to < 0, bisected to double precision, or NIL. A dip that
+starts and ends between two grid times is missed, as by the numeric integrator's own
+event search; the search ends where FUNCTION has no value."
+  (destructuring-bind (first ratio last) *geometric-root-grid*
+    (let ((previous 0d0) (before (funcall function 0d0))
+          (last (if horizon (min last horizon) last)))
+      (loop for time = first then (min (* time ratio) last)
+            for value = (funcall function time)
+            do (cond ((null value) (return nil))
+                     ((and before (>= before 0) (< value 0))
+                      (return (bisect-crossing function previous time))))
+               (when (>= time last) (return nil))
+               (setf previous time before value)))))
+
 (defun condition-crossing-functions (run solved groups condition)
   "CONDITION's event functions of TAU alone (see NUMERIC-EVENT-FUNCTIONS: one per part
 of an OR, a contact's gap only within its extent), and the rate of its violation
@@ -182,8 +202,6 @@ fires within the search's reach."
   (let ((step (sampling-step run solved groups conditions))
         (horizon (and horizon (coerce horizon 'double-float)))
         (found '()) (unfired '()))
-    (unless step
-      (return-from closed-form-numeric-candidates (values '() conditions)))
     (dolist (condition conditions)
       (multiple-value-bind (functions rate) (condition-crossing-functions run solved groups condition)
         (let* ((reach (and (not (eq (first (ames.engine:termination-condition-relation condition)) 'or))
@@ -191,8 +209,11 @@ fires within the search's reach."
                ;; past REACH it is positive for ever: searched up to there, never is proven
                (until (if (and horizon reach) (min horizon (+ reach step)) (or horizon (and reach (+ reach step)))))
                (times (loop for function in functions
-                            for crossing = (first-numeric-crossing
-                                            function (or rate (constantly nil)) step until)
+                            for crossing = (if step
+                                               (first-numeric-crossing
+                                                function (or rate (constantly nil)) step until)
+                                               ;; no period: a geometric grid of times
+                                               (first-geometric-crossing function until))
                             when crossing collect crossing))
                (time (and times (reduce #'min times))))
           (cond ((and time (plusp time))
@@ -231,7 +252,7 @@ fire before it are left out; with no earlier candidate, those not found stay UNK
 
 (defun closed-form-in-time-p (groups)
   "True when every group of GROUPS has a closed form in TAU."
-  (every (lambda (group) (member (group-kind group) '(:constant :linear))) groups))
+  (every (lambda (group) (member (group-kind group) '(:constant :linear :speed-line))) groups))
 
 (defun numeric-root-end-p (groups fired)
   "True when the FIRED candidates were found by the numeric root search (numeric times)

@@ -271,7 +271,7 @@ knows: a body's position or velocity, the arc length along a contact or its rate
 
 (defun kinematic-verdict (run relation)
   "RELATION decided on the state's starting values: its kinematic quantities (see
-STATE-QUANTITY-P, and the starting positions (initial-pos B :x)) replaced by their
+STATE-QUANTITY-P, and the state's constants (initial-pos B :x), (initial-vel B :x)) replaced by their
 values at the start, square roots of constant squares taken (CONSTANT-ROOTS-TAKEN), then
 Maxima's verdict. :CHOICE when the state's first instant does not settle it: an
 equation or inequation over kinematic quantities whose sides are equal at the start (a
@@ -286,8 +286,8 @@ relation over no kinematic quantity is decided as it is."
   (let ((values (loop for term in (expression-variables relation)
                       when (state-quantity-p term)
                         collect (cons term (initial-state-value run term))
-                      when (and (consp term) (eq (first term) 'ames.kb:initial-pos))
-                        collect (cons term (axis-of (body-position run (second term)) (third term))))))
+                      when (state-constant-term-p term)
+                        collect (cons term (with-initial-positions run term)))))
     (if (null values)
         (decide run relation)
         (let* ((at-start (constant-roots-taken run (substitute-expressions values relation)))

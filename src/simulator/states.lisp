@@ -27,7 +27,8 @@ integrated numerically, the list (:NO-CLOSED-FORM)."
 (defun over-motion (run solved groups expression)
   "EXPRESSION (over quantity terms) over the state's motion, simplified: a function of
 TAU, or of the arc length for a body on a curve."
-  (tidy run (motion-value groups (over-state-terms run solved expression)) :full))
+  (tidy run (motion-value groups (speed-line-signs-taken run groups (over-state-terms run solved expression)))
+        :full))
 
 (defun reported-entries (run solved groups section)
   "The entries the knowledge base reports in SECTION (:FORCES), their quantity terms
