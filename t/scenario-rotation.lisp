@@ -232,3 +232,19 @@ translating body's is its own."
              (is (< (abs (- (ames.base:expression-value y) ey)) 1d-12)))
     (let ((c (ames:find-scenario-body 'c scenario)))
       (is (eq (ames:scenario-body-shape c) (ames.scenario:scenario-body-start-shape c))))))
+
+(test simulator-refuses-a-value-at-reaches
+  "A value query whose WHEN is (reaches QUANTITY VALUE) (the language's rotation section)
+validates, as (:reaches QUANTITY VALUE); the simulator does not answer it yet and refuses
+the scenario, naming the query, rather than dropping it."
+  (let* ((form (rotating-scenario '(gravity g)
+                                  '(body ball :mass m :position (0 h) :velocity (0 0) :shape point)
+                                  '(query speed-at-ground (value (speed ball) :at (reaches (y ball) 0)))))
+         (query (first (ames:scenario-queries (ames:parse-scenario form)))))
+    (is (eq :reaches (first (getf (cddr (second query)) :at))))
+    (with-fixture simulator-bridge ()
+      (let ((condition (handler-case (ames:simulate form :bridge bridge)
+                         (ames-error (c) c))))
+        (is (typep condition 'ames:unsupported-situation))
+        (when condition
+          (is (string= "SPEED-AT-GROUND" (symbol-name (ames-error-datum condition)))))))))

@@ -35,20 +35,31 @@ Relations (world frame, n the outward normal of a face, t its direction a -> b):
       of the body's point p, and the body turning pays the rope out at the rate
       omega (k x d) . u (u from T toward the previous point): the gap L - sum of the
       pieces gains (k x d) . u (theta - theta0).
-A finite face holds a vertex or disc only while the contact point lies within it (beyond
-it, the relation's gap is set far open). Contacts between two free bodies are not
-modelled (refused when both have an extent).
+A face holds a vertex or disc only while the contact point lies within the face's extent
+and in front of it (siconos_rotation_relations.py: beyond, the relation's gap is set far
+open). Contacts between two free bodies are not modelled: the run is cut (:truncated)
+when two come near enough to touch. Moreau-Jean keeps the relations at the velocity level;
+after each step the positions are projected back onto the hinges and the contacts that
+pressed (a mass-weighted Gauss-Newton step), so that a turning body does not drift off
+them. Siconos 4.4 leaves the outputs (y, y') and the last impulse of an interaction it did
+not keep active stale: the driver sets the outputs from which the next step activates
+the relations, and reads no impulse of a contact its face no longer holds.
 
-Events (besides those of the translating driver's format):
+Events (siconos_rotation_events.py; the translating driver's format):
   :collision A B      an approach speed jumps (an impulse);
-  :lift-off A B       a contact that pressed (impulse > 0) stops pressing: the time where
-                      the normal force, extrapolated linearly from the last two steps that
-                      pressed, reaches 0;
-  :stops-sliding A B  a pressing contact's tangential speed reaches 0 (linear
-                      interpolation inside the step); :starts-sliding the converse;
+  :lift-off A B       a contact that pressed (impulse > 0) stops pressing for good (QUIET
+                      steps): at the time where the normal force, extrapolated linearly
+                      from the last two steps that pressed, reaches 0;
+  :leaves A B         a pressing contact's point passes an end of its face (interpolated);
+  :stops-sliding A B  a pressing contact's tangential speed reaches 0 (where the slip,
+                      falling as in the step before, reaches 0); :starts-sliding the
+                      converse;
+  :tightens R R, :slackens R R   a rope's, as a contact's collision and lift-off;
   :reaches BODY "angle"  a probe: BODY's angle crosses the model's probe value.
 Each event and the end add :angles ((BODY THETA) ...) and :angular-velocities, and
-:hinges ((NAME (FX FY)) ...) the hinges' reaction forces (impulse / STEP).
+:hinges ((NAME (FX FY)) ...) the hinges' reaction forces (impulse / STEP). A force at a
+point of a rotating body ("forces_at") keeps its world components; its torque is taken at
+the step's start (explicit, first order like the scheme).
 """
 
 import numpy as np

@@ -24,8 +24,14 @@
 ;;;;   through (X Y), whose radius may not be 0 nor exceed R. Of the two tangents from the
 ;;;;   rope's neighbouring point, the rope leaves the circle at the one on the side of
 ;;;;   (X Y) (so (X Y) at the circle's leftmost point hangs the rope down its left side).
+;;;; - (segment A B) with an :inertia is a thin rod (the textbook ladder or pendulum rod):
+;;;;   :uniform gives m |B - A|^2 / 12 about its midpoint, which must be its reference point.
 ;;;; - (angle B), (angular-velocity B), (angular-acceleration B) name a rotating body,
-;;;;   (hinge-force H) a hinge (a vector: (x (hinge-force H)), (y ...)).
+;;;;   (hinge-force H) a hinge (a vector: (x (hinge-force H)), (y ...)); a value query's WHEN
+;;;;   may be (reaches QUANTITY VALUE) (canonical (:reaches QUANTITY VALUE), queries.lisp).
+;;;; - Until the simulator rotates bodies, SCENARIO-AWAITING (rotation-checks.lisp) lists what
+;;;;   a scenario asks that AMES cannot do yet, and SIMULATE refuses such a scenario with an
+;;;;   UNSUPPORTED-SITUATION naming it (never runs a rotating body as a translating one).
 
 (in-package #:ames.scenario)
 
