@@ -42,6 +42,11 @@ checks that at every step and answers :unsupported when one turns. A rope is the
 unilateral constraint L - (sum of its pieces) >= 0 with Newton's law e = 0: its closing is
 (:tightens ROPE ROPE), its opening (:slackens ROPE ROPE).
 
+Models with arcs or circles (fixed, or two free round bodies), universal gravitation
+("gravitation": G, "attractors": fixed bodies with a mass) or bumpers go to
+siconos_arcs.ArcDriver, which adds turning points (:turns B B) and the state at requested
+times ("samples": [T, ...], printed as :samples).
+
 Bodies translate (no rotation). Every possible contact is a face (of an obstacle or of a
 free polygon body) against the support point of another free body: its gap is linear in
 the positions, so each is a LagrangianLinearTIR with a NewtonImpactNSL. The driver keeps
