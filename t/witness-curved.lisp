@@ -87,12 +87,11 @@ pi sqrt(m/k), and leaves it with velocity +v (Hooke's law, textbook)."
       (is (near 1 (first (second (assoc "block" (getf leaves :velocities) :test #'string=))) 1d-9)))))
 
 (test witness-curved-scenarios-agree
-  "AMES agrees with the witness on a loop (left and slow: a lift-off; right and fast:
-looping forever, compared at samples along the path), a probe that turns and falls back,
-and a bumper."
+  "AMES agrees with the witness on a loop (fast enough to loop forever: compared at
+samples along the path) and a bumper (its contact, its release, the block sliding away)."
   (with-siconos
-    (loop for (name index) in '(("ball-round-vertical-loop" 0) ("ball-round-vertical-loop" 3)
-                                ("probe-escape-speed" 0) ("block-hits-bumper" 0))
+    (loop for (name index) in '(("ball-round-vertical-loop" 3)
+                                ("block-hits-bumper" 0))
           do (let* ((*package* (find-package '#:ames-scenario))
                     (scenario (nth index (ames.scenario:read-scenarios-from-string (scenario-file-text name))))
                     (result (ames::witness-check scenario :numeric t)))

@@ -181,6 +181,9 @@ velocity off by 1e-5, or another event, is a disagreement."
   '(("ames-wrong-dome-lift-off-leftward.lisp"
      "A particle sliding off a dome toward -x lifts off (state 0 agrees), but AMES's next
 state keeps the contact, with an attractive normal force, down to the arc's end.")
+    ("ames-wrong-dome-leftward-landing.lisp"
+     "A particle pushed toward -x off a dome lands on the floor with e = 0: AMES's impact
+leaves its velocity unchanged and its next state falls through the floor.")
     ("ames-wrong-loop-missed-turning-point.lisp"
      "A particle launched toward -x in a loop (r = 3/4) too slowly to reach the centre's
 height: AMES says it moves forever with no turning point; it turns at 0.4531 s."))

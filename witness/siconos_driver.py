@@ -43,8 +43,13 @@ unilateral constraint L - (sum of its pieces) >= 0 with Newton's law e = 0: its 
 (:tightens ROPE ROPE), its opening (:slackens ROPE ROPE).
 
 A model with a rotating body (an "inertia") or a hinge is simulated by siconos_rotation.py
-(three degrees of freedom per body, Moreau-Jean time stepping; see there). Otherwise
-bodies translate (no rotation). Every possible contact is a face (of an obstacle or of a
+(three degrees of freedom per body, Moreau-Jean time stepping; see there). Models with arcs
+or circles (fixed, or two free round bodies), universal gravitation ("gravitation": G,
+"attractors": fixed bodies with a mass) or bumpers go to siconos_arcs.ArcDriver, which adds
+turning points (:turns B B) and the state at requested times ("samples": [T, ...], printed
+as :samples).
+
+Otherwise bodies translate (no rotation). Every possible contact is a face (of an obstacle or of a
 free polygon body) against the support point of another free body: its gap is linear in
 the positions, so each is a LagrangianLinearTIR with a NewtonImpactNSL. The driver keeps
 the set of contacts whose face extent covers the body (and that the body is not behind);
@@ -202,7 +207,9 @@ def pair_names(contact, bodies):
     return contact.names(bodies)
 
 
-def make_contacts(model, bodies):
+def make_contacts(model, bodies, curved=False):
+    """The faces' contacts; two round bodies are refused unless CURVED (siconos_arcs.py
+    makes their contact)."""
     contacts, seen = [], set()
     for obstacle in model.get("obstacles", []):
         for face in obstacle["faces"]:
@@ -225,7 +232,7 @@ def make_contacts(model, bodies):
                 contacts.append(c)
     for i, x in enumerate(bodies):
         for j, y in enumerate(bodies):
-            if i < j and x.kind != "polygon" and y.kind != "polygon":
+            if i < j and x.kind != "polygon" and y.kind != "polygon" and not curved:
                 if not (x.kind == "point" and y.kind == "point"):
                     raise Unsupported("contacts between %s and %s (discs) are not linear" %
                                       (x.name, y.name))
