@@ -216,6 +216,15 @@ the process is discarded: a new one is built from the remaining frames."
                           :cache nil)
         (maxima-condition () (discard-process bridge))))))
 
+(defun call-in-pending-frame (bridge frame thunk)
+  "Call THUNK with FRAME pushed but not set up in Maxima: OPEN-PENDING-FRAMES sets it up
+before the first request that reaches Maxima inside, POP-FRAME kills it only if it was.
+Returns THUNK's values."
+  (setf (assumption-frame-opened frame) nil)
+  (push frame (bridge-frames bridge))
+  (unwind-protect (funcall thunk)
+    (pop-frame bridge frame)))
+
 (defun call-with-assumptions (bridge facts thunk)
   "Call THUNK with FACTS (a list of relations in prefix algebra, e.g.
 ((> mp 0) (> a 0) (< a (/ pi 2)))) assumed in BRIDGE's Maxima, in a scope of their own
@@ -226,7 +235,9 @@ real roots (sqrt(A) sqrt(B) = -sqrt(-A) sqrt(-B) for A, B < 0). Returns THUNK's 
 Signals UNTRANSLATABLE-EXPRESSION for a fact outside the algebra, MAXIMA-ERROR when
 Maxima cannot assume a fact (a disjunction, say), and INCONSISTENT-ASSUMPTIONS naming
 the fact that contradicts the facts in force; its restart RETRACT-ASSUMPTION calls THUNK
-under the other facts."
+under the other facts. Facts in force that were set up in this Maxima process before
+without contradiction are not set up again until a request needs them (see
+CALL-IN-PENDING-FRAME)."
   (unless (listp facts)
     (error 'untranslatable-expression :datum facts :expression facts
                                       :detail "assumptions must be a list of relations"))
@@ -250,12 +261,7 @@ under the other facts."
                                        (mapcar (lambda (fact) (fact-to-maxima table fact))
                                                assumed))))
     (when (known-consistent-p bridge frame)
-      ;; set up in Maxima only if a request inside needs it (see OPEN-PENDING-FRAMES)
-      (setf (assumption-frame-opened frame) nil)
-      (push frame (bridge-frames bridge))
-      (return-from call-with-assumptions
-        (unwind-protect (funcall thunk)
-          (pop-frame bridge frame))))
+      (return-from call-with-assumptions (call-in-pending-frame bridge frame thunk)))
     (let* ((answer (let ((opened nil))
                      (unwind-protect
                           (prog1 (maxima-request bridge (frame-setup-form frame)
