@@ -75,3 +75,29 @@
                        ((a . 7/3) (b . -4) (c . -11/5)) ((a . 0) (b . 0) (c . 1))))
         (is (= (ames.base:expression-value expression point)
                (polynomial-value (ames.simulator::expanded-monomials expression) point)))))))
+
+(test a-scope-seen-before-is-set-up-only-when-a-request-needs-it
+  (call-with-bridge
+   (lambda (b)
+     (ames.maxima:with-assumptions (b '((> x 0)))
+       ;; first time: set up at once (a contradiction is still signalled where it is entered)
+       (signals ames.maxima:inconsistent-assumptions
+         (ames.maxima:with-assumptions (b '((< x -1)))
+           (ames.algebra:decide b '(> (* x y) 0))))
+       (ames.maxima:with-assumptions (b '((> y 1)))
+         (is (eq :true (ames.algebra:decide b '(> (+ (* x y) (* x y y)) (* x y))))))
+       ;; again: the answer is in the cache, and entering and leaving cost no round trip
+       (let ((before (round-trips b)))
+         (ames.maxima:with-assumptions (b '((> y 1)))
+           (is (eq :true (ames.algebra:decide b '(> (+ (* x y) (* x y y)) (* x y))))))
+         (is (= before (round-trips b))))
+       ;; again, with a question that reaches Maxima: the scope is set up first, and its
+       ;; facts are in force for the answer
+       (let ((before (round-trips b)))
+         (ames.maxima:with-assumptions (b '((> y 1)))
+           (is (ames.maxima:equivalent-p b '(abs (- y 1)) '(- y 1))))
+         (is (< before (round-trips b))))
+       ;; left: y > 1 is no longer in force, x > 0 still is
+       (is (eq :unknown (ames.algebra:decide b '(> (- y 1) 0))))
+       (is (eq :true (ames.algebra:decide b '(> (* 2 x) 0))))
+       (is (not (ames.maxima:equivalent-p b '(abs (- y 1)) '(- y 1))))))))

@@ -88,13 +88,67 @@ facts not included)."
         (discard-process bridge)
         (error 'maxima-process-died
                :datum (assumption-frame-facts frame)
-               :detail (format nil "replaying assumptions failed: ~S ~S" status data))))))
+               :detail (format nil "replaying assumptions failed: ~S ~S" status data)))
+      (setf (assumption-frame-opened frame) t))))
+
+;;; Scopes opened when first needed
+;;;
+;;; Most scopes of the reasoning (the order substitution's excess > 0, the cases of abs)
+;;; are entered again and again with the same facts, and the question asked inside is
+;;; then answered from the cache: setting up and killing the Maxima context cost two
+;;; round trips for nothing. A scope whose facts in force (all frames) were once set up
+;;; in this Maxima process without contradiction is therefore entered without asking
+;;; Maxima, and its context is set up only before the first request that reaches
+;;; Maxima inside it (OPEN-PENDING-FRAMES), killed only if it was set up. Facts not seen
+;;; before are set up at once, as before, so that a contradiction is still signalled
+;;; where the scope is entered.
+
+(defvar *consistent-scopes* (make-hash-table :test 'eq :weakness :key)
+  "Maxima process -> the set (a hash table) of the assumption numbers (see
+ASSUMPTION-KEY) whose scopes were set up in it without contradiction.")
+
+(defun consistent-scopes (bridge)
+  "The set of the assumption numbers known consistent in BRIDGE's current process."
+  (let ((process (bridge-process bridge)))
+    (and process
+         (or (gethash process *consistent-scopes*)
+             (setf (gethash process *consistent-scopes*) (make-hash-table))))))
+
+(defun known-consistent-p (bridge frame)
+  "True when the facts in force with FRAME pushed were set up in BRIDGE's process before
+without contradiction."
+  (let ((id (gethash (mapcar #'assumption-frame-maxima-facts (cons frame (bridge-frames bridge)))
+                     *assumption-ids*))
+        (known (consistent-scopes bridge)))
+    (and id known (bridge-alive-p bridge) (gethash id known))))
+
+(defun open-pending-frames (bridge timeout)
+  "Set up in Maxima, outermost first, the frames of BRIDGE entered without it (see
+KNOWN-CONSISTENT-P), each within TIMEOUT seconds. A set-up that does not answer :OK
+ends the process (a fresh one replays every frame) and signals MAXIMA-BUDGET-EXCEEDED
+(the run's time is up), MAXIMA-TIMEOUT or MAXIMA-PROCESS-DIED."
+  (dolist (frame (reverse (bridge-frames bridge)))
+    (unless (assumption-frame-opened frame)
+      (multiple-value-bind (status data)
+          (round-trip bridge (list :eval (frame-setup-form frame)) timeout)
+        (unless (eq status :ok)
+          (let ((facts (assumption-frame-facts frame)))
+            (discard-process bridge)
+            (cond ((and (eq status :timeout) (nth-value 1 (request-timeout bridge)))
+                   (signal-out-of-time facts))
+                  ((eq status :timeout)
+                   (error 'maxima-timeout :seconds timeout :datum facts
+                                          :detail "setting up assumptions was interrupted"))
+                  (t (error 'maxima-process-died
+                            :datum facts
+                            :detail (format nil "setting up assumptions failed: ~S ~S" status data))))))
+        (setf (assumption-frame-opened frame) t)))))
 
 (defun pop-frame (bridge frame)
   "Leave FRAME (the innermost) and kill its Maxima context. When Maxima cannot do that,
 the process is discarded: a new one is built from the remaining frames."
   (setf (bridge-frames bridge) (remove frame (bridge-frames bridge)))
-  (when (bridge-alive-p bridge)
+  (when (and (bridge-alive-p bridge) (assumption-frame-opened frame))
     (let ((parent (if (bridge-frames bridge)
                       (assumption-frame-context (first (bridge-frames bridge)))
                       +initial-context+)))
@@ -103,6 +157,15 @@ the process is discarded: a new one is built from the remaining frames."
                                         (assumption-frame-context frame) parent)
                           :cache nil)
         (maxima-condition () (discard-process bridge))))))
+
+(defun call-in-pending-frame (bridge frame thunk)
+  "Call THUNK with FRAME pushed but not set up in Maxima: OPEN-PENDING-FRAMES sets it up
+before the first request that reaches Maxima inside, POP-FRAME kills it only if it was.
+Returns THUNK's values."
+  (setf (assumption-frame-opened frame) nil)
+  (push frame (bridge-frames bridge))
+  (unwind-protect (funcall thunk)
+    (pop-frame bridge frame)))
 
 (defun call-with-assumptions (bridge facts thunk)
   "Call THUNK with FACTS (a list of relations in prefix algebra, e.g.
@@ -114,7 +177,9 @@ real roots (sqrt(A) sqrt(B) = -sqrt(-A) sqrt(-B) for A, B < 0). Returns THUNK's 
 Signals UNTRANSLATABLE-EXPRESSION for a fact outside the algebra, MAXIMA-ERROR when
 Maxima cannot assume a fact (a disjunction, say), and INCONSISTENT-ASSUMPTIONS naming
 the fact that contradicts the facts in force; its restart RETRACT-ASSUMPTION calls THUNK
-under the other facts."
+under the other facts. Facts in force that were set up in this Maxima process before
+without contradiction are not set up again until a request needs them (see
+CALL-IN-PENDING-FRAME)."
   (unless (listp facts)
     (error 'untranslatable-expression :datum facts :expression facts
                                       :detail "assumptions must be a list of relations"))
@@ -131,30 +196,35 @@ under the other facts."
          (assumed (append derived (mapcar (lambda (fact) (told-fact bridge fact)) flat)))
          (frame (make-assumption-frame (fresh-context-name table) facts
                                        (mapcar (lambda (fact) (fact-to-maxima table fact))
-                                               assumed)))
-         (answer (let ((opened nil))
-                   (unwind-protect
-                        (prog1 (maxima-request bridge (frame-setup-form frame)
-                                               :cache nil :datum facts)
-                          (setf opened t))
-                     ;; A failed set-up may have left the context open in Maxima.
-                     (unless opened (pop-frame bridge frame)))))
-         (verdicts (and (rest (mlist-items answer)) (mlist-items (second (mlist-items answer)))))
-         (position (position +inconsistent+ verdicts)))
-    (push frame (bridge-frames bridge))
-    (when position
-      (pop-frame bridge frame)
-      (let ((culprit (nth position sources)))
-        (restart-case
-            (error 'inconsistent-assumptions :fact culprit :datum facts
-                                             :detail "Maxima's assume() says inconsistent")
-          (retract-assumption ()
-            :report (lambda (stream)
-                      (format stream "Retract ~S and go on with the other facts." culprit))
-            (return-from call-with-assumptions
-              (call-with-assumptions bridge (remove-offending-fact culprit facts) thunk))))))
-    (unwind-protect (funcall thunk)
-      (pop-frame bridge frame))))
+                                               assumed))))
+    (when (known-consistent-p bridge frame)
+      (return-from call-with-assumptions (call-in-pending-frame bridge frame thunk)))
+    (let* ((answer (let ((opened nil))
+                     (unwind-protect
+                          (prog1 (maxima-request bridge (frame-setup-form frame)
+                                                 :cache nil :datum facts)
+                            (setf opened t))
+                       ;; A failed set-up may have left the context open in Maxima.
+                       (unless opened (pop-frame bridge frame)))))
+           (verdicts (and (rest (mlist-items answer)) (mlist-items (second (mlist-items answer)))))
+           (position (position +inconsistent+ verdicts)))
+      (push frame (bridge-frames bridge))
+      (if position
+          (pop-frame bridge frame)
+          (let ((known (consistent-scopes bridge)))
+            (when known (setf (gethash (assumption-key bridge) known) t))))
+      (when position
+        (let ((culprit (nth position sources)))
+          (restart-case
+              (error 'inconsistent-assumptions :fact culprit :datum facts
+                                               :detail "Maxima's assume() says inconsistent")
+            (retract-assumption ()
+              :report (lambda (stream)
+                        (format stream "Retract ~S and go on with the other facts." culprit))
+              (return-from call-with-assumptions
+                (call-with-assumptions bridge (remove-offending-fact culprit facts) thunk))))))
+      (unwind-protect (funcall thunk)
+        (pop-frame bridge frame)))))
 
 (defun remove-offending-fact (culprit facts)
   "FACTS without CULPRIT (or without the conjunction or negation that contains it)."

@@ -44,8 +44,9 @@ SXHASH a scenario with a thousand contacts spent most of its time comparing keys
 
 (defstruct (assumption-frame (:constructor make-assumption-frame (context facts maxima-facts)))
   "One WITH-ASSUMPTIONS scope: its Maxima context, the facts as given, and the facts as
-assumed in Maxima (including derived trigonometric sign facts)."
-  context facts maxima-facts)
+assumed in Maxima (including derived trigonometric sign facts); OPENED false while its
+context is not yet set up in Maxima (see OPEN-PENDING-FRAMES)."
+  context facts maxima-facts (opened t))
 
 (defclass bridge ()
   ((program :initarg :program :reader bridge-program
@@ -355,6 +356,7 @@ turns out to be gone, start a fresh one and try once more. Returns the reply's S
 and DATA."
   (flet ((attempt ()
            (ensure-process bridge)
+           (open-pending-frames bridge timeout)
            (round-trip bridge (list :eval form) timeout)))
     (handler-case (attempt)
       (server-gone ()
