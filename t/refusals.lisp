@@ -8,7 +8,9 @@
 ;;;; - a spring pair drifting into a third block: the earliest root of t + sin(2t)/2 = 6
 ;;;;   has no closed form, and is found with numbers;
 ;;;; - a weight pulled up into its pulley: the state ends there and the next is refused (it
-;;;;   passed through the pulley).
+;;;;   passed through the pulley);
+;;;; - issue 20's leftovers: a disc falling onto a block's corner (a sign() Maxima refused as
+;;;;   imaginary), the undecided sliding direction on a belt said over the parameters.
 ;;;;
 ;;;; Expected results are the textbook's (Atwood machine on an incline; centre of mass plus
 ;;;; relative oscillation), or invariants (the rope's length, the energy), computed here.
@@ -203,3 +205,36 @@ imaginary'), which stopped the run."
       (is (eq :state-limit (ames:history-outcome history)))
       (is-same bridge "the time the weight reaches the pulley"
                (ames:state-duration (first (ames:history-states history))) '(sqrt 884/1809)))))
+
+(defparameter *box-thrown-on-belt*
+  "(scenario box-thrown-on-belt \"A box thrown onto a moving belt: which way it slips is open.\"
+     (parameters (m :positive) (g :positive) (v :positive) (u :positive) (mu :positive) (h :positive))
+     (gravity g)
+     (body belt :driven t :velocity (v 0) :shape (half-plane (1 0) (0 0)))
+     (body box :mass m :position (0 h) :velocity (u 0) :shape (polygon (0 0) (1 0) (1 1) (0 1)))
+     (friction box belt :static mu)
+     (simulate :states 3 :branch nil))"
+  "A box thrown at u onto a belt moving at v: after it lands, it slips forward, backward
+or not at all as u - v is positive, negative or zero, which the assumptions leave open.")
+
+(test undecided-sliding-direction-is-a-fact-over-the-parameters
+  "The box lands after sqrt(2 h / g) with its horizontal velocity u; whether it slips on
+the belt is the sign of u - v. The missing fact says so over the parameters: it was the
+knowledge base's raw term 'path-speed(contact-0) = 0'."
+  (with-fixture simulator-bridge ()
+    (let* ((scenario (scenario-of-text *box-thrown-on-belt*))
+           (history (simulate-stopping-when-ambiguous scenario bridge))
+           (condition (getf (ames::history-notes history) :stopped-by))
+           (fact (ames::ambiguous-transition-missing-fact condition)))
+      (is (eq :ambiguous (ames:history-outcome history)))
+      (is-same bridge "the landing time" (ames:state-duration (first (ames:history-states history)))
+               (in-scenario-terms scenario '(sqrt (/ (* 2 h) g))))
+      (is (member (first fact) '(= /=)))
+      ;; no quantity term of the knowledge base left: a relation over the parameters
+      (is (notany (lambda (atom) (and (symbolp atom) (eq (symbol-package atom) (find-package '#:ames.kb))))
+                  (alexandria:flatten fact))
+          "a knowledge-base term in ~S" fact)
+      (let ((difference `(- ,(second fact) ,(third fact))))
+        (is (or (same-expression-p bridge difference (in-scenario-terms scenario '(- u v)))
+                (same-expression-p bridge difference (in-scenario-terms scenario '(- v u))))
+            "the fact ~S is not u = v" fact)))))
