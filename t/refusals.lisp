@@ -238,3 +238,41 @@ knowledge base's raw term 'path-speed(contact-0) = 0'."
         (is (or (same-expression-p bridge difference (in-scenario-terms scenario '(- u v)))
                 (same-expression-p bridge difference (in-scenario-terms scenario '(- v u))))
             "the fact ~S is not u = v" fact)))))
+
+(defparameter *probe-declared-below-escape*
+  "(scenario probe-declared-below-escape-speed \"A probe launched straight up, declared below the escape speed.\"
+     (parameters (m :positive (:value 1)) (big-m :positive (:value 1000)) (big-g :positive (:value 1))
+                 (r :positive (:value 10)) (v0 :positive (< v0 (sqrt (/ (* 2 big-g big-m) r))) (:value 5)))
+     (gravitation big-g)
+     (body planet :mass big-m :fixed t :position (0 0) :shape (circle r))
+     (body probe :mass m :position (0 r) :velocity (0 v0) :shape point)
+     (simulate :states 2))"
+  "scenarios/probe-escape-speed.lisp's probe, with its bound below the escape speed
+declared.")
+
+(defun radial-rise-time (mu r v0)
+  "The time a body launched radially at V0 from R under mu / s^2 (below escape) takes to
+reach its apex R' = 2 mu r / (2 mu - r v0^2): the radial Kepler orbit's
+sqrt(R'^3 / (2 mu)) (sqrt(x (1 - x)) + acos(sqrt x)), x = r / R'."
+  (let* ((apex (/ (* 2 mu r) (- (* 2 mu) (* r v0 v0))))
+         (x (/ r apex)))
+    (* (sqrt (/ (expt apex 3) (* 2 mu))) (+ (sqrt (* x (- 1 x))) (acos (sqrt x))))))
+
+(test probe-with-declared-bound-below-escape-returns
+  "With v0 < sqrt(2 G M / r) declared (not only given by values), the probe turns at its
+apex and falls back to the planet, each way in the radial Kepler time (11.43 apex with
+the defaults). Maxima's assume() did not square the bound: the sign of r v0^2 - 2 G M
+was open, and the return stopped on a complex number."
+  (with-fixture simulator-bridge ()
+    (let* ((scenario (scenario-of-text *probe-declared-below-escape*))
+           (history (ames::simulate scenario :bridge bridge))
+           (states (ames:history-states history))
+           (values (in-scenario-terms scenario '((big-g . 1) (big-m . 1000) (r . 10) (v0 . 5))))
+           (expected (radial-rise-time 1000d0 10d0 5d0)))
+      (is (= 2 (length states)))
+      (is (eq :collision (first (ames:state-end-event (second states)))))
+      (dolist (state states)
+        (let ((duration (coerce (ames.maxima:numeric-value bridge (ames:state-duration state) values)
+                                'double-float)))
+          (is (< (abs (- duration expected)) (* 1d-9 expected))
+              "duration ~F, expected ~F" duration expected))))))
