@@ -8,7 +8,9 @@
 ;;;; - a spring pair drifting into a third block: the earliest root of t + sin(2t)/2 = 6
 ;;;;   has no closed form, and is found with numbers;
 ;;;; - a weight pulled up into its pulley: the state ends there and the next is refused (it
-;;;;   passed through the pulley).
+;;;;   passed through the pulley);
+;;;; - issue 20's leftovers: a disc falling onto a block's corner (a sign() Maxima refused as
+;;;;   imaginary), the undecided sliding direction on a belt said over the parameters.
 ;;;;
 ;;;; Expected results are the textbook's (Atwood machine on an incline; centre of mass plus
 ;;;; relative oscillation), or invariants (the rope's length, the energy), computed here.
@@ -203,3 +205,74 @@ imaginary'), which stopped the run."
       (is (eq :state-limit (ames:history-outcome history)))
       (is-same bridge "the time the weight reaches the pulley"
                (ames:state-duration (first (ames:history-states history))) '(sqrt 884/1809)))))
+
+(defparameter *box-thrown-on-belt*
+  "(scenario box-thrown-on-belt \"A box thrown onto a moving belt: which way it slips is open.\"
+     (parameters (m :positive) (g :positive) (v :positive) (u :positive) (mu :positive) (h :positive))
+     (gravity g)
+     (body belt :driven t :velocity (v 0) :shape (half-plane (1 0) (0 0)))
+     (body box :mass m :position (0 h) :velocity (u 0) :shape (polygon (0 0) (1 0) (1 1) (0 1)))
+     (friction box belt :static mu)
+     (simulate :states 3 :branch nil))"
+  "A box thrown at u onto a belt moving at v: after it lands, it slips forward, backward
+or not at all as u - v is positive, negative or zero, which the assumptions leave open.")
+
+(test undecided-sliding-direction-is-a-fact-over-the-parameters
+  "The box lands after sqrt(2 h / g) with its horizontal velocity u; whether it slips on
+the belt is the sign of u - v. The missing fact says so over the parameters: it was the
+knowledge base's raw term 'path-speed(contact-0) = 0'."
+  (with-fixture simulator-bridge ()
+    (let* ((scenario (scenario-of-text *box-thrown-on-belt*))
+           (history (simulate-stopping-when-ambiguous scenario bridge))
+           (condition (getf (ames::history-notes history) :stopped-by))
+           (fact (ames::ambiguous-transition-missing-fact condition)))
+      (is (eq :ambiguous (ames:history-outcome history)))
+      (is-same bridge "the landing time" (ames:state-duration (first (ames:history-states history)))
+               (in-scenario-terms scenario '(sqrt (/ (* 2 h) g))))
+      (is (member (first fact) '(= /=)))
+      ;; no quantity term of the knowledge base left: a relation over the parameters
+      (is (notany (lambda (atom) (and (symbolp atom) (eq (symbol-package atom) (find-package '#:ames.kb))))
+                  (alexandria:flatten fact))
+          "a knowledge-base term in ~S" fact)
+      (let ((difference `(- ,(second fact) ,(third fact))))
+        (is (or (same-expression-p bridge difference (in-scenario-terms scenario '(- u v)))
+                (same-expression-p bridge difference (in-scenario-terms scenario '(- v u))))
+            "the fact ~S is not u = v" fact)))))
+
+(defparameter *probe-declared-below-escape*
+  "(scenario probe-declared-below-escape-speed \"A probe launched straight up, declared below the escape speed.\"
+     (parameters (m :positive (:value 1)) (big-m :positive (:value 1000)) (big-g :positive (:value 1))
+                 (r :positive (:value 10)) (v0 :positive (< v0 (sqrt (/ (* 2 big-g big-m) r))) (:value 5)))
+     (gravitation big-g)
+     (body planet :mass big-m :fixed t :position (0 0) :shape (circle r))
+     (body probe :mass m :position (0 r) :velocity (0 v0) :shape point)
+     (simulate :states 2))"
+  "scenarios/probe-escape-speed.lisp's probe, with its bound below the escape speed
+declared.")
+
+(defun radial-rise-time (mu r v0)
+  "The time a body launched radially at V0 from R under mu / s^2 (below escape) takes to
+reach its apex R' = 2 mu r / (2 mu - r v0^2): the radial Kepler orbit's
+sqrt(R'^3 / (2 mu)) (sqrt(x (1 - x)) + acos(sqrt x)), x = r / R'."
+  (let* ((apex (/ (* 2 mu r) (- (* 2 mu) (* r v0 v0))))
+         (x (/ r apex)))
+    (* (sqrt (/ (expt apex 3) (* 2 mu))) (+ (sqrt (* x (- 1 x))) (acos (sqrt x))))))
+
+(test probe-with-declared-bound-below-escape-returns
+  "With v0 < sqrt(2 G M / r) declared (not only given by values), the probe turns at its
+apex and falls back to the planet, each way in the radial Kepler time (11.43 apex with
+the defaults). Maxima's assume() did not square the bound: the sign of r v0^2 - 2 G M
+was open, and the return stopped on a complex number."
+  (with-fixture simulator-bridge ()
+    (let* ((scenario (scenario-of-text *probe-declared-below-escape*))
+           (history (ames::simulate scenario :bridge bridge))
+           (states (ames:history-states history))
+           (values (in-scenario-terms scenario '((big-g . 1) (big-m . 1000) (r . 10) (v0 . 5))))
+           (expected (radial-rise-time 1000d0 10d0 5d0)))
+      (is (= 2 (length states)))
+      (is (eq :collision (first (ames:state-end-event (second states)))))
+      (dolist (state states)
+        (let ((duration (coerce (ames.maxima:numeric-value bridge (ames:state-duration state) values)
+                                'double-float)))
+          (is (< (abs (- duration expected)) (* 1d-9 expected))
+              "duration ~F, expected ~F" duration expected))))))

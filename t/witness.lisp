@@ -234,10 +234,12 @@ its file under witness/disagreements/ kept as the regression case.")
                    (assoc family ames.witness:*curved-families*)))
              (ames.witness:generator-families))
   "The families of the fixed-seed sample. Left out, with the reason: :INCLINE-PULLEY,
-whose scenarios AMES mostly refuses after a 20 s Maxima timeout (slow, not wrong; it is
-in `make crosscheck`); the families on arcs, with bumpers and under gravitation
-(*CURVED-FAMILIES*: AMES takes 5-10 s on each, and their driver's Python callbacks are
-slow; t/witness-curved.lisp covers them, `make crosscheck FAMILIES=...` runs them).")
+whose second state the witness cannot model (the rope turns once the particle leaves the
+slope, or a body reaches the pulley, which AMES does not model either) and which is slow
+(numeric integration; it is in `make crosscheck`); the families on arcs, with bumpers and
+under gravitation (*CURVED-FAMILIES*: AMES takes 5-10 s on each, and their driver's Python
+callbacks are slow; t/witness-curved.lisp covers them, `make crosscheck FAMILIES=...` runs
+them).")
 
 (defparameter *sample-size* (* 4 (length *sample-families*))
   "How many random scenarios the fixed-seed sample runs (4 per family, in turn).")

@@ -82,7 +82,34 @@
 (defun derived-sign-facts (facts)
   "The sign facts about sin, cos and tan of each subject that follow from the numeric
 bounds in FACTS (0 < a < pi/2 gives sin a > 0, cos a > 0 and tan a > 0), read off the
-exact ranges of angles.lisp."
-  (angle-sign-facts (flatten-facts facts)))
+exact ranges of angles.lisp, and the squares of bounds by square roots (see
+SQUARED-ROOT-FACTS)."
+  (let ((flat (flatten-facts facts)))
+    (append (angle-sign-facts flat) (squared-root-facts flat))))
+
+(defun squared-root-facts (facts)
+  "For each fact of FACTS bounding a quantity X by a square root, X < sqrt(Y) with X > 0
+among FACTS, or X > sqrt(Y), the same bound squared, X^2 < Y or X^2 > Y (D X^2 < N
+for Y = N / D with D > 0 among FACTS): Maxima's assume() does not square it (v0 < sqrt(2
+G M / r) leaves the sign of r v0^2 - 2 G M open)."
+  (flet ((positive-p (x) (or (and (realp x) (plusp x))
+                             (member (list '> x 0) facts :test #'equal)
+                             (member (list '< 0 x) facts :test #'equal)))
+         (root-p (x) (and (consp x) (eq (first x) 'sqrt) (= (length x) 2))))
+    (loop for fact in facts
+          for (op a b) = (and (consp fact) (= (length fact) 3) fact)
+          for (x root upper) = (cond ((and (member op '(< <=)) (root-p b)) (list a b t))
+                                     ((and (member op '(> >=)) (root-p a)) (list b a t))
+                                     ((and (member op '(> >=)) (root-p b)) (list a b nil))
+                                     ((and (member op '(< <=)) (root-p a)) (list b a nil)))
+          when (and root (or (not upper) (positive-p x)))
+            collect (let ((relation (if upper (if (member op '(< >)) '< '<=) (if (member op '(< >)) '> '>=)))
+                          (radicand (second root)))
+                      ;; a quotient N / D with D > 0: D X^2 against N, which Maxima's sign()
+                      ;; reads (it does not multiply through)
+                      (if (and (consp radicand) (eq (first radicand) '/) (= (length radicand) 3)
+                               (positive-p (third radicand)))
+                          (list relation `(* ,(third radicand) (expt ,x 2)) (second radicand))
+                          (list relation `(expt ,x 2) radicand))))))
 
 (setf *derived-facts* 'derived-sign-facts)

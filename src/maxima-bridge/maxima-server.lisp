@@ -60,7 +60,7 @@
     $ratsimp $trigsimp $trigreduce $trigexpand $radcan $expand $factor $factorsum $fullratsimp
     $solve $is $sign $assume $supcontext $killcontext $float $tex
     $ode2 $ic2 $integrate $diff $substitute $ratsubst $hipow $ratcoef $freeof $num $denom
-    $realroots $nroots $rhs $lhs
+    $realroots $nroots $rhs $lhs $realpart $imagpart
     $ilt
     ;; helpers defined in this file
     $ames_pop_context $ames_polynomial_coefficients $ames_expression_size

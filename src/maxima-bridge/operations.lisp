@@ -61,8 +61,11 @@ UNTRANSLATABLE-RESULT, MAXIMA-ERROR, MAXIMA-TIMEOUT."
   (let ((form (to-mx bridge expression :any)))
     (if (eq strategy :full)
         (simplest-form bridge form expression)
-        (from-mx bridge (maxima-request bridge (simplification-form strategy form)
-                                        :datum expression)))))
+        (let ((answer (maxima-request bridge (simplification-form strategy form) :datum expression)))
+          (or (and (not (and (consp expression) (member (first expression) '(= /= < > <= >= and or not))))
+                   (mentions-imaginary-unit-p answer)
+                   (real-form bridge form expression))
+              (from-mx bridge answer))))))
 
 (defun trigonometric-form-p (form)
   "True when the Maxima FORM contains sin, cos or tan. Without them trigsimp() is
@@ -99,7 +102,27 @@ they equal the ratsimp one)."
         (when (and translated
                    (or (null best) (< (expression-size translated) (expression-size best))))
           (setf best translated))))
-    (or best (from-mx bridge (first candidates)))))
+    (or best (real-form bridge form expression) (from-mx bridge (first candidates)))))
+
+(defun mentions-imaginary-unit-p (form)
+  "True when the Maxima FORM contains %i."
+  (if (atom form) (eq form +i+) (some #'mentions-imaginary-unit-p (cdr form))))
+
+(defun real-form (bridge form expression)
+  "When Maxima writes the real FORM (an AMES quantity) with %i under the assumptions
+(sqrt(x)^-1 |x|^(1/2) with x < 0 is -%i, with -2 %i beside it: a real number written
+as a product of imaginary ones), its real part, provided its imaginary part simplifies
+to 0 (so the two are equal); else NIL."
+  (let ((simplified (first (request-list bridge (list (mcall "$RATSIMP" form)) :datum expression))))
+    (when (mentions-imaginary-unit-p simplified)
+      (destructuring-bind (real imaginary)
+          (request-list bridge (list (mcall "$RATSIMP" (mcall "$REALPART" form))
+                                     (mcall "$RATSIMP" (mcall "$IMAGPART" form)))
+                        :datum expression)
+        (and (eql imaginary 0)
+             (not (mentions-imaginary-unit-p real))
+             (handler-case (from-mx bridge real)
+               (untranslatable-result () nil)))))))
 
 ;;; Equivalence
 

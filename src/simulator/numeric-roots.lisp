@@ -181,14 +181,19 @@ otherwise (the decomposition is checked on numbers)."
                        ;; a polynomial of degree at most 2: third differences vanish
                        (< (abs (- p3 (* 3 p2) (* -3 p1) p0)) (* 1d-9 (max 1d0 (abs p3)))))
               (let* ((size (reduce #'+ (mapcar #'abs coefficients)))
-                     (c2 (/ (+ p2 (* -2 p1) p0) 2)) (c1 (- p1 p0 c2)) (c0 (- p0 size)))
+                     ;; linear in TAU (its derivative free of TAU, the sines and cosines
+                     ;; held fixed): no square term, whatever the rounding says
+                     (c2 (if (free-of-p 'tau (ames.geometry:differentiate replaced 'tau))
+                             0d0
+                             (/ (+ p2 (* -2 p1) p0) 2)))
+                     (c1 (- p1 p0 c2)) (c0 (- p0 size)))
                 ;; c0 + c1 t + c2 t^2 > 0 for every t beyond the returned time
-                (cond ((> c2 1d-12)
+                (cond ((plusp c2)
                        (let ((discriminant (- (* c1 c1) (* 4 c2 c0))))
                          (if (< discriminant 0) 0d0
                              (max 0d0 (/ (+ (- c1) (sqrt discriminant)) (* 2 c2))))))
-                      ((and (< (abs c2) 1d-12) (> c1 1d-12)) (max 0d0 (/ (- c0) c1)))
-                      ((and (< (abs c2) 1d-12) (< (abs c1) 1d-12) (> c0 0)) 0d0)
+                      ((and (zerop c2) (> c1 0)) (max 0d0 (/ (- c0) c1)))
+                      ((and (zerop c2) (zerop c1) (> c0 0)) 0d0)
                       ;; below zero for ever (its upper envelope P + sum |b_i| is): it
                       ;; never crosses from above
                       ((and (<= c2 0) (<= c1 0) (< (+ p0 size) 0)) 0d0))))))))))
@@ -204,8 +209,10 @@ fires within the search's reach."
         (found '()) (unfired '()))
     (dolist (condition conditions)
       (multiple-value-bind (functions rate) (condition-crossing-functions run solved groups condition)
-        (let* ((reach (and (not (eq (first (ames.engine:termination-condition-relation condition)) 'or))
-                           (envelope-reach run (condition-time-function run solved groups condition))))
+        (let* ((reach (let ((reach (and (not (eq (first (ames.engine:termination-condition-relation condition)) 'or))
+                                        (envelope-reach run (condition-time-function run solved groups condition)))))
+                        ;; proven only as far as the search goes
+                        (and reach (< reach (* (1- *root-search-steps*) step)) reach)))
                ;; past REACH it is positive for ever: searched up to there, never is proven
                (until (if (and horizon reach) (min horizon (+ reach step)) (or horizon (and reach (+ reach step)))))
                (times (loop for function in functions

@@ -269,6 +269,23 @@ knows: a body's position or velocity, the arc length along a contact or its rate
   (and (quantity-term-p term)
        (member (first term) '(ames.kb:pos ames.kb:vel ames.kb:path-position ames.kb:path-speed))))
 
+(defun start-values (run relation)
+  "An alist: each kinematic quantity of RELATION (see STATE-QUANTITY-P, and the state's
+constants (initial-pos B :x), (initial-vel B :x)) -> its value at the start of the state."
+  (loop for term in (expression-variables relation)
+        when (state-quantity-p term)
+          collect (cons term (initial-state-value run term))
+        when (state-constant-term-p term)
+          collect (cons term (with-initial-positions run term))))
+
+(defun relation-at-start (run relation)
+  "RELATION with its kinematic quantities replaced by their values at the start of the
+state (as KINEMATIC-VERDICT decides it): a fact over the parameters."
+  (let ((values (start-values run relation)))
+    (if values
+        (constant-roots-taken run (substitute-expressions values relation))
+        relation)))
+
 (defun kinematic-verdict (run relation)
   "RELATION decided on the state's starting values: its kinematic quantities (see
 STATE-QUANTITY-P, and the state's constants (initial-pos B :x), (initial-vel B :x)) replaced by their
@@ -283,11 +300,7 @@ a power or root (a squared transverse rate) only measures how far the state is f
 boundary: such a relation, like a non-strict one, is decided on the values, and an exit
 transition leaves the mode at once if the motion does (see the local series). A
 relation over no kinematic quantity is decided as it is."
-  (let ((values (loop for term in (expression-variables relation)
-                      when (state-quantity-p term)
-                        collect (cons term (initial-state-value run term))
-                      when (state-constant-term-p term)
-                        collect (cons term (with-initial-positions run term)))))
+  (let ((values (start-values run relation)))
     (if (null values)
         (decide run relation)
         (let* ((at-start (constant-roots-taken run (substitute-expressions values relation)))

@@ -225,13 +225,25 @@ without it (a rotating body as a translating one)."
                                               (type-of condition))))))
       (simulate-checked scenario bridge parameter-values check-incremental))))
 
-(defun undecided-to-ambiguity (condition)
+(defun undecided-to-ambiguity (condition &optional run)
   "An engine's UNDECIDED-RELATION (a touching contact whose normal velocity's sign the
-assumptions do not decide) as an AMBIGUOUS-TRANSITION."
-  (error 'ambiguous-transition
-         :datum (ames.engine:undecided-relation-relation condition)
-         :missing-fact (ames.engine:undecided-relation-relation condition)
-         :detail "start of a state (an activation condition)"))
+assumptions do not decide) as an AMBIGUOUS-TRANSITION. Given the RUN, the missing fact
+is the relation over the state's starting values (see RELATION-AT-START: a fact over
+the parameters, not the knowledge base's quantity terms)."
+  (let* ((relation (ames.engine:undecided-relation-relation condition))
+         (fact (if run
+                   (handler-case (tidy-relation run (relation-at-start run relation))
+                     (ames-error () relation))
+                   relation)))
+    (error 'ambiguous-transition
+           :datum fact :missing-fact fact
+           :detail "start of a state (an activation condition)")))
+
+(defun tidy-relation (run relation)
+  "RELATION with both sides' difference simplified: (OP (- LHS RHS) 0)."
+  (if (and (consp relation) (member (first relation) '(= /= < > <= >=)))
+      (list (first relation) (tidy run `(- ,(second relation) ,(third relation))) 0)
+      relation))
 
 (defun make-run (world bridge &optional parameter-values)
   "The RUN of WORLD's validated scenario at its start, in the shapes and contact pairs
@@ -279,7 +291,8 @@ answers to the queries. The restart STOP-SIMULATION returns the history so far."
          (limit (or (scenario-states scenario) *default-state-limit*))
          (run nil))
     (restart-case
-        (handler-bind ((ames.engine:undecided-relation #'undecided-to-ambiguity))
+        (handler-bind ((ames.engine:undecided-relation
+                         (lambda (condition) (undecided-to-ambiguity condition run))))
           (setf run (make-run world bridge parameter-values))
           (run-states run history 0 limit check-incremental))
       (stop-simulation (&optional condition)
