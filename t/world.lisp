@@ -74,23 +74,19 @@ an edge (its middle is drawn), with the normal (0, 1) pointing up into the wedge
              (is-same-vector bridge "the ground's normal" (getf touch :normal) '(0 1)))))))))
 
 (test a-disc-touches-the-slope-on-its-rim
-  "A disc of radius r whose centre is r from the slope along its normal touches the slope
-at the centre minus r times the normal: the middle of the slope. The normal is the
-slope's, pointing from the contact's obstacle into its observer."
+  "A disc of radius r whose centre is r from a fixed 30 degree slope along its normal
+touches the slope at the centre minus r times the normal: the point of the slope at
+height h/2. The normal is the slope's, (1/2, sqrt(3)/2), from the slope into the disc."
   (with-fixture simulator-bridge ()
-    (let ((scenario (scenario-named "disc-down-wedge")))
+    (let ((scenario (scenario-named "disc-at-30-degrees")))
       (flet ((x (form) (in-scenario-terms scenario form)))
         (first-state-run
          scenario bridge
          (lambda (run world)
            (declare (ignore world))
-           (multiple-value-bind (touch bodies) (touching-between run "DISC" "WEDGE")
+           (multiple-value-bind (touch bodies) (touching-between run "DISC" "INCLINE")
+             (is (same-name-p* (first bodies) "DISC") "the moving disc observes the fixed incline")
              (is-same-vector bridge "the disc's touching point" (getf touch :point)
-                             (x '((/ h (* 2 (tan a))) (/ h 2))))
-             ;; from the obstacle into the observer: the slope's outward normal when the
-             ;; disc observes, its opposite when the wedge does
-             (is-same-vector bridge "the normal from the obstacle into the observer"
-                             (getf touch :normal)
-                             (x (if (same-name-p* (first bodies) "DISC")
-                                    '((sin a) (cos a))
-                                    '((- (sin a)) (- (cos a)))))))))))))
+                             (x '((- (* (sqrt 3) k) (/ (* (sqrt 3) h) 2)) (/ h 2))))
+             (is-same-vector bridge "the slope's normal" (getf touch :normal)
+                             '(1/2 (/ (sqrt 3) 2))))))))))
