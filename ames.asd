@@ -297,6 +297,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "phenomena")
                (:file "readme")
                (:file "api")
+               (:file "world")
                (:file "reliability-limits")
                (:file "reliability-reader")
                (:file "reliability-bridge")

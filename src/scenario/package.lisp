@@ -44,7 +44,7 @@ and Maxima (assumptions, overlaps).")
    #:contradictory-assumptions-error #:overlapping-bodies-error
    #:scenario-error-cause
    #:skip-scenario
-   #:parameter-values-error #:check-parameter-values
+   #:parameter-values-error
    ;; scenario objects and the validator
    #:scenario #:parse-scenario #:scenario-p #:scenario-positions #:scenario-body-source
    #:scenario-name #:scenario-description #:scenario-parameters #:scenario-gravity
