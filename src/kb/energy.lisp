@@ -11,7 +11,9 @@
 ;;;;                                                 (bumper S B), (gravitation B1 B2)
 ;;;;   (reported :momentum (:momentum BODY (PX PY)))  m v of a free body
 ;;;; Their sum is constant over a state with no friction and no impact; momentum is
-;;;; conserved where no force from outside the free bodies acts.
+;;;; conserved where no force from outside the free bodies acts. Each potential energy is
+;;;; defined beside its force, in its phenomenon's file: the weight's in mechanics.lisp, a
+;;;; spring's and a bumper's in springs.lisp, gravitation's in gravitation.lisp.
 
 (in-package #:ames.kb)
 
@@ -24,33 +26,3 @@
                  (* 1/2 (mass ?body) (+ (expt (vel ?body :x) 2) (expt (vel ?body :y) 2))))
               (= (momentum ?body :x) (* (mass ?body) (vel ?body :x)))
               (= (momentum ?body :y) (* (mass ?body) (vel ?body :y)))))
-
-(defcomponent gravitational-potential-energy (:knowledge-base *mechanics*)
-  "In a terrestrial field a free body's potential energy is m g y."
-  (:arguments (?body :entity body :where (:fixed nil :driven nil))
-              (?field :entity gravity-field))
-  (:assert (reported :energy (:potential (:gravity ?body) (potential-energy gravity ?body))))
-  (:equations (= (potential-energy gravity ?body) (* (mass ?body) (strength ?field) (pos ?body :y)))))
-
-(defcomponent elastic-potential-energy (:knowledge-base *mechanics*)
-  "A spring's potential energy is 1/2 K (l - L0)^2."
-  (:arguments (?spring :entity spring))
-  (:assert (reported :energy (:potential (:spring ?spring) (potential-energy spring ?spring))))
-  (:equations (= (potential-energy spring ?spring)
-                 (* 1/2 (stiffness ?spring) (expt (- (span-length ?spring) (rest-length ?spring)) 2)))))
-
-(defcomponent bumper-potential-energy (:knowledge-base *mechanics*)
-  "A compressed bumper's potential energy is 1/2 K c^2, c its compression."
-  (:arguments (?contact :belief (pressing ?body ?spring :along ?contact)))
-  (:assert (reported :energy (:potential (:bumper ?spring ?body) (potential-energy bumper ?contact))))
-  (:equations (= (potential-energy bumper ?contact)
-                 (* 1/2 (stiffness ?spring) (expt (compression ?contact) 2)))))
-
-(defcomponent gravitational-binding-energy (:knowledge-base *mechanics*)
-  "Two bodies under universal gravitation have the potential energy -G m1 m2 / r."
-  (:arguments (?pair :entity body-pair :where (:first ?body1 :second ?body2))
-              (?field :entity gravitation-field))
-  (:assert (reported :energy (:potential (:gravitation ?body1 ?body2) (potential-energy gravitation ?pair))))
-  (:equations (= (potential-energy gravitation ?pair)
-                 (- (/ (* (gravitational-constant ?field) (mass ?body1) (mass ?body2))
-                       (span-length ?pair))))))

@@ -1,7 +1,7 @@
 ;;;; src/kb/friction.lisp -- Coulomb friction on a contact: the model component the thesis proposes
 ;;;; (section 3.3.2, "Friction"), with its static and sliding modes.
 ;;;;
-;;;; The simulator describes each (friction A B :static MU-S :kinetic MU-K) clause of the
+;;;; The friction phenomenon (below) describes each (friction A B :static MU-S :kinetic MU-K) clause of the
 ;;;; scenario with the entity
 ;;;;   (friction-coefficients NAME :between (A B) :static MU-S :kinetic MU-K)
 ;;;; and every contact between A and B (whichever is the contact's observer) becomes rough.

@@ -1,6 +1,6 @@
 ;;;; src/kb/gravitation.lisp -- universal gravitation (thesis 3.3.2, "Universal Gravitation").
 ;;;;
-;;;; The simulator describes the (gravitation G) clause and the pairs of bodies it may act
+;;;; The gravitation phenomenon (below) describes the (gravitation G) clause and the pairs of bodies it may act
 ;;;; between:
 ;;;;   (gravitation-field NAME :constant G)
 ;;;;   (body-pair P :first B1 :second B2)     every two bodies that have a mass, not both fixed
@@ -41,6 +41,15 @@ their centres; Newton's third law gives the second body's pull from the first's.
               (= (force-y (gravitation ?pair ?body1))
                  (/ (* (gravitational-constant ?field) (mass ?body1) (mass ?body2) (span-direction ?pair :y))
                     (expt (span-length ?pair) 2)))))
+
+(defcomponent gravitational-binding-energy (:knowledge-base *mechanics*)
+  "Two bodies under universal gravitation have the potential energy -G m1 m2 / r."
+  (:arguments (?pair :entity body-pair :where (:first ?body1 :second ?body2))
+              (?field :entity gravitation-field))
+  (:assert (reported :energy (:potential (:gravitation ?body1 ?body2) (potential-energy gravitation ?pair))))
+  (:equations (= (potential-energy gravitation ?pair)
+                 (- (/ (* (gravitational-constant ?field) (mass ?body1) (mass ?body2))
+                       (span-length ?pair))))))
 
 (defun massive-body-pairs (scenario)
   "Every two bodies of SCENARIO that have a mass and are not both fixed, as (B1 B2)."

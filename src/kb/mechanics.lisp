@@ -11,7 +11,8 @@
 ;;;;   - their REPORT: (reported :forces ENTRY) beliefs are the entries of a state's force
 ;;;;     list, as the scenario language's output section writes them, with quantity terms
 ;;;;     that the simulator replaces by their values.
-;;;; The simulator describes each state's situation with these entities:
+;;;; Each state's situation holds these entities (the simulator describes the bodies and the
+;;;; contacts, each phenomenon what it makes of its clause: see phenomena.lisp):
 ;;;;   (body NAME :fixed T-or-NIL :mass EXPR [:driven T])   a driven body has no mass
 ;;;;   (gravity-field NAME :strength EXPR)                      pointing -y
 ;;;;   (external-force NAME :on BODY :fx EXPR :fy EXPR)
@@ -301,6 +302,15 @@ normal component comes from the kinematic restriction."
                (= (rel-acc ?body1 ?body2 :y)
                   (+ (* (path-acc ?contact :tangential) (unit-tangent ?contact :y))
                      (* (path-acc ?contact :normal) (inward-normal ?contact :y)))))))
+
+;;; The weight's potential energy (energy.lisp says what a state reports of energy)
+
+(defcomponent gravitational-potential-energy (:knowledge-base *mechanics*)
+  "In a terrestrial field a free body's potential energy is m g y."
+  (:arguments (?body :entity body :where (:fixed nil :driven nil))
+              (?field :entity gravity-field))
+  (:assert (reported :energy (:potential (:gravity ?body) (potential-energy gravity ?body))))
+  (:equations (= (potential-energy gravity ?body) (* (mass ?body) (strength ?field) (pos ?body :y)))))
 
 ;;; The phenomena of this file (see phenomena.lisp): contact, terrestrial gravity, external
 ;;; forces (a driven body's drive is named generically: (:drive B (FX FY)))

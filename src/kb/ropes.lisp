@@ -1,7 +1,7 @@
 ;;;; src/kb/ropes.lisp -- ropes over pulleys (thesis 3.3.2, "Ropes"): massless, inextensible,
 ;;;; the same tension all along; taut or slack; jerked tight at an impact.
 ;;;;
-;;;; The simulator describes each rope, its pulleys resolved into points of bodies:
+;;;; The rope phenomenon (below) describes each rope, its pulleys resolved into points of bodies:
 ;;;;   (rope R :length L :segments (S0 S1 ...))
 ;;;;   (rope-segment Si :rope R :from (B (X Y)) :to (B' (X' Y')) [:within-one-body T])
 ;;;;                                        the straight pieces, in order from the rope's

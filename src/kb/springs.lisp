@@ -1,6 +1,7 @@
 ;;;; src/kb/springs.lisp -- ideal springs (Hooke's law) and bumpers (thesis 3.3.2, "Springs").
 ;;;;
-;;;; The simulator describes the scenario's springs with these entities:
+;;;; The spring phenomenon (below) describes the scenario's springs with these entities (the
+;;;; point contacts are the loci of its probes, which the simulator has the geometry give):
 ;;;;   (spring S :from (B1 (X1 Y1)) :to (B2 (X2 Y2)) :stiffness K :rest-length L0)
 ;;;;   (bumper S :on B :at (X Y) :toward (DX DY) :stiffness K :rest-length L0)
 ;;;;   (point-contact C :point S :observer B :obstacle B2 :geometry G)
@@ -114,6 +115,22 @@ met when the body reaches the free end and left when the compression returns to 
                  (* (stiffness ?spring) (compression ?contact) (bumper-direction ?spring :x)))
               (= (force-y (bumper ?contact ?body))
                  (* (stiffness ?spring) (compression ?contact) (bumper-direction ?spring :y)))))
+
+;;; The potential energies (energy.lisp says what a state reports of energy)
+
+(defcomponent elastic-potential-energy (:knowledge-base *mechanics*)
+  "A spring's potential energy is 1/2 K (l - L0)^2."
+  (:arguments (?spring :entity spring))
+  (:assert (reported :energy (:potential (:spring ?spring) (potential-energy spring ?spring))))
+  (:equations (= (potential-energy spring ?spring)
+                 (* 1/2 (stiffness ?spring) (expt (- (span-length ?spring) (rest-length ?spring)) 2)))))
+
+(defcomponent bumper-potential-energy (:knowledge-base *mechanics*)
+  "A compressed bumper's potential energy is 1/2 K c^2, c its compression."
+  (:arguments (?contact :belief (pressing ?body ?spring :along ?contact)))
+  (:assert (reported :energy (:potential (:bumper ?spring ?body) (potential-energy bumper ?contact))))
+  (:equations (= (potential-energy bumper ?contact)
+                 (* 1/2 (stiffness ?spring) (expt (compression ?contact) 2)))))
 
 ;;; The clause, the bumper's free end, and the names (see phenomena.lisp)
 
