@@ -92,7 +92,9 @@ phenomena, which orders the situation's entities, does not change."
     ("src/report/view.lisp" :contact "the key of a path note's contact")
     ("src/geometry/conditions.lisp" :contact "a condition's slot initarg")
     ("src/geometry/contacts.lisp" :contact "a condition's slot initarg")
-    ("src/geometry/minkowski.lisp" :normal "a piece's normal vector"))
+    ("src/geometry/minkowski.lisp" :normal "a piece's normal vector")
+    ("src/simulator/touching.lisp" :normal "the key of a contact point's unit normal")
+    ("src/report/svg.lisp" :normal "the key of a contact point's unit normal"))
   "The (FILE KEYWORD REASON) where a keyword of the mechanics occurs outside src/kb/ with
 another meaning (listed in the README's \"Each phenomenon in one place\").")
 
