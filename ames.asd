@@ -46,6 +46,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "sign-rules")
                  (:file "angles")
                  (:file "witnesses")
+                 (:file "constant-zero")
                  (:file "deciding")
                  (:file "orders")
                  (:file "square-orders")
