@@ -8,7 +8,7 @@
 ;;;; circle) was taken for negative there, and the turning point for unreachable. A
 ;;;; relation between constants with a trigonometric or inverse trigonometric function
 ;;;; whose sides agree to round-off is decided here, exactly: its difference proven zero
-;;;; (acos and atan written with asin, expanded, trigexpand(), ratsimp(), radcan()) or :UNKNOWN, never
+;;;; (EXACTLY-ZERO-P) or :UNKNOWN, never
 ;;;; by the float.
 
 (in-package #:ames.algebra)
@@ -60,11 +60,46 @@ or no real value), which the other strategies decide."
                 (> (abs (- (first values) (second values)))
                    (* *round-off-difference* (max 1d0 (abs (first values)) (abs (second values))))))
         (return-from decide-constant-near-zero :not-applicable))
-      (let ((difference (handler-case
-                            (let ((expanded (simplify bridge (inverses-as-asin `(- ,lhs ,rhs))
-                                                      :strategy :expanded-trigexpand)))
-                              (if (eql expanded 0) 0 (simplify bridge expanded :strategy :radcan)))
-                          (maxima-condition () nil))))
-        (if (eql difference 0)
-            (zero-difference-verdict operator)
-            :unknown)))))
+      (if (exactly-zero-p bridge `(- ,lhs ,rhs))
+          (zero-difference-verdict operator)
+          :unknown))))
+
+(defun cosine-arguments (expression)
+  "The arguments K of the cos(K) in EXPRESSION, each once."
+  (let ((found '()))
+    (labels ((walk (x)
+               (when (consp x)
+                 (when (and (eq (first x) 'cos) (= (length x) 2))
+                   (pushnew (second x) found :test #'equal))
+                 (mapc #'walk (rest x)))))
+      (walk expression))
+    found))
+
+(defun exactly-zero-p (bridge difference)
+  "True when the constant DIFFERENCE is proven zero (REDUCES-TO-ZERO-P) as it is, or with
+acos and atan written with asin (INVERSES-AS-ASIN). NIL when not proven."
+  (or (reduces-to-zero-p bridge difference)
+      (let ((rewritten (inverses-as-asin difference)))
+        (and (not (equal rewritten difference))
+             (reduces-to-zero-p bridge rewritten)))))
+
+(defun reduces-to-zero-p (bridge difference)
+  "True when the constant DIFFERENCE, expanded and trigexpand()ed, then ratsimp()ed with
+each cos(K)^2 written 1 - sin(K)^2 (sin and cos of one angle are no independent atoms),
+then radcan()ed, is 0."
+  (handler-case
+      (let ((expanded (simplify bridge difference :strategy :expanded-trigexpand)))
+        (or (eql expanded 0)
+            (let* ((reduced (maxima-request
+                             bridge
+                             (mcall "$RATSIMP"
+                                    (reduce (lambda (form k)
+                                              (mcall "$RATSUBST" (to-mx bridge `(- 1 (expt (sin ,k) 2)))
+                                                     (to-mx bridge `(expt (cos ,k) 2)) form))
+                                            (cosine-arguments expanded)
+                                            :initial-value (to-mx bridge expanded)))
+                             :datum difference))
+                   (reduced (from-mx bridge reduced)))
+              (or (eql reduced 0)
+                  (eql (simplify bridge reduced :strategy :radcan) 0)))))
+    (maxima-condition () nil)))
