@@ -286,6 +286,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "witness-rotation")
                (:file "scenario-rotation")
                (:file "witness-curved")
+               (:file "leftward-arcs")
                (:file "simulator-fuzz")
                (:file "truth-scenarios")
                (:file "truth-branches")
