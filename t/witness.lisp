@@ -178,15 +178,7 @@ velocity off by 1e-5, or another event, is a disagreement."
                 (planted (lambda (state) (setf (first (getf state :end-event)) :leaves)))))))))
 
 (defparameter *known-disagreements*
-  '(("ames-wrong-dome-lift-off-leftward.lisp"
-     "A particle sliding off a dome toward -x lifts off (state 0 agrees), but AMES's next
-state keeps the contact, with an attractive normal force, down to the arc's end.")
-    ("ames-wrong-dome-leftward-landing.lisp"
-     "A particle pushed toward -x off a dome lands on the floor with e = 0: AMES's impact
-leaves its velocity unchanged and its next state falls through the floor.")
-    ("ames-wrong-loop-missed-turning-point.lisp"
-     "A particle launched toward -x in a loop (r = 3/4) too slowly to reach the centre's
-height: AMES says it moves forever with no turning point; it turns at 0.4531 s."))
+  '()
   "Disagreements AMES has today, each kept as a scenario file under
 witness/disagreements/ with the reason; a test checks that each still disagrees, so
 that a fix shows up (then move the file to *WITNESSED-FIXES*).")
@@ -205,7 +197,22 @@ left out.")
     ("refused-ramp-foot-impact.lisp"
      "A particle sliding off the foot of a ramp onto the floor with e > 0 was refused ('no
 set of contacts and modes is consistent'). Fixed: a face a non-concave corner excuses is
-no constraint of the impact."))
+no constraint of the impact.")
+    ("ames-wrong-dome-lift-off-leftward.lisp"
+     "A particle sliding off a dome toward -x lifted off (state 0 agreed), but AMES's next
+state kept the contact, with an attractive normal force, down to the arc's end: the
+normal force at the lift-off point (the far root, toward -x, in the bridge's half-angle
+form) was zero, which Maxima's float sign() took for positive. Fixed: a relation between
+constants agreeing to round-off is decided exactly or not at all (constant-zero.lisp).")
+    ("ames-wrong-dome-leftward-landing.lisp"
+     "A particle pushed toward -x off a dome landed on the floor with e = 0: AMES's impact
+left its velocity unchanged and its next state fell through the floor (the state after
+the lift-off wrongly kept the dome's contact; same cause and fix as above).")
+    ("ames-wrong-loop-missed-turning-point.lisp"
+     "A particle launched toward -x in a loop (r = 3/4) too slowly to reach the centre's
+height was said to move forever; it turns at 0.4531 s: the energy integral at the
+turning point found ahead (pi - asin, the far branch) is zero, which Maxima's float
+sign() took for negative, so the turning point looked unreachable. Same fix."))
   "Disagreements the witness found and AMES has since fixed: each must now agree, with
 its file under witness/disagreements/ kept as the regression case.")
 

@@ -1,6 +1,8 @@
 ;;;; src/algebra/deciding.lisp -- DECIDE: the truth of a relation under the facts in force, three-valued and cached.
 ;;;;
-;;;; The strategies, cheapest first: Maxima's is(); numeric witnesses that no strategy can
+;;;; A relation between constants whose sides agree to round-off is decided exactly first
+;;;; (constant-zero.lisp: Maxima's sign() would take the float's sign). The strategies,
+;;;; cheapest first: Maxima's is(); numeric witnesses that no strategy can
 ;;;; decide it (witnesses.lisp); sign() of the difference of the sides in several forms;
 ;;;; clearing one square root; equivalence for = and /=; what a physicist knows
 ;;;; (truth.lisp: trigonometric signs from the angles' ranges, monotonicity, squares,
@@ -165,10 +167,15 @@ and /=), what a physicist knows (truth.lisp) and the order substitution. A relat
 with a product of square roots of negative radicands, which Maxima's is() and sign()
 would take for real (or imaginary) square roots, is first decided in real terms by
 DECIDE-WITH-IMAGINARY-RADICANDS. The rules of signs over the subjects' ranges answer
-first where they settle it (QUICK-VERDICT, no Maxima)."
+first where they settle it (QUICK-VERDICT, no Maxima); a relation between constants
+whose sides agree to round-off is decided exactly or left :UNKNOWN
+(DECIDE-CONSTANT-NEAR-ZERO), never by sign()'s float."
   (let ((quick (quick-verdict bridge relation)))
     (unless (eq quick :unknown)
       (return-from decide-relation quick)))
+  (let ((constant (decide-constant-near-zero bridge relation)))
+    (unless (eq constant :not-applicable)
+      (return-from decide-relation constant)))
   (when (imaginary-radicands bridge relation)
     (let ((verdict (decide-with-imaginary-radicands bridge relation)))
       (unless (eq verdict :fall-back)

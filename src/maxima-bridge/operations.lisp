@@ -33,7 +33,8 @@
 
 ;;; Simplification
 
-(defparameter *simplification-strategies* '(:ratsimp :trigsimp :trigexpand :radcan :full)
+(defparameter *simplification-strategies* '(:ratsimp :trigsimp :trigexpand :expanded-trigexpand
+                                           :radcan :full)
   "The strategies SIMPLIFY knows.")
 
 (defun simplification-form (strategy form)
@@ -44,13 +45,17 @@ search where it is known to be ratsimp's."
     (:ratsimp (mcall "$RATSIMP" form))
     (:trigsimp (mcall "$AMES_TRIGSIMP" form))
     (:trigexpand (mcall "$RATSIMP" (mcall "$TRIGEXPAND" form)))
+    ;; sin((pi + 2 u)/2) is expanded only once its argument is a sum: pi/2 + u; the
+    ;; second pass expands the multiples a sum left (sin(2 asin u))
+    (:expanded-trigexpand (mcall "$RATSIMP" (mcall "$TRIGEXPAND" (mcall "$TRIGEXPAND" (mcall "$EXPAND" form)))))
     (:radcan (mcall "$RADCAN" form))))
 
 (defun simplify (bridge expression &key (strategy :ratsimp))
   "EXPRESSION (an arithmetic expression or a relation) simplified by Maxima under the
 current assumptions. STRATEGY is :RATSIMP (rational canonical form), :TRIGSIMP
 (trigonometric identities), :TRIGEXPAND (sums and multiples of angles expanded, so that
-sin(asin(u) - atan(v)) becomes algebraic in u and v), :RADCAN (radicals, logs, exponentials) or :FULL (the
+sin(asin(u) - atan(v)) becomes algebraic in u and v), :EXPANDED-TRIGEXPAND (the same after
+expand(), twice, so that sin((pi + 2 u)/2) becomes cos(u)), :RADCAN (radicals, logs, exponentials) or :FULL (the
 smallest of ratsimp, trigsimp, ratsimp after trigsimp, factor after ratsimp, radcan).
 Signals UNTRANSLATABLE-EXPRESSION, INVALID-BRIDGE-ARGUMENT for an unknown strategy,
 UNTRANSLATABLE-RESULT, MAXIMA-ERROR, MAXIMA-TIMEOUT."

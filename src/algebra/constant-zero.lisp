@@ -1,0 +1,105 @@
+;;;; src/algebra/constant-zero.lisp -- relations between constants that differ by nothing
+;;;; but round-off: Maxima's sign() decides them by a float evaluation, and is wrong.
+;;;;
+;;;; sign(1032 sin((pi + 2 acos(407/1032))/2) - 407) is "neg" in Debian's Maxima (its
+;;;; bigfloat value at the default precision is -7.8e-16), and is(equal(a, b)) is false for
+;;;; (3 pi - 3 asin c)/4 and (3 pi + 6 acos c)/8, which are equal: the energy integral at a
+;;;; turning point found on the far branch of the arcsine (a body moving toward -s on a
+;;;; circle) was taken for negative there, and the turning point for unreachable. A
+;;;; relation between constants with a trigonometric or inverse trigonometric function
+;;;; whose sides agree to round-off is decided here, exactly: its difference proven zero
+;;;; (EXACTLY-ZERO-P) or :UNKNOWN, never
+;;;; by the float.
+
+(in-package #:ames.algebra)
+
+(defparameter *round-off-difference* 1d-9
+  "A difference of constants below this, relative to the sides' size, is round-off as far
+as a float can tell: DECIDE-CONSTANT-NEAR-ZERO decides its relation exactly or not at all.")
+
+(defparameter *float-decided-operators* '(sin cos tan asin acos atan)
+  "The operators over constants whose sign Maxima decides by a float evaluation.")
+
+(defun mentions-float-decided-p (expression)
+  "True when EXPRESSION has an operator of *FLOAT-DECIDED-OPERATORS*."
+  (and (consp expression)
+       (or (member (expression-operator expression) *float-decided-operators*)
+           (some #'mentions-float-decided-p (expression-arguments expression)))))
+
+(defun inverses-as-asin (expression)
+  "EXPRESSION with each acos(u) written pi/2 - asin(u) (an identity on [-1, 1]) and each
+atan(u) asin(u / sqrt(1 + u^2)) (an identity for every real u): one inverse function
+left, which trigexpand() undoes."
+  (if (atom expression)
+      expression
+      (let ((x (cons (first expression) (mapcar #'inverses-as-asin (rest expression)))))
+        (cond ((/= (length x) 2) x)
+              ((eq (first x) 'acos) `(- (/ pi 2) (asin ,(second x))))
+              ((eq (first x) 'atan) `(asin (/ ,(second x) (sqrt (+ 1 (expt ,(second x) 2))))))
+              (t x)))))
+
+(defun zero-difference-verdict (operator)
+  "The truth of LHS OPERATOR RHS when LHS - RHS is zero."
+  (if (member operator '(= <= >=)) :true :false))
+
+(defun decide-constant-near-zero (bridge relation)
+  "RELATION (= /= < > <= >=) between constants with a trigonometric or inverse
+trigonometric function, whose sides agree to round-off: :TRUE or :FALSE when the
+difference of its sides is proven exactly zero, else :UNKNOWN. :NOT-APPLICABLE for any
+other relation (variables in it, no such function, sides that differ beyond round-off,
+or no real value), which the other strategies decide."
+  (let ((operator (expression-operator relation)))
+    (unless (and (member operator '(= /= < > <= >=))
+                 (mentions-float-decided-p relation)
+                 (null (expression-variables relation)))
+      (return-from decide-constant-near-zero :not-applicable))
+    (let* ((lhs (relation-lhs relation)) (rhs (relation-rhs relation))
+           (values (handler-case (list (numeric-value bridge lhs '()) (numeric-value bridge rhs '()))
+                     (numeric-evaluation-failed () nil))))
+      (when (or (null values)
+                (> (abs (- (first values) (second values)))
+                   (* *round-off-difference* (max 1d0 (abs (first values)) (abs (second values))))))
+        (return-from decide-constant-near-zero :not-applicable))
+      (if (exactly-zero-p bridge `(- ,lhs ,rhs))
+          (zero-difference-verdict operator)
+          :unknown))))
+
+(defun cosine-arguments (expression)
+  "The arguments K of the cos(K) in EXPRESSION, each once."
+  (let ((found '()))
+    (labels ((walk (x)
+               (when (consp x)
+                 (when (and (eq (first x) 'cos) (= (length x) 2))
+                   (pushnew (second x) found :test #'equal))
+                 (mapc #'walk (rest x)))))
+      (walk expression))
+    found))
+
+(defun exactly-zero-p (bridge difference)
+  "True when the constant DIFFERENCE is proven zero (REDUCES-TO-ZERO-P) as it is, or with
+acos and atan written with asin (INVERSES-AS-ASIN). NIL when not proven."
+  (or (reduces-to-zero-p bridge difference)
+      (let ((rewritten (inverses-as-asin difference)))
+        (and (not (equal rewritten difference))
+             (reduces-to-zero-p bridge rewritten)))))
+
+(defun reduces-to-zero-p (bridge difference)
+  "True when the constant DIFFERENCE, expanded and trigexpand()ed, then ratsimp()ed with
+each cos(K)^2 written 1 - sin(K)^2 (sin and cos of one angle are no independent atoms),
+then radcan()ed, is 0."
+  (handler-case
+      (let ((expanded (simplify bridge difference :strategy :expanded-trigexpand)))
+        (or (eql expanded 0)
+            (let* ((reduced (maxima-request
+                             bridge
+                             (mcall "$RATSIMP"
+                                    (reduce (lambda (form k)
+                                              (mcall "$RATSUBST" (to-mx bridge `(- 1 (expt (sin ,k) 2)))
+                                                     (to-mx bridge `(expt (cos ,k) 2)) form))
+                                            (cosine-arguments expanded)
+                                            :initial-value (to-mx bridge expanded)))
+                             :datum difference))
+                   (reduced (from-mx bridge reduced)))
+              (or (eql reduced 0)
+                  (eql (simplify bridge reduced :strategy :radcan) 0)))))
+    (maxima-condition () nil)))
