@@ -51,112 +51,159 @@ significant digits without trailing zeros (0.9071, 29.43, 1.5e-7)."
   "True for what a function may take without parentheses: a name or a non-negative integer."
   (or (and (symbolp x) x) (quantity-term-p x) (and (integerp x) (>= x 0))))
 
+(defun parenthesized (text)
+  "TEXT between parentheses."
+  (format nil "(~A)" text))
+
+(defun negative-term-p (x)
+  "True for a negative number or a negation (- A): a term a sum writes with \" - \"."
+  (or (and (realp x) (minusp x))
+      (and (consp x) (eq (first x) '-) (null (cddr x)))))
+
+(defun text-atom (x name-function)
+  "The atom or quantity term X as text: a number as NUMBER-TEXT writes it, pi, or a name
+by NAME-FUNCTION."
+  (cond ((realp x) (number-text x))
+        ((constant-symbol-p x) "pi")
+        (t (funcall name-function x))))
+
+(defun text-sum (x name-function)
+  "The sum X, (+ TERM ...), as text: each negative term after the first written as
+\" - \" and its magnitude."
+  (with-output-to-string (out)
+    (loop for (term . more) on (rest x)
+          for first = t then nil
+          do (cond ((and first (negative-term-p term))
+                    (write-string (text-render term :sum name-function) out))
+                   ((negative-term-p term)
+                    (format out " - ~A" (text-render (if (realp term) (- term) (second term))
+                                                     :factor name-function)))
+                   (first (write-string (text-render term :sum name-function) out))
+                   (t (format out " + ~A" (text-render term :sum name-function)))))))
+
+(defun text-function (operator arguments name-function)
+  "The elementary function OPERATOR of ARGUMENTS as text: atan2(y, x), cos a of a name,
+f(x) otherwise."
+  (let ((name (string-downcase (symbol-name operator))))
+    (cond ((and (eq operator 'atan) (rest arguments))
+           (format nil "atan2(~A, ~A)" (text-render (first arguments) :sum name-function)
+                   (text-render (second arguments) :sum name-function)))
+          ((and (member operator '(sin cos tan)) (name-atom-p (first arguments)))
+           (format nil "~A ~A" name (text-atom (first arguments) name-function)))
+          (t (format nil "~A(~A)" name (text-render (first arguments) :sum name-function))))))
+
+(defun text-power (base exponent name-function)
+  "BASE to the power EXPONENT as text: sin^2 a for a trigonometric function to a positive
+integer power, the base parenthesised unless a name or a function."
+  (let ((exponent-text (if (and (integerp exponent) (plusp exponent))
+                           (number-text exponent)
+                           (parenthesized (text-render exponent :sum name-function)))))
+    (cond ((and (consp base) (member (first base) '(sin cos tan))
+                (name-atom-p (second base)) (integerp exponent) (plusp exponent))
+           (format nil "~(~A~)^~A ~A" (first base) exponent-text
+                   (text-atom (second base) name-function)))
+          ((and (consp base) (member (first base) '(sin cos tan))
+                (integerp exponent) (plusp exponent))
+           (format nil "~(~A~)^~A(~A)" (first base) exponent-text
+                   (text-render (second base) :sum name-function)))
+          ((or (name-atom-p base)
+               (and (consp base) (member (first base) '(sqrt exp log asin acos atan))))
+           (format nil "~A^~A" (text-render base :power name-function) exponent-text))
+          (t (format nil "~A^~A" (parenthesized (text-render base :sum name-function))
+                     exponent-text)))))
+
+(defun text-quotient (x name-function)
+  "The quotient X, (/ NUMERATOR DENOMINATOR ...) or (/ A) for 1/A, as text, spaced when
+either side has a space at its top level."
+  (let* ((numerator (text-render (second x) :factor name-function))
+         (denominator (text-render (if (cdddr x) (cons '* (cddr x)) (third x))
+                                   :denominator name-function)))
+    (if (rest (rest x))
+        (if (or (top-level-space-p numerator)
+                (top-level-space-p denominator))
+            (format nil "~A / ~A" numerator denominator)
+            (format nil "~A/~A" numerator denominator))
+        (format nil "1/~A" numerator))))
+
+(defun text-other-form (x name-function)
+  "The form X that no operator of TEXT-FORM's knows as text: name(arguments) for another
+function of the algebra, else X printed in lower case."
+  (if (and (symbolp (first x)) (not (keywordp (first x)))
+           (alexandria:proper-list-p x))
+      ;; another function of the algebra: name(arguments)
+      (format nil "~(~A~)(~{~A~^, ~})"
+              (substitute #\_ #\- (symbol-name (first x)))
+              (mapcar (lambda (a) (text-render a :sum name-function)) (rest x)))
+      (let ((*print-case* :downcase)) (prin1-to-string x))))
+
+(defun text-operation (x name-function)
+  "The compound form X (not a quantity term) as text, without the parentheses its
+context may need."
+  (flet ((render (x context) (text-render x context name-function)))
+    (case (first x)
+      (+ (text-sum x name-function))
+      (- (if (rest (rest x))
+             (text-sum (list* '+ (second x) (mapcar (lambda (a) (list '- a)) (cddr x)))
+                       name-function)
+             (format nil "-~A" (render (second x) :factor))))
+      (* (format nil "~{~A~^ ~}"
+                 (mapcar (lambda (factor)
+                           (if (and (rationalp factor) (not (integerp factor)))
+                               (parenthesized (text-atom factor name-function))
+                               (render factor :factor)))
+                         (rest x))))
+      (/ (text-quotient x name-function))
+      (expt (text-power (second x) (third x) name-function))
+      ((sin cos tan asin acos atan sqrt exp log abs)
+       (text-function (first x) (rest x) name-function))
+      ((= /= < > <= >=)
+       (format nil "~A ~A ~A" (render (second x) :sum)
+               (case (first x) (/= "/=") (t (string-downcase (symbol-name (first x)))))
+               (render (third x) :sum)))
+      ((and or) (format nil (if (eq (first x) 'and) "~{~A~^ and ~}" "~{~A~^ or ~}")
+                        (mapcar (lambda (a) (render a :sum)) (rest x))))
+      (not (format nil "not ~A" (parenthesized (render (second x) :sum))))
+      ;; the complete and incomplete elliptic integrals with the
+      ;; parameter m, as Abramowitz and Stegun write them
+      (elliptic-k (format nil "K(~A)" (render (second x) :sum)))
+      ((elliptic-f elliptic-e)
+       (format nil "~:[E~;F~](~A | ~A)" (eq (first x) 'elliptic-f)
+               (render (second x) :sum) (render (third x) :sum)))
+      (t (text-other-form x name-function)))))
+
+(defun text-render (x context name-function)
+  "X (prefix algebra) as text in CONTEXT: :sum (anything goes), :factor (a factor of a
+product or a numerator), :denominator, :power (a base); parenthesised when the context
+needs it. Names are written by NAME-FUNCTION."
+  (let ((text
+          (cond ((atom x) (text-atom x name-function))
+                ((quantity-term-p x) (text-atom x name-function))
+                (t (text-operation x name-function)))))
+    (if (text-needs-parentheses-p x context) (parenthesized text) text)))
+
+(defun text-needs-parentheses-p (x context)
+  "True when X, written as text, needs parentheses in CONTEXT (see TEXT-RENDER)."
+  (let ((kind (cond ((realp x) (cond ((minusp x) :negative)
+                                     ((not (integerp x)) :ratio)
+                                     (t :atom)))
+                    ((atom x) :atom)
+                    ((quantity-term-p x) :atom)
+                    ((eq (first x) '+) :sum)
+                    ((eq (first x) '-) (if (cddr x) :sum :negative))
+                    ((eq (first x) '*) :product)
+                    ((eq (first x) '/) :quotient)
+                    ((member (first x) '(= /= < > <= >= and or not)) :sum)
+                    (t :atom))))
+    (ecase context
+      (:sum nil)
+      (:factor (member kind '(:sum :negative)))
+      (:denominator (member kind '(:sum :negative :product :quotient :ratio)))
+      (:power (not (eq kind :atom))))))
+
 (defun text-form (expression &key (name-function #'default-name))
   "EXPRESSION (prefix algebra: arithmetic or a relation) as one line of plain text as a
 physicist writes it (see the file header)."
-  (labels ((parens (text) (format nil "(~A)" text))
-           (negative-p (x) (or (and (realp x) (minusp x))
-                               (and (consp x) (eq (first x) '-) (null (cddr x)))))
-           (atom-text (x)
-             (cond ((realp x) (number-text x))
-                   ((constant-symbol-p x) "pi")
-                   (t (funcall name-function x))))
-           (sum-text (x)
-             (with-output-to-string (out)
-               (loop for (term . more) on (rest x)
-                     for first = t then nil
-                     do (cond ((and first (negative-p term)) (write-string (render term :sum) out))
-                              ((negative-p term)
-                               (format out " - ~A" (render (if (realp term) (- term) (second term)) :factor)))
-                              (first (write-string (render term :sum) out))
-                              (t (format out " + ~A" (render term :sum)))))))
-           (function-text (operator arguments)
-             (let ((name (string-downcase (symbol-name operator))))
-               (cond ((and (eq operator 'atan) (rest arguments))
-                      (format nil "atan2(~A, ~A)" (render (first arguments) :sum) (render (second arguments) :sum)))
-                     ((and (member operator '(sin cos tan)) (name-atom-p (first arguments)))
-                      (format nil "~A ~A" name (atom-text (first arguments))))
-                     (t (format nil "~A(~A)" name (render (first arguments) :sum))))))
-           (power-text (base exponent)
-             (let ((exponent-text (if (and (integerp exponent) (plusp exponent))
-                                      (number-text exponent)
-                                      (parens (render exponent :sum)))))
-               (cond ((and (consp base) (member (first base) '(sin cos tan))
-                           (name-atom-p (second base)) (integerp exponent) (plusp exponent))
-                      (format nil "~(~A~)^~A ~A" (first base) exponent-text (atom-text (second base))))
-                     ((and (consp base) (member (first base) '(sin cos tan))
-                           (integerp exponent) (plusp exponent))
-                      (format nil "~(~A~)^~A(~A)" (first base) exponent-text (render (second base) :sum)))
-                     ((or (name-atom-p base) (and (consp base) (member (first base) '(sqrt exp log asin acos atan))))
-                      (format nil "~A^~A" (render base :power) exponent-text))
-                     (t (format nil "~A^~A" (parens (render base :sum)) exponent-text)))))
-           (render (x context)
-             ;; CONTEXT: :sum (anything goes), :factor (a factor of a product or a
-             ;; numerator), :denominator, :power (a base)
-             (let ((text
-                     (cond ((atom x) (atom-text x))
-                           ((quantity-term-p x) (atom-text x))
-                           (t (case (first x)
-                                (+ (sum-text x))
-                                (- (if (rest (rest x))
-                                       (sum-text (list* '+ (second x) (mapcar (lambda (a) (list '- a)) (cddr x))))
-                                       (format nil "-~A" (render (second x) :factor))))
-                                (* (format nil "~{~A~^ ~}"
-                                           (mapcar (lambda (factor)
-                                                     (if (and (rationalp factor) (not (integerp factor)))
-                                                         (parens (atom-text factor))
-                                                         (render factor :factor)))
-                                                   (rest x))))
-                                (/ (let* ((numerator (render (second x) :factor))
-                                          (denominator (render (if (cdddr x) (cons '* (cddr x)) (third x))
-                                                               :denominator)))
-                                     (if (rest (rest x))
-                                         (if (or (top-level-space-p numerator)
-                                                 (top-level-space-p denominator))
-                                             (format nil "~A / ~A" numerator denominator)
-                                             (format nil "~A/~A" numerator denominator))
-                                         (format nil "1/~A" numerator))))
-                                (expt (power-text (second x) (third x)))
-                                ((sin cos tan asin acos atan sqrt exp log abs) (function-text (first x) (rest x)))
-                                ((= /= < > <= >=)
-                                 (format nil "~A ~A ~A" (render (second x) :sum)
-                                         (case (first x) (/= "/=") (t (string-downcase (symbol-name (first x)))))
-                                         (render (third x) :sum)))
-                                ((and or) (format nil (if (eq (first x) 'and) "~{~A~^ and ~}" "~{~A~^ or ~}")
-                                                  (mapcar (lambda (a) (render a :sum)) (rest x))))
-                                (not (format nil "not ~A" (parens (render (second x) :sum))))
-                                ;; the complete and incomplete elliptic integrals with the
-                                ;; parameter m, as Abramowitz and Stegun write them
-                                (elliptic-k (format nil "K(~A)" (render (second x) :sum)))
-                                ((elliptic-f elliptic-e)
-                                 (format nil "~:[E~;F~](~A | ~A)" (eq (first x) 'elliptic-f)
-                                         (render (second x) :sum) (render (third x) :sum)))
-                                (t (if (and (symbolp (first x)) (not (keywordp (first x)))
-                                            (alexandria:proper-list-p x))
-                                       ;; another function of the algebra: name(arguments)
-                                       (format nil "~(~A~)(~{~A~^, ~})"
-                                               (substitute #\_ #\- (symbol-name (first x)))
-                                               (mapcar (lambda (a) (render a :sum)) (rest x)))
-                                       (let ((*print-case* :downcase)) (prin1-to-string x)))))))))
-               (if (needs-parentheses-p x context) (parens text) text)))
-           (needs-parentheses-p (x context)
-             (let ((kind (cond ((realp x) (cond ((minusp x) :negative)
-                                                ((not (integerp x)) :ratio)
-                                                (t :atom)))
-                               ((atom x) :atom)
-                               ((quantity-term-p x) :atom)
-                               ((eq (first x) '+) :sum)
-                               ((eq (first x) '-) (if (cddr x) :sum :negative))
-                               ((eq (first x) '*) :product)
-                               ((eq (first x) '/) :quotient)
-                               ((member (first x) '(= /= < > <= >= and or not)) :sum)
-                               (t :atom))))
-               (ecase context
-                 (:sum nil)
-                 (:factor (member kind '(:sum :negative)))
-                 (:denominator (member kind '(:sum :negative :product :quotient :ratio)))
-                 (:power (not (eq kind :atom)))))))
-    (render expression :sum)))
+  (text-render expression :sum name-function))
 
 (defun infix (expression)
   "EXPRESSION (prefix algebra) as one line of plain text, as TEXT-FORM writes it with
