@@ -141,103 +141,131 @@ and SOURCE, the feature of B (a FEATURE) it comes from."
     (make-arc-piece center radius from (e+ from sweep) :ccw
                     :full (angular-range-full range))))
 
+(defun observer-feature-containing (decider alphas direction-vector)
+  "The corner or arc among ALPHAS (the observer's features) whose normal range holds
+DIRECTION-VECTOR. Signals GEOMETRY-ERROR when there is none (their ranges do not cover
+the circle)."
+  (or (find-if (lambda (alpha)
+                 (and (not (feature-edge-p alpha))
+                      (direction-in-range-p decider direction-vector
+                                            (feature-range alpha))))
+               alphas)
+      (error 'geometry-error
+             :datum direction-vector
+             :detail "internal: no feature of the observer has this normal (its normal ranges do not cover the circle)")))
+
+(defun translated-line-piece (piece offset-start offset-end)
+  "The line PIECE with its start moved by OFFSET-START and its end by OFFSET-END."
+  (make-line-piece (v+ (line-piece-start piece) offset-start)
+                   (v+ (line-piece-end piece) offset-end)
+                   :infinite (line-piece-infinite piece)))
+
+(defun edge-sum-pieces (decider beta alphas continued)
+  "The sum pieces, in order, of the edge BETA of the obstacle with the observer's
+features ALPHAS: the edge moved by the observer's parallel edge, or by the support
+point of the corner facing it. CONTINUED: the next feature of the obstacle is an edge
+going straight on; the observer's parallel edge is then added after the last edge of
+the run."
+  (let* ((n (feature-normal beta))
+         (parallel (find-if (lambda (alpha)
+                              (and (feature-edge-p alpha)
+                                   (same-direction-p decider n (feature-normal alpha))))
+                            alphas)))
+    (if parallel
+        (list (make-sum-piece (translated-line-piece
+                               (feature-piece beta)
+                               (line-piece-start (feature-piece parallel))
+                               (if continued
+                                   (line-piece-start (feature-piece parallel))
+                                   (line-piece-end (feature-piece parallel))))
+                              (feature-name beta) (feature-name parallel) beta))
+        (let* ((alpha (observer-feature-containing decider alphas n))
+               (offset (support-point decider alpha n)))
+          (list (make-sum-piece (translated-line-piece (feature-piece beta) offset offset)
+                                (feature-name beta) (feature-name alpha) beta))))))
+
+(defun observer-start-index (decider alphas alpha-vector range)
+  "The index in ALPHA-VECTOR (the observer's features ALPHAS) of the feature where the
+normal range RANGE begins: the edge with that normal, else the feature containing it."
+  (let ((from (direction-vector (angular-range-from range))))
+    (or (position-if (lambda (alpha)
+                       (and (feature-edge-p alpha)
+                            (same-direction-p decider from (feature-normal alpha))))
+                     alpha-vector)
+        (position (observer-feature-containing decider alphas from) alpha-vector))))
+
+(defun corner-sum-pieces (decider beta alphas previous-edge-normal)
+  "The sum pieces, in order, of the corner or arc BETA of the obstacle with the
+observer's features ALPHAS, walking them counter-clockwise from where BETA's normal range
+begins: each observer edge whose normal lies in the range (unless it is the
+PREVIOUS-EDGE-NORMAL, already joined to the previous edge) moved by BETA's support
+point, and each arc of positive radius over the common range. An arc whose common range
+wraps around is split, its second part last."
+  (let* ((alpha-vector (coerce alphas 'vector))
+         (m (length alphas))
+         (range (feature-range beta)) (deferred nil) (pieces '()))
+    (flet ((emit (piece alpha)
+             (push (make-sum-piece piece (feature-name beta) (feature-name alpha) beta) pieces)))
+      (unless (range-empty-p decider range)
+        (let ((j0 (observer-start-index decider alphas alpha-vector range)))
+          (dotimes (k m)
+            (let ((alpha (aref alpha-vector (mod (+ j0 k) m))))
+              (if (feature-edge-p alpha)
+                  (let ((normal (feature-normal alpha)))
+                    (when (and (direction-in-range-p decider normal range)
+                               (not (and previous-edge-normal
+                                         (same-direction-p decider normal
+                                                           previous-edge-normal))))
+                      (let ((offset (support-point decider beta normal)))
+                        (emit (translated-line-piece (feature-piece alpha) offset offset)
+                              alpha))))
+                  (let ((common (range-intersection decider range (feature-range alpha)))
+                        (radius (e+ (feature-radius beta) (feature-radius alpha))))
+                    (unless (eql radius 0)
+                      (when (and (= k 0) (= (length common) 2))
+                        (setf deferred (second common) common (list (first common))))
+                      (dolist (sub common)
+                        (emit (range-arc-piece decider
+                                               (v+ (feature-center beta) (feature-center alpha))
+                                               radius sub)
+                              alpha)))))))
+          (when deferred
+            (emit (range-arc-piece decider
+                                   (v+ (feature-center beta)
+                                       (feature-center (aref alpha-vector j0)))
+                                   (e+ (feature-radius beta)
+                                       (feature-radius (aref alpha-vector j0)))
+                                   deferred)
+                  (aref alpha-vector j0))))))
+    (nreverse pieces)))
+
+(defun previous-edge-normals (betas)
+  "For each feature of BETAS (a closed counter-clockwise boundary), the normal of the
+feature before it when that is an edge (and there is more than one feature), else NIL."
+  (loop for beta in betas
+        for i from 0
+        collect (let ((previous (nth (mod (1- i) (length betas)) betas)))
+                  (and (feature-edge-p previous) (> (length betas) 1)
+                       (feature-normal previous)))))
+
+(defun edge-continues-p (decider betas i)
+  "True when the feature after the Ith edge of BETAS (a closed boundary) is another edge
+going straight on."
+  (let ((beta (nth i betas))
+        (next (nth (mod (1+ i) (length betas)) betas)))
+    (and (not (eq next beta)) (feature-edge-p next)
+         (same-direction-p decider (feature-normal beta)
+                           (feature-normal next)))))
+
 (defun convex-sum (decider betas alphas)
   "The boundary pieces, counter-clockwise, of B (+) (-A) where BETAS are the features of
 the convex obstacle B and ALPHAS those of -A (already reflected), both counter-clockwise."
-  (let* ((alpha-vector (coerce alphas 'vector))
-         (m (length alphas))
-         (pieces '())
-         (previous-edge-normals
-           (loop for beta in betas
-                 for i from 0
-                 collect (let ((previous (nth (mod (1- i) (length betas)) betas)))
-                           (and (feature-edge-p previous) (> (length betas) 1)
-                                (feature-normal previous))))))
-    (labels ((emit (piece beta alpha)
-               (push (make-sum-piece piece (feature-name beta) (feature-name alpha) beta)
-                     pieces))
-             (containing (direction-vector)
-               (or (find-if (lambda (alpha)
-                              (and (not (feature-edge-p alpha))
-                                   (direction-in-range-p decider direction-vector
-                                                         (feature-range alpha))))
-                            alphas)
-                   (error 'geometry-error
-                          :datum direction-vector
-                          :detail "internal: no feature of the observer has this normal (its normal ranges do not cover the circle)")))
-             (translated-line (piece offset-start offset-end)
-               (make-line-piece (v+ (line-piece-start piece) offset-start)
-                                (v+ (line-piece-end piece) offset-end)
-                                :infinite (line-piece-infinite piece)))
-             (edge-of-b (beta continued)
-               ;; CONTINUED: the next feature of B is an edge going straight on; the
-               ;; observer's parallel edge is then added after the last edge of the run
-               (let* ((n (feature-normal beta))
-                      (parallel (find-if (lambda (alpha)
-                                           (and (feature-edge-p alpha)
-                                                (same-direction-p decider n (feature-normal alpha))))
-                                         alphas)))
-                 (if parallel
-                     (emit (translated-line (feature-piece beta)
-                                            (line-piece-start (feature-piece parallel))
-                                            (if continued
-                                                (line-piece-start (feature-piece parallel))
-                                                (line-piece-end (feature-piece parallel))))
-                           beta parallel)
-                     (let* ((alpha (containing n))
-                            (offset (support-point decider alpha n)))
-                       (emit (translated-line (feature-piece beta) offset offset) beta alpha)))))
-             (start-index (range)
-               (let ((from (direction-vector (angular-range-from range))))
-                 (or (position-if (lambda (alpha)
-                                    (and (feature-edge-p alpha)
-                                         (same-direction-p decider from (feature-normal alpha))))
-                                  alpha-vector)
-                     (position (containing from) alpha-vector))))
-             (corner-or-arc-of-b (beta previous-edge-normal)
-               (let ((range (feature-range beta)) (deferred nil))
-                 (unless (range-empty-p decider range)
-                   (let ((j0 (start-index range)))
-                     (dotimes (k m)
-                       (let ((alpha (aref alpha-vector (mod (+ j0 k) m))))
-                         (if (feature-edge-p alpha)
-                             (let ((normal (feature-normal alpha)))
-                               (when (and (direction-in-range-p decider normal range)
-                                          (not (and previous-edge-normal
-                                                    (same-direction-p decider normal
-                                                                      previous-edge-normal))))
-                                 (let ((offset (support-point decider beta normal)))
-                                   (emit (translated-line (feature-piece alpha) offset offset)
-                                         beta alpha))))
-                             (let ((common (range-intersection decider range (feature-range alpha)))
-                                   (radius (e+ (feature-radius beta) (feature-radius alpha))))
-                               (unless (eql radius 0)
-                                 (when (and (= k 0) (= (length common) 2))
-                                   (setf deferred (second common) common (list (first common))))
-                                 (dolist (sub common)
-                                   (emit (range-arc-piece decider
-                                                          (v+ (feature-center beta) (feature-center alpha))
-                                                          radius sub)
-                                         beta alpha)))))))
-                     (when deferred
-                       (emit (range-arc-piece decider
-                                              (v+ (feature-center beta)
-                                                  (feature-center (aref alpha-vector j0)))
-                                              (e+ (feature-radius beta)
-                                                  (feature-radius (aref alpha-vector j0)))
-                                              deferred)
-                             beta (aref alpha-vector j0))))))))
-      (loop for beta in betas
-            for i from 0
-            for previous-edge-normal in previous-edge-normals
-            do (if (feature-edge-p beta)
-                   (edge-of-b beta
-                              (let ((next (nth (mod (1+ i) (length betas)) betas)))
-                                (and (not (eq next beta)) (feature-edge-p next)
-                                     (same-direction-p decider (feature-normal beta)
-                                                       (feature-normal next)))))
-                   (corner-or-arc-of-b beta previous-edge-normal)))
-      (nreverse pieces))))
+  (loop for beta in betas
+        for i from 0
+        for previous-edge-normal in (previous-edge-normals betas)
+        append (if (feature-edge-p beta)
+                   (edge-sum-pieces decider beta alphas (edge-continues-p decider betas i))
+                   (corner-sum-pieces decider beta alphas previous-edge-normal))))
 
 (defun exposed-sum-pieces (decider sum-pieces)
   "The SUM-PIECES that are simple contacts: those from exposed features of the

@@ -238,6 +238,108 @@ it) and INSTANCE-KEY the instance."
                               (and instance (second (ames.tms:node-datum instance)))))
                       (list equation nil nil)))))
 
+(defun state-accelerations (run solved groups)
+  "Each body's acceleration in the SOLVED model, (BODY (AX AY)), in the body order of
+RUN; (0 0) for a fixed body."
+  (mapcar (lambda (body)
+            (list body (if (body-fixed-p run body)
+                           '(0 0)
+                           (mapcar (lambda (axis)
+                                     (over-motion run solved groups
+                                                  `(ames.kb:acc ,body ,axis)))
+                                   '(:x :y)))))
+          (body-names run)))
+
+(defun new-qualitative-state (run index trial solved groups)
+  "The QUALITATIVE-STATE numbered INDEX that starts now, from the settled TRIAL, its
+SOLVED model and the integrated GROUPS, its duration and end still :UNDECIDED."
+  (let ((contacts (active-contacts run)))
+    (make-instance
+     'qualitative-state
+     :index index :start (run-time run) :duration :undecided
+     :initial-velocities (run-velocities run)
+     :contacts (contact-descriptions run contacts)
+     :contact-points (mapcar (lambda (contact) (contact-touching run contact)) contacts)
+     :accelerations (state-accelerations run solved groups)
+     :forces (reported-entries run solved groups :forces)
+     :positions (reported-motion run groups :pos)
+     :velocities (reported-motion run groups :vel)
+     :end-event :undecided
+     :analysis (list :equations (equation-sources (run-model run))
+                     :contact-names (contact-names run)
+                     :compact-equations (solved-model-equations solved)
+                     :choices (trial-notes trial)
+                     :integrators (mapcar (lambda (g) (list (group-bodies g) (group-kind g)))
+                                          groups)
+                     :check-model (check-model run solved))
+     :path-coordinates (first (path-notes run solved groups))
+     :line-coordinates (line-notes groups)
+     :reported-sections (reported-sections run solved groups))))
+
+(defun state-end-candidates (run solved groups state)
+  "The events that may end STATE, as four values: the CANDIDATEs, the events whose time
+is unknown, the events that never happen, and a flag. The flag is true when there is no
+closed form and no numbers, so that the end cannot be found; STATE then says so."
+  (let ((impacts (impacts-at-once run)))
+    (if impacts
+        (values impacts '() nil nil)
+        (handler-case (multiple-value-bind (candidates unknown never)
+                          (candidates-of run solved groups)
+                        (values candidates unknown never nil))
+          (no-closed-form (condition)
+            ;; no closed form and no numbers: the state's end cannot be found
+            (setf (state-duration state) (list :no-closed-form :needs :parameter-values)
+                  (state-end-event state) :undecided
+                  (state-undecided-detail state) (ames-error-detail condition))
+            (values nil nil nil t))))))
+
+(defun earliest-state-end (run state candidates unknown)
+  "The CANDIDATEs (with the run's time limit) that fire first, as EARLIEST-CANDIDATES
+finds them; an AMBIGUOUS-TRANSITION it signals carries STATE."
+  (let ((limit (time-limit-candidate run)))
+    (handler-bind ((ambiguous-transition
+                     (lambda (condition)
+                       (setf (ambiguous-transition-state condition) state))))
+      (earliest-candidates run (if limit (cons limit candidates) candidates)
+                           unknown))))
+
+(defun note-state-candidates (state candidates fired never)
+  "Record in STATE's analysis each candidate with its time and whether it FIRED, and
+the events that NEVER happen."
+  (setf (getf (state-analysis state) :candidates)
+        (append (mapcar (lambda (c) (list (candidate-event c) :at (candidate-time c)
+                                          :fired (and (member c fired) t)))
+                        candidates)
+                (mapcar (lambda (event) (list event :never)) never))))
+
+(defun note-state-end (run state groups fired)
+  "Record in STATE its end by the FIRED candidates (at least one): the duration, the
+event, the final positions and velocities, the simultaneous events, the numeric
+trajectory and the arc length reached."
+  (let ((time (candidate-time (first fired))))
+    (setf (state-duration state) time
+          (state-end-event state) (end-event-of fired)
+          (state-final-positions state) (end-values run groups fired :pos)
+          (state-final-velocities state) (end-values run groups fired :vel))
+    (when (rest fired)
+      (setf (state-simultaneous-events state) (mapcar #'candidate-event fired)))
+    (let ((numeric (remove nil (mapcar #'group-samples groups))))
+      (when numeric
+        (setf (state-numeric-trajectory state) numeric)))
+    (let ((arc (find-if #'candidate-at-arc fired)))
+      (when arc
+        (setf (state-end-arc-length state) (candidate-at-arc arc))))))
+
+(defun note-state-forever (run state groups)
+  "Record that STATE, which no event ends, lasts forever; periodic when every body
+oscillates with one frequency."
+  (let ((oscillation (and (not (state-periodic state))
+                          (linear-oscillation run groups))))
+    (when oscillation
+      ;; one frequency for every body: periodic (oscillation.lisp)
+      (setf (state-periodic state) oscillation)))
+  (setf (state-duration state) :forever (state-end-event state) :none))
+
 (defun analyse-state (run index)
   "Choose, build, solve, integrate and end the current state, numbered INDEX. Returns
 the QUALITATIVE-STATE and the fired CANDIDATEs (NIL when it lasts forever). When which
@@ -246,82 +348,21 @@ known."
   (let* ((trial (settle-choices run))
          (solved (trial-solved trial))
          (groups (integrate-groups run solved))
-         (contacts (active-contacts run))
-         (state (make-instance
-                 'qualitative-state
-                 :index index :start (run-time run) :duration :undecided
-                 :initial-velocities (run-velocities run)
-                 :contacts (contact-descriptions run contacts)
-                 :contact-points (mapcar (lambda (contact) (contact-touching run contact)) contacts)
-                 :accelerations
-                 (mapcar (lambda (body)
-                           (list body (if (body-fixed-p run body)
-                                          '(0 0)
-                                          (mapcar (lambda (axis)
-                                                    (over-motion run solved groups
-                                                                 `(ames.kb:acc ,body ,axis)))
-                                                  '(:x :y)))))
-                         (body-names run))
-                 :forces (reported-entries run solved groups :forces)
-                 :positions (reported-motion run groups :pos)
-                 :velocities (reported-motion run groups :vel)
-                 :end-event :undecided
-                 :analysis (list :equations (equation-sources (run-model run))
-                                 :contact-names (contact-names run)
-                                 :compact-equations (solved-model-equations solved)
-                                 :choices (trial-notes trial)
-                                 :integrators (mapcar (lambda (g) (list (group-bodies g) (group-kind g)))
-                                                      groups)
-                                 :check-model (check-model run solved))
-                 :path-coordinates (first (path-notes run solved groups))
-                 :line-coordinates (line-notes groups)
-                 :reported-sections (reported-sections run solved groups))))
-    (multiple-value-bind (candidates unknown never)
-        (let ((impacts (impacts-at-once run)))
-          (if impacts
-              (values impacts '())
-              (handler-case (candidates-of run solved groups)
-                (no-closed-form (condition)
-                  ;; no closed form and no numbers: the state's end cannot be found
-                  (setf (state-duration state) (list :no-closed-form :needs :parameter-values)
-                        (state-end-event state) :undecided
-                        (state-undecided-detail state) (ames-error-detail condition))
-                  (return-from analyse-state (values state :undecided))))))
-      (let* ((limit (time-limit-candidate run))
-             (fired (handler-bind ((ambiguous-transition
-                                     (lambda (condition)
-                                       (setf (ambiguous-transition-state condition) state))))
-                      (earliest-candidates run (if limit (cons limit candidates) candidates)
-                                           unknown))))
-        (setf (getf (state-analysis state) :candidates)
-              (append (mapcar (lambda (c) (list (candidate-event c) :at (candidate-time c)
-                                                :fired (and (member c fired) t)))
-                              candidates)
-                      (mapcar (lambda (event) (list event :never)) never)))
+         (state (new-qualitative-state run index trial solved groups)))
+    (multiple-value-bind (candidates unknown never undecided)
+        (state-end-candidates run solved groups state)
+      (when undecided
+        (return-from analyse-state (values state :undecided)))
+      (let ((fired (earliest-state-end run state candidates unknown)))
+        (note-state-candidates state candidates fired never)
         (let ((swing (periodic-swing run solved fired)))
           (when swing
             ;; between two turning points: periodic, forever (turns.lisp)
             (setf (state-periodic state) swing
                   fired nil)))
         (when fired
-          (let ((time (candidate-time (first fired))))
-            (setf (state-duration state) time
-                  (state-end-event state) (end-event-of fired)
-                  (state-final-positions state) (end-values run groups fired :pos)
-                  (state-final-velocities state) (end-values run groups fired :vel))
-            (when (rest fired)
-              (setf (state-simultaneous-events state) (mapcar #'candidate-event fired)))
-            (let ((numeric (remove nil (mapcar #'group-samples groups))))
-              (when numeric
-                (setf (state-numeric-trajectory state) numeric)))
-            (let ((arc (find-if #'candidate-at-arc fired)))
-              (when arc
-                (setf (state-end-arc-length state) (candidate-at-arc arc))))))
+          (note-state-end run state groups fired))
         (unless fired
-          (let ((oscillation (and (not (state-periodic state))
-                                  (linear-oscillation run groups))))
-            (when oscillation
-              ;; one frequency for every body: periodic (oscillation.lisp)
-              (setf (state-periodic state) oscillation)))
-          (setf (state-duration state) :forever (state-end-event state) :none))
+          (note-state-forever run state groups))
         (values state fired)))))
+
