@@ -180,6 +180,12 @@ whose sides agree to round-off is decided exactly or left :UNKNOWN
     (let ((verdict (decide-with-imaginary-radicands bridge relation)))
       (unless (eq verdict :fall-back)
         (return-from decide-relation verdict))))
+  (decide-relation-in-maxima bridge relation))
+
+(defun decide-relation-in-maxima (bridge relation)
+  "The truth of RELATION by Maxima's is(); when it does not know, :UNKNOWN if numeric
+witnesses show that no strategy can decide it, else as DECIDE-RELATION-BY-STRATEGIES
+finds it."
   (let* ((operator (expression-operator relation))
          (equation (member operator '(= /=)))
          (lhs (to-mx bridge (relation-lhs relation)))
@@ -190,7 +196,7 @@ whose sides agree to round-off is decided exactly or left :UNKNOWN
                      (t (mform (cdr (assoc operator *relation-heads*)) lhs rhs))))
          (verdict (maxima-truth (maxima-request bridge (mcall "$IS" question) :datum relation))))
     (unless (eq verdict :unknown)
-      (return-from decide-relation verdict))
+      (return-from decide-relation-in-maxima verdict))
     ;; an inequality seen to hold at one admissible point and to fail at another, or an
     ;; equation whose sides cross between two such points, is decided by no strategy
     (multiple-value-bind (holds fails facts)
@@ -202,33 +208,43 @@ whose sides agree to round-off is decided exactly or left :UNKNOWN
                  (or (not equation)
                      (continuous-and-admissible-between-p
                       (list '- (relation-lhs relation) (relation-rhs relation)) facts holds fails)))
-        (return-from decide-relation :unknown))
-      ;; is() proves X <= 0 from the fact X <= 0 but not that X > 0 fails: ask the
-      ;; opposite relation too
-      (setf verdict (opposite-truth bridge relation lhs rhs))
-      (unless (eq verdict :unknown)
-        (return-from decide-relation verdict))
-      ;; the signs are asked for only until they decide the relation
-      (setf verdict (relation-verdict operator
-                                      (form-signs bridge (mdifference lhs rhs)
-                                                  :datum relation
-                                                  :enough (lambda (signs)
-                                                            (not (eq (relation-verdict operator signs)
-                                                                     :unknown))))))
+        (return-from decide-relation-in-maxima :unknown))
+      (decide-relation-by-strategies bridge relation lhs rhs holds))))
+
+(defun decide-relation-by-strategies (bridge relation lhs rhs holds)
+  "The truth of RELATION, whose sides are LHS and RHS in Maxima's form, that is() did
+not decide: by the opposite relation, the signs of the difference of its sides (after
+clearing a square root), equivalence (for = and /=, unless HOLDS, a point where the
+sides differ, was seen), what a physicist knows and the order substitution; :UNKNOWN
+when none decides it."
+  (let* ((operator (expression-operator relation))
+         (equation (member operator '(= /=)))
+         ;; is() proves X <= 0 from the fact X <= 0 but not that X > 0 fails: ask the
+         ;; opposite relation too
+         (verdict (opposite-truth bridge relation lhs rhs)))
+    (unless (eq verdict :unknown)
+      (return-from decide-relation-by-strategies verdict))
+    ;; the signs are asked for only until they decide the relation
+    (setf verdict (relation-verdict operator
+                                    (form-signs bridge (mdifference lhs rhs)
+                                                :datum relation
+                                                :enough (lambda (signs)
+                                                          (not (eq (relation-verdict operator signs)
+                                                                   :unknown))))))
+    (when (eq verdict :unknown)
+      (let ((signs (radical-signs bridge (mdifference lhs rhs) :datum relation)))
+        (when signs (setf verdict (relation-verdict operator signs)))))
+    ;; sides seen to differ both ways are not equal: equivalence cannot be proven,
+    ;; here nor after the order substitution
+    (let ((*sides-differ* (or *sides-differ* (and equation holds t))))
+      (when (and (eq verdict :unknown) equation (not *sides-differ*)
+                 (equivalent-p bridge (relation-lhs relation) (relation-rhs relation)))
+        (setf verdict (if (eq operator '=) :true :false)))
       (when (eq verdict :unknown)
-        (let ((signs (radical-signs bridge (mdifference lhs rhs) :datum relation)))
-          (when signs (setf verdict (relation-verdict operator signs)))))
-      ;; sides seen to differ both ways are not equal: equivalence cannot be proven,
-      ;; here nor after the order substitution
-      (let ((*sides-differ* (or *sides-differ* (and equation holds t))))
-        (when (and (eq verdict :unknown) equation (not *sides-differ*)
-                   (equivalent-p bridge (relation-lhs relation) (relation-rhs relation)))
-          (setf verdict (if (eq operator '=) :true :false)))
-        (when (eq verdict :unknown)
-          (setf verdict (decide-by-reasoning bridge relation)))
-        (when (eq verdict :unknown)
-          (setf verdict (decide-by-order-substitution bridge relation))))
-      verdict)))
+        (setf verdict (decide-by-reasoning bridge relation)))
+      (when (eq verdict :unknown)
+        (setf verdict (decide-by-order-substitution bridge relation))))
+    verdict))
 
 (defvar *deciding* '()
   "The verdict keys (see VERDICT-KEY) of the DECIDE calls under way, innermost first.")

@@ -133,16 +133,19 @@ Numbers, and numeric forms such as 0.7483 + 1.692 tau, are written by NUMBER-TEX
   (let ((object (find-scenario-body body (presenter-scenario presenter))))
     (and object (scenario-body-mass object))))
 
-(defun print-state-latex (presenter view stream)
-  "Write one state's VIEW as LaTeX on STREAM."
+(defun print-state-heading-latex (presenter view stream)
+  "Write the subsection heading of one state's VIEW on STREAM: its number (or the fork
+at its start), its branch, and when it starts."
   (let ((start (getf view :start)))
     (format stream "~%\\subsubsection*{~:[State ~D~;Fork at the start of state ~D (no period of motion)~]~@[ (branch ~A)~], from ~A}~%"
             (getf view :fork) (getf view :index) (getf view :branch)
             (if (and (= 1 (length start)) (consp (first start)))
                 (format nil "$t = ~A$" (formula-latex presenter (second (first start))))
-                (phrase-latex presenter start))))
-  (format stream "\\begin{description}~%\\item[Contacts] ~:[none~;~:*~{~A~^; ~}~].~%"
-          (mapcar (lambda (c) (phrase-latex presenter c)) (getf view :contacts)))
+                (phrase-latex presenter start)))))
+
+(defun print-forces-latex (presenter view stream)
+  "Write the Forces item of one state's VIEW on STREAM: each force's label and options,
+then its value as a vector or a displayed formula."
   (format stream "\\item[Forces]~:[ none.~;~]~%" (getf view :forces))
   (dolist (force (getf view :forces))
     (format stream "~A~{ (~A)~}:~%" (latex-escape (getf force :label))
@@ -152,7 +155,12 @@ Numbers, and numeric forms such as 0.7483 + 1.692 tau, are written by NUMBER-TEX
             ((getf force :vector-p)
              (format stream "\\[ ~A~A \\]~%" (vector-latex presenter value)
                      (numbers-latex presenter (getf force :numbers))))
-            (t (display-math stream (getf force :symbol) presenter value (getf force :numbers))))))
+            (t (display-math stream (getf force :symbol) presenter value (getf force :numbers)))))))
+
+(defun print-equations-of-motion-latex (presenter view stream)
+  "Write the Equations of motion item of one state's VIEW on STREAM, when it has bodies:
+mass times each component of the acceleration, for each body whose mass and
+acceleration are known expressions."
   (when (getf view :bodies)
     (format stream "\\item[Equations of motion] (net force $=$ mass $\\times$ acceleration)~%")
     (dolist (body (getf view :bodies))
@@ -165,26 +173,30 @@ Numbers, and numeric forms such as 0.7483 + 1.692 tau, are written by NUMBER-TEX
                   (formula-latex presenter (present presenter mass))
                   (formula-latex presenter (present presenter `(* ,mass ,(first acceleration))))
                   (formula-latex presenter (present presenter mass))
-                  (formula-latex presenter (present presenter `(* ,mass ,(second acceleration)))))))))
-  (dolist (body (getf view :bodies))
-    (format stream "\\item[Motion of ~A]~%" (latex-escape (name-text (getf body :name))))
-    (destructuring-bind (&optional ax ay) (getf body :acceleration)
-      (destructuring-bind (&optional nx ny) (getf body :acceleration-numbers)
-        (display-math stream "a_{x}" presenter ax nx)
-        (display-math stream "a_{y}" presenter ay ny)))
-    (let ((position (getf body :position)) (numbers (getf body :position-numbers)))
-      (cond ((eq position :no-closed-form)
-             (format stream "Its position has no closed form in time (integrated numerically).~%"))
-            ((and (consp position) (eq (first position) :on-path))
-             (format stream "On the curve, at arc length $s$:~%")
-             (display-math stream "x" presenter (first (second position)) (first numbers))
-             (display-math stream "y" presenter (second (second position)) (second numbers)))
-            ((consp position)
-             (display-math stream "x(\\tau)" presenter (first position) (first numbers))
-             (display-math stream "y(\\tau)" presenter (second position) (second numbers))))))
-  (loop for (label . phrases) in (getf view :notes)
-        do (format stream "\\item[~A] ~{~A~^; ~}.~%" (latex-escape (string-capitalize label :end 1))
-                   (mapcar (lambda (p) (phrase-latex presenter p)) phrases)))
+                  (formula-latex presenter (present presenter `(* ,mass ,(second acceleration))))))))))
+
+(defun print-body-motion-latex (presenter body stream)
+  "Write the Motion item of one BODY view on STREAM: its acceleration, then its position
+in time, along a curve, or the note that it has no closed form."
+  (format stream "\\item[Motion of ~A]~%" (latex-escape (name-text (getf body :name))))
+  (destructuring-bind (&optional ax ay) (getf body :acceleration)
+    (destructuring-bind (&optional nx ny) (getf body :acceleration-numbers)
+      (display-math stream "a_{x}" presenter ax nx)
+      (display-math stream "a_{y}" presenter ay ny)))
+  (let ((position (getf body :position)) (numbers (getf body :position-numbers)))
+    (cond ((eq position :no-closed-form)
+           (format stream "Its position has no closed form in time (integrated numerically).~%"))
+          ((and (consp position) (eq (first position) :on-path))
+           (format stream "On the curve, at arc length $s$:~%")
+           (display-math stream "x" presenter (first (second position)) (first numbers))
+           (display-math stream "y" presenter (second (second position)) (second numbers)))
+          ((consp position)
+           (display-math stream "x(\\tau)" presenter (first position) (first numbers))
+           (display-math stream "y(\\tau)" presenter (second position) (second numbers))))))
+
+(defun print-state-end-latex (presenter view stream)
+  "Write the End, Duration and At the end items of one state's VIEW on STREAM: the
+events that end it, how long it lasts, and each body's final position and velocity."
   (format stream "\\item[End] ~A~{; at the same instant ~A~}.~%"
           (phrase-latex presenter (getf view :end))
           (mapcar (lambda (e) (phrase-latex presenter e))
@@ -196,7 +208,21 @@ Numbers, and numeric forms such as 0.7483 + 1.692 tau, are written by NUMBER-TEX
     (dolist (final (getf view :final))
       (format stream "~A at $~A$, velocity $~A$.~%" (latex-escape (name-text (getf final :name)))
               (vector-latex presenter (getf final :position))
-              (vector-latex presenter (getf final :velocity)))))
+              (vector-latex presenter (getf final :velocity))))))
+
+(defun print-state-latex (presenter view stream)
+  "Write one state's VIEW as LaTeX on STREAM."
+  (print-state-heading-latex presenter view stream)
+  (format stream "\\begin{description}~%\\item[Contacts] ~:[none~;~:*~{~A~^; ~}~].~%"
+          (mapcar (lambda (c) (phrase-latex presenter c)) (getf view :contacts)))
+  (print-forces-latex presenter view stream)
+  (print-equations-of-motion-latex presenter view stream)
+  (dolist (body (getf view :bodies))
+    (print-body-motion-latex presenter body stream))
+  (loop for (label . phrases) in (getf view :notes)
+        do (format stream "\\item[~A] ~{~A~^; ~}.~%" (latex-escape (string-capitalize label :end 1))
+                   (mapcar (lambda (p) (phrase-latex presenter p)) phrases)))
+  (print-state-end-latex presenter view stream)
   (format stream "\\end{description}~%")
   (dolist (branch (getf view :branches))
     (print-branch-latex presenter branch stream)))

@@ -211,68 +211,93 @@ a textbook gives it: \"where sin(s/A) = E\"."
                  ;; line of two bodies, in the knowledge base's terms): the positions show it
                  ((:numeric :events :line-coordinates :fork))
                  (:numeric-trajectory
-                  (list (cons "integrated numerically"
-                              (list (list (format nil "~D sample~:P of the motion" 
-                                                  (reduce #'+ (mapcar (lambda (g) (length (getf g :samples))) value))))))))
+                  (list (cons "integrated numerically" (numeric-trajectory-phrases value))))
                  (:undecided (list (cons "undecided" (list (list (datum-text value))))))
                  (:end-arc-length (list (cons "ends on the curve"
                                               (list (end-on-curve-phrase presenter value)))))
                  (:path-coordinates (list (cons "on the curve" (path-note presenter value))))
-                 (:periodic
-                  (list (cons "periodic"
-                              (list (let ((number (getf (state-numbers state) :period)))
-                                      (phrase "period " (present presenter (getf value :period))
-                                              (if number (format nil " (~A)" (number-text number)) "")))
-                                    ;; along a curve the arc length; else the coordinate
-                                    ;; that oscillates (a position term)
-                                    (let ((coordinate (if (getf value :coordinate)
-                                                          (present presenter (getf value :coordinate))
-                                                          (arc-length-symbol presenter))))
-                                      (phrase "between turning points at "
-                                              (list '= coordinate
-                                                    (present presenter (first (getf value :between))))
-                                              " and "
-                                              (list '= coordinate
-                                                    (present presenter (second (getf value :between))))))))))
-                 (:impact
-                  (list (cons "the impact"
-                              (append
-                               (loop for (body after) in (getf value :velocities-after)
-                                     for before = (body-entry (getf value :velocities-before) body)
-                                     unless (and (equal before '(0 0)) (equal after '(0 0)))
-                                       collect (phrase (format nil "~A: velocity (" (name-text body))
-                                                       (present presenter (first before)) ", "
-                                                       (present presenter (second before)) ") just before, ("
-                                                       (present presenter (first after)) ", "
-                                                       (present presenter (second after)) ") just after"))
-                               (loop for entry in (getf value :impulses)
-                                     for (label magnitude) = (multiple-value-list (impulse-entry entry))
-                                     unless (or (null magnitude) (eql magnitude 0))
-                                       collect (phrase (format nil "~A: " label)
-                                                       (present presenter magnitude)))
-                               (list (phrase "kinetic energy lost: " (present presenter (getf value :energy-lost))))))))
+                 (:periodic (list (cons "periodic" (periodic-phrases presenter state value))))
+                 (:impact (list (cons "the impact" (impact-phrases presenter value))))
                  (:accumulation
-                  (list (cons "the impacts repeat"
-                              (list (phrase "each cycle " (present presenter (getf value :factor))
-                                            " times the one before (the first lasted "
-                                            (present presenter (getf value :cycle))
-                                            "): they accumulate at t = "
-                                            (present presenter (getf value :time))
-                                            ", and the run goes on from there at rest")))))
+                  (list (cons "the impacts repeat" (accumulation-phrases presenter value))))
                  (:energy (list (cons "energy" (energy-phrases presenter value))))
                  (:momentum (list (cons "momentum" (momentum-phrases presenter value))))
                  (:missing-fact
                   (list (cons "the run branches on" (list (phrase (present-relation presenter value))))))
                  (:initial-velocities
                   (list (cons "velocities just after the impact"
-                              (loop for (body velocity) in value
-                                    collect (phrase (format nil "~A: (" (name-text body))
-                                                    (present presenter (first velocity)) ", "
-                                                    (present presenter (second velocity)) ")")))))
-                 (t (list (cons (keyword-words key)
-                                (list (if (valid-expression-p value :kind :arithmetic)
-                                          (phrase (present presenter value))
-                                          (list (datum-text value))))))))))
+                              (initial-velocity-phrases presenter value))))
+                 (t (list (cons (keyword-words key) (other-note-phrases presenter value)))))))
+
+(defun numeric-trajectory-phrases (groups)
+  "The phrases of a state's :NUMERIC-TRAJECTORY note, GROUPS (plists with :SAMPLES): how
+many samples of the motion were integrated."
+  (list (list (format nil "~D sample~:P of the motion" 
+                      (reduce #'+ (mapcar (lambda (g) (length (getf g :samples))) groups))))))
+
+(defun periodic-phrases (presenter state value)
+  "The phrases of STATE's :PERIODIC note VALUE (a plist: :PERIOD, :COORDINATE or none
+for the arc length, :BETWEEN the two turning points): the period, with its number when
+STATE has one, and the turning points."
+  (list (let ((number (getf (state-numbers state) :period)))
+          (phrase "period " (present presenter (getf value :period))
+                  (if number (format nil " (~A)" (number-text number)) "")))
+        ;; along a curve the arc length; else the coordinate
+        ;; that oscillates (a position term)
+        (let ((coordinate (if (getf value :coordinate)
+                              (present presenter (getf value :coordinate))
+                              (arc-length-symbol presenter))))
+          (phrase "between turning points at "
+                  (list '= coordinate
+                        (present presenter (first (getf value :between))))
+                  " and "
+                  (list '= coordinate
+                        (present presenter (second (getf value :between))))))))
+
+(defun impact-phrases (presenter value)
+  "The phrases of a state's :IMPACT note VALUE: each body's velocity just before and
+just after (bodies at rest throughout left out), each non-zero impulse, and the kinetic
+energy lost."
+  (append
+   (loop for (body after) in (getf value :velocities-after)
+         for before = (body-entry (getf value :velocities-before) body)
+         unless (and (equal before '(0 0)) (equal after '(0 0)))
+           collect (phrase (format nil "~A: velocity (" (name-text body))
+                           (present presenter (first before)) ", "
+                           (present presenter (second before)) ") just before, ("
+                           (present presenter (first after)) ", "
+                           (present presenter (second after)) ") just after"))
+   (loop for entry in (getf value :impulses)
+         for (label magnitude) = (multiple-value-list (impulse-entry entry))
+         unless (or (null magnitude) (eql magnitude 0))
+           collect (phrase (format nil "~A: " label)
+                           (present presenter magnitude)))
+   (list (phrase "kinetic energy lost: " (present presenter (getf value :energy-lost))))))
+
+(defun accumulation-phrases (presenter value)
+  "The phrases of a state's :ACCUMULATION note VALUE (:FACTOR, :CYCLE, :TIME): impacts
+repeating with a shrinking cycle that accumulate at a finite time."
+  (list (phrase "each cycle " (present presenter (getf value :factor))
+                " times the one before (the first lasted "
+                (present presenter (getf value :cycle))
+                "): they accumulate at t = "
+                (present presenter (getf value :time))
+                ", and the run goes on from there at rest")))
+
+(defun initial-velocity-phrases (presenter velocities)
+  "The phrases of a state's :INITIAL-VELOCITIES note, VELOCITIES ((BODY (VX VY)) ...):
+each body's velocity."
+  (loop for (body velocity) in velocities
+        collect (phrase (format nil "~A: (" (name-text body))
+                        (present presenter (first velocity)) ", "
+                        (present presenter (second velocity)) ")")))
+
+(defun other-note-phrases (presenter value)
+  "The phrases of a note no view knows, VALUE: the expression presented when it is one,
+else the datum as text."
+  (list (if (valid-expression-p value :kind :arithmetic)
+            (phrase (present presenter value))
+            (list (datum-text value)))))
 
 (defun energy-phrases (presenter entries)
   "The kinetic, potential and total energy of a state's :ENERGY note ENTRIES ((:kinetic
