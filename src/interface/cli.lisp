@@ -119,70 +119,94 @@ signal USAGE-ERROR naming TEXT when it is not one."
                           :detail (format nil "~A takes a positive number of seconds" option)))
     value))
 
+(defun check-command-word (arguments)
+  "Check the command word, the first of ARGUMENTS. Returns the parsed command line
+(:COMMAND :HELP or :VERSION) when the command asks for the usage or the version, else
+NIL: a command to parse further. Signals USAGE-ERROR when there is no command or an
+unknown one."
+  (let ((command (first arguments)))
+    (cond ((null command) (error 'usage-error :detail "no command given"))
+          ((member command '("help" "--help" "-h") :test #'string=)
+           (list :command :help))
+          ((member command '("version" "--version") :test #'string=)
+           (list :command :version))
+          ((intersection (rest arguments) '("--help" "-h") :test #'string=)
+           ;; run --help, explain -h: the usage, whatever else is given
+           (list :command :help))
+          ((not (member command '("run" "explain" "check") :test #'string=))
+           (error 'usage-error :datum command :detail "unknown command")))))
+
+(defun parse-option (command argument rest)
+  "Parse the command line's ARGUMENT, given to COMMAND, with its values from REST, the
+arguments after it. Returns three values: the option's key (NIL when ARGUMENT is a
+file), its value (for :SETTINGS, the list of settings given) and the arguments after
+its values. Signals USAGE-ERROR on an unknown option or a malformed value."
+  (flet ((option (key value) (values key value rest)))
+    (cond ((string= argument "--format")
+           (let ((value (pop rest)))
+             (option :format
+                     (or (find value *report-formats* :test #'string-equal)
+                         (error 'usage-error :datum value
+                                             :detail "--format takes text, sexp, latex, json or html")))))
+          ((string= argument "--svg")
+           (let ((svg (pop rest)))
+             (when (or (null svg) (eql 0 (search "--" svg)))
+               (error 'usage-error :datum argument :detail "--svg takes the picture's file name"))
+             (option :svg svg)))
+          ((string= argument "--numeric") (option :numeric t))
+          ((string= argument "--all-branches") (option :all-branches t))
+          ((string= argument "--set")
+           (unless (and rest (find #\= (first rest)))
+             (error 'usage-error :datum argument :detail "--set takes PARAM=VALUE"))
+           (option :settings
+                   (loop while (and rest (find #\= (first rest))
+                                    (not (eql 0 (search "--" (first rest)))))
+                         collect (parse-setting (pop rest)))))
+          ((and (string= command "explain") (string= argument "--state"))
+           (let ((value (and rest (parse-decimal (pop rest)))))
+             (unless (and (integerp value) (>= value 0))
+               (error 'usage-error :datum argument :detail "--state takes a state's index"))
+             (option :state value)))
+          ((string= argument "--time-limit")
+           (option :time-limit (parse-seconds argument (pop rest))))
+          ((string= argument "--maxima-timeout")
+           (option :maxima-timeout (parse-seconds argument (pop rest))))
+          ((string= argument "--verbose") (option :verbose t))
+          ((string= argument "--standalone") (option :standalone t))
+          ((string= argument "--no-check") (option :no-check t))
+          ((eql 0 (search "--" argument))
+           (error 'usage-error :datum argument :detail "unknown option"))
+          (t (option nil nil)))))
+
 (defun parse-command-line (arguments)
   "Parse ARGUMENTS (strings, without the program name) into a plist (:COMMAND :FILES
 :FORMAT :SETTINGS :SVG :STATE :NUMERIC :TIME-LIMIT :MAXIMA-TIMEOUT :VERBOSE
 :ALL-BRANCHES); the two
 limits are NIL when not given. Signals USAGE-ERROR on anything malformed."
-  (let ((command (first arguments)) (files '()) (format :text) (settings '()) (svg nil)
-        (state nil) (numeric nil) (time-limit nil) (maxima-timeout nil) (verbose nil)
-        (standalone nil) (no-check nil) (all-branches nil))
-    (cond ((null command) (error 'usage-error :detail "no command given"))
-          ((member command '("help" "--help" "-h") :test #'string=)
-           (return-from parse-command-line (list :command :help)))
-          ((member command '("version" "--version") :test #'string=)
-           (return-from parse-command-line (list :command :version)))
-          ((intersection (rest arguments) '("--help" "-h") :test #'string=)
-           ;; run --help, explain -h: the usage, whatever else is given
-           (return-from parse-command-line (list :command :help)))
-          ((not (member command '("run" "explain" "check") :test #'string=))
-           (error 'usage-error :datum command :detail "unknown command")))
+  (let ((command (first arguments)) (files '()) (options (list :format :text :settings '())))
+    (let ((shortcut (check-command-word arguments)))
+      (when shortcut (return-from parse-command-line shortcut)))
     (loop with rest = (rest arguments)
           while rest
           do (let ((argument (pop rest)))
-               (cond ((string= argument "--format")
-                      (let ((value (pop rest)))
-                        (setf format
-                              (or (find value *report-formats* :test #'string-equal)
-                                  (error 'usage-error :datum value
-                                                      :detail "--format takes text, sexp, latex, json or html")))))
-                     ((string= argument "--svg")
-                      (setf svg (pop rest))
-                      (when (or (null svg) (eql 0 (search "--" svg)))
-                        (error 'usage-error :datum argument :detail "--svg takes the picture's file name")))
-                     ((string= argument "--numeric")
-                      (setf numeric t))
-                     ((string= argument "--all-branches")
-                      (setf all-branches t))
-                     ((string= argument "--set")
-                      (unless (and rest (find #\= (first rest)))
-                        (error 'usage-error :datum argument :detail "--set takes PARAM=VALUE"))
-                      (loop while (and rest (find #\= (first rest))
-                                       (not (eql 0 (search "--" (first rest)))))
-                            do (push (parse-setting (pop rest)) settings)))
-                     ((and (string= command "explain") (string= argument "--state"))
-                      (let ((value (and rest (parse-decimal (pop rest)))))
-                        (unless (and (integerp value) (>= value 0))
-                          (error 'usage-error :datum argument :detail "--state takes a state's index"))
-                        (setf state value)))
-                     ((string= argument "--time-limit")
-                      (setf time-limit (parse-seconds argument (pop rest))))
-                     ((string= argument "--maxima-timeout")
-                      (setf maxima-timeout (parse-seconds argument (pop rest))))
-                     ((string= argument "--verbose") (setf verbose t))
-                     ((string= argument "--standalone") (setf standalone t))
-                     ((string= argument "--no-check") (setf no-check t))
-                     ((eql 0 (search "--" argument))
-                      (error 'usage-error :datum argument :detail "unknown option"))
-                     (t (push argument files)))))
+               (multiple-value-bind (key value after) (parse-option command argument rest)
+                 (setf rest after)
+                 (case key
+                   ((nil) (push argument files))
+                   (:settings (setf (getf options :settings)
+                                    (append (getf options :settings) value)))
+                   (t (setf (getf options key) value))))))
     (when (null files) (error 'usage-error :detail "run needs at least one scenario file"))
     (list :command (cond ((string= command "explain") :explain)
                          ((string= command "check") :check)
                          (t :run))
-          :files (nreverse files) :format format
-          :settings (nreverse settings) :svg svg :state state :numeric numeric
-          :time-limit time-limit :maxima-timeout maxima-timeout :verbose verbose
-          :standalone standalone :no-check no-check :all-branches all-branches)))
+          :files (nreverse files) :format (getf options :format)
+          :settings (getf options :settings) :svg (getf options :svg)
+          :state (getf options :state) :numeric (getf options :numeric)
+          :time-limit (getf options :time-limit) :maxima-timeout (getf options :maxima-timeout)
+          :verbose (getf options :verbose)
+          :standalone (getf options :standalone) :no-check (getf options :no-check)
+          :all-branches (getf options :all-branches))))
 
 (defun command-line-limits (options)
   "The LIMITS for the parsed command line OPTIONS: *LIMITS* with its time limit and
