@@ -22,56 +22,77 @@ the argument and the variables it binds."
     (when (member variable declared)
       (definition-error name spec (format nil "The argument ~S is declared twice." variable)))
     (check-plist name options spec "An argument's options")
-    (let ((kinds (intersection '(:entity :belief :collect)
-                               (loop for (key) on options by #'cddr collect key))))
-      (unless (= 1 (length kinds))
-        (definition-error name spec "An argument is exactly one of (?V :ENTITY KIND ...), ~
-                                     (?V :BELIEF PATTERN) or (?V :COLLECT TEMPLATE :MATCHING ~
-                                     PATTERN)."))
-      (flet ((allow (&rest keys)
-               (loop for (key) on options by #'cddr
-                     unless (member key keys)
-                       do (definition-error name spec
-                                            (format nil "~S is not an option of this kind ~
-                                                         of argument (allowed: ~{~S~^ ~})."
-                                                    key keys)))))
-        (ecase (first kinds)
-          (:entity
-           (allow :entity :where)
-           (let ((kind (getf options :entity)) (where (getf options :where)))
-             (unless (and (symbolp kind) kind (not (pattern-variable-p kind)))
-               (definition-error name spec "The entity kind after :ENTITY must be a symbol."))
-             (check-plist name where spec "The :WHERE clause")
-             (values (make-argument variable :entity :entity-kind kind :where where :clause spec)
-                     (cons variable (form-variables where)))))
-          (:belief
-           (allow :belief)
-           (let ((pattern (getf options :belief)))
-             (check-pattern name pattern spec "The pattern after :BELIEF")
-             (unless (member variable (form-variables pattern))
-               (definition-error name spec (format nil "The variable ~S must occur in its ~
-                                                        :BELIEF pattern." variable)))
-             (values (make-argument variable :belief :pattern pattern :clause spec)
-                     (form-variables pattern))))
-          (:collect
-           (allow :collect :matching)
-           (let ((pattern (getf options :matching)) (template (getf options :collect)))
-             (unless (getf options :matching)
-               (definition-error name spec "A :COLLECT argument needs :MATCHING PATTERN."))
-             (check-pattern name pattern spec "The pattern after :MATCHING")
-             (when (member variable bound)
-               (definition-error name spec (format nil "The collection variable ~S is ~
-                                                        already bound by another argument."
-                                                   variable)))
-             (let ((unknown (set-difference (form-variables template)
-                                            (form-variables pattern))))
-               (when unknown
-                 (definition-error name spec (format nil "The collected template uses ~
-                                                          ~{~S~^, ~}, absent from the ~
-                                                          :MATCHING pattern." unknown))))
-             (values (make-argument variable :collection :pattern pattern :collect template
-                                                         :clause spec)
-                     (list variable)))))))))
+    (ecase (argument-kind name spec options)
+      (:entity (parse-entity-argument name spec variable options))
+      (:belief (parse-belief-argument name spec variable options))
+      (:collect (parse-collect-argument name spec variable options bound)))))
+
+(defun argument-kind (name spec options)
+  "The kind of the argument SPEC of NAME, from its OPTIONS: :ENTITY, :BELIEF or
+:COLLECT. Signals a definition error unless it is exactly one of them."
+  (let ((kinds (intersection '(:entity :belief :collect)
+                             (loop for (key) on options by #'cddr collect key))))
+    (unless (= 1 (length kinds))
+      (definition-error name spec "An argument is exactly one of (?V :ENTITY KIND ...), ~
+                                   (?V :BELIEF PATTERN) or (?V :COLLECT TEMPLATE :MATCHING ~
+                                   PATTERN)."))
+    (first kinds)))
+
+(defun check-argument-options (name spec options keys)
+  "Signal a definition error for the first of the OPTIONS (a plist) of the argument SPEC
+of NAME whose key is not among KEYS, the options of its kind."
+  (loop for (key) on options by #'cddr
+        unless (member key keys)
+          do (definition-error name spec
+                               (format nil "~S is not an option of this kind ~
+                                            of argument (allowed: ~{~S~^ ~})."
+                                       key keys))))
+
+(defun parse-entity-argument (name spec variable options)
+  "Parse the argument SPEC of NAME, (VARIABLE :ENTITY KIND [:WHERE PLIST]). Returns the
+argument and the variables it binds: VARIABLE and those of the :WHERE clause."
+  (check-argument-options name spec options '(:entity :where))
+  (let ((kind (getf options :entity)) (where (getf options :where)))
+    (unless (and (symbolp kind) kind (not (pattern-variable-p kind)))
+      (definition-error name spec "The entity kind after :ENTITY must be a symbol."))
+    (check-plist name where spec "The :WHERE clause")
+    (values (make-argument variable :entity :entity-kind kind :where where :clause spec)
+            (cons variable (form-variables where)))))
+
+(defun parse-belief-argument (name spec variable options)
+  "Parse the argument SPEC of NAME, (VARIABLE :BELIEF PATTERN), VARIABLE occurring in
+PATTERN. Returns the argument and the variables it binds: those of PATTERN."
+  (check-argument-options name spec options '(:belief))
+  (let ((pattern (getf options :belief)))
+    (check-pattern name pattern spec "The pattern after :BELIEF")
+    (unless (member variable (form-variables pattern))
+      (definition-error name spec (format nil "The variable ~S must occur in its ~
+                                               :BELIEF pattern." variable)))
+    (values (make-argument variable :belief :pattern pattern :clause spec)
+            (form-variables pattern))))
+
+(defun parse-collect-argument (name spec variable options bound)
+  "Parse the argument SPEC of NAME, (VARIABLE :COLLECT TEMPLATE :MATCHING PATTERN),
+VARIABLE not among the variables BOUND by other arguments and TEMPLATE using only
+PATTERN's variables. Returns the argument and the variables it binds: VARIABLE."
+  (check-argument-options name spec options '(:collect :matching))
+  (let ((pattern (getf options :matching)) (template (getf options :collect)))
+    (unless (getf options :matching)
+      (definition-error name spec "A :COLLECT argument needs :MATCHING PATTERN."))
+    (check-pattern name pattern spec "The pattern after :MATCHING")
+    (when (member variable bound)
+      (definition-error name spec (format nil "The collection variable ~S is ~
+                                               already bound by another argument."
+                                          variable)))
+    (let ((unknown (set-difference (form-variables template)
+                                   (form-variables pattern))))
+      (when unknown
+        (definition-error name spec (format nil "The collected template uses ~
+                                                 ~{~S~^, ~}, absent from the ~
+                                                 :MATCHING pattern." unknown))))
+    (values (make-argument variable :collection :pattern pattern :collect template
+                                                :clause spec)
+            (list variable))))
 
 (defun parse-event-spec (name item bound collections &key (event-key :event))
   "Parse the event part of a condition ITEM: the plist after it holding EVENT-KEY
