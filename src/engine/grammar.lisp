@@ -22,12 +22,12 @@ the argument and the variables it binds."
     (when (member variable declared)
       (definition-error name spec (format nil "The argument ~S is declared twice." variable)))
     (check-plist name options spec "An argument's options")
-    (ecase (argument-kind name spec options)
+    (ecase (argument-spec-kind name spec options)
       (:entity (parse-entity-argument name spec variable options))
       (:belief (parse-belief-argument name spec variable options))
       (:collect (parse-collect-argument name spec variable options bound)))))
 
-(defun argument-kind (name spec options)
+(defun argument-spec-kind (name spec options)
   "The kind of the argument SPEC of NAME, from its OPTIONS: :ENTITY, :BELIEF or
 :COLLECT. Signals a definition error unless it is exactly one of them."
   (let ((kinds (intersection '(:entity :belief :collect)

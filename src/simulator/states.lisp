@@ -238,7 +238,7 @@ it) and INSTANCE-KEY the instance."
                               (and instance (second (ames.tms:node-datum instance)))))
                       (list equation nil nil)))))
 
-(defun state-accelerations (run solved groups)
+(defun solved-accelerations (run solved groups)
   "Each body's acceleration in the SOLVED model, (BODY (AX AY)), in the body order of
 RUN; (0 0) for a fixed body."
   (mapcar (lambda (body)
@@ -260,7 +260,7 @@ SOLVED model and the integrated GROUPS, its duration and end still :UNDECIDED."
      :initial-velocities (run-velocities run)
      :contacts (contact-descriptions run contacts)
      :contact-points (mapcar (lambda (contact) (contact-touching run contact)) contacts)
-     :accelerations (state-accelerations run solved groups)
+     :accelerations (solved-accelerations run solved groups)
      :forces (reported-entries run solved groups :forces)
      :positions (reported-motion run groups :pos)
      :velocities (reported-motion run groups :vel)
