@@ -198,6 +198,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "presentation")
                  (:file "phrases")
                  (:file "view")
+                 (:file "view-notes")
                  (:file "view-branches")
                  (:file "view-check")
                  (:file "text")

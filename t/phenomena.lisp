@@ -89,7 +89,7 @@ phenomena, which orders the situation's entities, does not change."
     ("src/simulator/impacts.lisp" :contact "the key of a belief's contact")
     ("src/simulator/impacts.lisp" :impulse "the key of an impact event's impulse (any kind's)")
     ("src/report/phrases.lisp" :impulse "the key of an impact event's impulse (any kind's)")
-    ("src/report/view.lisp" :contact "the key of a path note's contact")
+    ("src/report/view-notes.lisp" :contact "the key of a path note's contact")
     ("src/geometry/conditions.lisp" :contact "a condition's slot initarg")
     ("src/geometry/contacts.lisp" :contact "a condition's slot initarg")
     ("src/geometry/minkowski.lisp" :normal "a piece's normal vector")
