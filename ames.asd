@@ -38,6 +38,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "ode")
                  (:file "presentation")
                  (:file "calculus")
+                 (:file "questions")
                  (:static-file "maxima-server.lisp")))
    (:module "algebra" :pathname "src/algebra/" :serial t
     :depends-on ("base" "maxima-bridge")

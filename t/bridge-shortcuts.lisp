@@ -105,8 +105,8 @@
                              (- (expt (sin a) 2) 1) (- l1 l2) (* (- l2 l1) m) 0
                              (+ (* 2 m l1) (- (* 2 m l2)))))
          (let ((form (ames.maxima::to-mx b expression)))
-           (is (null (set-exclusive-or (ames.algebra::form-signs b form)
-                                       (first (ames.algebra::forms-signs b (list form)))))
+           (is (null (set-exclusive-or (ames.maxima::form-signs b form)
+                                       (first (ames.maxima::forms-signs b (list form)))))
                "the signs of ~S differ" expression)))))))
 
 (test the-order-substitution-names-its-excess-once

@@ -230,3 +230,30 @@ relative to the wedge, down the slope (direction (cos a, -sin a)).")
      (ames.maxima:with-assumptions (b '((> x 0)))
        (is (eq :true (ames.algebra:decide b '(> x 0)))))
      (is (eq :unknown (ames.algebra:decide b '(> x 0)))))))
+
+(test the-questions-of-the-deciding-algebra-answer-in-its-terms
+  ;; questions.lisp: is(), sign() and a square root cleared, asked in prefix, answered
+  ;; as truth values and sign lists
+  (call-with-bridge
+   (lambda (b)
+     (ames.maxima:with-assumptions (b '((> m 0) (> g 0) (>= (- x y) 0)))
+       (is (eq :true (ames.maxima:maxima-is b '(> (* m g) 0))))
+       (is (eq :false (ames.maxima:maxima-is b '(< (* m g) 0))))
+       ;; the opposite of m g < 0 is m g >= 0, which is() proves
+       (is (eq :true (ames.maxima:maxima-is-opposite b '(< (* m g) 0))))
+       (is (eq :unknown (ames.maxima:maxima-is-opposite b '(< (- m g) 0))))
+       (is (equal '(:negative) (ames.maxima:maxima-signs b '(- (* m g)))))
+       (is (equal '(:positive) (ames.maxima:maxima-difference-signs b '(+ m 1) 'm)))
+       ;; is() uses the fact about x - y, which sign() may not
+       (is (not (member :negative (ames.maxima:maxima-fact-signs b '(- x y)))))
+       ;; 1 + g sqrt(m) - 0: a = 1, b = g, b^2 A - a^2 = g^2 m - 1, A = m, c = 1
+       (destructuring-bind (a-signs b-signs gap-signs radicand-signs denominator-signs)
+           (ames.maxima:square-root-part-signs b '(+ 1 (* g (sqrt m))) 0)
+         (is (equal '(:positive) a-signs))
+         (is (equal '(:positive) b-signs))
+         (is (subsetp '(:positive :negative) gap-signs))
+         (is (equal '(:positive) radicand-signs))
+         (is (equal '(:positive) denominator-signs)))
+       (is (null (ames.maxima:square-root-part-signs b '(+ m g) 0)))
+       (is (eql 1 (ames.maxima:ratsimp-with-sines
+                   b '(+ (expt (cos a) 2) (expt (sin a) 2)) '(a))))))))

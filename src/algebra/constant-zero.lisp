@@ -90,16 +90,8 @@ then radcan()ed, is 0."
   (handler-case
       (let ((expanded (simplify bridge difference :strategy :expanded-trigexpand)))
         (or (eql expanded 0)
-            (let* ((reduced (maxima-request
-                             bridge
-                             (mcall "$RATSIMP"
-                                    (reduce (lambda (form k)
-                                              (mcall "$RATSUBST" (to-mx bridge `(- 1 (expt (sin ,k) 2)))
-                                                     (to-mx bridge `(expt (cos ,k) 2)) form))
-                                            (cosine-arguments expanded)
-                                            :initial-value (to-mx bridge expanded)))
-                             :datum difference))
-                   (reduced (from-mx bridge reduced)))
+            (let ((reduced (ratsimp-with-sines bridge expanded (cosine-arguments expanded)
+                                               :datum difference)))
               (or (eql reduced 0)
                   (eql (simplify bridge reduced :strategy :radcan) 0)))))
     (maxima-condition () nil)))

@@ -23,141 +23,48 @@
   "True while DECIDE-RELATION works on an equation (or, in DECIDE-BY-ORDER-SUBSTITUTION,
 on its rewriting) whose sides were seen to differ both ways at admissible points.")
 
-(defparameter *sign-sets*
-  '(("$POS" :positive) ("$NEG" :negative) ("$ZERO" :zero) ("$PZ" :positive :zero)
-    ("$NZ" :negative :zero) ("$PN" :positive :negative) ("$PNZ" :positive :negative :zero))
-  "Maxima's sign answers and the signs each allows.")
+(defun radical-signs (bridge lhs rhs &key datum)
+  "The signs of LHS - RHS found by clearing one square root: written as
+(a + b sqrt(A)) / c, its numerator has the sign of a when b = 0 and, when a and b have
+opposite signs, the sign of b^2 A - a^2 times that of b. NIL when no square root is
+there or the form is not linear in it (see SQUARE-ROOT-PART-SIGNS)."
+  (let ((parts (square-root-part-signs bridge lhs rhs :datum datum)))
+    (when parts
+      (destructuring-bind (a-signs b-signs gap-signs radicand-signs denominator-signs) parts
+        (flet ((only (signs &rest allowed) (and signs (subsetp signs allowed))))
+          (let* ((real (only radicand-signs :positive :zero))
+                 (numerator-signs
+                   (cond ((or (null a-signs) (null b-signs)) nil)
+                         ;; b sqrt(A) against a: the larger in size wins. When
+                         ;; b^2 A > a^2 >= 0, A > 0 follows, so sqrt(A) is real.
+                         ((and (only a-signs :negative :zero) (only b-signs :positive))
+                          (cond ((only gap-signs :positive) '(:positive))
+                                (real gap-signs)))
+                         ((and (only a-signs :positive :zero) (only b-signs :negative))
+                          (cond ((only gap-signs :positive) '(:negative))
+                                (real (sign-product gap-signs '(:negative)))))
+                         ((not real) nil)
+                         ;; a and b sqrt(A) of one sign
+                         ((and (only a-signs :positive :zero) (only b-signs :positive :zero))
+                          (if (or (only a-signs :positive)
+                                  (and (only b-signs :positive) (only radicand-signs :positive)))
+                              '(:positive) '(:positive :zero)))
+                         ((and (only a-signs :negative :zero) (only b-signs :negative :zero))
+                          (if (or (only a-signs :negative)
+                                  (and (only b-signs :negative) (only radicand-signs :positive)))
+                              '(:negative) '(:negative :zero)))
+                         (t nil))))
+            (and numerator-signs (only denominator-signs :positive :negative)
+                 (sign-product numerator-signs denominator-signs))))))))
 
-(defun sign-set (answer)
-  "The list of signs (:POSITIVE :NEGATIVE :ZERO) Maxima's sign ANSWER allows."
-  (or (rest (assoc (symbol-name answer) *sign-sets* :test #'string=))
-      (list :positive :negative :zero)))
-
-(defun sign-requests (form)
-  "The sign() requests whose answers together bound the sign of the Maxima FORM,
-cheapest first: FORM itself, factor(ratsimp(FORM)), factorsum(FORM) (which groups
-terms, e.g. 2 acc l - 2 acc x0 into 2 acc (l - x0)) and trigsimp(FORM) (ratsimp(FORM)
-when FORM has no sin, cos or tan, for which trigsimp gives the same form, slower)."
-  (list (mcall "$SIGN" form)
-        (mcall "$SIGN" (mcall "$FACTOR" (mcall "$RATSIMP" form)))
-        (mcall "$SIGN" (mcall "$FACTORSUM" form))
-        (mcall "$SIGN" (if (trigonometric-form-p form)
-                           (mcall "$AMES_TRIGSIMP" form)
-                           (mcall "$RATSIMP" form)))))
-
-(defun narrowed-signs (signs answer)
-  "SIGNS (a list of :POSITIVE :NEGATIVE :ZERO) narrowed by Maxima's sign ANSWER."
-  (if (symbolp answer) (intersection signs (sign-set answer)) signs))
-
-(defun forms-signs (bridge forms &key datum)
-  "For each of the real Maxima FORMS, the signs (:POSITIVE :NEGATIVE :ZERO) it may have
-under the current assumptions: the intersection of what sign() says of its forms (see
-SIGN-REQUESTS). One round trip."
-  (let* ((count (length (sign-requests 0)))
-         (requests (mapcan #'sign-requests forms))
-         (answers (let ((answers (imaginary-as-unknown
-                                  (lambda () (request-list bridge requests :datum datum)))))
-                    ;; one form refused as imaginary: none of them decided
-                    (if (listp answers) answers (mapcar (constantly answers) requests)))))
-    (loop for rest on answers by (lambda (list) (nthcdr count list))
-          collect (reduce #'narrowed-signs (subseq rest 0 count)
-                          :initial-value (list :positive :negative :zero)))))
-
-(defun imaginary-as-unknown (function)
-  "FUNCTION's answer to a sign request, or Maxima's $PNZ (any sign) when Maxima's sign()
-refuses the form as imaginary (\"sign: argument cannot be imaginary\": a root written
-with the cube root of a complex number, Cardano's form of real roots): undecided, not
-an error."
-  (handler-case (funcall function)
-    (maxima-error (condition)
-      (if (search "imaginary" (or (maxima-error-message condition) ""))
-          '$pnz
-          (error condition)))))
-
-(defun form-signs (bridge form &key datum (enough (constantly nil)))
-  "The signs the real Maxima FORM may have under the current assumptions: what the
-answers to SIGN-REQUESTS allow together. They are asked one at a time, cheapest first
-(each answer cached on its own), and the asking stops once at most one sign is left or
-ENOUGH, a predicate on the signs found so far, is true; further answers could only
-narrow the signs (an empty intersection would mean contradictory answers)."
-  (let ((signs (list :positive :negative :zero)))
-    (dolist (request (sign-requests form) signs)
-      (setf signs (narrowed-signs signs (imaginary-as-unknown
-                                         (lambda () (maxima-request bridge request :datum datum)))))
-      (when (or (null (rest signs)) (funcall enough signs))
-        (return signs)))))
-
-(defun square-root-kernel (form)
-  "Some subform sqrt(A) = ((MEXPT) A 1/2) of the Maxima FORM, or NIL."
-  (cond ((atom form) nil)
-        ((and (mform-p form +mexpt+) (mform-p (third form) +rat+)
-              (eql (second (third form)) 1) (eql (third (third form)) 2))
-         form)
-        (t (some #'square-root-kernel (cdr form)))))
-
-(defun radical-signs (bridge difference &key datum)
-  "The signs of DIFFERENCE (a Maxima form) found by clearing one square root: written
-as (a + b sqrt(A)) / c, its numerator has the sign of a when b = 0 and, when a and b
-have opposite signs, the sign of b^2 A - a^2 times that of b. NIL when no square root
-is there or the form is not linear in it."
-  (destructuring-bind (numerator denominator)
-      (request-list bridge (list (mcall "$NUM" (mcall "$RATSIMP" difference))
-                                 (mcall "$DENOM" (mcall "$RATSIMP" difference)))
-                    :datum datum)
-    (let ((kernel (square-root-kernel numerator)))
-      (when (and kernel (eql 1 (maxima-request bridge (mcall "$HIPOW" (mcall "$EXPAND" numerator) kernel)
-                                              :datum datum)))
-        (destructuring-bind (a b)
-            (request-list bridge (list (mcall "$RATCOEF" (mcall "$EXPAND" numerator) kernel 0)
-                                       (mcall "$RATCOEF" (mcall "$EXPAND" numerator) kernel 1))
-                          :datum datum)
-          (let* ((radicand (second kernel))
-                 (gap (mdifference (mform +mtimes+ (mform +mexpt+ b 2) radicand)
-                                   (mform +mexpt+ a 2))))
-            (destructuring-bind (a-signs b-signs gap-signs radicand-signs denominator-signs)
-                (forms-signs bridge (list a b gap radicand denominator) :datum datum)
-              (flet ((only (signs &rest allowed) (and signs (subsetp signs allowed))))
-                (let* ((real (only radicand-signs :positive :zero))
-                       (numerator-signs
-                        (cond ((or (null a-signs) (null b-signs)) nil)
-                              ;; b sqrt(A) against a: the larger in size wins. When
-                              ;; b^2 A > a^2 >= 0, A > 0 follows, so sqrt(A) is real.
-                              ((and (only a-signs :negative :zero) (only b-signs :positive))
-                               (cond ((only gap-signs :positive) '(:positive))
-                                     (real gap-signs)))
-                              ((and (only a-signs :positive :zero) (only b-signs :negative))
-                               (cond ((only gap-signs :positive) '(:negative))
-                                     (real (sign-product gap-signs '(:negative)))))
-                              ((not real) nil)
-                              ;; a and b sqrt(A) of one sign
-                              ((and (only a-signs :positive :zero) (only b-signs :positive :zero))
-                               (if (or (only a-signs :positive)
-                                       (and (only b-signs :positive) (only radicand-signs :positive)))
-                                   '(:positive) '(:positive :zero)))
-                              ((and (only a-signs :negative :zero) (only b-signs :negative :zero))
-                               (if (or (only a-signs :negative)
-                                       (and (only b-signs :negative) (only radicand-signs :positive)))
-                                   '(:negative) '(:negative :zero)))
-                              (t nil))))
-                  (and numerator-signs (only denominator-signs :positive :negative)
-                       (sign-product numerator-signs denominator-signs)))))))))))
-
-(defun opposite-truth (bridge relation lhs rhs)
+(defun opposite-truth (bridge relation)
   "The truth of RELATION that is() gives through the opposite relation (X <= 0 for
 X > 0, equal for notequal ...): :FALSE when is() proves the opposite, :TRUE when it
-refutes it, else :UNKNOWN. LHS and RHS are RELATION's sides in Maxima form."
-  (let* ((operator (expression-operator relation))
-         (question (ecase operator
-                     (= (mform +notequal+ lhs rhs))
-                     (/= (mform +equal+ lhs rhs))
-                     (< (mform +mgeqp+ lhs rhs))
-                     (> (mform +mleqp+ lhs rhs))
-                     (<= (mform +mgreaterp+ lhs rhs))
-                     (>= (mform +mlessp+ lhs rhs)))))
-    (ecase (maxima-truth (maxima-request bridge (mcall "$IS" question) :datum relation))
-      (:true :false)
-      (:false :true)
-      (:unknown :unknown))))
+refutes it, else :UNKNOWN."
+  (ecase (maxima-is-opposite bridge relation)
+    (:true :false)
+    (:false :true)
+    (:unknown :unknown)))
 
 (defun decide-relation (bridge relation)
   "The truth of one RELATION (= /= < > <= >=) under the current assumptions: is(), then
@@ -188,13 +95,9 @@ witnesses show that no strategy can decide it, else as DECIDE-RELATION-BY-STRATE
 finds it."
   (let* ((operator (expression-operator relation))
          (equation (member operator '(= /=)))
-         (lhs (to-mx bridge (relation-lhs relation)))
-         (rhs (to-mx bridge (relation-rhs relation)))
-         (question (case operator
-                     (= (mform +equal+ lhs rhs))
-                     (/= (mform +notequal+ lhs rhs))
-                     (t (mform (cdr (assoc operator *relation-heads*)) lhs rhs))))
-         (verdict (maxima-truth (maxima-request bridge (mcall "$IS" question) :datum relation))))
+         (lhs (relation-lhs relation))
+         (rhs (relation-rhs relation))
+         (verdict (maxima-is bridge relation)))
     (unless (eq verdict :unknown)
       (return-from decide-relation-in-maxima verdict))
     ;; an inequality seen to hold at one admissible point and to fail at another, or an
@@ -212,27 +115,27 @@ finds it."
       (decide-relation-by-strategies bridge relation lhs rhs holds))))
 
 (defun decide-relation-by-strategies (bridge relation lhs rhs holds)
-  "The truth of RELATION, whose sides are LHS and RHS in Maxima's form, that is() did
-not decide: by the opposite relation, the signs of the difference of its sides (after
-clearing a square root), equivalence (for = and /=, unless HOLDS, a point where the
-sides differ, was seen), what a physicist knows and the order substitution; :UNKNOWN
-when none decides it."
+  "The truth of RELATION, whose sides are LHS and RHS, that is() did not decide: by the
+opposite relation, the signs of the difference of its sides (after clearing a square
+root), equivalence (for = and /=, unless HOLDS, a point where the sides differ, was
+seen), what a physicist knows and the order substitution; :UNKNOWN when none decides it."
   (let* ((operator (expression-operator relation))
          (equation (member operator '(= /=)))
          ;; is() proves X <= 0 from the fact X <= 0 but not that X > 0 fails: ask the
          ;; opposite relation too
-         (verdict (opposite-truth bridge relation lhs rhs)))
+         (verdict (opposite-truth bridge relation)))
     (unless (eq verdict :unknown)
       (return-from decide-relation-by-strategies verdict))
     ;; the signs are asked for only until they decide the relation
     (setf verdict (relation-verdict operator
-                                    (form-signs bridge (mdifference lhs rhs)
-                                                :datum relation
-                                                :enough (lambda (signs)
-                                                          (not (eq (relation-verdict operator signs)
-                                                                   :unknown))))))
+                                    (maxima-difference-signs
+                                     bridge lhs rhs
+                                     :datum relation
+                                     :enough (lambda (signs)
+                                               (not (eq (relation-verdict operator signs)
+                                                        :unknown))))))
     (when (eq verdict :unknown)
-      (let ((signs (radical-signs bridge (mdifference lhs rhs) :datum relation)))
+      (let ((signs (radical-signs bridge lhs rhs :datum relation)))
         (when signs (setf verdict (relation-verdict operator signs)))))
     ;; sides seen to differ both ways are not equal: equivalence cannot be proven,
     ;; here nor after the order substitution
@@ -270,12 +173,9 @@ relation) is answered :UNKNOWN there, and so is one nested too deep; an :UNKNOWN
 owes something to such a cut is not cached.
 Signals UNTRANSLATABLE-EXPRESSION, MAXIMA-ERROR, MAXIMA-TIMEOUT."
   (check-translatable relation :condition)
-  (let* ((cache (bridge-cache bridge))
-         (key (verdict-key bridge relation))
-         (record (bridge-statistics-record bridge)))
-    (multiple-value-bind (verdict found) (gethash key cache)
-      (incf (statistics-calls record))
-      (cond (found (incf (statistics-cache-hits record)) verdict)
+  (let ((key (verdict-key bridge relation)))
+    (multiple-value-bind (verdict found) (cached-answer bridge key)
+      (cond (found verdict)
             ((member key *deciding* :test #'equal)
              (push key *cut-short*)
              :unknown)
@@ -290,8 +190,7 @@ Signals UNTRANSLATABLE-EXPRESSION, MAXIMA-ERROR, MAXIMA-TIMEOUT."
                                    (setf cuts (remove key *cut-short* :test #'equal))
                                    (when outermost (setf cuts (remove :depth cuts)))))))
                  (when (or (not (eq verdict :unknown)) (null cuts))
-                   (when (>= (hash-table-count cache) *cache-limit*) (clrhash cache))
-                   (setf (gethash (copy-tree key) cache) verdict))
+                   (cache-answer bridge key verdict))
                  (setf *cut-short* (append cuts *cut-short*))
                  verdict))))))
 
@@ -366,7 +265,7 @@ violates RELATION settles it without asking Maxima, since no sound strategy prov
 relation that fails somewhere (see RELATION-REFUTED-P). For callers that act only on
 :TRUE. Signals what DECIDE signals."
   (check-translatable relation :condition)
-  (multiple-value-bind (verdict found) (gethash (verdict-key bridge relation) (bridge-cache bridge))
+  (multiple-value-bind (verdict found) (cached-answer bridge (verdict-key bridge relation) :count nil)
     (cond (found (eq verdict :true))
           ((relation-refuted-p bridge relation) nil)
           (t (eq (decide bridge relation) :true)))))

@@ -2,21 +2,17 @@
 
 (defpackage #:ames.algebra
   (:use #:cl #:ames.base #:ames.maxima)
-  ;; What the reasoning (deciding.lisp, signs.lisp, truth.lisp, roots.lisp, orders.lisp)
-  ;; still writes in Maxima's own terms: the is() and sign() requests and the root
-  ;; formulas it builds for the bridge to send (through MAXIMA-REQUEST and the bridge's
-  ;; translation), and the bridge's cache and name table that DECIDE shares. The
-  ;; integrators ask through the bridge's exported operations (calculus.lisp) only.
+  ;; What still writes in Maxima's own terms (every other file asks through the
+  ;; bridge's exported operations: calculus.lisp, questions.lisp): the earliest root
+  ;; (roots.lisp) searches over Maxima forms (solve(), realroots(), the roots of a
+  ;; quadratic built as forms and their signs asked by FORM-SIGNS), and the exact test
+  ;; of a constant near zero (constant-zero.lisp) ratsubsts sin^2 = 1 - cos^2.
   (:import-from #:ames.maxima
-                #:*cache-limit* #:*relation-heads*
-                #:+equal+ #:+false+ #:+i+ #:+mequal+ #:+mexpt+ #:+mgeqp+ #:+mgreaterp+
-                #:+mleqp+ #:+mlessp+ #:+mlist+ #:+mplus+ #:+mtimes+ #:+notequal+ #:+rat+
-                #:assumption-key #:bridge-cache
-                #:bridge-statistics-record #:statistics-cache-hits #:statistics-calls
-                #:check-translatable #:contains-symbol-p
-                #:from-mx #:to-mx #:maxima-request #:request-list #:maxima-truth
+                #:+false+ #:+i+ #:+mequal+ #:+mexpt+ #:+mlist+ #:+mplus+ #:+mtimes+ #:+rat+
+                #:contains-symbol-p #:form-signs
+                #:from-mx #:to-mx #:maxima-request
                 #:mcall #:mdifference #:mform #:mform-p #:mlist #:mlist-items #:mquotient
-                #:negate-condition #:simplest-form #:subject-p #:trigonometric-form-p)
+                #:simplest-form)
   (:documentation "The algebra of AMES's prefix expressions, above the Maxima bridge:
 deciding a relation under the facts in force (signs, angles, orders, Sturm sequences,
 numeric witnesses, what a physicist knows), numbers before proofs, the earliest root,

@@ -201,21 +201,6 @@ neither does."
           ((subject-p (second kernel)) nil)
           (t (placed-trigonometric-signs prover kernel)))))
 
-(defun facts-signs (bridge x)
-  "The signs of X that is() shows from the facts in force (X >= 0, X < 0 ...), in one
-round trip: is() uses a fact about a compound X that sign() ignores."
-  (let ((form (to-mx bridge x))
-        (signs (list :positive :zero :negative)))
-    (loop for (head . excluded) in `((,+mgreaterp+ :negative :zero) (,+mlessp+ :positive :zero)
-                                     (,+mgeqp+ :negative) (,+mleqp+ :positive))
-          for answer in (request-list bridge
-                                      (loop for (head) in `((,+mgreaterp+) (,+mlessp+) (,+mgeqp+) (,+mleqp+))
-                                            collect (mcall "$IS" (mform head form 0)))
-                                      :datum x)
-          when (eq (maxima-truth answer) :true)
-            do (setf signs (set-difference signs excluded)))
-    signs))
-
 (defvar *imaginary-radicands* '()
   "The radicands, proven negative, of the square roots in the relation being decided by
 DECIDE-WITH-IMAGINARY-RADICANDS: Maxima is not asked about an expression holding one.")
@@ -241,13 +226,13 @@ outside the reals."
           (case (and ball (ball-sign ball))
             (:positive '(:positive))
             (:negative '(:negative))
-            (t (handler-case (form-signs bridge (to-mx bridge x) :datum x)
+            (t (handler-case (maxima-signs bridge x)
                  (maxima-error () nil))))))
       (t
-        (let ((signs (handler-case (form-signs bridge (to-mx bridge x) :datum x)
+        (let ((signs (handler-case (maxima-signs bridge x)
                        (maxima-error () nil))))
           (when (and signs (rest signs) (not (subject-p x)))
-            (setf signs (intersection signs (handler-case (facts-signs bridge x)
+            (setf signs (intersection signs (handler-case (maxima-fact-signs bridge x)
                                               (maxima-error () signs)))))
           (when (and signs (rest signs) (not (subject-p x))
                      (<= (expression-size x) *largest-decided-part*))

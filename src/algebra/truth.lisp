@@ -305,7 +305,7 @@ sign() takes the square root of a radicand it cannot see is negative for a nonne
 number, and one it sees is negative for an imaginary one. A radicand sign() finds
 nonnegative is not asked further."
   (loop for radicand in (product-root-radicands relation)
-        for signs = (handler-case (form-signs bridge (to-mx bridge radicand) :datum relation)
+        for signs = (handler-case (maxima-signs bridge radicand :datum relation)
                       (maxima-error () nil))
         when (and (not (only-signs-p signs :positive :zero))
                   (member :negative signs)

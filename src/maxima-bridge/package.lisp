@@ -28,6 +28,11 @@ layer above, AMES.ALGEBRA; the form builders it still uses are listed in its pac
    #:call-or-nil #:auxiliary-variable #:keyed-auxiliary-variable #:maxima-derivative #:polynomial-coefficients-in
    #:zero-after-trigexpand-p #:taylor-coefficients #:maxima-antiderivative
    #:inverse-laplace-transform #:maxima-root-count
+   ;; the questions the deciding algebra asks (questions.lisp)
+   #:maxima-is #:maxima-is-opposite #:maxima-signs #:maxima-difference-signs
+   #:maxima-fact-signs #:square-root-part-signs #:ratsimp-with-sines #:cached-answer #:cache-answer #:assumption-key
+   ;; what the translation accepts, for the algebra's checks (translation.lisp, assumptions.lisp)
+   #:check-translatable #:subject-p #:negate-condition
    ;; presentation (presentation.lisp)
    #:presentation-candidates #:polynomial-coefficients #:presentation-latex
    ;; conditions

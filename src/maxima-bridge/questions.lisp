@@ -1,0 +1,205 @@
+;;;; src/maxima-bridge/questions.lisp -- the questions the deciding algebra asks of Maxima: is(), sign(), the signs behind a square root, and the cache of verdicts.
+;;;;
+;;;; Each operation takes AMES's prefix algebra and answers in AMES's terms: a truth
+;;;; value (:TRUE :FALSE :UNKNOWN) or the list of signs (:POSITIVE :NEGATIVE :ZERO) an
+;;;; expression may have under the facts in force. What to conclude from the answers (the
+;;;; rules of signs, the strategies of DECIDE) is the algebra layer's (src/algebra/).
+;;;; Every request goes through MAXIMA-REQUEST, so it is cached like any other.
+
+(in-package #:ames.maxima)
+
+;;; Maxima's sign()
+
+(defparameter *sign-sets*
+  '(("$POS" :positive) ("$NEG" :negative) ("$ZERO" :zero) ("$PZ" :positive :zero)
+    ("$NZ" :negative :zero) ("$PN" :positive :negative) ("$PNZ" :positive :negative :zero))
+  "Maxima's sign answers and the signs each allows.")
+
+(defun sign-set (answer)
+  "The list of signs (:POSITIVE :NEGATIVE :ZERO) Maxima's sign ANSWER allows."
+  (or (rest (assoc (symbol-name answer) *sign-sets* :test #'string=))
+      (list :positive :negative :zero)))
+
+(defun sign-requests (form)
+  "The sign() requests whose answers together bound the sign of the Maxima FORM,
+cheapest first: FORM itself, factor(ratsimp(FORM)), factorsum(FORM) (which groups
+terms, e.g. 2 acc l - 2 acc x0 into 2 acc (l - x0)) and trigsimp(FORM) (ratsimp(FORM)
+when FORM has no sin, cos or tan, for which trigsimp gives the same form, slower)."
+  (list (mcall "$SIGN" form)
+        (mcall "$SIGN" (mcall "$FACTOR" (mcall "$RATSIMP" form)))
+        (mcall "$SIGN" (mcall "$FACTORSUM" form))
+        (mcall "$SIGN" (if (trigonometric-form-p form)
+                           (mcall "$AMES_TRIGSIMP" form)
+                           (mcall "$RATSIMP" form)))))
+
+(defun narrowed-signs (signs answer)
+  "SIGNS (a list of :POSITIVE :NEGATIVE :ZERO) narrowed by Maxima's sign ANSWER."
+  (if (symbolp answer) (intersection signs (sign-set answer)) signs))
+
+(defun forms-signs (bridge forms &key datum)
+  "For each of the real Maxima FORMS, the signs (:POSITIVE :NEGATIVE :ZERO) it may have
+under the current assumptions: the intersection of what sign() says of its forms (see
+SIGN-REQUESTS). One round trip."
+  (let* ((count (length (sign-requests 0)))
+         (requests (mapcan #'sign-requests forms))
+         (answers (let ((answers (imaginary-as-unknown
+                                  (lambda () (request-list bridge requests :datum datum)))))
+                    ;; one form refused as imaginary: none of them decided
+                    (if (listp answers) answers (mapcar (constantly answers) requests)))))
+    (loop for rest on answers by (lambda (list) (nthcdr count list))
+          collect (reduce #'narrowed-signs (subseq rest 0 count)
+                          :initial-value (list :positive :negative :zero)))))
+
+(defun imaginary-as-unknown (function)
+  "FUNCTION's answer to a sign request, or Maxima's $PNZ (any sign) when Maxima's sign()
+refuses the form as imaginary (\"sign: argument cannot be imaginary\": a root written
+with the cube root of a complex number, Cardano's form of real roots): undecided, not
+an error."
+  (handler-case (funcall function)
+    (maxima-error (condition)
+      (if (search "imaginary" (or (maxima-error-message condition) ""))
+          '$pnz
+          (error condition)))))
+
+(defun form-signs (bridge form &key datum (enough (constantly nil)))
+  "The signs the real Maxima FORM may have under the current assumptions: what the
+answers to SIGN-REQUESTS allow together. They are asked one at a time, cheapest first
+(each answer cached on its own), and the asking stops once at most one sign is left or
+ENOUGH, a predicate on the signs found so far, is true; further answers could only
+narrow the signs (an empty intersection would mean contradictory answers)."
+  (let ((signs (list :positive :negative :zero)))
+    (dolist (request (sign-requests form) signs)
+      (setf signs (narrowed-signs signs (imaginary-as-unknown
+                                         (lambda () (maxima-request bridge request :datum datum)))))
+      (when (or (null (rest signs)) (funcall enough signs))
+        (return signs)))))
+
+(defun maxima-signs (bridge expression &key (datum expression) (enough (constantly nil)))
+  "The signs (a list of :POSITIVE :NEGATIVE :ZERO) the real prefix EXPRESSION may have
+under the facts in force, by Maxima's sign() of EXPRESSION in several simplified forms
+(see FORM-SIGNS), asked one at a time until at most one sign is left or ENOUGH (a
+predicate on the signs found so far) is true. DATUM names the question in conditions.
+Signals UNTRANSLATABLE-EXPRESSION, MAXIMA-ERROR, MAXIMA-TIMEOUT."
+  (form-signs bridge (to-mx bridge expression) :datum datum :enough enough))
+
+(defun maxima-difference-signs (bridge lhs rhs &key datum (enough (constantly nil)))
+  "The signs of LHS - RHS (prefix) by Maxima's sign(), like MAXIMA-SIGNS; the
+difference is formed of the two sides' translations."
+  (form-signs bridge (mdifference (to-mx bridge lhs) (to-mx bridge rhs))
+              :datum datum :enough enough))
+
+;;; Maxima's is()
+
+(defun is-question (bridge relation)
+  "The Maxima form of the prefix RELATION (= /= < > <= >=) as is() is asked it: = as
+equal() and /= as notequal(), which is() decides by simplification."
+  (let ((lhs (to-mx bridge (relation-lhs relation)))
+        (rhs (to-mx bridge (relation-rhs relation))))
+    (case (expression-operator relation)
+      (= (mform +equal+ lhs rhs))
+      (/= (mform +notequal+ lhs rhs))
+      (t (mform (cdr (assoc (expression-operator relation) *relation-heads*)) lhs rhs)))))
+
+(defun maxima-is (bridge relation &key (datum relation))
+  "What Maxima's is() says of the prefix RELATION (= /= < > <= >=) under the facts in
+force: :TRUE, :FALSE or :UNKNOWN. = and /= are asked as equal() and notequal().
+Signals UNTRANSLATABLE-EXPRESSION, MAXIMA-ERROR, MAXIMA-TIMEOUT."
+  (maxima-truth (maxima-request bridge (mcall "$IS" (is-question bridge relation)) :datum datum)))
+
+(defparameter *opposite-relations*
+  '((= . /=) (/= . =) (< . >=) (> . <=) (<= . >) (>= . <))
+  "Each relation of the algebra and the one saying the opposite.")
+
+(defun maxima-is-opposite (bridge relation &key (datum relation))
+  "What Maxima's is() says of the opposite of the prefix RELATION (X <= 0 for X > 0,
+equal() for notequal() ...): :TRUE when it proves the opposite (RELATION fails),
+:FALSE when it refutes it, else :UNKNOWN. is() proves X <= 0 from the fact X <= 0 but
+does not see that X > 0 fails."
+  (maxima-is bridge (list* (cdr (assoc (expression-operator relation) *opposite-relations*))
+                           (expression-arguments relation))
+             :datum datum))
+
+(defun maxima-fact-signs (bridge x &key (datum x))
+  "The signs of the prefix X that is() shows from the facts in force (X >= 0, X < 0
+...), in one round trip: is() uses a fact about a compound X that sign() ignores."
+  (let ((form (to-mx bridge x))
+        (signs (list :positive :zero :negative)))
+    (loop for (head . excluded) in `((,+mgreaterp+ :negative :zero) (,+mlessp+ :positive :zero)
+                                     (,+mgeqp+ :negative) (,+mleqp+ :positive))
+          for answer in (request-list bridge
+                                      (loop for (head) in `((,+mgreaterp+) (,+mlessp+) (,+mgeqp+) (,+mleqp+))
+                                            collect (mcall "$IS" (mform head form 0)))
+                                      :datum datum)
+          when (eq (maxima-truth answer) :true)
+            do (setf signs (set-difference signs excluded)))
+    signs))
+
+;;; One square root cleared
+
+(defun square-root-kernel (form)
+  "Some subform sqrt(A) = ((MEXPT) A 1/2) of the Maxima FORM, or NIL."
+  (cond ((atom form) nil)
+        ((and (mform-p form +mexpt+) (mform-p (third form) +rat+)
+              (eql (second (third form)) 1) (eql (third (third form)) 2))
+         form)
+        (t (some #'square-root-kernel (cdr form)))))
+
+(defun square-root-part-signs (bridge lhs rhs &key datum)
+  "LHS - RHS (prefix) written as (a + b sqrt(A)) / c, for one square root sqrt(A) in its
+numerator in which the numerator is linear: the signs (see MAXIMA-SIGNS) of a, b,
+b^2 A - a^2, A and c, as a list of five sign lists. NIL when no square root is there
+or the numerator is not linear in it."
+  (destructuring-bind (numerator denominator)
+      (let ((difference (mdifference (to-mx bridge lhs) (to-mx bridge rhs))))
+        (request-list bridge (list (mcall "$NUM" (mcall "$RATSIMP" difference))
+                                   (mcall "$DENOM" (mcall "$RATSIMP" difference)))
+                      :datum datum))
+    (let ((kernel (square-root-kernel numerator)))
+      (when (and kernel (eql 1 (maxima-request bridge (mcall "$HIPOW" (mcall "$EXPAND" numerator) kernel)
+                                              :datum datum)))
+        (destructuring-bind (a b)
+            (request-list bridge (list (mcall "$RATCOEF" (mcall "$EXPAND" numerator) kernel 0)
+                                       (mcall "$RATCOEF" (mcall "$EXPAND" numerator) kernel 1))
+                          :datum datum)
+          (let* ((radicand (second kernel))
+                 (gap (mdifference (mform +mtimes+ (mform +mexpt+ b 2) radicand)
+                                   (mform +mexpt+ a 2))))
+            (forms-signs bridge (list a b gap radicand denominator) :datum datum)))))))
+
+;;; The cache of verdicts
+
+(defun cached-answer (bridge key &key (count t))
+  "The answer BRIDGE's cache holds under KEY (a tree compared with EQUAL; include
+ASSUMPTION-KEY when the answer depends on the facts in force), and whether one is held:
+(values ANSWER FOUND). When COUNT, the look-up counts as a call in BRIDGE's statistics
+(and as a cache hit when found)."
+  (multiple-value-bind (answer found) (gethash key (bridge-cache bridge))
+    (when count
+      (let ((record (bridge-statistics-record bridge)))
+        (incf (statistics-calls record))
+        (when found (incf (statistics-cache-hits record)))))
+    (values answer found)))
+
+(defun cache-answer (bridge key answer)
+  "Keep ANSWER under KEY (copied) in BRIDGE's cache, which is emptied first when it holds
+*CACHE-LIMIT* entries, like the cache of requests. Returns ANSWER."
+  (let ((cache (bridge-cache bridge)))
+    (when (>= (hash-table-count cache) *cache-limit*) (clrhash cache))
+    (setf (gethash (copy-tree key) cache) answer)))
+
+;;; sin^2 + cos^2 = 1
+
+(defun ratsimp-with-sines (bridge expression angles &key (datum expression))
+  "EXPRESSION (prefix) ratsimp()ed by Maxima with each cos(K)^2, for K in ANGLES,
+written 1 - sin(K)^2 (ratsubst), so that sin and cos of one angle are no independent
+atoms; prefix. Signals what MAXIMA-REQUEST and FROM-MX signal."
+  (from-mx bridge
+           (maxima-request
+            bridge
+            (mcall "$RATSIMP"
+                   (reduce (lambda (form k)
+                             (mcall "$RATSUBST" (to-mx bridge `(- 1 (expt (sin ,k) 2)))
+                                    (to-mx bridge `(expt (cos ,k) 2)) form))
+                           angles
+                           :initial-value (to-mx bridge expression)))
+            :datum datum)))
