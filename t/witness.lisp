@@ -212,7 +212,12 @@ the lift-off wrongly kept the dome's contact; same cause and fix as above).")
      "A particle launched toward -x in a loop (r = 3/4) too slowly to reach the centre's
 height was said to move forever; it turns at 0.4531 s: the energy integral at the
 turning point found ahead (pi - asin, the far branch) is zero, which Maxima's float
-sign() took for negative, so the turning point looked unreachable. Same fix."))
+sign() took for negative, so the turning point looked unreachable. Same fix.")
+    ("witness-wrong-rough-incline-at-rest.lisp"
+     "A particle at rest on a rough incline steeper than nothing but below its angle of
+repose (tan a = 8/15 < mu = 13/20) stays at rest, as AMES says; the witness's LCP gave it
+one Moreau-Jean step of tangential speed above its tolerance and called it a slide start.
+Fixed in the witness: a slide start counts once it has lasted five steps."))
   "Disagreements the witness found and AMES has since fixed: each must now agree, with
 its file under witness/disagreements/ kept as the regression case.")
 
@@ -280,6 +285,32 @@ AMES is never wrong and never crashes against the witness."
                                   :numeric t :stream (make-broadcast-stream)))))
       (is (eql 0 (status "scenarios/blocks-colliding.lisp")))
       ;; a disagreement the witness found, since fixed
-      (is (eql 0 (status "witness/disagreements/accumulated-bounce-numeric-start.lisp")))))
+      (is (eql 0 (status "witness/disagreements/accumulated-bounce-numeric-start.lisp")))
+      ;; a file that cannot be read: its error is printed, the status is 1, nothing escapes
+      (uiop:with-temporary-file (:pathname path :stream out :type "lisp")
+        (write-string "(scenario broken \"d\" (body))" out)
+        (finish-output out)
+        (is (eql 1 (let ((*error-output* (make-broadcast-stream)))
+                     (ames::check-files (list path) :numeric t :stream (make-broadcast-stream))))))))
   (is (equal '(0 4 4 1 1 1)
              (mapcar #'ames::verdict-status '(:agree :ames-wrong :crash :refused :unsupported :witness-failed)))))
+
+(test a-disagreement-file-reads-back-as-its-scenario
+  "A disagreement written out (WRITE-DISAGREEMENT) is a scenario file whatever its
+reason: a reason of several lines stays a comment, so the file reads back as the one
+scenario it was written with."
+  (let* ((text "(scenario written \"A written scenario.\" (gravity 10)
+ (body floor :fixed t :shape (half-plane (1 0) (0 0)))
+ (body ball :mass 1 :position (0 1) :velocity (0 0) :shape point))")
+         (directory (uiop:ensure-directory-pathname
+                     (format nil "~Aames-disagreement-~D-~D" (uiop:temporary-directory)
+                             (get-universal-time) (random 1000000 (make-random-state t))))))
+    (unwind-protect
+         (let* ((path (ames.witness::write-disagreement
+                       directory "two-line-reason" text
+                       (list :verdict :ames-wrong :reason (format nil "state 0: first line~%\"second\")) line")
+                             :answer '(:states nil) :witness '(:status :ok))))
+                (scenarios (ames.scenario:read-scenario-file path)))
+           (is (= 1 (length scenarios)))
+           (is (string-equal "WRITTEN" (symbol-name (ames.scenario:scenario-name (first scenarios))))))
+      (uiop:delete-directory-tree directory :validate t :if-does-not-exist :ignore))))

@@ -20,6 +20,7 @@ from siconos_driver import (Driver, LineLeft, Unsupported, lagrangian_system, pa
 STEP = 1e-4
 GAP_TOL = 1e-6
 SPEED_TOL = 1e-6    # tangential speeds: sliding or not
+CONFIRM_STEPS = 5   # a slide start counts once it has lasted this many steps
 NORMAL_TOL = 5e-3   # normal speeds of a contact that holds: Moreau-Jean lets them swing by
                     # about g STEP from one step to the next (the contact in one step, out
                     # the next), so a touching contact is judged to a few g STEP
@@ -98,6 +99,15 @@ class FrictionDriver(Driver):
         return abs(c.gap(qs)) <= GAP_TOL and abs(c.rate(vs)) <= NORMAL_TOL
 
     def segment(self, t0, qs, vs):
+        """One Moreau-Jean segment from T0 (see SEGMENT-STEPS), its pending slide starts
+        recorded at its end."""
+        self.pending = {}
+        try:
+            return self.segment_steps(t0, qs, vs)
+        finally:
+            self.flush_pending()
+
+    def segment_steps(self, t0, qs, vs):
         if self.t_end - t0 < 2 * STEP:   # less than a step left: the run ends here
             return self.t_end, qs, vs
         active = [c for c in self.contacts if c.active(qs, vs) and c not in self.excluded]
@@ -162,9 +172,44 @@ class FrictionDriver(Driver):
                 self.record(t0, [(":lift-off",) + names], q0, v0, v0)
             elif before and after and t0 > 2 * STEP:   # the first steps settle the initial modes
                 s0, s1 = tangential(c, v0), tangential(c, v1)
-                if abs(s0) > SPEED_TOL and (abs(s1) <= SPEED_TOL or s0 * s1 < 0):
+                if abs(s0) > SPEED_TOL and (abs(s1) <= SPEED_TOL or s0 * s1 < 0) \
+                        and c not in self.pending:
                     ts = between(t0, t1, s0, s1)
                     qs = [q + v * (ts - t0) for q, v in zip(q0, v0)]
                     self.record(ts, [(":stops-sliding",) + names], qs, v1, v1)
-                elif abs(s0) <= SPEED_TOL and abs(s1) > SPEED_TOL:
-                    self.record(t0, [(":starts-sliding",) + names], q0, v0, v0)
+                elif abs(s0) <= SPEED_TOL and abs(s1) > SPEED_TOL and c not in self.pending:
+                    # held until the slide lasts CONFIRM_STEPS steps: the LCP's noise can give
+                    # a resting contact one step of speed (a particle at rest on a rough incline)
+                    self.pending[c] = [t0, q0, v0, names, s1, 0]
+        self.confirm_pending(active, q1, v1)
+
+    def confirm_pending(self, active, q1, v1):
+        """Record each pending slide start that has lasted CONFIRM_STEPS steps with the same
+        direction; drop one whose contact stopped or left (noise)."""
+        for c in list(self.pending):
+            t0, q0, v0, names, s_start, steps = self.pending[c]
+            s1 = tangential(c, v1)
+            if c not in active or not self.sticking(c, q1, v1) or abs(s1) <= SPEED_TOL \
+                    or s1 * s_start < 0:
+                del self.pending[c]
+            elif steps + 1 >= CONFIRM_STEPS:
+                self.record_in_order(t0, [(":starts-sliding",) + names], q0, v0, v0)
+                del self.pending[c]
+            else:
+                self.pending[c][5] = steps + 1
+
+    def flush_pending(self):
+        """At a segment's end, the slide starts still pending are recorded (they lasted to it)."""
+        for c, (t0, q0, v0, names, s_start, steps) in list(self.pending.items()):
+            self.record_in_order(t0, [(":starts-sliding",) + names], q0, v0, v0)
+        self.pending = {}
+
+    def record_in_order(self, t, pairs, qs, vs, after):
+        """RECORD an event that may be earlier than the last one recorded (a confirmed slide
+        start), keeping the events in time order."""
+        if not self.events or self.events[-1]["time"] <= t + 1e-9 * max(1.0, abs(t)):
+            self.record(t, pairs, qs, vs, after)
+        else:
+            self.events.append({"time": t, "pairs": list(pairs), "q": qs, "v": vs,
+                                "after": after, "speed": 0.0})
+            self.events.sort(key=lambda e: e["time"])

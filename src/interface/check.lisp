@@ -76,14 +76,20 @@ state that lasts forever."
 (defun check-files (files &key settings numeric (stream *standard-output*) (limits *limits*))
   "bin/ames check: for every scenario of FILES, print AMES's and the witness's values
 side by side and the verdict. Returns the exit status: 0 when every scenario agrees, 4
-when one disagrees (or AMES crashed), else 1 (refused, not witnessed)."
+when one disagrees (or AMES crashed), else 1 (refused, not witnessed, or a file that
+cannot be read: its AMES-ERROR is printed, naming the form at fault)."
   (unless (ames.witness:siconos-available-p)
     (format *error-output* "ames: the witness needs ~A with Siconos (Debian's python3-siconos)~%"
             ames.witness:*python*)
     (return-from check-files 1))
   (let ((status 0))
     (dolist (file files status)
-      (dolist (scenario (read-scenario-file file))
+      ;; a file that cannot be read is said so, by the form at fault, and the others run
+      (dolist (scenario (handler-case (read-scenario-file file)
+                          (ames-error (condition)
+                            (print-error-message condition)
+                            (setf status (max status 1))
+                            '())))
         (let* ((result (witness-check scenario :settings settings :numeric numeric :limits limits))
                (verdict (getf result :verdict)))
           (format stream "~&scenario ~(~A~) (~A)~%" (scenario-name scenario) file)

@@ -282,8 +282,12 @@ the verdict as comments, so that the file can become a regression test."
     (with-open-file (out path :direction :output :if-exists :supersede)
       (with-standard-io-syntax
         (let ((*print-readably* nil) (*print-right-margin* 100) (*print-pretty* t))
-          (format out ";;;; ~A -- a disagreement found by the witness (make crosscheck).~%;;;; verdict: ~(~A~)~%;;;; reason: ~A~%;;;; Run: bin/ames check ~A --numeric~%~%~A~%"
-                  name (getf result :verdict) (getf result :reason) path text)
+          ;; every line of the reason (printed pretty, it may have several) a comment
+          (format out ";;;; ~A -- a disagreement found by the witness (make crosscheck).~%;;;; verdict: ~(~A~)~%;;;; reason: ~{~A~^~%;;;;   ~}~%;;;; Run: bin/ames check ~A --numeric~%~%~A~%"
+                  name (getf result :verdict)
+                  (with-input-from-string (lines (format nil "~A" (getf result :reason)))
+                    (loop for line = (read-line lines nil) while line collect line))
+                  path text)
           (dolist (part (list (cons "AMES's answer" (getf result :answer))
                               (cons "witness's answer" (getf result :witness))))
             (format out "~%;; ~A:~%" (car part))
