@@ -340,45 +340,12 @@ error, else +EXIT-CHECK-FAILED+ (5) when a self-check found a wrong claim, else
           (dolist (scenario scenarios)
             (when *stop-requested* (return))
             (when numeric (note-symbolic-parameters scenario settings))
-            (handler-case
-                (let* ((start (get-internal-real-time))
-                       (history (run-scenario scenario :bridge bridge :settings settings
-                                                       :numeric numeric :limits limits))
-                       (stopped (stopped-by-time history)))
-                  (when (or stopped (undecided-history-p history))
-                    (setf undecided-seen t))
-                  (when (ames.check:self-check-failed-p history)
-                    (setf check-failed t)
-                    (format *error-output* "~&ames: ~A: the self-check found a wrong claim (a defect of AMES; see the report's SELF-CHECK FAILED lines)~%"
-                            (string-downcase (symbol-name (scenario-name scenario)))))
-                  (when (and stopped (not *stop-requested*))
-                    (print-error-message
-                     (format nil "~@[~A: ~]the time limit of ~A s was exceeded; ~[no state had finished~;~
-                                  the 1 state that finished is printed~:;the ~:*~D states that ~
-                                  finished are printed~]"
-                             (scenario-name scenario) (budget-exceeded-limit stopped)
-                             (length (history-states history)))))
-                  (call-within-time-left (lambda () (report-history output history))
-                                         limits start (scenario-name scenario)
-                                         :quiet stopped)
-                  (finish-output stream))
-              (ames-error (condition)
-                ;; a run a signal stopped before its first state: MAIN says so, once
-                (unless (typep condition 'run-stopped)
-                  (report-error condition)))
-              ;; the output is gone (a closed pipe): nothing more can be reported
-              (stream-error (condition) (error condition))
-              ;; the heap is exhausted: say so, and go on (the run's garbage is freed)
-              (storage-condition (condition)
-                (let ((exhausted (make-condition 'memory-exhausted :datum condition)))
-                  (setf (ames-error-context exhausted) (run-error-context scenario exhausted))
-                  (report-error exhausted)))
-              ;; a defect of AMES in one scenario does not lose the others
-              (error (condition)
-                (let ((internal (make-condition 'internal-error :datum condition)))
-                  (setf (ames-error-context internal)
-                        (run-error-context scenario internal))
-                  (report-error internal)))))))
+            (multiple-value-bind (undecided failed-check)
+                (run-and-report-scenario scenario output #'report-error
+                                         :bridge bridge :settings settings :numeric numeric
+                                         :limits limits :stream stream)
+              (when undecided (setf undecided-seen t))
+              (when failed-check (setf check-failed t))))))
       (handler-case (call-within-time-left (lambda () (finish-report output))
                                            limits (get-internal-real-time) nil)
         (ames-error (condition) (report-error condition))))
@@ -386,6 +353,53 @@ error, else +EXIT-CHECK-FAILED+ (5) when a self-check found a wrong claim, else
           (check-failed +exit-check-failed+)
           (undecided-seen +exit-undecided+)
           (t +exit-complete+))))
+
+(defun run-and-report-scenario (scenario output report-error &key bridge settings numeric limits stream)
+  "Run SCENARIO (see RUN-SCENARIO) and report its history to OUTPUT within LIMITS'
+time. Returns (values UNDECIDED CHECK-FAILED): whether the run ended undecided (or was
+stopped by its time) and whether its self-check found a wrong claim. An AMES-ERROR, an
+exhausted heap or a Lisp error (a defect of AMES: an INTERNAL-ERROR) goes to
+REPORT-ERROR and returns NIL; a closed output stream is signalled on."
+  (handler-case
+      (let* ((start (get-internal-real-time))
+             (history (run-scenario scenario :bridge bridge :settings settings
+                                             :numeric numeric :limits limits))
+             (stopped (stopped-by-time history))
+             (failed-check (ames.check:self-check-failed-p history)))
+        (when failed-check
+          (format *error-output* "~&ames: ~A: the self-check found a wrong claim (a defect of AMES; see the report's SELF-CHECK FAILED lines)~%"
+                  (string-downcase (symbol-name (scenario-name scenario)))))
+        (when (and stopped (not *stop-requested*))
+          (print-error-message
+           (format nil "~@[~A: ~]the time limit of ~A s was exceeded; ~[no state had finished~;~
+                        the 1 state that finished is printed~:;the ~:*~D states that ~
+                        finished are printed~]"
+                   (scenario-name scenario) (budget-exceeded-limit stopped)
+                   (length (history-states history)))))
+        (call-within-time-left (lambda () (report-history output history))
+                               limits start (scenario-name scenario)
+                               :quiet stopped)
+        (finish-output stream)
+        (values (or (and stopped t) (undecided-history-p history)) failed-check))
+    (ames-error (condition)
+      ;; a run a signal stopped before its first state: MAIN says so, once
+      (unless (typep condition 'run-stopped)
+        (funcall report-error condition))
+      nil)
+    ;; the output is gone (a closed pipe): nothing more can be reported
+    (stream-error (condition) (error condition))
+    ;; the heap is exhausted: say so, and go on (the run's garbage is freed)
+    (storage-condition (condition)
+      (let ((exhausted (make-condition 'memory-exhausted :datum condition)))
+        (setf (ames-error-context exhausted) (run-error-context scenario exhausted))
+        (funcall report-error exhausted))
+      nil)
+    ;; a defect of AMES in one scenario does not lose the others
+    (error (condition)
+      (let ((internal (make-condition 'internal-error :datum condition)))
+        (setf (ames-error-context internal) (run-error-context scenario internal))
+        (funcall report-error internal))
+      nil)))
 
 (defun run-file (pathname &key settings numeric (bridge (current-bridge)) (limits *limits*))
   "Simulate every scenario of the file PATHNAME, each by RUN-SCENARIO (a fresh bridge
