@@ -39,6 +39,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "presentation")
                  (:file "calculus")
                  (:file "questions")
+                 (:file "root-forms")
                  (:static-file "maxima-server.lisp")))
    (:module "algebra" :pathname "src/algebra/" :serial t
     :depends-on ("base" "maxima-bridge")

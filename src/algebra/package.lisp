@@ -2,17 +2,6 @@
 
 (defpackage #:ames.algebra
   (:use #:cl #:ames.base #:ames.maxima)
-  ;; What still writes in Maxima's own terms (every other file asks through the
-  ;; bridge's exported operations: calculus.lisp, questions.lisp): the earliest root
-  ;; (roots.lisp) searches over Maxima forms (solve(), realroots(), the roots of a
-  ;; quadratic built as forms and their signs asked by FORM-SIGNS), and the exact test
-  ;; of a constant near zero (constant-zero.lisp) ratsubsts sin^2 = 1 - cos^2.
-  (:import-from #:ames.maxima
-                #:+false+ #:+i+ #:+mequal+ #:+mexpt+ #:+mlist+ #:+mplus+ #:+mtimes+ #:+rat+
-                #:contains-symbol-p #:form-signs
-                #:from-mx #:to-mx #:maxima-request
-                #:mcall #:mdifference #:mform #:mform-p #:mlist #:mlist-items #:mquotient
-                #:simplest-form)
   (:documentation "The algebra of AMES's prefix expressions, above the Maxima bridge:
 deciding a relation under the facts in force (signs, angles, orders, Sturm sequences,
 numeric witnesses, what a physicist knows), numbers before proofs, the earliest root,

@@ -8,12 +8,12 @@
 ;;;; other expressions go through solve() and pairwise comparison. A root is returned only
 ;;;; when it is proven to be the earliest; otherwise the answer is :UNKNOWN with the
 ;;;; candidates.
+;;;;
+;;;; The Maxima forms of the search (the polynomial's coefficients, Vieta's forms, the
+;;;; offsets of roots) are the bridge's root forms (src/maxima-bridge/root-forms.lisp):
+;;;; this file holds them as opaque values and asks about them by name.
 
 (in-package #:ames.algebra)
-
-(defun numeric-form-p (form)
-  "True when the Maxima FORM is a plain number (integer, float or RAT)."
-  (or (realp form) (mform-p form +rat+)))
 
 (defun root-verdict (signs strictly)
   "Whether a root offset with SIGNS lies after the start: :YES, :NO or :MAYBE."
@@ -33,15 +33,14 @@ candidates of an undecided answer are wanted."
   bridge expression after-form strictly (candidates t))
 
 (defun root-expression (search offset)
-  "The root AFTER + OFFSET (OFFSET a Maxima form), simplified, in prefix algebra."
-  (let ((bridge (search-bridge search)))
-    (simplest-form bridge (mform +mplus+ (search-after-form search) offset)
-                   (search-expression search))))
+  "The root AFTER + OFFSET (OFFSET a root form), simplified, in prefix algebra."
+  (root-at-offset (search-bridge search) (search-after-form search) offset
+                  (search-expression search)))
 
 (defun root-candidates (search offsets)
   "The translatable roots AFTER + OFFSET for OFFSETS."
   (loop for offset in offsets
-        for root = (and (not (contains-symbol-p +i+ offset)) ; a complex root is no time
+        for root = (and (not (complex-root-form-p offset)) ; a complex root is no time
                         (handler-case (root-expression search offset)
                           (untranslatable-result () nil)))
         when root collect root))
@@ -53,12 +52,12 @@ candidates of an undecided answer are wanted."
   (values :unknown (and (search-candidates search) (root-candidates search offsets))))
 
 (defun signs-of (search form)
-  (form-signs (search-bridge search) form :datum (search-expression search)))
+  (root-form-signs (search-bridge search) form :datum (search-expression search)))
 
 (defun mixed-signs-p (search form)
-  "True when the Maxima FORM is seen positive at one admissible point and negative at
+  "True when the root FORM is seen positive at one admissible point and negative at
 another (see WITNESSED-BOTH-WAYS-P): its signs include :POSITIVE and :NEGATIVE."
-  (let ((expression (handler-case (from-mx (search-bridge search) form)
+  (let ((expression (handler-case (root-form-expression (search-bridge search) form)
                       (untranslatable-result () nil))))
     (and expression
          (witnessed-both-ways-p (search-bridge search) (list '> expression 0)))))
@@ -77,7 +76,7 @@ more than Maxima's sign(): trigonometric bounds, orderings) when Maxima leaves s
   "SIGNS (several) narrowed by DECIDE on FORM's translation: the sign it proves, or the
 pair it proves with >= or <=; SIGNS when it proves nothing."
   (let* ((bridge (search-bridge search))
-         (expression (handler-case (from-mx bridge form)
+         (expression (handler-case (root-form-expression bridge form)
                        (untranslatable-result () (return-from decided-signs signs)))))
     (flet ((proved (operator) (eq (decide bridge (list operator expression 0)) :true)))
       (cond ((proved '>) (list :positive))
@@ -108,26 +107,22 @@ depending on VARIABLE), MAXIMA-ERROR, MAXIMA-TIMEOUT."
   (unless (free-of-p variable after)
     (error 'invalid-bridge-argument :datum after
                                     :detail (format nil "the start may not depend on ~S" variable)))
-  (let* ((shifted (if (eql after 0)
-                      expression
-                      (substitute-expressions (list (cons variable (list '+ variable after)))
-                                              expression)))
-         (offset-variable (to-mx bridge variable))
-         (form (to-mx bridge shifted))
-         (search (make-root-search :bridge bridge :expression expression
-                                   :after-form (to-mx bridge after) :strictly strictly
-                                   :candidates candidates))
-         (coefficients (maxima-request bridge (mcall "$AMES_POLYNOMIAL_COEFFICIENTS"
-                                                     form offset-variable)
-                                       :datum expression)))
-    (if (eq coefficients +false+)
-        (solved-earliest-root search form offset-variable nil)
-        (let ((coefficients (mlist-items coefficients)))
-          (case (1- (length coefficients))
-            (0 (constant-earliest-root search (first coefficients)))
-            (1 (linear-earliest-root search coefficients))
-            (2 (quadratic-earliest-root search coefficients form offset-variable))
-            (t (solved-earliest-root search form offset-variable coefficients)))))))
+  (let ((shifted (if (eql after 0)
+                     expression
+                     (substitute-expressions (list (cons variable (list '+ variable after)))
+                                             expression))))
+    (multiple-value-bind (form offset-variable after-form coefficients)
+        (offset-polynomial bridge shifted variable after :datum expression)
+      (let ((search (make-root-search :bridge bridge :expression expression
+                                      :after-form after-form :strictly strictly
+                                      :candidates candidates)))
+        (if (eq coefficients :not-polynomial)
+            (solved-earliest-root search form offset-variable nil)
+            (case (1- (length coefficients))
+              (0 (constant-earliest-root search (first coefficients)))
+              (1 (linear-earliest-root search coefficients))
+              (2 (quadratic-earliest-root search coefficients form offset-variable))
+              (t (solved-earliest-root search form offset-variable coefficients))))))))
 
 (defun constant-earliest-root (search constant)
   "EXPRESSION does not depend on the variable: no root, or (identically zero) every value.
@@ -141,7 +136,7 @@ is not zero when l1 > l2 > 0, which Maxima's sign() does not see)."
 (defun linear-earliest-root (search coefficients)
   "c0 + c1 s = 0: the one root -c0/c1, when c1 cannot vanish."
   (destructuring-bind (c0 c1) coefficients
-    (let ((offset (mform +mtimes+ -1 (mquotient c0 c1))))
+    (let ((offset (linear-root-offset c0 c1)))
       (if (member :zero (sign-pattern-of search c1))
           (unknown search (list offset))
           (ecase (root-verdict (sign-pattern-of search offset) (search-strictly search))
@@ -150,23 +145,15 @@ is not zero when l1 > l2 > 0, which Maxima's sign() does not see)."
             (:maybe (unknown search (list offset))))))))
 
 (defun real-square-root (search radicand)
-  "The square root of the Maxima form RADICAND, written so that Maxima's simplifier does
-not turn it into the imaginary unit over a factor whose sign it does not know (it
-splits sqrt(N/D) into sqrt(N)/sqrt(D) when it knows N < 0): RADICAND in rational form,
-its numerator and denominator both negated when the numerator is negative."
-  (let* ((bridge (search-bridge search))
-         (datum (search-expression search))
-         (rational (maxima-request bridge (mcall "$RATSIMP" radicand) :datum datum))
-         (numerator (maxima-request bridge (mcall "$NUM" rational) :datum datum)))
-    (mform +mexpt+
-           (if (equal (sign-pattern-of search numerator) '(:negative))
-               (mquotient (maxima-request bridge (mcall "$EXPAND" (mform +mtimes+ -1 numerator))
-                                          :datum datum)
-                          (maxima-request bridge (mcall "$EXPAND" (mform +mtimes+ -1
-                                                                         (mcall "$DENOM" rational)))
-                                          :datum datum))
-               rational)
-           (mform +rat+ 1 2))))
+  "The square root of the root form RADICAND, written so that Maxima's simplifier does
+not turn it into the imaginary unit (see REAL-SQUARE-ROOT-FORM): RADICAND in rational
+form, its numerator and denominator both negated when the numerator is proven negative."
+  (let ((bridge (search-bridge search))
+        (datum (search-expression search)))
+    (multiple-value-bind (rational numerator) (rational-radicand bridge radicand :datum datum)
+      (real-square-root-form bridge rational numerator
+                             (equal (sign-pattern-of search numerator) '(:negative))
+                             :datum datum))))
 
 (defun quadratic-earliest-root (search coefficients form offset-variable)
   "c0 + c1 s + c2 s^2 = 0, through the product P = c0/c2 and sum S = -c1/c2 of the roots
@@ -175,11 +162,8 @@ and the reduced discriminant S^2/4 - P: the roots are S/2 -+ sqrt(S^2/4 - P)."
     (when (member :zero (sign-pattern-of search c2))
       (return-from quadratic-earliest-root
         (solved-earliest-root search form offset-variable coefficients)))
-    (let* ((product (mquotient c0 c2))
-           (sum (mform +mtimes+ -1 (mquotient c1 c2)))
-           (half-sum (mform +mtimes+ (mform +rat+ 1 2) sum))
-           (discriminant (mdifference (mform +mexpt+ half-sum 2) product))
-           (product-signs (sign-pattern-of search product))
+    (multiple-value-bind (product sum half-sum discriminant) (vieta-forms c0 c1 c2)
+     (let* ((product-signs (sign-pattern-of search product))
            (strictly (search-strictly search))
            (root-of-discriminant nil))
       (flet ((only (signs &rest allowed) (and signs (subsetp signs allowed)))
@@ -187,8 +171,8 @@ and the reduced discriminant S^2/4 - P: the roots are S/2 -+ sqrt(S^2/4 - P)."
                ;; made once, when a root is wanted (it costs round trips)
                (or root-of-discriminant
                    (setf root-of-discriminant (real-square-root search discriminant)))))
-        (symbol-macrolet ((larger (mform +mplus+ half-sum (root-of-discriminant)))
-                          (smaller (mdifference half-sum (root-of-discriminant))))
+        (symbol-macrolet ((larger (root-form-sum half-sum (root-of-discriminant)))
+                          (smaller (root-form-difference half-sum (root-of-discriminant))))
           (cond
             ;; Roots of opposite signs: the larger is the only one after the start.
             ((only product-signs :negative) (found search larger))
@@ -210,7 +194,7 @@ and the reduced discriminant S^2/4 - P: the roots are S/2 -+ sqrt(S^2/4 - P)."
                               ((only discriminant-signs :positive :zero) (found search smaller))
                               (t (unknown search (list smaller larger))))))
                      (t (unknown search (list smaller larger))))))
-            (t (unknown search (list smaller larger)))))))))
+            (t (unknown search (list smaller larger))))))))))
 
 (defun solved-earliest-root (search form offset-variable coefficients)
   "The general case: the roots solve() finds, compared pairwise. COEFFICIENTS is the
@@ -218,16 +202,13 @@ list of polynomial coefficients, or NIL when FORM is no polynomial (then solve()
 miss roots and nothing is proven)."
   (let* ((bridge (search-bridge search))
          (strictly (search-strictly search))
-         (answer (maxima-request bridge (mcall "$SOLVE" (mlist (list (mform +mequal+ form 0)))
-                                               (mlist (list offset-variable)))
-                                 :datum (search-expression search)))
-         (items (if (mform-p answer +mlist+) (mlist-items answer) '()))
-         (explicit (loop for item in items
-                         when (and (mform-p item +mequal+) (eq (second item) offset-variable))
-                           collect (third item)))
-         (complete (and coefficients (= (length explicit) (length items))))
-         (numeric (and coefficients (every #'numeric-form-p coefficients)))
+         (explicit '()) (complete nil)
+         (numeric (and coefficients (every #'numeric-root-form-p coefficients)))
          (proven '()) (undecided '()))
+    (multiple-value-bind (offsets count)
+        (solved-root-offsets bridge form offset-variable :datum (search-expression search))
+      (setf explicit offsets
+            complete (and coefficients (= (length offsets) count))))
     (flet ((undecided-anyway ()
              ;; the answer is :UNKNOWN whatever the other roots are: without candidates
              ;; wanted, their signs need not be asked
@@ -235,7 +216,7 @@ miss roots and nothing is proven)."
                (return-from solved-earliest-root (values :unknown nil)))))
       (unless complete (undecided-anyway))
       (dolist (offset explicit)
-        (if (contains-symbol-p +i+ offset)
+        (if (complex-root-form-p offset)
             (progn (push offset undecided) (undecided-anyway))
             (ecase (root-verdict (sign-pattern-of search offset) strictly)
               (:yes (push offset proven))
@@ -249,7 +230,7 @@ miss roots and nothing is proven)."
            (let ((earliest (find-if (lambda (candidate)
                                       (every (lambda (other)
                                                (or (eq other candidate)
-                                                   (subsetp (sign-pattern-of search (mdifference other candidate))
+                                                   (subsetp (sign-pattern-of search (root-form-difference other candidate))
                                                             '(:positive :zero))))
                                              proven))
                                     proven)))
@@ -261,20 +242,17 @@ miss roots and nothing is proven)."
 (defun numeric-earliest-root (search form offset-variable)
   "A polynomial with numeric coefficients: Sturm sequences (realroots) isolate every real
 root; the earliest after the start is returned as a float."
-  (let* ((bridge (search-bridge search))
-         (answer (maxima-request bridge (mcall "$REALROOTS" form)
-                                 :datum (search-expression search)))
-         (offsets (loop for item in (mlist-items answer)
-                        when (and (mform-p item +mequal+) (eq (second item) offset-variable))
-                          collect (let ((value (from-mx bridge (third item))))
-                                    (if (realp value) value (return-from numeric-earliest-root
-                                                              (values :unknown nil))))))
-         (after (remove-if-not (lambda (offset)
-                                 (if (search-strictly search) (plusp offset) (>= offset 0)))
-                               offsets)))
-    (if (null after)
-        (values :none nil)
-        (let ((offset (coerce (reduce #'min after) 'double-float))
-              (start (from-mx bridge (search-after-form search))))
-          ;; Not through Maxima: ratsimp would turn the float back into a ratio.
-          (values (if (realp start) (+ start offset) (list '+ start offset)) :found)))))
+  (let ((bridge (search-bridge search))
+        (offsets (real-root-offsets (search-bridge search) form offset-variable
+                                    :datum (search-expression search))))
+    (unless (every #'realp offsets)
+      (return-from numeric-earliest-root (values :unknown nil)))
+    (let ((after (remove-if-not (lambda (offset)
+                                  (if (search-strictly search) (plusp offset) (>= offset 0)))
+                                offsets)))
+      (if (null after)
+          (values :none nil)
+          (let ((offset (coerce (reduce #'min after) 'double-float))
+                (start (root-form-expression bridge (search-after-form search))))
+            ;; Not through Maxima: ratsimp would turn the float back into a ratio.
+            (values (if (realp start) (+ start offset) (list '+ start offset)) :found))))))

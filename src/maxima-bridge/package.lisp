@@ -7,7 +7,7 @@ representation. Speaks AMES's prefix algebra to the rest of the system. One pers
 Debian `maxima` process per BRIDGE, started lazily, answering framed requests built
 only by this package's own translation (see translation.lisp and maxima-server.lisp).
 The algebra that reasons about prefix expressions (deciding, roots, integrators) is the
-layer above, AMES.ALGEBRA; the form builders it still uses are listed in its package.")
+layer above, AMES.ALGEBRA: it asks through the exported operations only.")
   (:export
    ;; the bridge object
    #:bridge #:make-bridge #:close-bridge #:bridge-timeout #:bridge-alive-p #:bridge-process-id
@@ -31,6 +31,11 @@ layer above, AMES.ALGEBRA; the form builders it still uses are listed in its pac
    ;; the questions the deciding algebra asks (questions.lisp)
    #:maxima-is #:maxima-is-opposite #:maxima-signs #:maxima-difference-signs
    #:maxima-fact-signs #:square-root-part-signs #:ratsimp-with-sines #:cached-answer #:cache-answer #:assumption-key
+   ;; the requests of the earliest-root search, over opaque root forms (root-forms.lisp)
+   #:offset-polynomial #:numeric-root-form-p #:complex-root-form-p #:root-form-signs
+   #:root-form-expression #:root-at-offset #:linear-root-offset #:vieta-forms
+   #:root-form-sum #:root-form-difference #:rational-radicand #:real-square-root-form
+   #:solved-root-offsets #:real-root-offsets
    ;; what the translation accepts, for the algebra's checks (translation.lisp, assumptions.lisp)
    #:check-translatable #:subject-p #:negate-condition
    ;; presentation (presentation.lisp)
