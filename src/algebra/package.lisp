@@ -10,7 +10,7 @@ It asks Maxima only through the bridge.")
   (:export
    ;; the one sign system: sign sets and the rules of signs (sign-rules.lisp)
    #:number-signs #:negated-signs #:only-signs-p #:sum-signs #:power-signs #:sign-product
-   #:constant-sign #:rules-of-signs #:sign-set-signum #:signum-sign-set
+   #:constant-sign #:rules-of-signs
    #:relation-signs #:signs-relation #:relation-verdict
    ;; deciding (deciding.lisp)
    #:decide #:holds-p #:sign-varies-p #:refuted-p

@@ -6,8 +6,8 @@
 ;;;; (a sum of terms of one sign, a product, a power); SIGNS.LISP adds what a physicist
 ;;;; reads off angles and facts, and Maxima's sign(); the broad phase of the simulator
 ;;;; uses the rules alone over the parameters' declared signs (RULES-OF-SIGNS), and
-;;;; geometry the sign of a constant (CONSTANT-SIGN). Where a caller wants one number, a
-;;;; set is read as 1, -1, 0, :NONNEGATIVE, :NONPOSITIVE or :UNKNOWN (SIGN-SET-SIGNUM).
+;;;; geometry the sign of a constant (CONSTANT-SIGN, the signum of a number, which
+;;;; NUMBER-SIGNS turns into a set).
 ;;;; Inside SIGNS.LISP the empty set NIL stands for "nothing known" (see its header).
 
 (in-package #:ames.algebra)
@@ -107,23 +107,6 @@ MARGIN from zero; NIL otherwise (and whenever X has a variable)."
           (t nil))))
 
 ;;; The rules of signs alone, over the signs of the variables
-
-(defun sign-set-signum (signs)
-  "The sign set SIGNS read as one value: 1, -1 or 0 for a single sign, :NONNEGATIVE or
-:NONPOSITIVE for a sign and zero, else :UNKNOWN."
-  (cond ((equal signs '(:positive)) 1)
-        ((equal signs '(:negative)) -1)
-        ((equal signs '(:zero)) 0)
-        ((and (= 2 (length signs)) (only-signs-p signs :positive :zero)) :nonnegative)
-        ((and (= 2 (length signs)) (only-signs-p signs :negative :zero)) :nonpositive)
-        (t :unknown)))
-
-(defun signum-sign-set (sign)
-  "The sign set of the value SIGN (1, -1, 0, :NONNEGATIVE, :NONPOSITIVE or :UNKNOWN)."
-  (case sign
-    (1 (list :positive)) (-1 (list :negative)) (0 (list :zero))
-    (:nonnegative (list :positive :zero)) (:nonpositive (list :negative :zero))
-    (t +all-signs+)))
 
 (defun known-signs (signs)
   "SIGNS, or all three signs where SIGNS is NIL (nothing known)."

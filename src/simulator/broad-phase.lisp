@@ -28,7 +28,8 @@ the signs the bridge gave (SIGNS)."
 
 (defun parameter-signs (scenario)
   "An alist parameter -> its sign under SCENARIO's assumptions of the form (OP P N) or
-(OP N P), N a number: 1, -1, :NONNEGATIVE or :NONPOSITIVE (the strongest one implied)."
+(OP N P), N a number: its sign set (:POSITIVE), (:NEGATIVE), (:POSITIVE :ZERO) or
+(:NEGATIVE :ZERO), the strongest one implied."
   (let ((signs '()))
     (dolist (relation (scenario-assumption-relations scenario) signs)
       (when (and (consp relation) (member (first relation) '(< <= > >=))
@@ -41,23 +42,22 @@ the signs the bridge gave (SIGNS)."
                     (t (values nil nil nil)))
             (let ((sign (and parameter
                              (ecase op
-                               (> (and (>= bound 0) 1))
-                               (>= (cond ((> bound 0) 1) ((= bound 0) :nonnegative)))
-                               (< (and (<= bound 0) -1))
-                               (<= (cond ((< bound 0) -1) ((= bound 0) :nonpositive)))))))
+                               (> (and (>= bound 0) (list :positive)))
+                               (>= (cond ((> bound 0) (list :positive))
+                                         ((= bound 0) (list :positive :zero))))
+                               (< (and (<= bound 0) (list :negative)))
+                               (<= (cond ((< bound 0) (list :negative))
+                                         ((= bound 0) (list :negative :zero))))))))
               (when sign
                 (let ((entry (assoc parameter signs)))
                   (cond ((null entry) (push (cons parameter sign) signs))
-                        ((member sign '(1 -1)) (setf (cdr entry) sign))))))))))))
+                        ((one-sign sign) (setf (cdr entry) sign))))))))))))
 
 (defun sign-algebra (signs expression)
   "The sign of EXPRESSION for every admissible value of the parameters, whose signs
 SIGNS gives (an alist), by the rules of signs (AMES.ALGEBRA:RULES-OF-SIGNS, the one sign
-system): 1, -1, 0, :NONNEGATIVE, :NONPOSITIVE or :UNKNOWN."
-  (ames.algebra:sign-set-signum
-   (ames.algebra:rules-of-signs
-    (lambda (parameter) (ames.algebra:signum-sign-set (cdr (assoc parameter signs))))
-    expression)))
+system): a sign set (all three signs when nothing is known)."
+  (ames.algebra:rules-of-signs (lambda (parameter) (cdr (assoc parameter signs))) expression))
 
 (defparameter *float-sign-margin* 1d-6
   "A constant expression evaluated in double precision (roots, pi) has its value's sign
@@ -67,15 +67,24 @@ expressions the broad phase evaluates (positions and bounds) is below 1e-12.")
 (defun cheap-sign (reach expression)
   "The sign of EXPRESSION for every admissible parameter value, by exact arithmetic (a
 constant evaluated in floating point only beyond *FLOAT-SIGN-MARGIN*) or the rules of
-signs, as written or after its like terms cancel (EXPANDED-SIGN): 1, -1, 0,
-:NONNEGATIVE, :NONPOSITIVE or :UNKNOWN. Never asks Maxima."
-  (or (ames.algebra:constant-sign expression *float-sign-margin*)
-      (let ((sign (sign-algebra (reach-signs-of-parameters reach) expression)))
-        (if (member sign '(1 -1 0))
-            sign
-            ;; like terms cancelled first (polynomial-signs.lisp)
-            (let ((expanded (expanded-sign (reach-signs-of-parameters reach) expression)))
-              (if (eq expanded :unknown) sign expanded))))))
+signs, as written or after its like terms cancel (EXPANDED-SIGN): a sign set. Never
+asks Maxima."
+  (let ((constant (ames.algebra:constant-sign expression *float-sign-margin*)))
+    (if constant
+        (ames.algebra:number-signs constant)
+        (let ((signs (sign-algebra (reach-signs-of-parameters reach) expression)))
+          (if (one-sign signs)
+              signs
+              ;; like terms cancelled first (polynomial-signs.lisp)
+              (let ((expanded (expanded-sign (reach-signs-of-parameters reach) expression)))
+                (if (known-signs-p expanded) expanded signs)))))))
+
+(defun known-signs-p (signs)
+  "True when the sign set SIGNS says something: one sign, or one sign and zero (not
+all three, nor a sign and its opposite)."
+  (or (one-sign signs)
+      (ames.algebra:only-signs-p signs :positive :zero)
+      (ames.algebra:only-signs-p signs :negative :zero)))
 
 ;;; Each body's coordinates over the state
 
@@ -110,9 +119,9 @@ acceleration."
 (defun coefficient-sign (reach expression)
   "The sign of a body's own coefficient EXPRESSION: cheaply, else by the bridge (memoized,
 so once per body and axis)."
-  (let ((sign (cheap-sign reach expression)))
-    (if (member sign '(1 -1 0))
-        sign
+  (let ((signs (cheap-sign reach expression)))
+    (if (one-sign signs)
+        signs
         (multiple-value-bind (known found) (gethash expression (reach-signs reach))
           (if found
               known
@@ -121,20 +130,24 @@ so once per body and axis)."
 
 (defun difference-sign (reach a b)
   "The sign of A - B for every admissible parameter value (A and B coefficients of two
-bodies): equal forms give 0; else CHEAP-SIGN of the difference; else
-the two signs when they are on opposite sides of zero."
+bodies), a sign set: equal forms give (:ZERO); else CHEAP-SIGN of the difference when it
+gives one sign; else the two coefficients' signs when they are on opposite sides of
+zero (or both zero)."
   (if (equal a b)
-      0
-      (let ((sign (cheap-sign reach `(- ,a ,b))))
-        (if (member sign '(1 -1 0))
-            sign
-            (let ((sa (coefficient-sign reach a)) (sb (coefficient-sign reach b)))
-              (cond ((and (eql sa 1) (member sb '(0 -1 :nonpositive))) 1)
-                    ((and (eql sa 0) (eql sb -1)) 1)
-                    ((and (eql sa -1) (member sb '(0 1 :nonnegative))) -1)
-                    ((and (eql sa 0) (eql sb 1)) -1)
-                    ((and (eql sa 0) (eql sb 0)) 0)
-                    (t :unknown)))))))
+      (list :zero)
+      (let ((signs (cheap-sign reach `(- ,a ,b))))
+        (if (one-sign signs)
+            signs
+            (let ((sa (one-sign (coefficient-sign reach a)))
+                  (sb (coefficient-sign reach b)))
+              (cond ((and (eq sa :positive) (ames.algebra:only-signs-p sb :negative :zero))
+                     (list :positive))
+                    ((and (eq sa :zero) (eq (one-sign sb) :negative)) (list :positive))
+                    ((and (eq sa :negative) (ames.algebra:only-signs-p sb :positive :zero))
+                     (list :negative))
+                    ((and (eq sa :zero) (eq (one-sign sb) :positive)) (list :negative))
+                    ((and (eq sa :zero) (eq (one-sign sb) :zero)) (list :zero))
+                    (t +unknown-signs+)))))))
 
 ;;; The bounds of a contact's locus
 
@@ -157,10 +170,11 @@ of expressions whose least and greatest bound it, or NIL when it is unbounded th
 
 (defun stays-beyond-p (reach offsets c1 c2 side)
   "True when, for each OFFSET (c0 of the relative coordinate minus a bound), OFFSET + C1
-tau + C2 tau^2 keeps the strict SIDE (1 above, -1 below) for every tau > 0: the signs of
-C1 and C2 (given as signs) allow it and each offset's with them has one strict."
-  (flet ((weak (sign) (if (= side 1) (member sign '(1 0 :nonnegative)) (member sign '(-1 0 :nonpositive))))
-         (strict (sign) (eql sign side)))
+tau + C2 tau^2 keeps the strict SIDE (:POSITIVE above, :NEGATIVE below) for every
+tau > 0: the signs of C1 and C2 (given as sign sets) allow it and each offset's with
+them has one strict."
+  (flet ((weak (signs) (ames.algebra:only-signs-p signs side :zero))
+         (strict (signs) (eq (one-sign signs) side)))
     (and (weak c1) (weak c2)
          (every (lambda (offset)
                   (let ((sign (cheap-sign reach offset)))
@@ -183,6 +197,6 @@ bodies' shapes) cannot reach its locus at any tau > 0 of the state."
               (let ((c1 (difference-sign reach (second a) (second b)))
                     (c2 (difference-sign reach (third a) (third b)))
                     (offsets (mapcar (lambda (bound) `(- (- ,(first a) ,(first b)) ,bound)) bounds)))
-                (when (or (stays-beyond-p reach offsets c1 c2 1)
-                          (stays-beyond-p reach offsets c1 c2 -1))
+                (when (or (stays-beyond-p reach offsets c1 c2 :positive)
+                          (stays-beyond-p reach offsets c1 c2 :negative))
                   (return t))))))))))

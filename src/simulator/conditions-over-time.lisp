@@ -103,12 +103,12 @@ holds at once only when it is loose."
                  (:false (return :false))
                  (:unknown (setf unknown fact)))))))
     (t (multiple-value-bind (function loose) (violation-function relation)
-         (multiple-value-bind (sign coefficient)
+         (multiple-value-bind (signs coefficient)
              (leading-sign-of run solved (over-state-terms run solved function))
-           (case sign
-             (-1 :true)
-             (1 :false)
-             (0 (if loose :true :false))
+           (case (one-sign signs)
+             (:negative :true)
+             (:positive :false)
+             (:zero (if loose :true :false))
              (t (or (and (run-decider-override run) (impact-verdict-by-values coefficient))
                     (values :unknown `(< ,coefficient 0))))))))))
 
@@ -123,7 +123,7 @@ values or they do not settle it. An impact has one outcome: it is not branched o
 (defun vanishes-identically-p (run solved expression)
   "True when EXPRESSION (over quantity terms) vanishes identically near the start, as
 far as its local series shows."
-  (eql 0 (leading-sign-of run solved (over-state-terms run solved expression))))
+  (eq :zero (one-sign (leading-sign-of run solved (over-state-terms run solved expression)))))
 
 (defun goes-negative-at-once (run solved expression)
   "Whether EXPRESSION (over quantity terms) is negative just after the start: :TRUE,

@@ -29,10 +29,10 @@ outside the obstacle when it is outside either face: the other face, which the i
 leaves unpenetrated (it pushes, or the bodies do not approach through it), keeps it
 out, and CONTACT must not stop a motion that leaves past its end (a particle sliding
 off the foot of a slope onto the ground, bouncing up)."
-  (and (eql (sign-of run (normal-approach run contact)) 1)
+  (and (sign-is run (normal-approach run contact) :positive)
        (some (lambda (other)
                (and (member other touching)
-                    (member (sign-of run (normal-approach run other)) '(-1 0))))
+                    (sign-is run (normal-approach run other) :negative :zero)))
              (touching-alternatives run contact))))
 
 (defun impact-entities (run contacts)

@@ -174,11 +174,11 @@ of motion. Signals AMBIGUOUS-TRANSITION when the direction is not decided."
          (ode (ames.maxima:solve-autonomous-ode (run-bridge run) tangential +arc-length+
                                                 :initial-position s0 :initial-velocity w0))
          (energy (tidy run (ames.maxima:ode-solution-speed-squared ode)))
-         (direction (let ((sign (sign-of run w0)))
-                      (if (member sign '(1 -1))
+         (direction (let ((sign (sign-direction (sign-of run w0))))
+                      (if sign
                           sign
-                          (let ((push (sign-of run (at-arc tangential s0))))
-                            (if (member push '(1 -1))
+                          (let ((push (sign-direction (sign-of run (at-arc tangential s0)))))
+                            (if push
                                 push
                                 (error 'ambiguous-transition
                                        :datum w0 :missing-fact `(> ,(at-arc tangential s0) 0)

@@ -71,7 +71,7 @@ positions and velocities (in GROUP-POSITIONS-AND-VELOCITIES's order); else NIL."
                                               c positions))))
                     ;; oriented so that the coordinate starts positive where that is decided
                     ;; (a distance rather than its negative)
-                    (if (eql (sign-of run (tidy run s0)) -1)
+                    (if (sign-is run (tidy run s0) :negative)
                         (mapcar (lambda (x) (tidy run `(- ,x))) c)
                         c)))
                (lambdas (mapcar (lambda (a)
@@ -90,7 +90,7 @@ positions and velocities (in GROUP-POSITIONS-AND-VELOCITIES's order); else NIL."
                                velocities))
                    (nu (common-factor run v0 lambdas))
                    (gamma (tidy run (cons '+ (mapcar (lambda (x y) `(* ,x ,y)) c lambdas)))))
-              (when (and mu nu (member (sign-of run gamma) '(1 -1)))
+              (when (and mu nu (sign-is run gamma :positive :negative))
                 (list :c c :lambda lambdas :mu mu :nu nu :gamma gamma :reference reference)))))))))
 
 (defun integrate-line (run solved group)
@@ -114,8 +114,8 @@ not decided."
                                      (run-bridge run) force +arc-length+
                                      :initial-position s0 :initial-velocity w0)
                         ((or ames.maxima:solve-failed ames.maxima:maxima-question) () nil)))
-                 (direction (let ((sign (sign-of run w0)))
-                              (if (member sign '(1 -1)) sign (sign-of run (at-arc force s0))))))
+                 (direction (or (sign-direction (sign-of run w0))
+                                (sign-direction (sign-of run (at-arc force s0))))))
             (when (and ode (member direction '(1 -1)))
               (let* ((energy (tidy run (ames.maxima:ode-solution-speed-squared ode)))
                      (speed (tidy run `(* ,direction (sqrt ,energy)))))

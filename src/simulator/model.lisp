@@ -326,10 +326,10 @@ of the state (see SERIES-COEFFICIENTS)."
 needed (the first whose sign is not zero decides)."
   (loop for k from 0 to *series-order*
         for c = (car (last (series-coefficients run solved expression (1+ k))))
-        for sign = (sign-of run c)
-        unless (eql sign 0)
-          do (return (values sign c))
-        finally (return (values 0 0))))
+        for signs = (sign-of run c)
+        unless (eq (one-sign signs) :zero)
+          do (return (values signs c))
+        finally (return (values (list :zero) 0))))
 
 (defun series-polynomial (coefficients)
   "The polynomial in TAU with COEFFICIENTS (C0 C1 ...)."
@@ -338,15 +338,16 @@ needed (the first whose sign is not zero decides)."
 
 (defun leading-sign (run coefficients)
   "The sign of a function just after the start, from its local series COEFFICIENTS:
-(values SIGN COEFFICIENT) with SIGN 1, -1 or 0 (every coefficient zero: the function
-vanishes identically, as far as the series goes), or (values :UNKNOWN COEFFICIENT)
-for the first coefficient whose sign is not decided."
-  (dolist (c coefficients (values 0 0))
-    (let ((sign (sign-of run c)))
-      (when (eq sign :unknown)
+(values SIGNS COEFFICIENT) with SIGNS the sign set (see SIGN-OF) of the first
+coefficient not proven zero (one sign, or all three when it is not decided), or
+(values (:ZERO) 0) when every coefficient is zero (the function vanishes identically,
+as far as the series goes)."
+  (dolist (c coefficients (values (list :zero) 0))
+    (let ((signs (sign-of run c)))
+      (unless (one-sign signs)
         ;; the series is only ratsimped: its trigonometric form may hide a fact the
         ;; assumptions decide (cos^2 + sin^2), so the simplest form gets a second look
         (setf c (tidy run c :full)
-              sign (sign-of run c)))
-      (unless (eql sign 0)
-        (return (values sign c))))))
+              signs (sign-of run c)))
+      (unless (eq (one-sign signs) :zero)
+        (return (values signs c))))))

@@ -22,7 +22,7 @@
 its sign) when EXPRESSION is over the parameters and the assumptions leave its sign open;
 return NIL otherwise (the caller goes on without a closed form)."
   (when (and expression (parameter-expression-p run expression)
-             (eq (sign-of run expression) :unknown))
+             (null (one-sign (sign-of run expression))))
     (error 'ambiguous-transition :datum expression :missing-fact `(> ,expression 0)
                                  :detail what)))
 
@@ -51,11 +51,12 @@ QUESTION-AS-AMBIGUITY, WHAT saying what needs it). Other questions, and more tha
            (lambda (question)
              (let* ((expressions (ames.maxima:maxima-question-expressions question))
                     (x (and expressions (null (rest expressions)) (first expressions)))
-                    (sign (and x (parameter-expression-p run x) (sign-of run x))))
-               (cond ((and (member sign '(1 -1 0)) (< answered *sign-answers*)
+                    (signs (and x (parameter-expression-p run x) (sign-of run x))))
+               (cond ((and (one-sign signs) (< answered *sign-answers*)
                            (find-restart 'ames.maxima:assume-and-retry question))
                       (incf answered)
                       (invoke-restart 'ames.maxima:assume-and-retry
-                                      (list (list (case sign (1 '>) (-1 '<) (0 '=)) x 0))))
-                     ((eq sign :unknown) (question-as-ambiguity run question what)))))))
+                                      (list (list (ames.algebra:signs-relation signs) x 0))))
+                     ((and signs (null (one-sign signs)))
+                      (question-as-ambiguity run question what)))))))
       (funcall function))))

@@ -38,7 +38,7 @@ one oscillation (see the file header), or NIL."
         (t (return-from linear-oscillation nil))))
     (when waves
       (let ((w (fifth (first waves))))
-        (unless (and (member (sign-of run w) '(1 -1))
+        (unless (and (sign-is run w :positive :negative)
                      (every (lambda (wave) (holds run `(= ,(fifth wave) ,w))) (rest waves)))
           (return-from linear-oscillation nil))
         (let ((position (or (find 'ames.kb:pos waves :key (lambda (wave) (first (first wave))))
@@ -46,6 +46,6 @@ one oscillation (see the file header), or NIL."
           (destructuring-bind (term a b c k) position
             (declare (ignore k))
             (let ((amplitude (tidy run `(sqrt (+ (expt ,b 2) (expt ,c 2))))))
-              (list :period (tidy run `(/ (* 2 pi) ,(if (eql (sign-of run w) 1) w `(- ,w))))
+              (list :period (tidy run `(/ (* 2 pi) ,(if (sign-is run w :positive) w `(- ,w))))
                     :between (list (tidy run `(- ,a ,amplitude)) (tidy run `(+ ,a ,amplitude)))
                     :coordinate term))))))))

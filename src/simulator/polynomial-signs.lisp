@@ -92,20 +92,19 @@ is not a polynomial with rational coefficients in symbols or expands too far."
 
 (defun expanded-sign (signs expression)
   "The sign of EXPRESSION for every admissible value of the parameters, whose signs
-SIGNS gives (see SIGN-ALGEBRA), from its expanded monomials: 1, -1, 0, :NONNEGATIVE,
-:NONPOSITIVE or :UNKNOWN."
+SIGNS gives (see SIGN-ALGEBRA), from its expanded monomials: a sign set (all three signs
+when they are not known)."
   (let ((monomials (expanded-monomials expression)))
     (if (eq monomials :unknown)
-        :unknown
+        +unknown-signs+
         ;; the one sign system's rules (AMES.ALGEBRA sign sets) over the monomials
         (let ((signs-of-sum
                 (ames.algebra:sum-signs
                  (mapcar (lambda (term)
                            (reduce #'ames.algebra:sign-product
                                    (mapcar (lambda (factor)
-                                             (ames.algebra:signum-sign-set
-                                              (sign-algebra signs `(expt ,(car factor) ,(cdr factor)))))
+                                             (sign-algebra signs `(expt ,(car factor) ,(cdr factor))))
                                            (car term))
                                    :initial-value (ames.algebra:number-signs (cdr term))))
                          monomials))))
-          (if signs-of-sum (ames.algebra:sign-set-signum signs-of-sum) :unknown)))))
+          (or signs-of-sum +unknown-signs+)))))

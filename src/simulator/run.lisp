@@ -92,20 +92,37 @@ with real roots (ames.algebra:SIMPLIFY-REAL): how values at a state's end are re
         (setf (run-parameter-signs-cache run) (parameter-signs (run-scenario run)))
         signs)))
 
+(defparameter +unknown-signs+ '(:positive :negative :zero)
+  "The sign set of a quantity whose sign is not known (AMES.ALGEBRA's sign sets are the
+simulator's one way of writing signs).")
+
+(defun one-sign (signs)
+  "The one sign (:POSITIVE, :NEGATIVE or :ZERO) the sign set SIGNS allows, or NIL when it
+allows several (or none)."
+  (and signs (null (rest signs)) (first signs)))
+
+(defun sign-direction (signs)
+  "The direction, 1 or -1, that the sign set SIGNS gives a motion or an orientation:
+1 for (:POSITIVE), -1 for (:NEGATIVE), else NIL (no direction: zero or undecided)."
+  (case (one-sign signs) (:positive 1) (:negative -1)))
+
 (defun sign-of (run x)
-  "The sign of X under the assumptions: 1, -1, 0, or :UNKNOWN. The rules of signs over
+  "The sign set of X under the assumptions: one sign, (:POSITIVE), (:NEGATIVE) or
+(:ZERO), when it is decided, else all three (+UNKNOWN-SIGNS+). The rules of signs over
 the parameters' declared signs (SIGN-ALGEBRA) answer first; Maxima where they do not."
-  (cond ((and (realp x) (plusp x)) 1)
-        ((and (realp x) (minusp x)) -1)
-        ((eql x 0) 0)
-        ((member (sign-algebra (run-parameter-signs run) x) '(1 -1 0))
+  (cond ((realp x) (ames.algebra:number-signs x))
+        ((one-sign (sign-algebra (run-parameter-signs run) x))
          (sign-algebra (run-parameter-signs run) x))
-        ((holds run `(> ,x 0)) 1)
-        ((holds run `(< ,x 0)) -1)
+        ((holds run `(> ,x 0)) (list :positive))
+        ((holds run `(< ,x 0)) (list :negative))
         ((and (not (ames.algebra:sign-varies-p (run-bridge run) x))
               (holds run `(= ,x 0)))
-         0)
-        (t :unknown)))
+         (list :zero))
+        (t +unknown-signs+)))
+
+(defun sign-is (run x &rest signs)
+  "True when X's sign is decided (SIGN-OF gives one sign) and it is among SIGNS."
+  (and (member (one-sign (sign-of run x)) signs) t))
 
 (defun at-time (expression time)
   "EXPRESSION with TAU replaced by TIME."
@@ -238,8 +255,8 @@ also lies now."
 is negative) while not excused by a corner: not staying outside another face there.
 Such a contact is reached with a velocity: an impact at the start of the state."
   (and (touching-on-locus-p run contact)
-       (eql (sign-of run (normal-approach run contact)) -1)
-       (notany (lambda (other) (member (sign-of run (normal-approach run other)) '(0 1)))
+       (sign-is run (normal-approach run contact) :negative)
+       (notany (lambda (other) (sign-is run (normal-approach run other) :zero :positive))
                (touching-alternatives run contact))))
 
 (defun touching-verdict (run contact)
@@ -251,9 +268,9 @@ not is settled by consistency); :UNKNOWN when the sign of the normal velocity is
 decided."
   (if (not (touching-on-locus-p run contact))
       :false
-      (case (sign-of run (normal-approach run contact))
-        (0 :choice)
-        (:unknown :unknown)
+      (case (one-sign (sign-of run (normal-approach run contact)))
+        (:zero :choice)
+        ((nil) :unknown)
         (t :false))))
 
 (defun gap-relation-contact (relation)

@@ -137,7 +137,7 @@ when FUNCTION is no such multiple."
             ((eql 0 (tidy run `(+ ,function ,speed))) -1)
             (t (let ((k (tidy run `(/ ,function ,speed) :full)))
                  (and (free-of-p +arc-length+ k)
-                      (member (sign-of run k) '(1 -1))
+                      (sign-is run k :positive :negative)
                       k)))))))
 
 (defun speed-function-p (run group function)
@@ -151,8 +151,8 @@ side of its sign ahead of the body: where E(s) = s'^2 reaches zero going negativ
 (values :AT S), (values :NEVER) or (values :UNKNOWN FACT). FUNCTION, the speed times
 the direction of motion, is positive while the body moves: it vanishes at the turning
 point; of the opposite sign, it never reaches zero from its side."
-  (let ((sign (sign-of run (speed-multiple run group function))))
-    (cond ((/= (* sign (group-direction group)) 1) (values :never))
+  (let ((direction (sign-direction (sign-of run (speed-multiple run group function)))))
+    (cond ((not (eql direction (group-direction group))) (values :never))
           ((turning-preceded-p run solved group) (values :never))
           (t (crossing-ahead run group (group-speed-squared group))))))
 
