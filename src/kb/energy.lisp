@@ -13,9 +13,18 @@
 ;;;; Their sum is constant over a state with no friction and no impact; momentum is
 ;;;; conserved where no force from outside the free bodies acts. Each potential energy is
 ;;;; defined beside its force, in its phenomenon's file: the weight's in mechanics.lisp, a
-;;;; spring's and a bumper's in springs.lisp, gravitation's in gravitation.lisp.
+;;;; spring's and a bumper's in springs.lisp, gravitation's in gravitation.lisp. The kinds
+;;;; of terms, with their words and the queries they answer, are declared below (see
+;;;; terms.lisp): the report and the queries list what is declared.
 
 (in-package #:ames.kb)
+
+(define-reported-term :kinetic :section :energy :label "kinetic K" :symbol "K"
+                               :query :kinetic-energy :shown :always)
+(define-reported-term :potential :section :energy :label "potential U" :symbol "U"
+                                 :shown :always)
+(define-reported-term :momentum :section :momentum :label "total" :vector t
+                                :query :momentum :shown :always)
 
 (defcomponent kinetic-energy-and-momentum (:knowledge-base *mechanics*)
   "A free body's kinetic energy is 1/2 m |v|^2 and its momentum m v."

@@ -32,6 +32,10 @@ syntax in src/scenario/.")
    #:situation-entities-of #:impact-entities-of #:probes-of #:entity-phrases-of
    #:force-description #:impulse-description #:event-description #:quantity-description
    #:touching-contact-entity
+   ;; the kinds of terms reported in the energy and momentum sections (terms.lisp)
+   #:define-reported-term #:reported-term #:reported-terms #:query-reported-term
+   #:term-kind #:term-section #:term-label #:term-symbol #:term-vector #:term-query
+   #:term-shown #:term-entries #:term-subject-body
    ;; the impact model's quantities and entities (impacts.lisp)
    #:vel-after #:jx #:jy #:normal-impulse #:separation-after #:energy-lost #:touching-contact
    #:impulse

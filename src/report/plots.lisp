@@ -62,7 +62,8 @@ a state that lasts forever). Stops at the first state whose start is not known."
                              (and point (vlength point))))))))
 
 (defun energy-series (spans bindings)
-  "The series of the kinetic, potential and total energy: (:KINETIC S :POTENTIAL S :TOTAL S)."
+  "The series of each kind of energy term the knowledge base declares and of their total:
+a list of (LABEL SERIES), the total last (labelled with the kinds' symbols, K + U)."
   (flet ((series (kinds)
            (loop for (state start duration) in spans
                  for entries = (remove-if-not (lambda (e) (member (first e) kinds))
@@ -76,8 +77,30 @@ a state that lasts forever). Stops at the first state whose start is not known."
                                                          (unless v (return nil))
                                                          (incf sum v)))))))
                  when values collect values)))
-    (list :kinetic (series '(:kinetic)) :potential (series '(:potential))
-          :total (series '(:kinetic :potential)))))
+    (let ((terms (ames.kb:reported-terms :energy)))
+      (append (loop for term in terms
+                    collect (list (ames.kb:term-label term) (series (list (ames.kb:term-kind term)))))
+              (list (list (format nil "total ~{~A~^ + ~}" (mapcar #'ames.kb:term-symbol terms))
+                          (series (mapcar #'ames.kb:term-kind terms))))))))
+
+(defparameter *energy-curve-styles*
+  '(("#c0392b" nil) ("#1f5fa8" "5 3") ("#8e44ad" "1 3") ("#27ae60" "8 3"))
+  "Colour and dash of the energy plot's curves, one per kind of term in turn; the total
+is drawn in *ENERGY-TOTAL-STYLE*.")
+
+(defparameter *energy-total-style* '("#222" "2 2")
+  "Colour and dash of the energy plot's total.")
+
+(defun energy-curves (energy)
+  "The energy plot's curves (LABEL COLOUR DASH . SERIES) of ENERGY (see ENERGY-SERIES),
+those with points."
+  (loop for (label series) in energy
+        for k from 0
+        for (colour dash) = (if (= k (1- (length energy)))
+                                *energy-total-style*
+                                (nth (mod k (length *energy-curve-styles*)) *energy-curve-styles*))
+        when series
+          collect (list* label colour dash series)))
 
 (defun nice-ticks (low high)
   "About four round numbers from LOW to HIGH for an axis."
@@ -147,12 +170,7 @@ with nothing to draw left out; and the times of the events (the ends of the stat
                                             when (getf quantities key)
                                               collect (list* (name-text body) (cdr (assoc body colours)) nil
                                                              (getf quantities key)))))
-                  (list (list "energy"
-                              (loop for (key label colour dash) in '((:kinetic "kinetic K" "#c0392b" nil)
-                                                                     (:potential "potential U" "#1f5fa8" "5 3")
-                                                                     (:total "total K + U" "#222" "2 2"))
-                                    when (getf energy key)
-                                      collect (list* label colour dash (getf energy key)))))))))
+                  (list (list "energy" (energy-curves energy)))))))
     (values plots
             (loop for (state start duration) in spans
                   when (consp (state-end-event state)) collect (+ start duration)))))

@@ -139,21 +139,41 @@ else the datum as text."
             (phrase (present presenter value))
             (list (datum-text value)))))
 
+(defun sum-presented (presenter terms)
+  "The sum of the expressions TERMS presented (0 when there are none)."
+  (present presenter (if (rest terms) (cons '+ terms) (or (first terms) 0))))
+
+(defun shown-terms (section entries)
+  "The kinds of terms of SECTION (AMES.KB:REPORTED-TERMS) the report lists for a state
+whose section holds ENTRIES: those shown always, and those of which it holds a term."
+  (remove-if-not (lambda (term)
+                   (or (eq (ames.kb:term-shown term) :always)
+                       (ames.kb:term-entries term entries)))
+                 (ames.kb:reported-terms section)))
+
 (defun energy-phrases (presenter entries)
-  "The kinetic, potential and total energy of a state's :ENERGY note ENTRIES ((:kinetic
-BODY E) and (:potential SOURCE E) ...), each sum presented: the total is constant where
-the forces are conservative and nothing is lost. Written K and U, since T names a
-tension."
-  (let ((kinetic (loop for entry in entries when (eq (first entry) :kinetic) collect (third entry)))
-        (potential (loop for entry in entries when (eq (first entry) :potential) collect (third entry))))
-    (flet ((sum (terms) (present presenter (if (rest terms) (cons '+ terms) (or (first terms) 0)))))
-      (list (phrase "kinetic K = " (sum kinetic))
-            (phrase "potential U = " (sum potential))
-            (phrase "total K + U = " (sum (append kinetic potential)))))))
+  "The energy of a state's :ENERGY note ENTRIES ((KIND SUBJECT E) ...): the sum of each
+kind of term the knowledge base declares (see SHOWN-TERMS), labelled with its words,
+then the total of them all, written with the kinds' symbols (K + U: T names a tension).
+The total is constant where the forces are conservative and nothing is lost."
+  (let ((terms (shown-terms :energy entries)))
+    (append
+     (loop for term in terms
+           collect (phrase (ames.kb:term-label term) " = "
+                           (sum-presented presenter (mapcar #'third (ames.kb:term-entries term entries)))))
+     (list (phrase (format nil "total ~{~A~^ + ~} = " (mapcar #'ames.kb:term-symbol terms))
+                   (sum-presented presenter
+                                  (loop for term in terms
+                                        append (mapcar #'third (ames.kb:term-entries term entries)))))))))
 
 (defun momentum-phrases (presenter entries)
-  "The total momentum of a state's :MOMENTUM note ENTRIES ((:momentum BODY (PX PY)) ...)."
-  (flet ((sum (axis)
-           (let ((terms (mapcar (lambda (entry) (funcall axis (third entry))) entries)))
-             (present presenter (if (rest terms) (cons '+ terms) (or (first terms) 0))))))
-    (list (phrase "total: (" (sum #'first) ", " (sum #'second) ")"))))
+  "The totals of a state's :MOMENTUM note ENTRIES ((KIND BODY VALUE) ...), one for each
+kind of term the knowledge base declares (see SHOWN-TERMS), labelled with its words: a
+vector kind's (X Y) summed by components, a scalar kind's as one sum."
+  (loop for term in (shown-terms :momentum entries)
+        for values = (mapcar #'third (ames.kb:term-entries term entries))
+        collect (if (ames.kb:term-vector term)
+                    (phrase (ames.kb:term-label term) ": ("
+                            (sum-presented presenter (mapcar #'first values)) ", "
+                            (sum-presented presenter (mapcar #'second values)) ")")
+                    (phrase (ames.kb:term-label term) ": " (sum-presented presenter values)))))

@@ -2,10 +2,11 @@
 ;;;; base reported them (issue 20, class 6: queries never re-derive physics).
 ;;;;
 ;;;; A state holds the sections the knowledge base reports beside the forces (see
-;;;; src/kb/energy.lisp): :ENERGY, entries (:KINETIC BODY E) and (:POTENTIAL SOURCE E), and
-;;;; :MOMENTUM, entries (:MOMENTUM BODY (PX PY)). A query's energy is the sum of the
-;;;; :ENERGY entries, the very terms the report adds up as "total T + V"; a body's kinetic
-;;;; energy and momentum are its own entries. A state reported over the arc length of a
+;;;; src/kb/terms.lisp and energy.lisp): :ENERGY and :MOMENTUM, entries (KIND SUBJECT
+;;;; VALUE) of the kinds the knowledge base declares. A query's energy is the sum of the
+;;;; :ENERGY entries, the very terms the report adds up as its total; a query the kb
+;;;; declares a kind of term for (AMES.KB:QUERY-REPORTED-TERM: a body's kinetic energy,
+;;;; its momentum) is the sum of the body's own entries of that kind. A state reported over the arc length of a
 ;;;; curve or a line (its positions and velocities are (:ON-PATH ...)) is read at its start
 ;;;; and end by putting the arc length to its first and last values, which needs no time:
 ;;;; the energy integral gives the speed there (thesis 4.2.2).
@@ -29,22 +30,27 @@ none."
           ((rest terms) (cons '+ terms))
           (t (first terms)))))
 
-(defun reported-kinetic-energy (state body fixed)
-  "BODY's kinetic energy as reported for STATE; 0 for a FIXED body; NIL when not reported."
-  (if fixed
-      0
-      (let ((entry (find-if (lambda (e) (and (eq (first e) :kinetic) (named-alike-p (second e) body)))
-                            (reported-section state :energy))))
-        (and entry (third entry)))))
+(defun sum-of-terms (terms)
+  "The sum of the expressions TERMS, written as the one term when there is one."
+  (if (rest terms) (cons '+ terms) (first terms)))
 
-(defun reported-momentum (state body fixed)
-  "BODY's momentum (PX PY) as reported for STATE; (0 0) for a FIXED body; NIL when not
+(defun reported-body-term (state term body fixed)
+  "The sum of BODY's entries of the kind of term TERM (an AMES.KB:REPORTED-TERM) that
+STATE reports (those whose subject is BODY or ends in it, see AMES.KB:TERM-SUBJECT-BODY):
+an expression, or (X Y) for a vector kind; zero for a FIXED body; NIL when none is
 reported."
-  (if fixed
-      (list 0 0)
-      (let ((entry (find-if (lambda (e) (and (eq (first e) :momentum) (named-alike-p (second e) body)))
-                            (reported-section state :momentum))))
-        (and entry (third entry)))))
+  (let ((values (and (not fixed)
+                     (loop for (nil subject value)
+                             in (ames.kb:term-entries term (reported-section state (ames.kb:term-section term)))
+                           when (named-alike-p (ames.kb:term-subject-body subject) body)
+                             collect value))))
+    (cond ((ames.kb:term-vector term)
+           (cond (fixed (list 0 0))
+                 ((null values) nil)
+                 (t (list (sum-of-terms (mapcar #'first values))
+                          (sum-of-terms (mapcar #'second values))))))
+          (fixed 0)
+          (t (and values (sum-of-terms values))))))
 
 (defun arc-length-start (state)
   "The arc length at which STATE's motion along a curve or a line starts, or NIL (no such

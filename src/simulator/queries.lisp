@@ -118,9 +118,15 @@ off the state's forces."
   (flet ((body (name) (or (find-scenario-body name scenario) (unanswerable "~A is no body" name)))
          (place (b) (vector-of (recorded state (state-positions state) b)))
          (velocity (b) (vector-of (recorded state (state-velocities state) b))))
-    (let ((described (ames.kb:quantity-description (first form))))
-      (if described
-          (reported-force-value state (getf described :force) (rest form))
+    (let ((described (ames.kb:quantity-description (first form)))
+          (term (ames.kb:query-reported-term (first form))))
+      (cond
+        (described (reported-force-value state (getf described :force) (rest form)))
+        (term (or (reported-body-term state term (second form)
+                                      (scenario-body-fixed-p (body (second form))))
+                  (unanswerable "state ~D reports no ~(~A~) of ~(~A~)" (state-index state)
+                                (substitute #\Space #\- (symbol-name (first form))) (second form))))
+        (t
           (ecase (first form)
             (:x (first (place (second form))))
             (:y (second (place (second form))))
@@ -128,18 +134,12 @@ off the state's forces."
             (:velocity (velocity (second form)))
             (:acceleration (vector-of (recorded state (state-accelerations state) (second form))))
             (:speed (let ((v (velocity (second form)))) `(sqrt (+ (expt ,(first v) 2) (expt ,(second v) 2)))))
-            (:kinetic-energy (or (reported-kinetic-energy state (second form)
-                                                          (scenario-body-fixed-p (body (second form))))
-                                 (unanswerable "state ~D reports no kinetic energy of ~(~A~)"
-                                               (state-index state) (second form))))
-            (:momentum (or (reported-momentum state (second form) (scenario-body-fixed-p (body (second form))))
-                           (unanswerable "state ~D reports no momentum of ~(~A~)" (state-index state) (second form))))
             (:energy (system-energy scenario state))
             (:time (if (closed-form-p (state-start state))
                        `(+ ,(state-start state) tau)
                        (unanswerable "state ~D's start has no closed form" (state-index state))))
             (:component (let ((vector (quantity-expression scenario state (third form))))
-                          (if (eq (second form) :x) (first vector) (second vector)))))))))
+                          (if (eq (second form) :x) (first vector) (second vector))))))))))
 
 (defun system-energy (scenario state)
   "The whole system's energy in STATE: the sum of the terms the knowledge base reports,
