@@ -1,0 +1,162 @@
+;;;; src/maxima-bridge/maxima-server-functions.lisp -- the Maxima functions the bridge calls
+;;;; ($AMES_POLYNOMIAL_COEFFICIENTS, $AMES_TRIGSIMP, the simplification and presentation
+;;;; candidates, tex() of a form as it is), run INSIDE Debian's Maxima (GCL).
+;;;;
+;;;; GCL code, not part of the SBCL system (ames.asd lists it as a static file): the request
+;;;; server, maxima-server.lisp, loads it after its whitelist of heads is made (the
+;;;; presentation's functions add themselves to it) and before its loop.
+
+(in-package :maxima)
+
+;;; Helpers the bridge calls.
+
+(defun $ames_pop_context (child parent)
+  "Kill the context CHILD and make PARENT current again."
+  ($killcontext child)
+  (unless (eq $context parent)
+    (mset '$context parent))
+  '$done)
+
+(defun $ames_polynomial_coefficients (expr var)
+  "The list [c0, c1, ..., cd] when the numerator of EXPR is a polynomial in VAR with
+coefficients free of VAR and its denominator is free of VAR; false otherwise."
+  (let* ((e ($ratsimp expr))
+         (numerator ($expand ($num e)))
+         (denominator ($denom e)))
+    (if (not ($freeof var denominator))
+        nil
+        (let* ((degree ($hipow numerator var))
+               (coefficients (loop for k from 0 to degree
+                                   collect ($ratsimp ($ratcoef numerator var k)))))
+          (if (and (integerp degree) (>= degree 0)
+                   (every #'(lambda (c) ($freeof var c)) coefficients)
+                   (eql 0 ($ratsimp
+                           (sub numerator
+                                (addn (loop for c in coefficients for k from 0
+                                            collect (mul c (power var k)))
+                                      nil)))))
+              (cons '(mlist simp) coefficients)
+              nil)))))
+
+(defun $ames_expression_size (expr)
+  "The number of atoms and operators in EXPR (to pick the simplest of several forms)."
+  (if (atom expr) 1 (1+ (reduce #'+ (mapcar #'$ames_expression_size (cdr expr))))))
+
+(defun ames-call (function argument)
+  "FUNCTION(ARGUMENT) evaluated as meval evaluates it in a request, the result simplified
+again; ARGUMENT (already a value) is quoted, so that it is not evaluated twice."
+  (meval (list (list function) (list '(mquote) argument))))
+
+(defun ames-call-or-nil (function argument)
+  "AMES-CALL's FUNCTION(ARGUMENT), or NIL when Maxima fails on it (factor(r) divides by
+zero when r is a zero written with nested radicals: `quotient' by `zero'), its
+bindings undone as AMES-EVALUATE undoes a failed request's."
+  (let ((saved (cons bindlist loclist)))
+    (handler-case (rat-error-to-merror (ames-call function argument))
+      (maxima-$error () (errlfun1 saved) nil))))
+
+(defun ames-big-integer-p (form)
+  "True when FORM holds an integer of more than 18 digits (factor() would factor it into
+primes, which can take longer than a request may)."
+  (if (atom form)
+      (and (integerp form) (> (abs form) 1000000000000000000))
+      (some #'ames-big-integer-p (cdr form))))
+
+(defun ames-mentions-head-p (form heads)
+  "True when the Maxima FORM contains an operator form whose head is one of HEADS."
+  (and (consp form)
+       (or (and (consp (car form)) (member (caar form) heads))
+           (some #'(lambda (part) (ames-mentions-head-p part heads)) (cdr form)))))
+
+(defun ames-trigonometric-power-p (form)
+  "True when FORM contains a power of sin, cos, sinh or cosh whose exponent is an
+integer of size 2 or more."
+  (and (consp form)
+       (or (and (consp (car form)) (eq (caar form) 'mexpt)
+                (integerp (caddr form)) (>= (abs (caddr form)) 2)
+                (consp (cadr form)) (consp (car (cadr form)))
+                (member (caar (cadr form)) '(%sin %cos %sinh %cosh $sin $cos $sinh $cosh)))
+           (some #'ames-trigonometric-power-p (cdr form)))))
+
+(defun $ames_trigsimp (expr)
+  "trigsimp(EXPR), computed without trigsimp where its code (share/trigonometry/trgsmp.mac)
+is known to reduce to ratsimp(num(r)/denom(r)) with r = ratsimp(EXPR): when EXPR has no
+tan, sec, csc, cot (or their hyperbolic kin), which are all its rules rewrite, and r has
+no power (2 or more) of sin, cos, sinh or cosh, which are all its search works on."
+  (if (ames-mentions-head-p expr '(%tan %sec %csc %cot %tanh %sech %csch %coth
+                                   $tan $sec $csc $cot $tanh $sech $csch $coth))
+      (ames-call '$trigsimp expr)
+      (let ((ratsimped (ames-call '$ratsimp expr)))
+        (if (ames-trigonometric-power-p ratsimped)
+            (ames-call '$trigsimp expr)
+            (meval (list '($ratsimp)
+                         (list '(mquotient)
+                               (list '($num) (list '(mquote) ratsimped))
+                               (list '($denom) (list '(mquote) ratsimped)))))))))
+
+(defun $ames_simplification_candidates (expr trigonometric radicals)
+  "The forms the bridge's simplest-form compares, each computed once (a request listing
+them as separate calls computes ratsimp(EXPR) and trigsimp(EXPR) twice):
+[ratsimp(EXPR), trigsimp(EXPR), ratsimp(trigsimp(EXPR)), factor(ratsimp(EXPR)), radcan(EXPR),
+radcan(trigsimp(EXPR))],
+trigsimp as $AMES_TRIGSIMP computes it. When TRIGONOMETRIC is false (EXPR has no sin,
+cos or tan, so that trigsimp(EXPR) is ratsimp(EXPR) again), the two trigsimp forms are
+left out; when RADICALS is false (EXPR has no radical, logarithm or power with a
+symbolic or fractional exponent, where radcan(EXPR) is ratsimp(EXPR) again),
+radcan(EXPR) is left out; radcan(trigsimp(EXPR)) needs both (a square root whose
+argument is a square once sin^2 + cos^2 = 1 is used)."
+  (let* ((ratsimped (ames-call '$ratsimp expr))
+         (trigsimped (and trigonometric ($ames_trigsimp expr))))
+    ;; factor and radcan, which only offer a smaller form, are left out where they fail
+    (cons '(mlist simp)
+          (remove nil
+                  (append (list ratsimped)
+                          (and trigonometric (list trigsimped (ames-call '$ratsimp trigsimped)))
+                          (and (not (ames-big-integer-p ratsimped))
+                               (list (ames-call-or-nil '$factor ratsimped)))
+                          (and radicals (list (ames-call-or-nil '$radcan expr)))
+                          (and radicals trigonometric (list (ames-call-or-nil '$radcan trigsimped))))))))
+
+;;; Presentation (src/maxima-bridge/presentation.lisp): the forms a textbook writes, and
+;;; Maxima's tex() of a form exactly as the bridge structured it.
+
+(defun ames-scanmap-factorsum (expr)
+  "scanmap(factorsum, EXPR): every sum within EXPR grouped into factorable parts
+((l2^2 - 2 l1 l2 + l1^2) mb + l3^2 ma becomes (l2 - l1)^2 mb + l3^2 ma)."
+  (meval (list '($scanmap) '$factorsum (list '(mquote) expr))))
+
+(defun $ames_presentation_candidates (expr trigonometric)
+  "The forms of EXPR a presentation chooses from, each equal to EXPR by Maxima's own
+algebra: [r, factor(r), scanmap(factorsum, factor(r)), multthru(r)] for r = ratsimp(EXPR)
+(multthru: a quotient of a sum split into a sum of quotients) and, when
+TRIGONOMETRIC is true, also for r = ratsimp(trigsimp(EXPR)) (sin^2 + cos^2 = 1, tan as
+sin/cos), in that order. A base with a big integer (AMES-BIG-INTEGER-P) stands for
+its factor(r) too."
+  (let ((bases (cons (ames-call '$ratsimp expr)
+                     (and trigonometric
+                          (list (ames-call '$ratsimp ($ames_trigsimp expr)))))))
+    (cons '(mlist simp)
+          (loop for base in bases
+                for factored = (if (ames-big-integer-p base) base (ames-call '$factor base))
+                append (list base factored (ames-scanmap-factorsum factored)
+                             (ames-call '$multthru base))))))
+
+(defun $ames_presentation_coefficients (expr var)
+  "The list [c0, c1, ..., cd] with EXPR = c0 + c1 VAR + ... + cd VAR^d and every ci free
+of VAR (each ratsimp'd), or false when EXPR is no such polynomial in VAR."
+  (let ((coefficients ($ames_polynomial_coefficients expr var))
+        (denominator ($denom ($ratsimp expr))))
+    (and coefficients
+         (cons '(mlist simp)
+               (mapcar #'(lambda (c) (ames-call '$ratsimp (div c denominator)))
+                       (cdr coefficients))))))
+
+(defmspec $ames_tex_as_is (form)
+  "tex(X, false) for the unevaluated argument X of FORM, printed exactly as it is
+structured (simp:false): the order of terms and factors, quotients and negations are the
+caller's. Returns the TeX string."
+  (let (($simp nil))
+    (meval (list '($tex) (list '(mquote) (cadr form)) nil))))
+
+(dolist (head '($ames_presentation_candidates $ames_presentation_coefficients $ames_tex_as_is))
+  (pushnew head *ames-allowed-heads*))
