@@ -191,57 +191,76 @@ path (a zero-length one where its trajectory cannot be drawn). No label overlaps
         (let* ((height (round (+ plots-top (plots-height plots) 44)))
                (*label-requests* '()))
           (with-output-to-string (out)
-            (format out "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"ames-picture\" width=\"~D\" height=\"~D\" viewBox=\"0 0 ~D ~D\">~%"
-                    *picture-width* height *picture-width* height)
-            (format out "<title>~A</title>~%<desc>~A</desc>~%<style>~A</style>~%"
-                    (xml-escape (format nil "AMES: ~A" (name-text (scenario-name scenario))))
-                    (xml-escape (or (scenario-description scenario) "")) *svg-style*)
-            (format out "<defs><marker id=\"arrow\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"7\" markerHeight=\"7\" orient=\"auto-start-reverse\"><path d=\"M 0 0 L 10 5 L 0 10 z\" fill=\"#000\"/></marker>~%<clipPath id=\"view\"><rect x=\"0\" y=\"0\" width=\"~D\" height=\"~D\"/></clipPath></defs>~%"
-                    *picture-width* (round (frame-height frame)))
-            (format out "<rect x=\"0\" y=\"0\" width=\"100%\" height=\"100%\" fill=\"#fff\"/>~%")
-            (request-label 10 20 (name-text (scenario-name scenario)) "title" :priority 0 :required t)
-            ;; fixed bodies, then the moving ones at the end of each state (ghosts), at the start
-            (loop for (name . outline) in outlines
-                  unless (member name moving) do (draw-outline out frame outline "fixed" :colour "#c8c8c8"))
-            (loop for state in path
-                  do (loop for (body position) in (state-final-positions state)
-                           for end = (point-at position bindings)
-                           for outline = (cdr (assoc body outlines))
-                           for start = (let ((b (find-scenario-body body scenario))) (and b (body-origin b bindings)))
-                           when (and end outline start (member body moving) (not (eq (first outline) :point)))
-                             do (draw-outline out frame (moved-outline outline (v- end start)) "ghost")))
-            (loop for (name . outline) in outlines
-                  when (member name moving)
-                    do (draw-outline out frame outline "body" :colour (cdr (assoc name colours)))
-                       (draw-label out frame (outline-anchor outline) (name-text name) :dx 8 :dy 14 :priority 1))
+            (write-svg-start out scenario frame height)
+            (draw-bodies out frame scenario path outlines moving colours bindings)
             (draw-trajectories out frame scenario path paths moving colours bindings)
-            ;; contacts and forces of the first state
-            (let ((first-state (first path)))
-              (when first-state
-                (dolist (contact (state-contacts first-state))
-                  (let ((geometry (contact-point-and-normal first-state contact bindings)))
-                    (when geometry
-                      (destructuring-bind (x y) (to-picture frame (first geometry))
-                        (format out "<rect class=\"contact\" x=\"~,2F\" y=\"~,2F\" width=\"7\" height=\"7\" transform=\"rotate(45 ~,2F ~,2F)\"/>~%"
-                                (- x 3.5) (- y 3.5) x y)))))
-                (loop for (from vector label) in arrows
-                      do (draw-arrow out frame from vector label "#000"))))
+            (draw-first-contacts-and-forces out frame (first path) arrows bindings)
             (draw-events out frame path moving bindings)
             (loop for (depth line) in branch-lines
                   for y from (+ branches-top 11) by 14
                   do (request-label (+ 10 (* 16 depth)) y line "branch-label" :priority 0 :required t))
             (draw-time-plots out plots event-times plots-top)
-            (request-label 10 (- height 24)
-                           (format nil "~:[values~;illustrative values~]: ~{~A~^, ~}" chosen
-                                   (loop for (name . value) in bindings
-                                         collect (format nil "~A = ~A~:[~; (chosen)~]" (name-text name)
-                                                         (number-text value) (member name chosen))))
-                           "caption" :priority 0 :required t)
-            (request-label 10 (- height 8)
-                           "arrows: forces at the start, to scale; paths: states, solid and dashed in turn; rings: events"
-                           "caption" :priority 0 :required t)
+            (request-captions height bindings chosen)
             (write-labels out (place-labels *label-requests* *picture-width* height))
             (format out "</svg>~%")))))))
+
+(defun write-svg-start (out scenario frame height)
+  "Write the start of the picture of SCENARIO on OUT: the <svg> element HEIGHT pixels high,
+its title, description and style, the arrow marker and the scene's clip (FRAME's
+height), the white background; and request the title's label."
+  (format out "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"ames-picture\" width=\"~D\" height=\"~D\" viewBox=\"0 0 ~D ~D\">~%"
+          *picture-width* height *picture-width* height)
+  (format out "<title>~A</title>~%<desc>~A</desc>~%<style>~A</style>~%"
+          (xml-escape (format nil "AMES: ~A" (name-text (scenario-name scenario))))
+          (xml-escape (or (scenario-description scenario) "")) *svg-style*)
+  (format out "<defs><marker id=\"arrow\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"7\" markerHeight=\"7\" orient=\"auto-start-reverse\"><path d=\"M 0 0 L 10 5 L 0 10 z\" fill=\"#000\"/></marker>~%<clipPath id=\"view\"><rect x=\"0\" y=\"0\" width=\"~D\" height=\"~D\"/></clipPath></defs>~%"
+          *picture-width* (round (frame-height frame)))
+  (format out "<rect x=\"0\" y=\"0\" width=\"100%\" height=\"100%\" fill=\"#fff\"/>~%")
+  (request-label 10 20 (name-text (scenario-name scenario)) "title" :priority 0 :required t))
+
+(defun draw-bodies (out frame scenario path outlines moving colours bindings)
+  "Draw the bodies' OUTLINES on OUT: the fixed bodies, then the MOVING ones at the end of
+each state of PATH (ghosts), then the moving ones at the start, in their COLOURS and
+labelled with their names."
+  (loop for (name . outline) in outlines
+        unless (member name moving) do (draw-outline out frame outline "fixed" :colour "#c8c8c8"))
+  (loop for state in path
+        do (loop for (body position) in (state-final-positions state)
+                 for end = (point-at position bindings)
+                 for outline = (cdr (assoc body outlines))
+                 for start = (let ((b (find-scenario-body body scenario))) (and b (body-origin b bindings)))
+                 when (and end outline start (member body moving) (not (eq (first outline) :point)))
+                   do (draw-outline out frame (moved-outline outline (v- end start)) "ghost")))
+  (loop for (name . outline) in outlines
+        when (member name moving)
+          do (draw-outline out frame outline "body" :colour (cdr (assoc name colours)))
+             (draw-label out frame (outline-anchor outline) (name-text name) :dx 8 :dy 14 :priority 1)))
+
+(defun draw-first-contacts-and-forces (out frame first-state arrows bindings)
+  "Draw on OUT the contacts of FIRST-STATE (the path's first state, or NIL) as small
+diamonds at their touching points, and its forces' ARROWS (see SCALED-ARROWS)."
+  (when first-state
+    (dolist (contact (state-contacts first-state))
+      (let ((geometry (contact-point-and-normal first-state contact bindings)))
+        (when geometry
+          (destructuring-bind (x y) (to-picture frame (first geometry))
+            (format out "<rect class=\"contact\" x=\"~,2F\" y=\"~,2F\" width=\"7\" height=\"7\" transform=\"rotate(45 ~,2F ~,2F)\"/>~%"
+                    (- x 3.5) (- y 3.5) x y)))))
+    (loop for (from vector label) in arrows
+          do (draw-arrow out frame from vector label "#000"))))
+
+(defun request-captions (height bindings chosen)
+  "Request the picture's two captions at the foot of its HEIGHT: the values drawn with
+(BINDINGS, those CHOSEN for the illustration marked), and how to read the picture."
+  (request-label 10 (- height 24)
+                 (format nil "~:[values~;illustrative values~]: ~{~A~^, ~}" chosen
+                         (loop for (name . value) in bindings
+                               collect (format nil "~A = ~A~:[~; (chosen)~]" (name-text name)
+                                               (number-text value) (member name chosen))))
+                 "caption" :priority 0 :required t)
+  (request-label 10 (- height 8)
+                 "arrows: forces at the start, to scale; paths: states, solid and dashed in turn; rings: events"
+                 "caption" :priority 0 :required t))
 
 (defun print-history-svg (history stream)
   "Write HISTORY-SVG of HISTORY on STREAM as a standalone SVG file (with its XML declaration)."
