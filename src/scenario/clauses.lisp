@@ -259,55 +259,67 @@ UNDECLARED-SYMBOL-ERROR, DUPLICATE-NAME-ERROR, SCENARIO-EXPRESSION-ERROR,
 SCENARIO-SHAPE-ERROR or CONTRADICTORY-ASSUMPTIONS-ERROR. Never evaluates anything of
 FORM. The checks that need Maxima or geometry are CHECK-SCENARIO-ASSUMPTIONS and
 CHECK-SCENARIO-GEOMETRY, which the caller runs when it has those layers."
-  (let ((validation (make-validation form source positions)))
-    (enter validation "form" nil)
-    (check-form-size validation form)
-    (unless (and (consp form) (proper-list-p form) (named-p (first form) "SCENARIO"))
-      (reject validation 'scenario-syntax-error form
-              "a scenario is a list (scenario NAME \"description\" CLAUSE ...), not ~A"
-              (show form)))
-    (enter validation "form" form)
-    (when (null (rest form))
-      (reject validation 'missing-property-error form "the scenario has no name"))
-    (let ((name (second form)))
-      (when (or (not (symbolp name)) (null name) (keywordp name) (named-p name "T"))
-        (reject validation 'scenario-syntax-error name
-                "a scenario's name must be a symbol, not ~A" (show name)))
-      (setf (validation-name validation) name)
-      (let* ((description (and (stringp (third form)) (third form)))
-             (sorted (sorted-clauses validation (if description (cdddr form) (cddr form)))))
-        (flet ((clauses (word) (cdr (assoc word sorted))))
-          (declare-names validation sorted)
-          (let ((parameters (loop for clause in (clauses 'ames-scenario:parameters)
-                                  append (mapcar (lambda (spec) (checked-parameter validation spec))
-                                                 (rest clause)))))
-            (dolist (parameter parameters)
-              (enter validation (format nil "parameter ~A"
-                                        (symbol-name (scenario-parameter-name parameter)))
-                     nil)
-              (check-parameter-bounds validation parameter))
-            (check-default-values validation parameters)
-            (let ((gravity (checked-gravity validation (clauses 'ames-scenario:gravity)))
-                  (bodies (mapcar (lambda (clause) (checked-body validation clause))
-                                  (clauses 'ames-scenario:body)))
-                  (forces (mapcar (lambda (clause) (checked-force validation clause))
-                                  (clauses 'ames-scenario:force)))
-                  (frictions (checked-frictions validation (clauses 'ames-scenario:friction))))
-              (when (null bodies)
-                (enter validation "form" form)
-                (reject validation 'missing-property-error form "the scenario has no body"))
-              (multiple-value-bind (states until branch all-branches)
-                  (checked-simulate validation (clauses 'ames-scenario:simulate))
-                (check-rotation
-                 validation
-                 (make-instance 'scenario
-                               :name name :description description
-                               :parameters parameters :gravity gravity
-                               :bodies bodies :forces forces :frictions frictions
-                               :states states :until until :branch branch
-                               :all-branches all-branches
-                               :queries (checked-queries validation (clauses 'ames-scenario:query))
-                               :restitutions (checked-restitutions
-                                              validation (clauses 'ames-scenario:restitution))
-                               :extensions (checked-extensions validation sorted bodies)
-                               :source source :positions positions :form form))))))))))
+  (let* ((validation (make-validation form source positions))
+         (name (checked-scenario-name validation form)))
+    (let* ((description (and (stringp (third form)) (third form)))
+           (sorted (sorted-clauses validation (if description (cdddr form) (cddr form)))))
+      (flet ((clauses (word) (cdr (assoc word sorted))))
+        (declare-names validation sorted)
+        (let ((parameters (checked-parameters validation (clauses 'ames-scenario:parameters))))
+          (let ((gravity (checked-gravity validation (clauses 'ames-scenario:gravity)))
+                (bodies (mapcar (lambda (clause) (checked-body validation clause))
+                                (clauses 'ames-scenario:body)))
+                (forces (mapcar (lambda (clause) (checked-force validation clause))
+                                (clauses 'ames-scenario:force)))
+                (frictions (checked-frictions validation (clauses 'ames-scenario:friction))))
+            (when (null bodies)
+              (enter validation "form" form)
+              (reject validation 'missing-property-error form "the scenario has no body"))
+            (multiple-value-bind (states until branch all-branches)
+                (checked-simulate validation (clauses 'ames-scenario:simulate))
+              (check-rotation
+               validation
+               (make-instance 'scenario
+                             :name name :description description
+                             :parameters parameters :gravity gravity
+                             :bodies bodies :forces forces :frictions frictions
+                             :states states :until until :branch branch
+                             :all-branches all-branches
+                             :queries (checked-queries validation (clauses 'ames-scenario:query))
+                             :restitutions (checked-restitutions
+                                            validation (clauses 'ames-scenario:restitution))
+                             :extensions (checked-extensions validation sorted bodies)
+                             :source source :positions positions :form form)))))))))
+
+(defun checked-scenario-name (validation form)
+  "The name of the scenario FORM, checked with its shape: a proper list (scenario NAME
+...) of a bounded size, NAME a symbol; recorded in VALIDATION. Signals
+SCENARIO-SYNTAX-ERROR or MISSING-PROPERTY-ERROR."
+  (enter validation "form" nil)
+  (check-form-size validation form)
+  (unless (and (consp form) (proper-list-p form) (named-p (first form) "SCENARIO"))
+    (reject validation 'scenario-syntax-error form
+            "a scenario is a list (scenario NAME \"description\" CLAUSE ...), not ~A"
+            (show form)))
+  (enter validation "form" form)
+  (when (null (rest form))
+    (reject validation 'missing-property-error form "the scenario has no name"))
+  (let ((name (second form)))
+    (when (or (not (symbolp name)) (null name) (keywordp name) (named-p name "T"))
+      (reject validation 'scenario-syntax-error name
+              "a scenario's name must be a symbol, not ~A" (show name)))
+    (setf (validation-name validation) name)))
+
+(defun checked-parameters (validation clauses)
+  "The SCENARIO-PARAMETERs the (parameters SPEC ...) CLAUSES declare, each checked with
+its bounds, and their default values checked together."
+  (let ((parameters (loop for clause in clauses
+                          append (mapcar (lambda (spec) (checked-parameter validation spec))
+                                         (rest clause)))))
+    (dolist (parameter parameters)
+      (enter validation (format nil "parameter ~A"
+                                (symbol-name (scenario-parameter-name parameter)))
+             nil)
+      (check-parameter-bounds validation parameter))
+    (check-default-values validation parameters)
+    parameters))
