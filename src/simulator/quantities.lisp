@@ -6,10 +6,10 @@
 ;;;; VALUE) of the kinds the knowledge base declares. A query's energy is the sum of the
 ;;;; :ENERGY entries, the very terms the report adds up as its total; a query the kb
 ;;;; declares a kind of term for (AMES.KB:QUERY-REPORTED-TERM: a body's kinetic energy,
-;;;; its momentum) is the sum of the body's own entries of that kind. A state reported over the arc length of a
-;;;; curve or a line (its positions and velocities are (:ON-PATH ...)) is read at its start
-;;;; and end by putting the arc length to its first and last values, which needs no time:
-;;;; the energy integral gives the speed there (thesis 4.2.2).
+;;;; its momentum) is the sum of the body's own entries of that kind. A state reported
+;;;; over the arc length of a curve or a line (its positions and velocities are (:ON-PATH
+;;;; ...)) is read at its start and end by putting the arc length to its first and last
+;;;; values, which needs no time: the energy integral gives the speed there (thesis 4.2.2).
 
 (in-package #:ames.simulator)
 
