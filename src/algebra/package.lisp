@@ -9,7 +9,7 @@ and the integrators (travel times, elliptic motion, linear ODEs, trigonometric r
 It asks Maxima only through the bridge.")
   (:export
    ;; the one sign system: sign sets and the rules of signs (sign-rules.lisp)
-   #:number-signs #:negated-signs #:only-signs-p #:sum-signs #:power-signs #:sign-product
+   #:+all-signs+ #:number-signs #:negated-signs #:only-signs-p #:sum-signs #:power-signs #:sign-product
    #:constant-sign #:rules-of-signs
    #:relation-signs #:signs-relation #:relation-verdict
    ;; deciding (deciding.lisp)

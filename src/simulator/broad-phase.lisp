@@ -147,7 +147,7 @@ zero (or both zero)."
                      (list :negative))
                     ((and (eq sa :zero) (eq (one-sign sb) :positive)) (list :negative))
                     ((and (eq sa :zero) (eq (one-sign sb) :zero)) (list :zero))
-                    (t +unknown-signs+)))))))
+                    (t ames.algebra:+all-signs+)))))))
 
 ;;; The bounds of a contact's locus
 

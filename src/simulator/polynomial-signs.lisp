@@ -96,7 +96,7 @@ SIGNS gives (see SIGN-ALGEBRA), from its expanded monomials: a sign set (all thr
 when they are not known)."
   (let ((monomials (expanded-monomials expression)))
     (if (eq monomials :unknown)
-        +unknown-signs+
+        ames.algebra:+all-signs+
         ;; the one sign system's rules (AMES.ALGEBRA sign sets) over the monomials
         (let ((signs-of-sum
                 (ames.algebra:sum-signs
@@ -107,4 +107,4 @@ when they are not known)."
                                            (car term))
                                    :initial-value (ames.algebra:number-signs (cdr term))))
                          monomials))))
-          (or signs-of-sum +unknown-signs+)))))
+          (or signs-of-sum ames.algebra:+all-signs+)))))

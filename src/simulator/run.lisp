@@ -92,10 +92,6 @@ with real roots (ames.algebra:SIMPLIFY-REAL): how values at a state's end are re
         (setf (run-parameter-signs-cache run) (parameter-signs (run-scenario run)))
         signs)))
 
-(defparameter +unknown-signs+ '(:positive :negative :zero)
-  "The sign set of a quantity whose sign is not known (AMES.ALGEBRA's sign sets are the
-simulator's one way of writing signs).")
-
 (defun one-sign (signs)
   "The one sign (:POSITIVE, :NEGATIVE or :ZERO) the sign set SIGNS allows, or NIL when it
 allows several (or none)."
@@ -108,7 +104,8 @@ allows several (or none)."
 
 (defun sign-of (run x)
   "The sign set of X under the assumptions: one sign, (:POSITIVE), (:NEGATIVE) or
-(:ZERO), when it is decided, else all three (+UNKNOWN-SIGNS+). The rules of signs over
+(:ZERO), when it is decided, else all three (AMES.ALGEBRA:+ALL-SIGNS+). Sign sets,
+AMES.ALGEBRA's, are the simulator's one way of writing signs. The rules of signs over
 the parameters' declared signs (SIGN-ALGEBRA) answer first; Maxima where they do not."
   (cond ((realp x) (ames.algebra:number-signs x))
         ((one-sign (sign-algebra (run-parameter-signs run) x))
@@ -118,7 +115,7 @@ the parameters' declared signs (SIGN-ALGEBRA) answer first; Maxima where they do
         ((and (not (ames.algebra:sign-varies-p (run-bridge run) x))
               (holds run `(= ,x 0)))
          (list :zero))
-        (t +unknown-signs+)))
+        (t ames.algebra:+all-signs+)))
 
 (defun sign-is (run x &rest signs)
   "True when X's sign is decided (SIGN-OF gives one sign) and it is among SIGNS."
