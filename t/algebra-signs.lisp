@@ -95,3 +95,17 @@ then where zero is allowed)."
          (is (eql 0 (ames.maxima::maxima-request
                      b (ames.maxima::mcall "$RATSIMP" (ames.maxima::mdifference simplifying as-is))))
              "~S: the two translations differ" expression))))))
+
+(test the-algebra-asks-maxima-only-through-the-bridges-exports
+  "The algebra layer (issue 22: a narrow door) reaches the bridge only through its
+exported operations: no symbol of AMES.MAXIMA is imported into AMES.ALGEBRA without being
+external there, and no source of src/algebra/ writes ames.maxima:: (an internal)."
+  (let ((internal '()))
+    (do-symbols (symbol :ames.algebra)
+      (when (and (eq (symbol-package symbol) (find-package :ames.maxima))
+                 (not (eq :external (nth-value 1 (find-symbol (symbol-name symbol) :ames.maxima)))))
+        (pushnew symbol internal)))
+    (is (null internal) "the algebra uses the bridge's internals ~S" internal))
+  (dolist (file (directory (asdf:system-relative-pathname "ames" "src/algebra/*.lisp")))
+    (is (null (search "ames.maxima::" (string-downcase (uiop:read-file-string file))))
+        "~A names an internal of the bridge" (file-namestring file))))
