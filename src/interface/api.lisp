@@ -107,7 +107,7 @@ from AMES, at compile time too: one section of the tour."
   history-svg print-history-svg
   explain)
 
-;;; 7. Running files as bin/ames does (src/interface/runs.lisp, cli.lisp).
+;;; 7. Running files as bin/ames does (src/interface/runs.lisp, command-line.lisp, cli.lisp).
 ;;; RUN-SCENARIO is one run with a fresh bridge, a budget and errors that say where;
 ;;; RUN-FILE and RUN-FILES run every scenario of files; MAIN is bin/ames.
 

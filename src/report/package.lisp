@@ -15,7 +15,7 @@ HTML page.")
    ;; s-expressions and JSON (sexp.lisp, json.lisp)
    #:history-sexp #:state-sexp #:state-forces-of #:print-history-sexp
    #:history-json #:print-history-json #:json-to-sexp #:sexp-to-json
-   ;; the presentation step (presentation.lisp, forms.lisp, view.lisp)
+   ;; the presentation step (presentation.lisp, forms.lisp, form-display.lisp, view.lisp)
    #:presenter #:make-presenter #:call-with-presenter #:present #:present-relation
    #:arrange #:make-arrangement #:history-view #:acceleration-symbol
    ;; reports for people
