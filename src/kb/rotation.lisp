@@ -42,7 +42,9 @@
 ;;;; the obstacle's: the slip along the tangent is (path-speed K) - R_A omega_A - R_B omega_B,
 ;;;; exactly, on a straight or a curved contact, and its rate is the same with the
 ;;;; accelerations. A rotating body that is not a disc has no contact point here yet (the
-;;;; simulator refuses it in a contact).
+;;;; simulator refuses it in a contact): a rotating polygon's vertex on a face extends
+;;;; CONTACT-ARM (its arm R(theta) v) and SPIN-ALONG-TANGENT (omega (r x t), whose rate then
+;;;; also has omega's and t's turning in it).
 
 (in-package #:ames.kb)
 
