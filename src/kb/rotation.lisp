@@ -193,8 +193,8 @@ world components as the body turns: its moment about the centre is R(theta) p x 
 
 (defcomponent rotational-energy-and-angular-momentum (:knowledge-base *mechanics*)
   "A rotating body's kinetic energy of rotation is (1/2) I omega^2, a kinetic energy term
-(:kinetic (:rotation B) E) beside its translational one (energy.lisp), so that the sum of
-the energy terms stays the system's energy; its angular momentum about the origin is
+of its own beside the translational one (energy.lisp), so that the sum of the energy
+terms stays the system's energy; its angular momentum about the origin is
 I omega + m (x vy - y vx)."
   (:arguments (?body :entity body :where (:fixed nil :rotating t)))
   (:assert (reported :energy (:kinetic (:rotation ?body) (rotational-energy ?body)))
