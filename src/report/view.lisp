@@ -144,7 +144,33 @@ coefficient is ACCELERATION / 2, else the presented polynomial."
           (cond ((and (consp position) (eq (first position) :on-path))
                  (mapcar (lambda (c) (quantity-numbers presenter c state)) (second position)))
                 ((vector-value-p position)
-                 (mapcar (lambda (c) (quantity-numbers presenter c state)) position))))))
+                 (mapcar (lambda (c) (quantity-numbers presenter c state)) position)))
+          :rotation (rotation-view presenter state body))))
+
+(defun rotation-view (presenter state body)
+  "What STATE shows of the rotating BODY's turning: its angular acceleration, angle and
+angular velocity over the state, presented (:NO-CLOSED-FORM for a numeric motion);
+NIL for a body that does not rotate."
+  (let ((angle (assoc body (state-angles state))))
+    (when angle
+      (flet ((shown (entry)
+               (if (equal (second entry) '(:no-closed-form))
+                   :no-closed-form
+                   (present presenter (second entry)))))
+        (list :angular-acceleration (shown (assoc body (state-angular-accelerations state)))
+              :angle (shown angle)
+              :angular-velocity (shown (assoc body (state-angular-velocities state))))))))
+
+(defun final-rotation-view (presenter entries numbers body)
+  "BODY's final angle or angular velocity among ENTRIES, presented, with its number among
+NUMBERS when it is not a number itself (a string, as the text report prints it), or NIL."
+  (let ((entry (assoc body entries))
+        (number (second (assoc body numbers))))
+    (and entry
+         (let ((shown (present presenter (second entry))))
+           (if (and (realp number) (not (realp (second entry))))
+               (list :value shown :number number)
+               (list :value shown))))))
 
 (defun time-phrase (presenter time)
   "A phrase for a state's start or duration."
@@ -202,7 +228,12 @@ coefficient is ACCELERATION / 2, else the presented polynomial."
                                                               (second (assoc body (getf numeric :final-positions))))
                                        :velocity (mapcar (lambda (c) (present presenter c)) velocity)
                                        :velocity-numbers (and (notevery #'realp velocity)
-                                                              (second (assoc body (getf numeric :final-velocities))))))
+                                                              (second (assoc body (getf numeric :final-velocities))))
+                                       :angle (final-rotation-view presenter (state-final-angles state)
+                                                                   (getf numeric :final-angles) body)
+                                       :angular-velocity
+                                       (final-rotation-view presenter (state-final-angular-velocities state)
+                                                            (getf numeric :final-angular-velocities) body)))
           :notes (note-views presenter state)
           :branches (loop for branch in (state-branches state)
                           collect (list :assume (phrase (present-relation presenter (getf branch :assume)))
