@@ -114,6 +114,8 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "spans")
                  (:file "springs")
                  (:file "ropes")
+                 (:file "wound-ropes")
+                 (:file "hinges")
                  (:file "gravitation")
                  (:file "drag")
                  (:file "turning")
