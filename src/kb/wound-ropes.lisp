@@ -254,7 +254,7 @@ centre and w0 the rope's next point from the centre (a fact over the parameters)
   (:mode :pays-out-clockwise
    (:entry (< (winding-indicator ?rope) 0))
    (:assert (rope-winding ?rope :sense -1)))
-  (:mode :undecided
+  (:mode :side-not-told
    (:entry (= (winding-indicator ?rope) 0))
    (:equations (= (winding-undecided ?rope) 0))))
 
