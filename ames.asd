@@ -284,6 +284,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "friction-scenarios")
                (:file "springs-ropes-gravitation")
                (:file "drag")
+               (:file "wound-ropes")
                (:file "failure-classes")
                (:file "refusals")
                (:file "witness")

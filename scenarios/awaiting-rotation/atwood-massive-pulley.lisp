@@ -20,4 +20,5 @@
   (body light :mass m2 :shape point :position (big-r (/ h 2)) :velocity (0 0))
   (rope left :length (- top h) :through ((heavy (0 0)) (pulley ((- big-r) 0) :wound)))
   (rope right :length (- top (/ h 2)) :through ((light (0 0)) (pulley (big-r 0) :wound)))
+  (query hinge-holds (value (y (hinge-force axle)) :at (start 0)))
   (simulate :states 2))

@@ -8,7 +8,7 @@
 ;;;; keeps the pin's acceleration zero,
 ;;;;   a_centre + alpha k x r - omega^2 r = 0,      r = R(theta) (X Y)
 ;;;; (the rigid body's acceleration at the point r from its centre of mass), and the force
-;;;; acts at the pin, so its torque about the centre is r x F. Reported in :forces as
+;;;; acts at the pin, so its moment about the centre is r x F. Reported in :forces as
 ;;;; (:hinge NAME B (FX FY)); the query (hinge-force NAME) reads it, a vector.
 ;;;;
 ;;;; The rotating body's quantity terms are the rotation core's (rotation.lisp): its angle,
@@ -44,20 +44,19 @@ from its centre to that point of it, as expressions over the angle's quantity te
   "A hinge pins a point of a rotating body to the fixed frame: the frame pushes on the
 body at the pin with whatever force keeps the pin at rest, so the body's acceleration at
 the pin, a + alpha k x r - omega^2 r (r from the centre to the pin), is zero. The force
-acts at the pin: its torque about the centre is r x F."
-  (:arguments (?hinge :entity hinge :where (:body ?body)))
-  (:assert (force (hinge-reaction ?hinge) :type hinge :from environment :on ?body :contact ?hinge)
-           (torque (hinge-reaction ?hinge) :on ?body)
+acts at the pin: its moment about the centre is r x F."
+  (:arguments (?hinge :entity hinge :where (:body ?body :at (?px ?py))))
+  (:assert (force (hinge-reaction ?hinge) :type hinge :from environment :on ?body)
+           (acts-at (hinge-reaction ?hinge) :on ?body)
            (reported :forces (:hinge ?hinge ?body ((fx hinge-reaction ?hinge) (fy hinge-reaction ?hinge)))))
-  (:equations (= (+ (acc ?body :x) (- (* (angular-acc ?body) (hinge-arm ?hinge :y)))
-                    (- (* (expt (angular-vel ?body) 2) (hinge-arm ?hinge :x))))
+  (:equations (= (+ (acc ?body :x) (- (* (angacc ?body) (hinge-arm ?hinge :y)))
+                    (- (* (expt (angvel ?body) 2) (hinge-arm ?hinge :x))))
                  0)
-              (= (+ (acc ?body :y) (* (angular-acc ?body) (hinge-arm ?hinge :x))
-                    (- (* (expt (angular-vel ?body) 2) (hinge-arm ?hinge :y))))
+              (= (+ (acc ?body :y) (* (angacc ?body) (hinge-arm ?hinge :x))
+                    (- (* (expt (angvel ?body) 2) (hinge-arm ?hinge :y))))
                  0)
-              (= (torque-z hinge-reaction ?hinge)
-                 (- (* (hinge-arm ?hinge :x) (force-y (hinge-reaction ?hinge)))
-                    (* (hinge-arm ?hinge :y) (force-x (hinge-reaction ?hinge)))))))
+              (= (moment-of (hinge-reaction ?hinge))
+                 (moment-at-point ?body (?px ?py) (hinge-reaction ?hinge)))))
 
 (define-phenomenon hinge
   "A rotating body's point pinned to the fixed frame (the hinge clause): the reaction

@@ -38,8 +38,8 @@
 ;;; The rotation core's quantity terms of a disc
 
 (defun disc-angle (disc) "The angle term of the rotating body DISC." `(angle ,disc))
-(defun disc-angular-velocity (disc) "DISC's angular velocity term." `(angular-vel ,disc))
-(defun disc-angular-acceleration (disc) "DISC's angular acceleration term." `(angular-acc ,disc))
+(defun disc-angular-velocity (disc) "DISC's angular velocity term." `(angvel ,disc))
+(defun disc-angular-acceleration (disc) "DISC's angular acceleration term." `(angacc ,disc))
 
 ;;; The entities
 
@@ -79,6 +79,20 @@ next to it along the rope."
   (if (eq (first (ames.scenario:scenario-rope-wound-ends rope)) :first)
       (values (first points) (second points))
       (values (car (last points)) (car (last points 2)))))
+
+(defun check-rope-points (scenario rope points wound)
+  "Signal UNMODELLED-SITUATION when one of POINTS (ROPE's, resolved) other than its WOUND
+end lies on a rotating body off its centre: a rope tied there, or running over a pulley
+there, would turn with the body and pull with a moment, which is not modelled (a wound
+end, or a point at the centre, is)."
+  (dolist (point points)
+    (unless (or (eq point wound) (every (lambda (x) (eql x 0)) (point-offset point)))
+      (let ((body (ames.scenario:find-scenario-body (point-body point) scenario)))
+        (when (and body (ames.scenario:scenario-body-inertia body))
+          (error 'unmodelled-situation
+                 :datum (ames.scenario:scenario-rope-name rope)
+                 :detail (format nil "The rope ~(~A~) is tied to the rotating body ~(~A~) off its centre, or runs over a pulley on it; a rope on a rotating body is modelled wound on a disc (:wound) or tied at its centre."
+                                 (ames.scenario:scenario-rope-name rope) (point-body point))))))))
 
 (defun wound-rope-properties (scenario rope points)
   "The properties a ROPE wound on a disc adds to its entity: :WINDING-INDICATOR, p0 x w0 at
@@ -280,14 +294,16 @@ the disc's centre; swinging off it ends the state, (:turns S)."
 (defcomponent wound-rope-tension (:knowledge-base *mechanics*)
   "A taut rope's wound piece pulls its neighbouring point's body toward the disc and the
 disc toward that body with the rope's tension; on the disc it acts at the tangent point,
-its torque about the centre SENSE R T."
+its moment about the centre SENSE R T."
   (:arguments (?rope :belief (rope-winding ?rope :sense ?sense))
               (?segment :entity wound-rope-segment
                         :where (:rope ?rope :from (?body1 ?_) :to (?body2 ?_) :disc ?disc)))
   (:activation (:believes (taut ?rope)))
-  (:assert (force (tension ?segment ?body1) :type tension :from ?body2 :on ?body1 :contact ?segment)
-           (force (tension ?segment ?body2) :type tension :from ?body1 :on ?body2 :contact ?segment)
-           (torque (tension ?segment ?disc) :on ?disc))
+  (:assert (force (tension ?segment ?body1) :type tension :from ?body2 :on ?body1)
+           (force (tension ?segment ?body2) :type tension :from ?body1 :on ?body2)
+           (acts-at (tension ?segment ?disc) :on ?disc))
   (:equations (= (force-x (tension ?segment ?body1)) (* (tension ?rope) (span-direction ?segment :x)))
               (= (force-y (tension ?segment ?body1)) (* (tension ?rope) (span-direction ?segment :y)))
-              (= (torque-z tension ?segment ?disc) (* ?sense (wound-piece-radius ?segment) (tension ?rope)))))
+              (= (force-x (tension ?segment ?body2)) (- (* (tension ?rope) (span-direction ?segment :x))))
+              (= (force-y (tension ?segment ?body2)) (- (* (tension ?rope) (span-direction ?segment :y))))
+              (= (moment-of (tension ?segment ?disc)) (* ?sense (wound-piece-radius ?segment) (tension ?rope)))))
