@@ -88,7 +88,8 @@ angle of a disc it is wound on, turning the way SENSE says: see wound-ropes.lisp
   "A massless inextensible rope is taut (its length held at L by whatever tension that
 needs, never negative) or slack (no tension, shorter than L). Its winding SENSE (0 for a
 rope wound on no disc, see wound-ropes.lisp) says how a disc it is wound on pays it out."
-  (:arguments (?rope :belief (rope-winding ?rope :sense ?sense)))
+  (:arguments (?rope :entity rope)
+              (?sense :belief (rope-winding ?rope :sense ?sense)))
   (:mode :slack
    (:entry :always)
    (:assert (reported :forces (:tension ?rope 0)))

@@ -277,7 +277,8 @@ centre and w0 the rope's next point from the centre (a fact over the parameters)
 disc has paid out, its direction is the tangent's from the neighbouring point (see the
 file header). Modelled while the neighbouring point moves along that line relative to
 the disc's centre; swinging off it ends the state, (:turns S)."
-  (:arguments (?rope :belief (rope-winding ?rope :sense ?sense))
+  (:arguments (?rope :entity rope)
+              (?sense :belief (rope-winding ?rope :sense ?sense))
               (?segment :entity wound-rope-segment :where (:rope ?rope)))
   (:mode :fixed-direction
    (:entry (<= (expt (wound-piece-transverse-rate ?segment ?sense) 2) 0))
@@ -295,7 +296,8 @@ the disc's centre; swinging off it ends the state, (:turns S)."
   "A taut rope's wound piece pulls its neighbouring point's body toward the disc and the
 disc toward that body with the rope's tension; on the disc it acts at the tangent point,
 its moment about the centre SENSE R T."
-  (:arguments (?rope :belief (rope-winding ?rope :sense ?sense))
+  (:arguments (?rope :entity rope)
+              (?sense :belief (rope-winding ?rope :sense ?sense))
               (?segment :entity wound-rope-segment
                         :where (:rope ?rope :from (?body1 ?_) :to (?body2 ?_) :disc ?disc)))
   (:activation (:believes (taut ?rope)))
