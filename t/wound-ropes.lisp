@@ -24,7 +24,7 @@
   "The angular acceleration STATE reports for the body named BODY."
   (per-body (ames.simulator::state-angular-accelerations state) body))
 
-(defun numerically-same-p (bridge actual expected values)
+(defun same-under-values-p (bridge actual expected values)
   "True when the expressions ACTUAL and EXPECTED have the same value (to 1e-9, relative)
 under the parameter VALUES (an alist)."
   (let ((a (ames.maxima:numeric-value bridge actual values))
@@ -46,7 +46,7 @@ parameters (X maps this file's symbols to them)."
 EXPECTED: symbolically (Maxima-checked equivalence) or, with VALUES, numerically."
   (flet ((same (what actual wanted)
            (if values
-               (is (numerically-same-p bridge actual wanted values) "~A: got ~S, expected ~S"
+               (is (same-under-values-p bridge actual wanted values) "~A: got ~S, expected ~S"
                    what actual wanted)
                (is-same bridge what actual wanted))))
     (let ((heavy (per-body (ames::state-accelerations state) "HEAVY"))
@@ -113,7 +113,7 @@ whether a mass touches the pulley's rim, a double root, is not decided; see the 
 numerically under VALUES)."
   (flet ((same (what actual wanted)
            (if values
-               (is (numerically-same-p bridge actual wanted values) "~A: got ~S, expected ~S"
+               (is (same-under-values-p bridge actual wanted values) "~A: got ~S, expected ~S"
                    what actual wanted)
                (is-same bridge what actual wanted))))
     (let ((acceleration (per-body (ames::state-accelerations state) "YOYO")))
