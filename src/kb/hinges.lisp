@@ -12,7 +12,7 @@
 ;;;; (:hinge NAME B (FX FY)); the query (hinge-force NAME) reads it, a vector.
 ;;;;
 ;;;; The rotating body's quantity terms are the rotation core's (rotation.lisp): its angle,
-;;;; angular velocity and angular acceleration, and the torque of a force acting at a point.
+;;;; angular velocity and angular acceleration, and the moment of a force acting at a point.
 
 (in-package #:ames.kb)
 
@@ -24,17 +24,10 @@
                   :at (ames.scenario:scenario-hinge-point hinge)))
           (ames.scenario:scenario-hinges scenario)))
 
-(defun turned-offset (body offset)
-  "The vector (X Y) OFFSET of BODY's own frame turned by BODY's angle: the world vector
-from its centre to that point of it, as expressions over the angle's quantity term."
-  (let ((c `(cos (angle ,body))) (s `(sin (angle ,body))))
-    (destructuring-bind (x y) offset
-      (list `(- (* ,c ,x) (* ,s ,y)) `(+ (* ,s ,x) (* ,c ,y))))))
-
 (defun hinge-arm (situation hinge)
-  "The world vector from the hinged body's centre to its pin."
+  "The world vector from the hinged body's centre to its pin (rotation.lisp's TURNED-ARM)."
   (let ((entity (entity-named situation hinge)))
-    (turned-offset (entity-property entity :body) (entity-property entity :at))))
+    (turned-arm situation (entity-property entity :body) (entity-property entity :at))))
 
 (register-template *mechanics* 'hinge-arm
                    (lambda (situation hinge axis) (axis-component (hinge-arm situation hinge) axis))
@@ -60,7 +53,7 @@ acts at the pin: its moment about the centre is r x F."
 
 (define-phenomenon hinge
   "A rotating body's point pinned to the fixed frame (the hinge clause): the reaction
-force that holds it, with its torque about the body's centre."
+force that holds it, with its moment about the body's centre."
   (:entities #'hinge-entities)
   (:force :hinge :names 2 :words "force of hinge ~A on ~A" :label (:name 0))
   (:quantity :hinge-force :force :hinge))

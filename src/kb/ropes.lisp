@@ -211,8 +211,6 @@ segment is a WOUND-ROPE-SEGMENT. The same in a state and at an impact."
         for points = (mapcar (lambda (p) (ames.scenario:rope-point-position scenario p))
                              (ames.scenario:scenario-rope-through rope))
         for wound = (wound-segment-of rope segments)
-        do (check-rope-points scenario rope points
-                              (and wound (wound-ends rope points)))
         collect (list* 'rope (ames.scenario:scenario-rope-name rope)
                        :length (ames.scenario:scenario-rope-length rope) :segments segments
                        :wound (and wound t)

@@ -15,7 +15,7 @@
 ;;;;   l - SENSE R (theta - theta0)        (theta0: B's angle at the scenario's start)
 ;;;; (the rope's :length L is its straight length when B is at theta0: the scenario
 ;;;; language's L runs to the tangent point, the rope wound beyond it not counted). The
-;;;; tension acts on B at T along u's opposite (toward P): its torque about C is
+;;;; tension acts on B at T along u's opposite (toward P): its moment about C is
 ;;;; d x (T (-u)) = SENSE R T, the virtual work of the length's angle term.
 ;;;;
 ;;;; The entities (made by ropes.lisp's ROPE-ENTITIES):
@@ -79,20 +79,6 @@ next to it along the rope."
   (if (eq (first (ames.scenario:scenario-rope-wound-ends rope)) :first)
       (values (first points) (second points))
       (values (car (last points)) (car (last points 2)))))
-
-(defun check-rope-points (scenario rope points wound)
-  "Signal UNMODELLED-SITUATION when one of POINTS (ROPE's, resolved) other than its WOUND
-end lies on a rotating body off its centre: a rope tied there, or running over a pulley
-there, would turn with the body and pull with a moment, which is not modelled (a wound
-end, or a point at the centre, is)."
-  (dolist (point points)
-    (unless (or (eq point wound) (every (lambda (x) (eql x 0)) (point-offset point)))
-      (let ((body (ames.scenario:find-scenario-body (point-body point) scenario)))
-        (when (and body (ames.scenario:scenario-body-inertia body))
-          (error 'unmodelled-situation
-                 :datum (ames.scenario:scenario-rope-name rope)
-                 :detail (format nil "The rope ~(~A~) is tied to the rotating body ~(~A~) off its centre, or runs over a pulley on it; a rope on a rotating body is modelled wound on a disc (:wound) or tied at its centre."
-                                 (ames.scenario:scenario-rope-name rope) (point-body point))))))))
 
 (defun wound-rope-properties (scenario rope points)
   "The properties a ROPE wound on a disc adds to its entity: :WINDING-INDICATOR, p0 x w0 at
