@@ -218,7 +218,7 @@ off its centre (not wound), a disc with a spring attached off its centre. A rota
                    ("DRUM" (body anchor :fixed t :shape point :position (0 h))
                     (body drum :mass m :position (0 0) :velocity (0 0) :shape (circle r)
                      :inertia :uniform)
-                    (rope cord :length h :through ((drum (r 0)) (anchor (0 0)))))
+                    (rope cord :length (+ h r) :through ((drum (r 0)) (anchor (0 0)))))
                    ("WHEEL" (body wall :fixed t :shape (half-plane (0 1) (0 0)))
                     (body wheel :mass m :position (h (* 2 r)) :velocity (0 0) :shape (circle r)
                      :inertia :uniform)
