@@ -213,3 +213,42 @@ the formulas: it rolls from v0 / (3 mu g), at 2 v0 / 3."
                                                :test #'same-name-p*)))
                          2d0))
                  1d-9)))))))
+
+(defparameter *disc-on-pulled-cart*
+  '(scenario disc-on-pulled-cart "A disc on a cart pulled by a force rolls on it."
+    (parameters (m :positive) (mc :positive) (r :positive) (g :positive) (w :positive)
+                (f :positive) (mu :positive (> mu (/ f (* (+ m (* 3 mc)) g)))))
+    (gravity g)
+    (body floor :fixed t :shape (half-plane (1 0) (0 0)))
+    (body cart :mass mc :shape (polygon (0 0) (w 0) (w 1) (0 1)) :position (0 0) :velocity (0 0))
+    (body disc :mass m :inertia :uniform :shape (circle r) :position ((/ w 2) (+ 1 r)) :velocity (0 0))
+    (force pull :on cart :value (f 0))
+    (friction disc cart :static mu)
+    (simulate :states 1))
+  "A uniform disc at rest on a cart that a force f pulls over a frictionless floor: with
+enough friction it rolls on the cart.")
+
+(test disc-rolls-on-a-pulled-cart
+  "Rolling on a moving body: the contact points' relative velocity is zero, so the cart
+accelerates at A = 3 f / (3 mc + m), the disc at A / 3 and alpha = 2 A / (3 r) (it rolls
+backwards on the cart), pushed forward by friction m A / 3 (the textbook result), the
+cart held back by its reaction."
+  (with-fixture simulator-bridge ()
+    (let ((scenario (ames:parse-scenario *disc-on-pulled-cart*)))
+      (multiple-value-bind (history states) (run-of scenario bridge)
+        (declare (ignore history))
+        (let ((state (first states))
+              (big-a (in-scenario-terms scenario '(/ (* 3 f) (+ (* 3 mc) m)))))
+          (flet ((x (form) (in-scenario-terms scenario form)))
+            (call-with-scenario-facts
+             bridge scenario
+             (lambda ()
+               (is-same-vector bridge "cart" (per-body (ames::state-accelerations state) "CART")
+                               (list big-a 0))
+               (is-same-vector bridge "disc" (per-body (ames::state-accelerations state) "DISC")
+                               (list `(/ ,big-a 3) 0))
+               (is-same bridge "alpha" (rotation-entry (ames.simulator:state-angular-accelerations state) "DISC")
+                        `(/ (* 2 ,big-a) (* 3 ,(x 'r))))
+               ;; the cart is the contact's observer: the disc's friction on it, backward
+               ;; along the contact's tangent (+x)
+               (check-friction bridge state "CART" "DISC" :static `(- (* ,(x 'm) (/ ,big-a 3))))))))))))

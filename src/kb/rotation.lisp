@@ -42,7 +42,9 @@
 ;;;; the obstacle's: the slip along the tangent is (path-speed K) - R_A omega_A - R_B omega_B,
 ;;;; exactly, on a straight or a curved contact, and its rate is the same with the
 ;;;; accelerations. A rotating body that is not a disc has no contact point here yet (the
-;;;; simulator refuses it in a contact).
+;;;; simulator refuses it in a contact): a rotating polygon's vertex on a face extends
+;;;; CONTACT-ARM (its arm R(theta) v) and SPIN-ALONG-TANGENT (omega (r x t), whose rate then
+;;;; also has omega's and t's turning in it).
 
 (in-package #:ames.kb)
 
@@ -191,8 +193,8 @@ world components as the body turns: its moment about the centre is R(theta) p x 
 
 (defcomponent rotational-energy-and-angular-momentum (:knowledge-base *mechanics*)
   "A rotating body's kinetic energy of rotation is (1/2) I omega^2, a kinetic energy term
-(:kinetic (:rotation B) E) beside its translational one (energy.lisp), so that the sum of
-the energy terms stays the system's energy; its angular momentum about the origin is
+of its own beside the translational one (energy.lisp), so that the sum of the energy
+terms stays the system's energy; its angular momentum about the origin is
 I omega + m (x vy - y vx)."
   (:arguments (?body :entity body :where (:fixed nil :rotating t)))
   (:assert (reported :energy (:kinetic (:rotation ?body) (rotational-energy ?body)))

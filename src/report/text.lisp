@@ -73,6 +73,10 @@ level of the tree of branches), and how it ends."
   (format stream "End of branch ~A: ~A~@[ (~A)~]~%" (getf branch :label) (branch-end-words branch)
           (and (getf branch :failure) (phrase-string (getf branch :failure)))))
 
+(defun rotation-text (view)
+  "A final angle's or angular velocity's VIEW (:VALUE V [:NUMBER N]) as text, or NIL."
+  (and view (format nil "~A~A" (text (getf view :value)) (numbers-text (getf view :number)))))
+
 (defun print-state-text (view stream)
   "Print one state's VIEW (see STATE-VIEW) on STREAM."
   (format stream "~%~:[State ~D~;Fork at the start of state ~D (no period of motion)~]~@[ (branch ~A)~], ~
@@ -134,8 +138,7 @@ level of the tree of branches), and how it ends."
               (vector-numbers-text (getf final :position-numbers))
               (text (first (getf final :velocity))) (text (second (getf final :velocity)))
               (vector-numbers-text (getf final :velocity-numbers))
-              (and (getf final :angle) (text (getf final :angle)))
-              (and (getf final :angular-velocity) (text (getf final :angular-velocity))))))
+              (rotation-text (getf final :angle)) (rotation-text (getf final :angular-velocity)))))
   ;; a fork's branches come after its own values, each nested under it
   (dolist (branch (getf view :branches))
     (print-branch-text branch stream)))

@@ -161,6 +161,17 @@ NIL for a body that does not rotate."
               :angle (shown angle)
               :angular-velocity (shown (assoc body (state-angular-velocities state))))))))
 
+(defun final-rotation-view (presenter entries numbers body)
+  "BODY's final angle or angular velocity among ENTRIES, presented, with its number among
+NUMBERS when it is not a number itself (a string, as the text report prints it), or NIL."
+  (let ((entry (assoc body entries))
+        (number (second (assoc body numbers))))
+    (and entry
+         (let ((shown (present presenter (second entry))))
+           (if (and (realp number) (not (realp (second entry))))
+               (list :value shown :number number)
+               (list :value shown))))))
+
 (defun time-phrase (presenter time)
   "A phrase for a state's start or duration."
   (cond ((eq time :forever) (list "forever"))
@@ -218,11 +229,11 @@ NIL for a body that does not rotate."
                                        :velocity (mapcar (lambda (c) (present presenter c)) velocity)
                                        :velocity-numbers (and (notevery #'realp velocity)
                                                               (second (assoc body (getf numeric :final-velocities))))
-                                       :angle (let ((entry (assoc body (state-final-angles state))))
-                                                (and entry (present presenter (second entry))))
+                                       :angle (final-rotation-view presenter (state-final-angles state)
+                                                                   (getf numeric :final-angles) body)
                                        :angular-velocity
-                                       (let ((entry (assoc body (state-final-angular-velocities state))))
-                                         (and entry (present presenter (second entry))))))
+                                       (final-rotation-view presenter (state-final-angular-velocities state)
+                                                            (getf numeric :final-angular-velocities) body)))
           :notes (note-views presenter state)
           :branches (loop for branch in (state-branches state)
                           collect (list :assume (phrase (present-relation presenter (getf branch :assume)))

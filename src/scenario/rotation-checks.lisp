@@ -244,17 +244,23 @@ the wound one off its centre)."
   "The attachments to SCENARIO's rotating bodies whose forces would have a moment that
 the knowledge base does not model yet, as (BODY-NAME . WHAT): a spring or a rope end at
 a point other than the centre (a rope end wound on a disc is modelled: wound-ropes.lisp),
-a pulley on a rotating body."
+a pulley or a bumper (its axis would turn) on a rotating body."
   (flet ((rotating (name)
            (let ((body (find-scenario-body name scenario)))
              (and body (scenario-body-rotating-p body))))
          (off-centre (point) (not (zero-vector-p point))))
     (append
      (loop for spring in (scenario-springs scenario)
-           append (loop for end in (list (scenario-spring-from spring) (scenario-spring-to spring))
-                        when (and end (rotating (first end)) (off-centre (second end)))
-                          collect (cons (first end) (format nil "spring ~A is attached off its centre"
-                                                            (symbol-name (scenario-spring-name spring))))))
+           for from = (scenario-spring-from spring)
+           if (and (scenario-spring-bumper-p spring) (rotating (first from)))
+             ;; a bumper's axis would turn with the body
+             collect (cons (first from) (format nil "bumper ~A is fixed on it"
+                                                (symbol-name (scenario-spring-name spring))))
+           else
+             append (loop for end in (list from (scenario-spring-to spring))
+                          when (and end (rotating (first end)) (off-centre (second end)))
+                            collect (cons (first end) (format nil "spring ~A is attached off its centre"
+                                                              (symbol-name (scenario-spring-name spring))))))
      (loop for rope in (scenario-ropes scenario)
            for through = (scenario-rope-through rope)
            append (loop for end in (list (first through) (car (last through)))

@@ -6,7 +6,9 @@
 ;;;; (src/kb/rotation.lisp). The run keeps their values at the start of the current state
 ;;;; (RUN-ROTATIONS); a group whose accelerations and angular accelerations are constant is
 ;;;; integrated in closed form (polynomials in TAU, as positions are); any other group that
-;;;; rotates is integrated numerically (under parameter values). Like the positions, the
+;;;; rotates is integrated numerically (under parameter values): ROTATION-KIND is where a
+;;;; closed-form integrator of rotating groups (one degree of freedom by its energy
+;;;; integral) takes over. Like the positions, the
 ;;;; state reports them over TAU (:ANGLES, :ANGULAR-VELOCITIES), the angular accelerations,
 ;;;; and their values at the end (:FINAL-ANGLES, :FINAL-ANGULAR-VELOCITIES), which the next
 ;;;; state starts from.
@@ -135,6 +137,22 @@ velocities now, as its motion and its end."
             (state-angular-velocities state) omegas
             (state-final-angles state) angles
             (state-final-angular-velocities state) omegas))))
+
+(defun rotation-numbers (bridge entries values)
+  "ENTRIES ((BODY EXPRESSION) ...), a state's final angles or angular velocities, as
+((BODY NUMBER) ...) under the parameter VALUES (NUMBER NIL where it has none)."
+  (loop for (body expression) in entries
+        collect (list body (numeric-or-nil bridge expression values))))
+
+(defun add-rotation-numbers (bridge state values)
+  "Add to STATE's numbers, when it has rotating bodies, the numbers of their final angles
+and angular velocities under the parameter VALUES (:FINAL-ANGLES, :FINAL-ANGULAR-VELOCITIES)."
+  (when (state-final-angles state)
+    (setf (state-numbers state)
+          (append (state-numbers state)
+                  (list :final-angles (rotation-numbers bridge (state-final-angles state) values)
+                        :final-angular-velocities
+                        (rotation-numbers bridge (state-final-angular-velocities state) values))))))
 
 (defun carry-rotations-over (run state)
   "Start the next state from STATE's final angles and angular velocities."

@@ -375,4 +375,5 @@ branch continued from a fork starts later), or NIL."
                         :final-velocities (numbers-of (state-final-velocities state))
                         :period (let ((periodic (state-periodic state)))
                                   (and periodic (numeric-or-nil bridge (getf periodic :period) values)))))
+            (add-rotation-numbers bridge state values)
             (setf clock (and clock (realp duration) (+ clock duration)))))))))
