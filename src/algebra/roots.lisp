@@ -196,6 +196,15 @@ and the reduced discriminant S^2/4 - P: the roots are S/2 -+ sqrt(S^2/4 - P)."
                      (t (unknown search (list smaller larger))))))
             (t (unknown search (list smaller larger))))))))))
 
+(defun non-real-p (search offset)
+  "True when OFFSET, a root solve() gave, is decidedly not a real number: the imaginary
+part is decidedly not zero (sqrt(h - top) under h < top). Such a root of
+a polynomial in time is no time at which anything happens."
+  (let ((imaginary (maxima-request (search-bridge search) (mcall "$IMAGPART" offset)
+                                   :datum (search-expression search))))
+    (and (not (eql imaginary 0))
+         (equal (set-difference (sign-pattern-of search imaginary) '(:positive :negative)) '()))))
+
 (defun solved-earliest-root (search form offset-variable coefficients)
   "The general case: the roots solve() finds, compared pairwise. COEFFICIENTS is the
 list of polynomial coefficients, or NIL when FORM is no polynomial (then solve() may
@@ -221,7 +230,8 @@ miss roots and nothing is proven)."
             (ecase (root-verdict (sign-pattern-of search offset) strictly)
               (:yes (push offset proven))
               (:no)
-              (:maybe (push offset undecided) (undecided-anyway))))))
+              (:maybe (unless (non-real-p search offset)
+                        (push offset undecided) (undecided-anyway)))))))
     (setf proven (nreverse proven) undecided (nreverse undecided))
     (cond
       ((and complete (null undecided))

@@ -54,22 +54,27 @@
                        (sum-over-segments situation rope (lambda (s) `(span-acceleration ,s))))
                      :documentation "The second derivative of a rope's length.")
   (register-template kb 'rope-slack-now
-                     (lambda (situation rope)
+                     (lambda (situation rope sense)
                        `(- (rope-length ,rope)
                            ,(sum-over-segments
                              situation rope
                              (lambda (s)
-                               (multiple-value-bind (a b) (segment-points situation s)
-                                 (ames.geometry:vector-length (span-difference situation a b 'pos)))))))
-                     :documentation "L minus the rope's length, from the positions.")
+                               (if (wound-segment-p situation s)
+                                   (wound-piece-length-now situation s sense)
+                                   (multiple-value-bind (a b) (segment-points situation s)
+                                     (ames.geometry:vector-length (span-difference situation a b 'pos))))))))
+                     :documentation "L minus the rope's length, from the positions (and the
+angle of a disc it is wound on, turning the way SENSE says: see wound-ropes.lisp).")
   (register-template kb 'rope-rate-now
-                     (lambda (situation rope)
+                     (lambda (situation rope sense)
                        (sum-over-segments
                         situation rope
                         (lambda (s)
-                          (multiple-value-bind (a b) (segment-points situation s)
-                            (let ((d (span-difference situation a b 'pos)))
-                              `(/ ,(ames.geometry:dot d (span-difference situation a b 'vel)) ,(ames.geometry:vector-length d)))))))
+                          (if (wound-segment-p situation s)
+                              (wound-piece-rate-now situation s sense)
+                              (multiple-value-bind (a b) (segment-points situation s)
+                                (let ((d (span-difference situation a b 'pos)))
+                                  `(/ ,(ames.geometry:dot d (span-difference situation a b 'vel)) ,(ames.geometry:vector-length d))))))))
                      :documentation "The rate of the rope's length, from the positions and velocities."))
 
 (register-rope-templates *mechanics*)
@@ -81,15 +86,17 @@
 
 (defcomponent taut-or-slack-rope (:knowledge-base *mechanics*)
   "A massless inextensible rope is taut (its length held at L by whatever tension that
-needs, never negative) or slack (no tension, shorter than L)."
-  (:arguments (?rope :entity rope))
+needs, never negative) or slack (no tension, shorter than L). Its winding SENSE (0 for a
+rope wound on no disc, see wound-ropes.lisp) says how a disc it is wound on pays it out."
+  (:arguments (?rope :entity rope)
+              (?sense :belief (rope-winding ?rope :sense ?sense)))
   (:mode :slack
    (:entry :always)
    (:assert (reported :forces (:tension ?rope 0)))
    (:transition :to :taut :when (> (rope-span-length ?rope) (rope-length ?rope))
                 :event (:tightens ?rope) :impact (:tightens ?rope)))
   (:mode :taut
-   (:entry (= (rope-slack-now ?rope) 0) (= (rope-rate-now ?rope) 0))
+   (:entry (= (rope-slack-now ?rope ?sense) 0) (= (rope-rate-now ?rope ?sense) 0))
    (:assert (taut ?rope)
             (reported :forces (:tension ?rope (tension ?rope))))
    (:equations (= (rope-span-acceleration ?rope) 0))
@@ -196,19 +203,38 @@ ropes."
 (defun rope-entities (scenario)
   "The entities of SCENARIO's ropes: each rope and its straight segments between
 consecutive points, pulleys resolved into points of their bodies; a segment between two
-points of one body says so (:WITHIN-ONE-BODY T). The same in a state and at an impact."
+points of one body says so (:WITHIN-ONE-BODY T). A rope with an end wound on a turning
+disc says which of its segments ends there (:WOUND, see wound-ropes.lisp), and that
+segment is a WOUND-ROPE-SEGMENT. The same in a state and at an impact."
   (loop for rope in (ames.scenario:scenario-ropes scenario)
         for (nil . segments) in (rope-segment-names scenario)
         for points = (mapcar (lambda (p) (ames.scenario:rope-point-position scenario p))
                              (ames.scenario:scenario-rope-through rope))
-        collect (list 'rope (ames.scenario:scenario-rope-name rope)
-                      :length (ames.scenario:scenario-rope-length rope) :segments segments)
+        for wound = (wound-segment-of rope segments)
+        collect (list* 'rope (ames.scenario:scenario-rope-name rope)
+                       :length (ames.scenario:scenario-rope-length rope) :segments segments
+                       :wound (and wound t)
+                       (and wound (wound-rope-properties scenario rope points)))
         append (loop for segment in segments
                      for (from to) on points
                      for index from 0
-                     collect (list* 'rope-segment segment :rope (ames.scenario:scenario-rope-name rope)
-                                    :index index :from from :to to
-                                    (and (eq (first from) (first to)) (list :within-one-body t))))))
+                     collect (if (eq segment wound)
+                                 (wound-segment-entity scenario rope segment index from to)
+                                 (list* 'rope-segment segment :rope (ames.scenario:scenario-rope-name rope)
+                                        :index index :from from :to to
+                                        (and (eq (first from) (first to)) (list :within-one-body t)))))))
+
+(defun rope-impact-entities (scenario)
+  "The entities of SCENARIO's ropes at an impact (ROPE-ENTITIES); signals
+UNMODELLED-SITUATION when a rope is wound on a disc (an impact that jerks a wound rope,
+or turns its disc, is not modelled)."
+  (let ((wound (find-if #'ames.scenario:scenario-rope-wound-ends (ames.scenario:scenario-ropes scenario))))
+    (when wound
+      (error 'unmodelled-situation
+             :datum (ames.scenario:scenario-rope-name wound)
+             :detail (format nil "An impact in a scenario whose rope ~(~A~) is wound on a turning disc is not modelled."
+                             (ames.scenario:scenario-rope-name wound))))
+    (rope-entities scenario)))
 
 (defun segment-phrases (scenario)
   "An alist rope segment entity -> its phrase (\"rope, piece 1\") for SCENARIO's ropes."
@@ -220,7 +246,7 @@ points of one body says so (:WITHIN-ONE-BODY T). The same in a state and at an i
   "Massless inextensible ropes over pulleys, taut or slack, jerked tight at an impact (the
 rope and pulley clauses)."
   (:entities #'rope-entities)
-  (:impact-entities #'rope-entities)
+  (:impact-entities #'rope-impact-entities)
   (:entity-phrases #'segment-phrases)
   (:force :tension :names 1 :words "tension in ~A" :symbol "T")
   (:impulse :rope-impulse :names 1 :words "impulse of the jerk along ~A")

@@ -243,8 +243,8 @@ the wound one off its centre)."
 (defun rotating-attachments (scenario)
   "The attachments to SCENARIO's rotating bodies whose forces would have a moment that
 the knowledge base does not model yet, as (BODY-NAME . WHAT): a spring or a rope end at
-a point other than the centre, a wound rope end, a pulley or a bumper (its axis would
-turn) on a rotating body."
+a point other than the centre (a rope end wound on a disc is modelled: wound-ropes.lisp),
+a pulley or a bumper (its axis would turn) on a rotating body."
   (flet ((rotating (name)
            (let ((body (find-scenario-body name scenario)))
              (and body (scenario-body-rotating-p body))))
@@ -267,10 +267,11 @@ turn) on a rotating body."
                         for wound in (list (member :first (scenario-rope-wound-ends rope))
                                            (member :last (scenario-rope-wound-ends rope)))
                         when (and (consp end) (rotating (first end))
-                                  (or wound (off-centre (second end))))
+                                  (not wound) (off-centre (second end)))
                           collect (cons (first end)
-                                        (format nil "rope ~A ~:[is tied to it off its centre~;is wound on it~]"
-                                                (symbol-name (scenario-rope-name rope)) wound))))
+                                        (format nil "rope ~A is tied to it off its centre (wind it ~
+                                                     on a disc with :wound)"
+                                                (symbol-name (scenario-rope-name rope))))))
      (loop for pulley in (scenario-pulleys scenario)
            when (rotating (scenario-pulley-body pulley))
              collect (cons (scenario-pulley-body pulley)
@@ -278,16 +279,11 @@ turn) on a rotating body."
                                    (symbol-name (scenario-pulley-name pulley))))))))
 
 (defun rotation-awaiting (scenario)
-  "The rotating bodies of SCENARIO that AMES does not simulate yet, as (DATUM REASON): one
-with a hinge, a rotating polygon or segment with another body to touch (its contact
+  "The rotating bodies of SCENARIO that AMES does not simulate yet, as (DATUM REASON): a
+rotating polygon or segment with another body to touch (its contact
 point turns with it), one with an attachment whose moment is not modelled (see
 ROTATING-ATTACHMENTS)."
   (append
-   (loop for hinge in (scenario-hinges scenario)
-         collect (list (scenario-hinge-body hinge)
-                       (format nil "body ~A rotates about hinge ~A, and AMES does not simulate ~
-                                    hinges yet" (symbol-name (scenario-hinge-body hinge))
-                               (symbol-name (scenario-hinge-name hinge)))))
    (loop for body in (scenario-rotating-bodies scenario)
          when (and (not (eq (shape-kind (scenario-body-shape body)) :circle))
                    (rest (scenario-bodies scenario)))

@@ -11,7 +11,7 @@
   "A yo-yo falls as its string unwinds from its axle."
   (parameters (m :positive (:value 1/5)) (g :positive (:value 981/100))
               (big-r :positive (:value 1/20)) (r :positive (< r big-r) (:value 1/100))
-              (i :positive (:value 1/4000)) (top :positive (:value 1)))
+              (i :positive (:value 1/4000)) (top :positive (> top big-r) (:value 1)))
   (gravity g)
   (body ceiling :fixed t :shape (half-plane (0 top) (1 top)))
   (body yoyo :mass m :inertia i :shape (circle big-r) :position (0 0) :velocity (0 0))
