@@ -88,7 +88,8 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "union")
                  (:file "contacts")
                  (:file "obstacle")
-                 (:file "touching")))
+                 (:file "touching")
+                 (:file "rotating-contacts")))
    (:module "engine" :pathname "src/engine/" :serial t
     :depends-on ("base" "tms")
     :components ((:file "package")
@@ -269,6 +270,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "geometry-tracks")
                (:file "geometry-properties")
                (:file "geometry-symbolic")
+               (:file "geometry-rotating")
                (:file "simulator-scenarios")
                (:file "simulator-corner")
                (:file "simulator-more-scenarios")
