@@ -64,7 +64,8 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "periods")
                  (:file "linear-ode")
                  (:file "trig-roots")
-                 (:file "radicals")))
+                 (:file "radicals")
+                 (:file "one-freedom")))
    (:module "tms" :pathname "src/tms/" :serial t
     :depends-on ("base")
     :components ((:file "package")
@@ -271,6 +272,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "geometry-properties")
                (:file "geometry-symbolic")
                (:file "geometry-rotating")
+               (:file "one-freedom")
                (:file "simulator-scenarios")
                (:file "simulator-corner")
                (:file "simulator-more-scenarios")
