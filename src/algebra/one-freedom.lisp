@@ -103,42 +103,65 @@ factor counts as the factor."
 
 (defun earliest-coordinate-root (bridge system expression)
   "The earliest coordinate q strictly ahead of SYSTEM's start, in its direction of
-motion, where EXPRESSION (a function of the coordinate) is 0, proven earliest: each of
-its factors (Maxima's factored form) through EARLIEST-TRIGONOMETRIC-ROOT (or
-EARLIEST-ROOT), in the angle turned u > 0, q = q0 + DIRECTION u. Returns
+motion, where EXPRESSION (a function of the coordinate) is 0: COORDINATE-ROOT-AHEAD's
+values for SYSTEM's coordinate, start and direction."
+  (coordinate-root-ahead bridge expression (one-freedom-coordinate system)
+                         (one-freedom-start system) (one-freedom-direction system)))
+
+(defvar *trigonometric-variable* (make-symbol "TRIG")
+  "The variable standing for sin q or cos q in ROOTLESS-TRIGONOMETRIC-POLYNOMIAL-P.")
+
+(defun rootless-trigonometric-polynomial-p (bridge expression coordinate)
+  "True when EXPRESSION is a polynomial P in sin q alone (or in cos q alone), q the
+name COORDINATE, and P is proven to have no root v >= -1: EXPRESSION then never
+vanishes (a ladder's push on the floor, 1 + 9 sin^2 q - 6 sin a sin q, of negative
+discriminant). Several frequencies defeat EARLIEST-TRIGONOMETRIC-ROOT; this one form
+does not."
+  (let ((v (auxiliary-variable bridge *trigonometric-variable*)))
+    (dolist (head '(sin cos) nil)
+      (let ((polynomial (substitute-expressions (list (cons (list head coordinate) v)) expression)))
+        (when (and (free-of-p coordinate polynomial)
+                   (call-or-nil (lambda () (polynomial-coefficients-in bridge polynomial v)))
+                   (eq :none (call-or-nil (lambda () (earliest-root bridge polynomial v :after -1
+                                                                                    :strictly nil
+                                                                                    :candidates nil)))))
+          (return t))))))
+
+(defun coordinate-root-ahead (bridge expression coordinate start direction)
+  "The earliest value of COORDINATE strictly ahead of START in DIRECTION (1 or -1) where
+EXPRESSION (a function of COORDINATE) is 0, proven earliest: each of its factors
+(Maxima's factored form) through EARLIEST-TRIGONOMETRIC-ROOT (or EARLIEST-ROOT), in the
+distance gone u > 0, COORDINATE = START + DIRECTION u. Returns
   (values Q :FOUND), (values :NONE NIL) or (values :UNKNOWN FACT)
-as EARLIEST-TRIGONOMETRIC-ROOT does (:UNKNOWN NIL also when the direction is not
-decided; :UNKNOWN FACT when two factors' roots cannot be ordered: FACT is that order, which the
-run's parameter values decide when there are some, recorded as DECIDE-BY-VALUES does).
-A factor's zero is a root whether
-or not EXPRESSION changes sign there: the caller knows its sign before."
-  (let ((direction (one-freedom-direction system))
-        (q (one-freedom-coordinate system))
-        (u (auxiliary-variable bridge *turned-variable*)))
-    (unless direction (return-from earliest-coordinate-root (values :unknown nil)))
-    (let* ((shifted (simplified bridge (substitute-expressions
-                                        (list (cons q `(+ ,(one-freedom-start system) (* ,direction ,u))))
-                                        expression)))
-           (roots '()))
-      (dolist (factor (product-factors-of shifted))
-        (unless (free-of-p u factor)
-          (multiple-value-bind (root status) (earliest-trigonometric-root bridge factor u :after 0 :strictly t)
+as EARLIEST-TRIGONOMETRIC-ROOT does (:UNKNOWN NIL also when DIRECTION is NIL; :UNKNOWN
+FACT when two factors' roots cannot be ordered: FACT is that order, which the run's
+parameter values decide when there are some, recorded as DECIDE-BY-VALUES does). A
+factor's zero is a root whether or not EXPRESSION changes sign there: the caller knows
+its sign before."
+  (let ((u (auxiliary-variable bridge *turned-variable*))
+        (roots '()))
+    (unless direction (return-from coordinate-root-ahead (values :unknown nil)))
+    (dolist (factor (product-factors-of (simplified bridge expression)))
+      (unless (or (free-of-p coordinate factor) (rootless-trigonometric-polynomial-p bridge factor coordinate))
+        (let ((shifted (simplified bridge (substitute-expressions
+                                           (list (cons coordinate `(+ ,start (* ,direction ,u))))
+                                           factor))))
+          (multiple-value-bind (root status) (earliest-trigonometric-root bridge shifted u :after 0 :strictly t)
             (case root
               (:none)
-              (:unknown (return-from earliest-coordinate-root (values :unknown status)))
-              (t (push root roots))))))
-      (if (null roots)
-          (values :none nil)
-          (let ((earliest (first roots)))
-            (dolist (root (rest roots))
-              (let ((earlier `(< ,root ,earliest)))
-                (case (let ((truth (decide bridge earlier)))
-                        (if (eq truth :unknown) (or (decide-by-values earlier) :unknown) truth))
-                  (:true (setf earliest root))
-                  (:false)
-                  (t (return-from earliest-coordinate-root (values :unknown earlier))))))
-            (values (simplified bridge `(+ ,(one-freedom-start system) (* ,direction ,earliest)))
-                    :found))))))
+              (:unknown (return-from coordinate-root-ahead (values :unknown status)))
+              (t (push root roots)))))))
+    (if (null roots)
+        (values :none nil)
+        (let ((earliest (first roots)))
+          (dolist (root (rest roots))
+            (let ((earlier `(< ,root ,earliest)))
+              (case (let ((truth (decide bridge earlier)))
+                      (if (eq truth :unknown) (or (decide-by-values earlier) :unknown) truth))
+                (:true (setf earliest root))
+                (:false)
+                (t (return-from coordinate-root-ahead (values :unknown earlier))))))
+          (values (simplified bridge `(+ ,start (* ,direction ,earliest))) :found)))))
 
 (defun turning-point (bridge system)
   "SYSTEM's next turning point: the earliest coordinate ahead where E(q) = q'^2 is 0
