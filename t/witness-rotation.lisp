@@ -23,9 +23,14 @@
   "The witness's time step for rotating bodies (witness/siconos_rotation.py's STEP).")
 
 (defun awaiting-scenario (file &optional name)
-  "The scenario of scenarios/awaiting-rotation/FILE.lisp (the one named NAME, when given)."
+  "The scenario of scenarios/awaiting-rotation/FILE.lisp, or of scenarios/FILE.lisp once AMES
+runs it (the one named NAME, when given)."
   (let ((scenarios (ames:read-scenario-file
-                    (asdf:system-relative-pathname "ames" (format nil "scenarios/awaiting-rotation/~A.lisp" file)))))
+                    (let ((waiting (asdf:system-relative-pathname
+                                    "ames" (format nil "scenarios/awaiting-rotation/~A.lisp" file))))
+                      (if (probe-file waiting)
+                          waiting
+                          (asdf:system-relative-pathname "ames" (format nil "scenarios/~A.lisp" file)))))))
     (if name
         (find name scenarios :key (lambda (s) (symbol-name (ames:scenario-name s))) :test #'string-equal)
         (first scenarios))))
@@ -99,7 +104,7 @@ roll the half slope L = h / (2 sin a) down: the disc, at (2/3) g sin a, reaches 
 after sqrt(3 L / (g sin a)), before the hoop, at (1/2) g sin a, after sqrt(4 L / (g sin a))
 ((:leaves BODY INCLINE), within 1e-5 s)."
   (with-siconos
-    (multiple-value-bind (answer values) (rotation-witness "hoop-and-disc-race" 1.32d0)
+    (multiple-value-bind (answer values) (rotation-witness "hoop-and-disc-race-side-by-side" 1.32d0)
       (let* ((g (value-of-parameter values "g")) (a (value-of-parameter values "a"))
              (h (value-of-parameter values "h"))
              (half (/ h (* 2 (sin a))))

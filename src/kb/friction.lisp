@@ -9,12 +9,16 @@
 ;;;; body1 lies along the contact's unit tangent t (the direction of increasing arc length
 ;;;; s); its signed component along t is the quantity (friction-force K). The reaction on
 ;;;; body2 is its negation (Newton's third law pairs them as it pairs normal forces). The
-;;;; relative tangential velocity is (path-speed K), the rate of s: body1's velocity
-;;;; relative to body2 along t.
+;;;; relative tangential velocity is (slip-speed K): that of body1's contact point relative
+;;;; to body2's along t, the template SLIP-SPEED of rotation.lisp. For bodies that do not
+;;;; rotate it is (path-speed K), the rate of s (body1's velocity relative to body2 along
+;;;; t), and its rate (slip-acc K) is (path-acc K :tangential); on a rotating disc it adds
+;;;; the rim's speed, so that the static mode is rolling without slipping and the sliding
+;;;; modes rolling with slipping ((:stops-sliding A B): a sliding disc starts to roll).
 ;;;;
 ;;;; Modes (the thesis's two, the sliding one split by its direction, which cannot change
 ;;;; within a state):
-;;;;   :static            no relative tangential acceleration, (path-acc K :tangential) = 0;
+;;;;   :static            no relative tangential acceleration, (slip-acc K) = 0;
 ;;;;                      the friction is whatever that needs. Ends when it would exceed
 ;;;;                      MU-S N either way: (:starts-sliding A B), into the sliding mode
 ;;;;                      the other forces drive.
@@ -57,9 +61,9 @@ by consistency)."
               (= (force-y (friction ?contact))
                  (* (friction-force ?contact) (unit-tangent ?contact :y))))
   (:mode :static
-   (:entry (= (path-speed ?contact) 0))
+   (:entry (= (slip-speed ?contact) 0))
    (:assert (reported :forces (:friction ?body1 ?body2 (friction-force ?contact) :mode :static)))
-   (:equations (= (path-acc ?contact :tangential) 0))
+   (:equations (= (slip-acc ?contact) 0))
    (:transition :to :sliding-backward
                 :when (> (friction-force ?contact) (* ?mu-s (normal-force ?contact)))
                 :event (:starts-sliding ?body1 ?body2))
@@ -67,16 +71,16 @@ by consistency)."
                 :when (< (friction-force ?contact) (- (* ?mu-s (normal-force ?contact))))
                 :event (:starts-sliding ?body1 ?body2)))
   (:mode :sliding-forward
-   (:entry (> (path-speed ?contact) 0))
+   (:entry (> (slip-speed ?contact) 0))
    (:assert (reported :forces (:friction ?body1 ?body2 (friction-force ?contact) :mode :sliding)))
    (:equations (= (friction-force ?contact) (- (* ?mu-k (normal-force ?contact)))))
-   (:transition :to :static :when (< (path-speed ?contact) 0)
+   (:transition :to :static :when (< (slip-speed ?contact) 0)
                 :event (:stops-sliding ?body1 ?body2)))
   (:mode :sliding-backward
-   (:entry (< (path-speed ?contact) 0))
+   (:entry (< (slip-speed ?contact) 0))
    (:assert (reported :forces (:friction ?body1 ?body2 (friction-force ?contact) :mode :sliding)))
    (:equations (= (friction-force ?contact) (* ?mu-k (normal-force ?contact))))
-   (:transition :to :static :when (> (path-speed ?contact) 0)
+   (:transition :to :static :when (> (slip-speed ?contact) 0)
                 :event (:stops-sliding ?body1 ?body2))))
 
 (defun friction-entities (scenario)

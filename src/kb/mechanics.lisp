@@ -321,11 +321,14 @@ normal component comes from the kinematic restriction."
     (and strength (list (list 'gravity-field 'earth :strength strength)))))
 
 (defun external-force-entities (scenario)
-  "Each (force NAME :on B :value (FX FY)) clause of SCENARIO as an EXTERNAL-FORCE entity."
+  "Each (force NAME :on B :value (FX FY) [:at (X Y)]) clause of SCENARIO as an
+EXTERNAL-FORCE entity (with :AT (X Y), B's own point it acts at, when given: rotation.lisp)."
   (mapcar (lambda (force)
             (destructuring-bind (fx fy) (ames.scenario:scenario-force-value force)
-              (list 'external-force (ames.scenario:scenario-force-name force)
-                    :on (ames.scenario:scenario-force-body force) :fx fx :fy fy)))
+              (list* 'external-force (ames.scenario:scenario-force-name force)
+                     :on (ames.scenario:scenario-force-body force) :fx fx :fy fy
+                     (let ((point (ames.scenario:scenario-force-point force)))
+                       (and point (list :at point))))))
           (ames.scenario:scenario-forces scenario)))
 
 (define-phenomenon contact

@@ -49,4 +49,6 @@ syntax in src/scenario/.")
    ;; position and velocity at the state's start) and reads
    #:initial-pos #:initial-vel #:span #:span-length #:span-direction #:span-acceleration #:tension
    #:kinetic-energy #:momentum #:potential-energy #:pressing #:taut
+   ;; rotation (rotation.lisp): a rotating body's state variables and what it reports
+   #:angle #:angvel #:angacc #:moment #:acts-at #:rotational-energy #:angular-momentum
    #:unmodelled-situation))

@@ -66,6 +66,13 @@ parameter of SCENARIO has that name) as the text report names them s and s'."
            :end-event (state-end-event state)
            :final-positions (state-final-positions state)
            :final-velocities (state-final-velocities state))
+     ;; rotating bodies only: a scenario without any reports as before
+     (when (state-angles state)
+       (list :angles (state-angles state)
+             :angular-velocities (state-angular-velocities state)
+             :angular-accelerations (state-angular-accelerations state)
+             :final-angles (state-final-angles state)
+             :final-angular-velocities (state-final-angular-velocities state)))
      (when (state-branches state)
        (list :branches
              (mapcar (lambda (branch)

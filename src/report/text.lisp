@@ -110,7 +110,14 @@ level of the tree of branches), and how it ends."
              (format stream "    position:     x = ~A~A~%                  y = ~A~A~%"
                      (text (first position)) (numbers-text (first numbers))
                      (text (second position)) (numbers-text (second numbers))))
-            (t (format stream "    position:     ~A~%" (datum-text position))))))
+            (t (format stream "    position:     ~A~%" (datum-text position)))))
+    (let ((rotation (getf body :rotation)))
+      (when rotation
+        (if (eq (getf rotation :angle) :no-closed-form)
+            (format stream "    rotation:     no closed form in time (integrated numerically)~%")
+            (format stream "    rotation:     ~@[alpha = ~A, ~]theta = ~A, omega = ~A~%"
+                    (and (getf rotation :angular-acceleration) (text (getf rotation :angular-acceleration)))
+                    (text (getf rotation :angle)) (text (getf rotation :angular-velocity)))))))
   (loop for (label . phrases) in (getf view :notes)
         do (format stream "  ~A:~%~{    ~A~%~}" label (mapcar #'phrase-string phrases)))
   (format stream "  ends: ~A~%" (phrase-string (getf view :end)))
@@ -121,11 +128,14 @@ level of the tree of branches), and how it ends."
   (when (getf view :final)
     (format stream "  at the end:~%")
     (dolist (final (getf view :final))
-      (format stream "    ~A at (~A, ~A)~A, velocity (~A, ~A)~A~%" (name-text (getf final :name))
+      (format stream "    ~A at (~A, ~A)~A, velocity (~A, ~A)~A~@[, angle ~A~]~@[, angular velocity ~A~]~%"
+              (name-text (getf final :name))
               (text (first (getf final :position))) (text (second (getf final :position)))
               (vector-numbers-text (getf final :position-numbers))
               (text (first (getf final :velocity))) (text (second (getf final :velocity)))
-              (vector-numbers-text (getf final :velocity-numbers)))))
+              (vector-numbers-text (getf final :velocity-numbers))
+              (and (getf final :angle) (text (getf final :angle)))
+              (and (getf final :angular-velocity) (text (getf final :angular-velocity))))))
   ;; a fork's branches come after its own values, each nested under it
   (dolist (branch (getf view :branches))
     (print-branch-text branch stream)))

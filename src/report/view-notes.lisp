@@ -152,8 +152,15 @@ tension."
             (phrase "total K + U = " (sum (append kinetic potential)))))))
 
 (defun momentum-phrases (presenter entries)
-  "The total momentum of a state's :MOMENTUM note ENTRIES ((:momentum BODY (PX PY)) ...)."
-  (flet ((sum (axis)
-           (let ((terms (mapcar (lambda (entry) (funcall axis (third entry))) entries)))
-             (present presenter (if (rest terms) (cons '+ terms) (or (first terms) 0))))))
-    (list (phrase "total: (" (sum #'first) ", " (sum #'second) ")"))))
+  "The total momentum of a state's :MOMENTUM note ENTRIES ((:momentum BODY (PX PY)) ...),
+then the total of each scalar kind of entry there (KIND BODY L), such as the angular
+momentum about the origin."
+  (let ((linear (remove :momentum entries :key #'first :test-not #'eq)))
+    (flet ((total (terms) (present presenter (if (rest terms) (cons '+ terms) (or (first terms) 0))))
+           (sum (axis) (mapcar (lambda (entry) (funcall axis (third entry))) linear)))
+      (append
+       (list (phrase "total: (" (total (sum #'first)) ", " (total (sum #'second)) ")"))
+       (loop for kind in (remove-duplicates (mapcar #'first (remove :momentum entries :key #'first)))
+             collect (phrase (keyword-words kind) " total: "
+                             (total (loop for entry in entries
+                                          when (eq (first entry) kind) collect (third entry)))))))))

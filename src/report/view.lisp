@@ -144,7 +144,22 @@ coefficient is ACCELERATION / 2, else the presented polynomial."
           (cond ((and (consp position) (eq (first position) :on-path))
                  (mapcar (lambda (c) (quantity-numbers presenter c state)) (second position)))
                 ((vector-value-p position)
-                 (mapcar (lambda (c) (quantity-numbers presenter c state)) position))))))
+                 (mapcar (lambda (c) (quantity-numbers presenter c state)) position)))
+          :rotation (rotation-view presenter state body))))
+
+(defun rotation-view (presenter state body)
+  "What STATE shows of the rotating BODY's turning: its angular acceleration, angle and
+angular velocity over the state, presented (:NO-CLOSED-FORM for a numeric motion);
+NIL for a body that does not rotate."
+  (let ((angle (assoc body (state-angles state))))
+    (when angle
+      (flet ((shown (entry)
+               (if (equal (second entry) '(:no-closed-form))
+                   :no-closed-form
+                   (present presenter (second entry)))))
+        (list :angular-acceleration (shown (assoc body (state-angular-accelerations state)))
+              :angle (shown angle)
+              :angular-velocity (shown (assoc body (state-angular-velocities state))))))))
 
 (defun time-phrase (presenter time)
   "A phrase for a state's start or duration."
@@ -202,7 +217,12 @@ coefficient is ACCELERATION / 2, else the presented polynomial."
                                                               (second (assoc body (getf numeric :final-positions))))
                                        :velocity (mapcar (lambda (c) (present presenter c)) velocity)
                                        :velocity-numbers (and (notevery #'realp velocity)
-                                                              (second (assoc body (getf numeric :final-velocities))))))
+                                                              (second (assoc body (getf numeric :final-velocities))))
+                                       :angle (let ((entry (assoc body (state-final-angles state))))
+                                                (and entry (present presenter (second entry))))
+                                       :angular-velocity
+                                       (let ((entry (assoc body (state-final-angular-velocities state))))
+                                         (and entry (present presenter (second entry))))))
           :notes (note-views presenter state)
           :branches (loop for branch in (state-branches state)
                           collect (list :assume (phrase (present-relation presenter (getf branch :assume)))

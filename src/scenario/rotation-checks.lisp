@@ -240,17 +240,66 @@ the wound one off its centre)."
 
 ;;; What the simulator cannot do yet
 
-(defun scenario-awaiting (scenario)
-  "What SCENARIO asks that AMES does not simulate yet, as a list of (DATUM REASON): each
-rotating body (issue 23: rotation waits for the knowledge base's rotational components),
-each value query whose WHEN is (reaches QUANTITY VALUE). NIL for a scenario AMES runs.
-The simulator refuses a scenario with any (never runs a rotating body as a translating
-one)."
+(defun rotating-attachments (scenario)
+  "The attachments to SCENARIO's rotating bodies whose forces would have a moment that
+the knowledge base does not model yet, as (BODY-NAME . WHAT): a spring or a rope end at
+a point other than the centre, a wound rope end, a pulley on a rotating body."
+  (flet ((rotating (name)
+           (let ((body (find-scenario-body name scenario)))
+             (and body (scenario-body-rotating-p body))))
+         (off-centre (point) (not (zero-vector-p point))))
+    (append
+     (loop for spring in (scenario-springs scenario)
+           append (loop for end in (list (scenario-spring-from spring) (scenario-spring-to spring))
+                        when (and end (rotating (first end)) (off-centre (second end)))
+                          collect (cons (first end) (format nil "spring ~A is attached off its centre"
+                                                            (symbol-name (scenario-spring-name spring))))))
+     (loop for rope in (scenario-ropes scenario)
+           for through = (scenario-rope-through rope)
+           append (loop for end in (list (first through) (car (last through)))
+                        for wound in (list (member :first (scenario-rope-wound-ends rope))
+                                           (member :last (scenario-rope-wound-ends rope)))
+                        when (and (consp end) (rotating (first end))
+                                  (or wound (off-centre (second end))))
+                          collect (cons (first end)
+                                        (format nil "rope ~A ~:[is tied to it off its centre~;is wound on it~]"
+                                                (symbol-name (scenario-rope-name rope)) wound))))
+     (loop for pulley in (scenario-pulleys scenario)
+           when (rotating (scenario-pulley-body pulley))
+             collect (cons (scenario-pulley-body pulley)
+                           (format nil "pulley ~A is fixed on it"
+                                   (symbol-name (scenario-pulley-name pulley))))))))
+
+(defun rotation-awaiting (scenario)
+  "The rotating bodies of SCENARIO that AMES does not simulate yet, as (DATUM REASON): one
+with a hinge, a rotating polygon or segment with another body to touch (its contact
+point turns with it), one with an attachment whose moment is not modelled (see
+ROTATING-ATTACHMENTS)."
   (append
+   (loop for hinge in (scenario-hinges scenario)
+         collect (list (scenario-hinge-body hinge)
+                       (format nil "body ~A rotates about hinge ~A, and AMES does not simulate ~
+                                    hinges yet" (symbol-name (scenario-hinge-body hinge))
+                               (symbol-name (scenario-hinge-name hinge)))))
    (loop for body in (scenario-rotating-bodies scenario)
-         collect (list (scenario-body-name body)
-                       (format nil "body ~A rotates (it has an :inertia), and AMES does not ~
-                                    simulate rotation yet" (symbol-name (scenario-body-name body)))))
+         when (and (not (eq (shape-kind (scenario-body-shape body)) :circle))
+                   (rest (scenario-bodies scenario)))
+           collect (list (scenario-body-name body)
+                         (format nil "body ~A rotates and is not a disc: AMES does not simulate ~
+                                      the contacts of a rotating polygon or segment yet"
+                                 (symbol-name (scenario-body-name body)))))
+   (loop for (name . what) in (rotating-attachments scenario)
+         collect (list name (format nil "body ~A rotates and ~A: AMES does not simulate the ~
+                                        moment of that force yet" (symbol-name name) what)))))
+
+(defun scenario-awaiting (scenario)
+  "What SCENARIO asks that AMES does not simulate yet, as a list of (DATUM REASON): the
+rotating bodies of ROTATION-AWAITING (hinges, rotating polygons in contact, attachments
+off a rotating body's centre), each value query whose WHEN is (reaches QUANTITY VALUE).
+NIL for a scenario AMES runs. The simulator refuses a scenario with any (never runs a
+rotating body as a translating one)."
+  (append
+   (rotation-awaiting scenario)
    (loop for (name question) in (scenario-queries scenario)
          when (and (eq (first question) :value) (eq (first (getf (cddr question) :at)) :reaches))
            collect (list name (format nil "query ~A asks for a value at (reaches ...), which ~

@@ -191,6 +191,7 @@ that fact: see ASSUMED-ON-THIS-PATH-P)."
                                   :final-positions (run-positions run)
                                   :final-velocities (run-velocities run)
                                   :missing-fact fact :fork t)))
+        (note-rotation-held run fork)
         (when (rest alternatives)
           (setf (state-branches fork)
                 (let ((*branching* (list :count (+ (getf *branching* :count 0) (length alternatives))

@@ -14,7 +14,7 @@
 (in-package #:ames.simulator)
 
 (defun branch-run (run values)
-  "A fresh RUN at RUN's current point (positions, velocities, time, impacts and facts
+  "A fresh RUN at RUN's current point (positions, velocities, rotations, time, impacts and facts
 assumed from values), with the parameter VALUES (NIL for a branch the values rule out),
 its model not yet built."
   (let ((copy (make-instance 'run :scenario (run-scenario run) :bridge (run-bridge run)
@@ -23,6 +23,7 @@ its model not yet built."
                                   :alternatives (run-alternatives run)
                                   :positions (run-positions run)
                                   :velocities (run-velocities run)
+                                  :rotations (run-rotations run)
                                   :values values)))
     (setf (run-time copy) (run-time run)
           (run-impacts copy) (run-impacts run)

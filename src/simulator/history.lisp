@@ -43,6 +43,17 @@ whatever event the knowledge base's component names for the condition that fired
    (final-velocities :initarg :final-velocities :initform '()
                      :accessor state-final-velocities
                      :documentation "List of (BODY (VX VY)) at the end, or NIL.")
+   ;; rotating bodies (rotation.lisp): NIL when no body rotates
+   (angles :initform '() :accessor state-angles
+           :documentation "List of (BODY THETA-of-TAU) for the rotating bodies.")
+   (angular-velocities :initform '() :accessor state-angular-velocities
+                       :documentation "List of (BODY OMEGA-of-TAU).")
+   (angular-accelerations :initform '() :accessor state-angular-accelerations
+                          :documentation "List of (BODY ALPHA).")
+   (final-angles :initform '() :accessor state-final-angles
+                 :documentation "List of (BODY THETA) at the end, or NIL.")
+   (final-angular-velocities :initform '() :accessor state-final-angular-velocities
+                             :documentation "List of (BODY OMEGA) at the end, or NIL.")
    ;; what a person should know beside the motion (STATE-NOTES lists them as a plist)
    (numbers :initform '() :accessor state-numbers
             :documentation "Under the history's parameter values, the numbers beside the

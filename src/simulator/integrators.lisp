@@ -73,10 +73,10 @@ SOLVED model, whose accelerations depend on one another's motion), in body order
 
 (defun group-state-terms (run solved group)
   "The state terms of SOLVED that belong to GROUP: its bodies' positions and velocities
-and the path coordinates of contacts whose observer is in it."
+(and angles and angular velocities) and the path coordinates of contacts whose observer is in it."
   (remove-if-not (lambda (term)
                    (member (case (first term)
-                             ((ames.kb:pos ames.kb:vel) (second term))
+                             ((ames.kb:pos ames.kb:vel ames.kb:angle ames.kb:angvel) (second term))
                              (t (first (contact-bodies run (second term)))))
                            (group-bodies group)))
                  (solved-model-state solved)))
@@ -138,7 +138,8 @@ and the path coordinates of contacts whose observer is in it."
 ;;; :CONSTANT -- polynomials in TAU
 
 (defun integrate-constant (run solved group)
-  "Fill GROUP's motion: each body's position and velocity as polynomials in TAU."
+  "Fill GROUP's motion: each body's position and velocity (and a rotating body's angle and
+angular velocity) as polynomials in TAU."
   (setf (group-motion group)
         (loop for body in (group-bodies group)
               append (loop for axis in '(:x :y)
@@ -151,7 +152,9 @@ and the path coordinates of contacts whose observer is in it."
                            collect (cons `(ames.kb:pos ,body ,axis)
                                          (tidy run `(+ ,p0 (* ,v0 tau) (* 1/2 ,a (expt tau 2))) :full))
                            collect (cons `(ames.kb:vel ,body ,axis)
-                                         (tidy run `(+ ,v0 (* ,a tau)) :full)))))
+                                         (tidy run `(+ ,v0 (* ,a tau)) :full))))
+        (group-motion group) (append (group-motion group)
+                                     (integrate-rotation-constant run solved group)))
   group)
 
 ;;; :PATH -- one degree of freedom along a curved contact
@@ -215,7 +218,8 @@ integrated numerically like a :NUMERIC group (when the termination conditions ar
 searched, under parameter values: see numeric.lisp)."
   (let ((groups (body-groups run solved)))
     (dolist (group groups groups)
-      (ecase (classify-group run solved group)
+      (setf (group-kind group) (rotation-kind run solved group (classify-group run solved group)))
+      (ecase (group-kind group)
         (:constant (integrate-constant run solved group))
         (:path (integrate-path run solved group))
         (:linear (unless (integrate-linear run solved group)

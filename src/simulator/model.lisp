@@ -250,7 +250,8 @@ terms stay)."
     (ames.kb:pos (axis-of (body-position run (second term)) (third term)))
     (ames.kb:vel (axis-of (body-velocity run (second term)) (third term)))
     (ames.kb:path-position (initial-arc-length run (second term)))
-    (ames.kb:path-speed (initial-arc-speed run (second term)))))
+    (ames.kb:path-speed (initial-arc-speed run (second term)))
+    ((ames.kb:angle ames.kb:angvel) (rotation-initial-value run term))))
 
 (defun axis-of (vector axis)
   "The :X or :Y component of VECTOR."

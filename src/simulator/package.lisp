@@ -23,4 +23,7 @@ knowledge base's (package AMES.KB).")
    #:state-numbers #:state-accumulation #:state-impact #:state-end-arc-length
    #:state-numeric-trajectory #:state-simultaneous-events #:state-periodic
    #:state-undecided-detail #:state-path-coordinates #:state-line-coordinates
-   #:state-missing-fact #:state-fork-p #:state-reported-sections #:state-contact-points))
+   #:state-missing-fact #:state-fork-p #:state-reported-sections #:state-contact-points
+   ;; rotating bodies (rotation.lisp)
+   #:state-angles #:state-angular-velocities #:state-angular-accelerations
+   #:state-final-angles #:state-final-angular-velocities))

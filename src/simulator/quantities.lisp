@@ -30,12 +30,18 @@ none."
           (t (first terms)))))
 
 (defun reported-kinetic-energy (state body fixed)
-  "BODY's kinetic energy as reported for STATE; 0 for a FIXED body; NIL when not reported."
+  "BODY's kinetic energy as reported for STATE: the sum of its kinetic terms, (:KINETIC BODY
+E) and those of its other motions (:KINETIC (KIND BODY) E), such as its rotation's; 0 for a
+FIXED body; NIL when not reported."
   (if fixed
       0
-      (let ((entry (find-if (lambda (e) (and (eq (first e) :kinetic) (named-alike-p (second e) body)))
-                            (reported-section state :energy))))
-        (and entry (third entry)))))
+      (let ((terms (loop for (kind source energy) in (reported-section state :energy)
+                         when (and (eq kind :kinetic)
+                                   (named-alike-p (if (consp source) (car (last source)) source) body))
+                           collect energy)))
+        (cond ((null terms) nil)
+              ((rest terms) (cons '+ terms))
+              (t (first terms))))))
 
 (defun reported-momentum (state body fixed)
   "BODY's momentum (PX PY) as reported for STATE; (0 0) for a FIXED body; NIL when not

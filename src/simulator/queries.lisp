@@ -98,6 +98,12 @@ start or end (no time needed: the energy integral gives the speed there)."
         ((equal entry '(:no-closed-form)) (unanswerable "the motion has no closed form in time"))
         (t entry)))
 
+(defun rotation-of (entry)
+  "A rotating body's scalar entry (its angle, angular velocity or acceleration)."
+  (if (equal entry '(:no-closed-form))
+      (unanswerable "the motion has no closed form in time")
+      entry))
+
 (defun reported-force-value (state kind names)
   "The value of the force entry of KIND that STATE reports between NAMES (the names that
 lead the entry: AMES.KB:FORCE-DESCRIPTION's :NAMES of them, in this order or reversed,
@@ -127,6 +133,10 @@ off the state's forces."
             (:position (place (second form)))
             (:velocity (velocity (second form)))
             (:acceleration (vector-of (recorded state (state-accelerations state) (second form))))
+            (:angle (rotation-of (recorded state (state-angles state) (second form))))
+            (:angular-velocity (rotation-of (recorded state (state-angular-velocities state) (second form))))
+            (:angular-acceleration (rotation-of (recorded state (state-angular-accelerations state)
+                                                          (second form))))
             (:speed (let ((v (velocity (second form)))) `(sqrt (+ (expt ,(first v) 2) (expt ,(second v) 2)))))
             (:kinetic-energy (or (reported-kinetic-energy state (second form)
                                                           (scenario-body-fixed-p (body (second form))))

@@ -49,6 +49,9 @@ RUN-DECIDER); NIL otherwise.")
               :documentation "Alist body -> (X Y) at the start of the current state.")
    (velocities :initarg :velocities :accessor run-velocities
                :documentation "Alist body -> (VX VY) at the start of the current state.")
+   (rotations :initarg :rotations :initform '() :accessor run-rotations
+              :documentation "Alist rotating body -> (THETA OMEGA), its angle and angular
+velocity at the start of the current state (see rotation.lisp).")
    (time :initform 0 :accessor run-time
          :documentation "Global time at which the current state starts: an expression.")
    (values :initarg :values :initform '() :reader run-values
@@ -199,6 +202,7 @@ are alternatives. At a concave corner both faces can push at once."
          :fixed (and (scenario-body-fixed-p body) t)
          :mass (scenario-body-mass body)
          (append (and (scenario-body-driven-p body) (list :driven t)) (and (scenario-body-fixed-p body) (list :position (scenario-body-position body)))
+                 (rotation-properties body)
                  properties)))
 
 (defun situation-entities (run)
@@ -265,9 +269,11 @@ reaching relation (<= (contact-gap K) 0), else NIL."
 
 (defun state-quantity-p (term)
   "True when TERM is a kinematic quantity whose value at the start of the state the run
-knows: a body's position or velocity, the arc length along a contact or its rate."
+knows: a body's position or velocity, the arc length along a contact or its rate, a
+rotating body's angle or angular velocity."
   (and (quantity-term-p term)
-       (member (first term) '(ames.kb:pos ames.kb:vel ames.kb:path-position ames.kb:path-speed))))
+       (member (first term) '(ames.kb:pos ames.kb:vel ames.kb:path-position ames.kb:path-speed
+                              ames.kb:angle ames.kb:angvel))))
 
 (defun start-values (run relation)
   "An alist: each kinematic quantity of RELATION (see STATE-QUANTITY-P, and the state's
@@ -320,8 +326,8 @@ relation over no kinematic quantity is decided as it is."
                   (t (decide run at-start))))))))
 
 (defun velocity-term-p (term)
-  "True when TERM is a velocity: a body's, or the rate of an arc length."
-  (and (consp term) (member (first term) '(ames.kb:vel ames.kb:path-speed)) t))
+  "True when TERM is a velocity: a body's, the rate of an arc length, or an angular velocity."
+  (and (consp term) (member (first term) '(ames.kb:vel ames.kb:path-speed ames.kb:angvel)) t))
 
 (defun velocity-under-power-p (expression)
   "True when a velocity term occurs in EXPRESSION under a power other than 1 or a root."

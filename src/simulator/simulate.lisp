@@ -56,6 +56,7 @@ CHECK-INCREMENTAL."
   (setf (run-positions run) (state-final-positions state)
         (run-velocities run) (state-final-velocities state)
         (run-time run) (time-after run (run-time run) state))
+  (carry-rotations-over run state)
   (let* ((impulsive (remove-if-not #'impulsive-p fired))
          (changes (remove nil (remove-duplicates
                                (mapcar #'candidate-change (set-difference fired impulsive))
@@ -259,6 +260,7 @@ assumptions in BRIDGE). PARAMETER-VALUES as SIMULATE has checked them."
                                         :contacts contacts :locus-kinds kinds
                                         :alternatives (corner-alternatives bridge contacts)
                                         :positions positions :velocities velocities
+                                        :rotations (initial-rotations scenario)
                                         :values parameter-values)))
              (situation (ames.engine:make-situation (situation-entities run) :data run)))
         (handler-bind ((ames.engine:undecided-relation #'undecided-to-ambiguity))

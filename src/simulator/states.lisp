@@ -276,6 +276,12 @@ SOLVED model and the integrated GROUPS, its duration and end still :UNDECIDED."
      :line-coordinates (line-notes groups)
      :reported-sections (reported-sections run solved groups))))
 
+(defun new-state (run index trial solved groups)
+  "NEW-QUALITATIVE-STATE with the rotating bodies' motion noted (rotation.lisp)."
+  (let ((state (new-qualitative-state run index trial solved groups)))
+    (note-rotation-start run state solved groups)
+    state))
+
 (defun state-end-candidates (run solved groups state)
   "The events that may end STATE, as four values: the CANDIDATEs, the events whose time
 is unknown, the events that never happen, and a flag. The flag is true when there is no
@@ -321,6 +327,7 @@ trajectory and the arc length reached."
           (state-end-event state) (end-event-of fired)
           (state-final-positions state) (end-values run groups fired :pos)
           (state-final-velocities state) (end-values run groups fired :vel))
+    (note-rotation-end run state groups fired)
     (when (rest fired)
       (setf (state-simultaneous-events state) (mapcar #'candidate-event fired)))
     (let ((numeric (remove nil (mapcar #'group-samples groups))))
@@ -348,7 +355,7 @@ known."
   (let* ((trial (settle-choices run))
          (solved (trial-solved trial))
          (groups (integrate-groups run solved))
-         (state (new-qualitative-state run index trial solved groups)))
+         (state (new-state run index trial solved groups)))
     (multiple-value-bind (candidates unknown never undecided)
         (state-end-candidates run solved groups state)
       (when undecided

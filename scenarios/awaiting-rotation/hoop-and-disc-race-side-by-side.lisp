@@ -1,4 +1,4 @@
-;;;; scenarios/awaiting-rotation/hoop-and-disc-race.lisp -- a hoop and a disc of the same mass
+;;;; scenarios/awaiting-rotation/hoop-and-disc-race-side-by-side.lisp -- a hoop and a disc of the same mass
 ;;;; and radius released side by side (on two identical inclines) roll down: the disc
 ;;;; arrives first.
 ;;;;

@@ -9,6 +9,8 @@
 ;;;;   -(2/3) g sin a / r (clockwise while it rolls down to the right); it reaches the foot
 ;;;;   of the slope after t = sqrt(3 L / (g sin a)), L = h / (2 sin a) the half slope.
 ;;;;   With mu < tan(a)/3 it slips (the branch the assumptions below exclude).
+;;;; The run stops there (:states 1): past the foot the disc leaves the triangle over its
+;;;; corner, which AMES does not follow for a rotating disc (no closed form).
 
 (scenario disc-rolling-down-incline
   "A uniform disc rolls without slipping down a rough incline."
@@ -21,13 +23,15 @@
              :position ((+ (/ h (* 2 (tan a))) (* r (sin a))) (+ (/ h 2) (* r (cos a))))
              :velocity (0 0))
   (friction disc incline :static mu)
-  (query a-along-slope (value (speed disc) :at (end 0)))
-  (simulate :states 2))
+  (query speed-at-foot (value (speed disc) :at (end 0)))
+  (query spin-at-foot (value (angular-velocity disc) :at (end 0)))
+  (simulate :states 1))
 
 ;;;; The same disc where friction is too weak to hold it rolling (mu < tan(a)/3): it rolls
 ;;;; with slipping. Expected results (textbook): kinetic friction mu m g cos a up the slope,
 ;;;; acceleration g (sin a - mu cos a) down the slope, angular acceleration
-;;;; -2 mu g cos a / r; it never rolls without slipping on the slope.
+;;;; -2 mu g cos a / r; it never rolls without slipping on the slope. The slope here is
+;;;; unbounded (a half-plane through the same two points), so that the slipping lasts.
 
 (scenario disc-slipping-down-incline
   "A uniform disc on an incline too slippery for rolling slides while it spins up."
@@ -35,7 +39,7 @@
               (h :positive (> h r) (:value 2)) (a (> a 0) (< a (/ pi 2)) (:value (deg 30)))
               (mu :positive (< mu (/ (tan a) 3)) (:value 1/10)))
   (gravity g)
-  (body incline :fixed t :shape (polygon (0 0) ((/ h (tan a)) 0) (0 h)))
+  (body incline :fixed t :shape (half-plane ((/ h (tan a)) 0) (0 h)))
   (body disc :mass m :inertia :uniform :shape (circle r)
              :position ((+ (/ h (* 2 (tan a))) (* r (sin a))) (+ (/ h 2) (* r (cos a))))
              :velocity (0 0))
