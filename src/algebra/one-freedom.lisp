@@ -113,19 +113,32 @@ values for SYSTEM's coordinate, start and direction."
 
 (defun rootless-trigonometric-polynomial-p (bridge expression coordinate)
   "True when EXPRESSION is a polynomial P in sin q alone (or in cos q alone), q the
-name COORDINATE, and P is proven to have no root v >= -1: EXPRESSION then never
+name COORDINATE, and P is proven to have no root v >= -1 (a quadratic: no real root, by its discriminant,
+decided or, under parameter values, by them): EXPRESSION then never
 vanishes (a ladder's push on the floor, 1 + 9 sin^2 q - 6 sin a sin q, of negative
 discriminant). Several frequencies defeat EARLIEST-TRIGONOMETRIC-ROOT; this one form
 does not."
   (let ((v (auxiliary-variable bridge *trigonometric-variable*)))
     (dolist (head '(sin cos) nil)
-      (let ((polynomial (substitute-expressions (list (cons (list head coordinate) v)) expression)))
-        (when (and (free-of-p coordinate polynomial)
-                   (call-or-nil (lambda () (polynomial-coefficients-in bridge polynomial v)))
-                   (eq :none (call-or-nil (lambda () (earliest-root bridge polynomial v :after -1
-                                                                                    :strictly nil
-                                                                                    :candidates nil)))))
-          (return t))))))
+      (let ((polynomial (subst v (list head coordinate) expression :test #'equal)))
+        (let ((coefficients (and (free-of-p coordinate polynomial)
+                                 (call-or-nil (lambda () (polynomial-coefficients-in bridge polynomial v))))))
+          (when (and coefficients
+                     (if (= (length coefficients) 3)
+                         ;; a quadratic: its discriminant, decided or (under values) by values
+                         (destructuring-bind (c0 c1 c2) coefficients
+                           (eq :true (decided-or-by-values
+                                      bridge `(< (- (expt ,c1 2) (* 4 ,c2 ,c0)) 0))))
+                         (eq :none (call-or-nil (lambda () (earliest-root bridge polynomial v :after -1
+                                                                                       :strictly nil
+                                                                                       :candidates nil))))))
+            (return t)))))))
+
+(defun decided-or-by-values (bridge relation)
+  "RELATION's truth under the assumptions (:TRUE, :FALSE or :UNKNOWN), or, when they
+leave it open, at the run's parameter values (recorded, see DECIDE-BY-VALUES)."
+  (let ((truth (decide bridge relation)))
+    (if (eq truth :unknown) (or (decide-by-values relation) :unknown) truth)))
 
 (defun coordinate-root-ahead (bridge expression coordinate start direction)
   "The earliest value of COORDINATE strictly ahead of START in DIRECTION (1 or -1) where
@@ -156,8 +169,7 @@ its sign before."
         (let ((earliest (first roots)))
           (dolist (root (rest roots))
             (let ((earlier `(< ,root ,earliest)))
-              (case (let ((truth (decide bridge earlier)))
-                      (if (eq truth :unknown) (or (decide-by-values earlier) :unknown) truth))
+              (case (decided-or-by-values bridge earlier)
                 (:true (setf earliest root))
                 (:false)
                 (t (return-from coordinate-root-ahead (values :unknown earlier))))))

@@ -38,7 +38,7 @@ It asks Maxima only through the bridge.")
    #:one-freedom #:make-one-freedom #:generalized-inertia #:one-freedom-coordinate
    #:one-freedom-inertia #:one-freedom-potential #:one-freedom-start #:one-freedom-rate
    #:one-freedom-speed-squared #:one-freedom-acceleration #:one-freedom-direction
-   #:along-motion #:earliest-coordinate-root #:coordinate-root-ahead #:turning-point #:coordinate-travel-time
+   #:along-motion #:earliest-coordinate-root #:coordinate-root-ahead #:decided-or-by-values #:turning-point #:coordinate-travel-time
    #:swing-period
    ;; real square roots (radicals.lisp)
    #:real-radicals #:simplify-real))
