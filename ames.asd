@@ -65,6 +65,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "linear-ode")
                  (:file "trig-roots")
                  (:file "radicals")
+                 (:file "sine-roots")
                  (:file "one-freedom")))
    (:module "tms" :pathname "src/tms/" :serial t
     :depends-on ("base")

@@ -79,22 +79,17 @@ x = 0, at angle q (pi - q with the floor).")
        (let ((wall (ames.algebra:along-motion b ladder '(* m (/ l 2) (+ (* (sin q) al) (* (cos q) (expt w 2))))
                                               :rate 'w :acceleration 'al)))
          (is (ames.maxima:equivalent-p b wall '(* 3/2 m g (cos q) (- (sin a) (* 3/2 (sin q))))))
-         ;; its factors cos q and sin a - (3/2) sin q vanish at 2 atan((1 + sin a)/cos a)
-         ;; and 2 atan((sqrt(5 + 4 cos^2 a) - 3 cos a)/(5 sin a)) beyond the start, an order
-         ;; Maxima does not prove for every a: the answer says so, and values decide it
+         ;; its factors cos q and sin a - (3/2) sin q vanish ahead at 3 pi/2 and at
+         ;; pi - asin((2/3) sin a), the earlier (sine-roots.lisp gives the asin form)
          (multiple-value-bind (root status) (ames.algebra:earliest-coordinate-root b ladder wall)
-           (is (eq :unknown root))
-           (is (eq '< (first status))))
-         (multiple-value-bind (root status)
-             (ames.algebra:with-parameter-values ('((a . 1)))
-               (ames.algebra:earliest-coordinate-root b ladder wall))
            (is (eq :found status))
-           ;; (Maxima proves no identity between the half-angle form and asin: by values)
-           (let ((points '(((a . 1) (l . 1)) ((a . 1/5) (l . 3)) ((a . 3/2) (l . 1/2)))))
-             (is (same-at-points-p b `(* l (sin ,root)) '(* 2/3 l (sin a)) points))
-             ;; on the way down: between the start and the floor
-             (dolist (point points)
-               (is (eq :true (ames.algebra:value-truth `(and (> ,root (- pi a)) (< ,root pi)) point)))))
+           (is (ames.maxima:equivalent-p b root '(- pi (asin (* 2/3 (sin a))))))
+           (is (ames.maxima:equivalent-p b `(* l (sin ,root)) '(* 2/3 l (sin a))))
+           ;; the cos factor alone: its first zero ahead is 3 pi/2
+           (is (ames.maxima:equivalent-p
+                b (ames.algebra:coordinate-root-ahead b '(cos q) 'q '(- pi a) 1) '(* 3/2 pi)))
+           ;; the top reaches the floor (its height l sin q vanishes) at q = pi, later
+           (is (ames.maxima:equivalent-p b (ames.algebra:coordinate-root-ahead b '(* l (sin q)) 'q '(- pi a) 1) 'pi))
            ;; the time it takes, in closed form, agrees with the quadrature
            (multiple-value-bind (time kind) (ames.algebra:coordinate-travel-time b ladder root)
              (is (eq :closed-form kind))

@@ -134,17 +134,13 @@ does not."
                                                                                        :candidates nil))))))
             (return t)))))))
 
-(defun decided-or-by-values (bridge relation)
-  "RELATION's truth under the assumptions (:TRUE, :FALSE or :UNKNOWN), or, when they
-leave it open, at the run's parameter values (recorded, see DECIDE-BY-VALUES)."
-  (let ((truth (decide bridge relation)))
-    (if (eq truth :unknown) (or (decide-by-values relation) :unknown) truth)))
 
 (defun coordinate-root-ahead (bridge expression coordinate start direction)
   "The earliest value of COORDINATE strictly ahead of START in DIRECTION (1 or -1) where
 EXPRESSION (a function of COORDINATE) is 0, proven earliest: each of its factors
-(Maxima's factored form) through EARLIEST-TRIGONOMETRIC-ROOT (or EARLIEST-ROOT), in the
-distance gone u > 0, COORDINATE = START + DIRECTION u. Returns
+(Maxima's factored form) that is A + K sin q or A + K cos q through sine-roots.lisp (in
+asin form), any other sinusoid through EARLIEST-TRIGONOMETRIC-ROOT (or EARLIEST-ROOT),
+in the distance gone u > 0, COORDINATE = START + DIRECTION u. Returns
   (values Q :FOUND), (values :NONE NIL) or (values :UNKNOWN FACT)
 as EARLIEST-TRIGONOMETRIC-ROOT does (:UNKNOWN NIL also when DIRECTION is NIL; :UNKNOWN
 FACT when two factors' roots cannot be ordered: FACT is that order, which the run's
@@ -156,24 +152,29 @@ its sign before."
     (unless direction (return-from coordinate-root-ahead (values :unknown nil)))
     (dolist (factor (product-factors-of (simplified bridge expression)))
       (unless (or (free-of-p coordinate factor) (rootless-trigonometric-polynomial-p bridge factor coordinate))
-        (let ((shifted (simplified bridge (substitute-expressions
-                                           (list (cons coordinate `(+ ,start (* ,direction ,u))))
-                                           factor))))
-          (multiple-value-bind (root status) (earliest-trigonometric-root bridge shifted u :after 0 :strictly t)
-            (case root
-              (:none)
-              (:unknown (return-from coordinate-root-ahead (values :unknown status)))
-              (t (push root roots)))))))
+        (multiple-value-bind (root status) (single-function-root-ahead bridge factor coordinate start direction)
+          (case status
+            (:found (push root roots))
+            ((nil)
+             ;; any sinusoid: the half-angle method, in the distance gone u
+             (let ((shifted (simplified bridge (substitute-expressions
+                                                (list (cons coordinate `(+ ,start (* ,direction ,u))))
+                                                factor))))
+               (multiple-value-bind (root status) (earliest-trigonometric-root bridge shifted u :after 0 :strictly t)
+                 (case root
+                   (:none)
+                   (:unknown (return-from coordinate-root-ahead (values :unknown status)))
+                   (t (push (simplified bridge `(+ ,start (* ,direction ,root))) roots))))))))))
     (if (null roots)
         (values :none nil)
         (let ((earliest (first roots)))
           (dolist (root (rest roots))
-            (let ((earlier `(< ,root ,earliest)))
+            (let ((earlier `(< (* ,direction (- ,root ,earliest)) 0)))
               (case (decided-or-by-values bridge earlier)
                 (:true (setf earliest root))
                 (:false)
                 (t (return-from coordinate-root-ahead (values :unknown earlier))))))
-          (values (simplified bridge `(+ ,start (* ,direction ,earliest))) :found)))))
+          (values earliest :found)))))
 
 (defun turning-point (bridge system)
   "SYSTEM's next turning point: the earliest coordinate ahead where E(q) = q'^2 is 0
