@@ -298,6 +298,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "witness-rotation")
                (:file "scenario-rotation")
                (:file "rotation-rolling")
+               (:file "rotation-corners")
                (:file "witness-curved")
                (:file "leftward-arcs")
                (:file "simulator-fuzz")
