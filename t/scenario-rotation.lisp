@@ -191,7 +191,7 @@ checks, with at least one rotating body."
      (let ((files (directory (merge-pathnames (make-pathname :directory '(:relative "scenarios" "awaiting-rotation")
                                                               :name :wild :type "lisp")
                                                (asdf:system-source-directory "ames")))))
-      (is (<= 4 (length files)) "scenarios/awaiting-rotation/ holds ~D files" (length files))
+      (is (<= 1 (length files)) "scenarios/awaiting-rotation/ holds ~D files" (length files))
       (dolist (file files)
        (multiple-value-bind (scenarios conditions) (ames:read-scenario-file file :on-error :collect)
          (is (null conditions) "~A: ~{~A~}" (pathname-name file) conditions)
@@ -203,8 +203,9 @@ checks, with at least one rotating body."
 (test simulator-refuses-rotation
   "The simulator refuses a scenario with a rotating body it does not simulate yet
 (UNSUPPORTED-SITUATION naming the body), rather than simulating it as a translating one:
-a rotating block on a floor (a polygon's contacts turn with it), a disc with a rope tied
-off its centre (not wound), a disc with a spring attached off its centre. A rotating disc on the floor is simulated."
+a rotating block on a floor beside a free ball (a polygon's contacts with another free body
+turn with it), a disc with a rope tied off its centre (not wound), a disc with a spring
+attached off its centre. A rotating disc on the floor is simulated."
   (with-fixture simulator-bridge ()
     (flet ((refusal (&rest clauses)
              (handler-case (progn (ames:simulate (apply #'rotating-scenario '(gravity g) clauses)
@@ -214,7 +215,9 @@ off its centre (not wound), a disc with a spring attached off its centre. A rota
       (loop for (body . clauses)
               in '(("BLOCK" (body floor :fixed t :shape (half-plane (1 0) (0 0)))
                     (body block :mass m :position (0 h) :velocity (0 0) :inertia :uniform
-                     :shape (polygon ((- w) (- h)) (w (- h)) (w h) ((- w) h))))
+                     :shape (polygon ((- w) (- h)) (w (- h)) (w h) ((- w) h)))
+                    ;; a free body it could touch: its corners on fixed faces alone are simulated
+                    (body ball :mass m :position ((* 4 w) (* 4 h)) :velocity (0 0) :shape (circle w)))
                    ("DRUM" (body anchor :fixed t :shape point :position (0 h))
                     (body drum :mass m :position (0 0) :velocity (0 0) :shape (circle r)
                      :inertia :uniform)

@@ -23,5 +23,11 @@ It asks Maxima only through the bridge.")
    ;; integrators (integrals.lisp, elliptic.lisp, periods.lisp, quadrature.lisp, linear-ode.lisp)
    #:travel-time #:numeric-travel-time #:libration-period #:sinusoid-coefficients
    #:position-over-time #:solve-linear-odes #:linear-ode-failed
+   ;; one degree of freedom with a configuration-dependent inertia (one-freedom.lisp)
+   #:one-freedom #:make-one-freedom #:generalized-inertia #:one-freedom-coordinate
+   #:one-freedom-inertia #:one-freedom-potential #:one-freedom-start #:one-freedom-rate
+   #:one-freedom-speed-squared #:one-freedom-acceleration #:one-freedom-direction
+   #:along-motion #:earliest-coordinate-root #:coordinate-root-ahead #:decided-or-by-values #:turning-point #:coordinate-travel-time
+   #:swing-period
    ;; real square roots (radicals.lisp)
    #:real-radicals #:simplify-real))

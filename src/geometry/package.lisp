@@ -60,4 +60,15 @@ and call inside ames.maxima:with-assumptions for symbolic shapes):
    #:contact-meeting #:meeting #:meeting-contact #:meeting-gap #:meeting-rate
    #:meeting-extent #:meeting-conditions
    #:contact-leavings #:leaving #:leaving-contact #:leaving-endpoint #:leaving-point
-   #:leaving-equation #:leaving-direction #:leaving-neighbour))
+   #:leaving-equation #:leaving-direction #:leaving-neighbour
+   ;; contacts of a rotating body, functions of (x, y, theta) (rotating-contacts.lisp)
+   #:rotated #:make-configuration #:configuration #:configuration-x #:configuration-y
+   #:configuration-theta #:configuration-centre #:body-point
+   #:rotating-contact #:rotating-contact-p #:rotating-contact-kind #:rotating-contact-feature
+   #:rotating-contact-other-feature #:rotating-contact-configuration #:rotating-contact-point
+   #:rotating-contact-arm #:rotating-contact-gap #:rotating-contact-normal
+   #:rotating-contact-tangent #:rotating-contact-place #:rotating-contact-extent
+   #:vertex-on-face #:face-on-vertex
+   #:contact-point-velocity #:contact-gap-rate #:contact-slip-velocity
+   #:contact-gap-acceleration #:contact-torque
+   #:shape-corners #:shape-faces #:corner-contacts #:corner-touching-p #:resting-face-contacts))

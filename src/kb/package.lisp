@@ -55,4 +55,6 @@ syntax in src/scenario/.")
    #:kinetic-energy #:momentum #:potential-energy #:pressing #:taut
    ;; rotation (rotation.lisp): a rotating body's state variables and what it reports
    #:angle #:angvel #:angacc #:moment #:acts-at #:rotational-energy #:angular-momentum
+   ;; corners of rotating polygons and segments on fixed faces (corners.lisp)
+   #:corner-contact
    #:unmodelled-situation))

@@ -72,6 +72,10 @@ body that is not a disc (its contact point turns with it: not modelled here)."
   "The offset (RX RY) from the rotating BODY's centre to the point of CONTACT (see the file
 header): -R n for the observer disc, +R n for the obstacle disc, n the outward normal at
 the contact's current arc length."
+  (let ((geometry (contact-geometry situation contact)))
+    ;; a corner contact's geometry knows its own arm (corners.lisp)
+    (when (ames.geometry:rotating-contact-p geometry)
+      (return-from contact-arm (ames.geometry:rotating-contact-arm geometry))))
   (let* ((entity (entity-named situation contact))
          (observer (entity-property entity :observer))
          (normal (ames.geometry:contact-outward-normal (contact-geometry situation contact)

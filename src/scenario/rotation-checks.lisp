@@ -278,18 +278,38 @@ a pulley or a bumper (its axis would turn) on a rotating body."
                            (format nil "pulley ~A is fixed on it"
                                    (symbol-name (scenario-pulley-name pulley))))))))
 
+(defun corner-shaped-rotating-p (body)
+  "True when BODY is a free rotating polygon or segment: its contacts are those of its
+corners (the simulator's corners.lisp), not those of a translating shape."
+  (and (scenario-body-rotating-p body) (not (scenario-body-fixed-p body))
+       (member (shape-kind (scenario-body-shape body)) '(:polygon :segment))))
+
+(defun corners-on-fixed-faces-p (scenario body)
+  "True when the rotating polygon or segment BODY can touch only with its corners on
+fixed straight faces: every other body is fixed and bounded by straight faces."
+  (and (corner-shaped-rotating-p body)
+       (every (lambda (other)
+                (or (eq other body)
+                    (and (scenario-body-fixed-p other)
+                         (member (shape-kind (scenario-body-shape other)) '(:polygon :segment :half-plane)))))
+              (scenario-bodies scenario))))
+
 (defun rotation-awaiting (scenario)
   "The rotating bodies of SCENARIO that AMES does not simulate yet, as (DATUM REASON): a
-rotating polygon or segment with another body to touch (its contact
-point turns with it), one with an attachment whose moment is not modelled (see
+rotating polygon or segment that could touch anything but fixed straight faces (its
+corners on those are simulated, see CORNERS-ON-FIXED-FACES-P), one with an attachment
+whose moment is not modelled (see
 ROTATING-ATTACHMENTS)."
   (append
    (loop for body in (scenario-rotating-bodies scenario)
          when (and (not (eq (shape-kind (scenario-body-shape body)) :circle))
-                   (rest (scenario-bodies scenario)))
+                   (rest (scenario-bodies scenario))
+                   (not (corners-on-fixed-faces-p scenario body)))
            collect (list (scenario-body-name body)
-                         (format nil "body ~A rotates and is not a disc: AMES does not simulate ~
-                                      the contacts of a rotating polygon or segment yet"
+                         (format nil "body ~A rotates and is not a disc: AMES simulates the ~
+                                      contacts of a rotating polygon or segment only with fixed ~
+                                      straight faces (its corners on them), not yet with ~
+                                      other bodies"
                                  (symbol-name (scenario-body-name body)))))
    (loop for (name . what) in (rotating-attachments scenario)
          collect (list name (format nil "body ~A rotates and ~A: AMES does not simulate the ~

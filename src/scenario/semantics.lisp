@@ -282,7 +282,10 @@ contact pairs). Call under the scenario's assumptions."
           for (shape . more-shapes) on shapes
           do (loop for other in more-bodies
                    for other-shape in more-shapes
-                   unless (and (scenario-body-fixed-p body) (scenario-body-fixed-p other))
+                   unless (or (and (scenario-body-fixed-p body) (scenario-body-fixed-p other))
+                              ;; a turning polygon's contacts are its corners' (the simulator's
+                              ;; corners.lisp): no translating obstacle describes them
+                              (corner-shaped-rotating-p body) (corner-shaped-rotating-p other))
                      do (let ((location (format nil "bodies ~A and ~A"
                                                 (symbol-name (scenario-body-name body))
                                                 (symbol-name (scenario-body-name other))))

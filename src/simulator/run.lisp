@@ -228,6 +228,7 @@ scenario clause (AMES.KB:SITUATION-ENTITIES-OF; see src/kb/phenomena.lisp)."
      (mapcar #'body-entity (scenario-bodies scenario))
      (mapcar (lambda (entry) (contact-entity run (car entry) (cdr entry)))
              (run-contacts run))
+     (corner-contact-entities run)
      (ames.kb:situation-entities-of scenario))))
 
 ;;; Which contacts touch at the start of a state

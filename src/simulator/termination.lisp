@@ -323,6 +323,8 @@ broad-phase.lisp) never fires."
                   ((every (lambda (g) (member (group-kind g) '(:constant :linear :speed-line))) involved)
                    ;; where the root is undecided, a number under values (numeric-roots.lisp)
                    (tau-candidate run solved groups condition))
+                  ((and (null (rest involved)) (eq (group-kind (first involved)) :turning))
+                   (turning-candidate run solved (first involved) condition))
                   ((and (null (rest involved)) (member (group-kind (first involved)) '(:path :line)))
                    (path-candidate run solved (first involved) condition))
                   (t (values :unknown `(:no-closed-form ,(condition-event condition nil)))))

@@ -8,7 +8,11 @@
 ;;;; Expected results (textbook): with phi its angle to the floor, energy gives
 ;;;; phi'^2 = 3 g (sin a - sin phi) / l while both ends touch; the wall's push is zero, and
 ;;;; the top leaves the wall ((:lift-off ladder wall)), when sin phi = (2/3) sin a: the top
-;;;; has dropped to 2/3 of its starting height, (2/3) l sin a.
+;;;; has dropped to 2/3 of its starting height, (2/3) l sin a, turning at sqrt(g sin a / l).
+;;;; AMES: one state along the ladder's angle theta = pi - phi (the :TURNING integrator),
+;;;; ended by (:lift-off ladder wall) at theta = pi - asin(2 sin(a) / 3) after an elliptic
+;;;; time; the fall that follows, on the floor alone, has no closed form (--numeric
+;;;; integrates it), so the run stops after the first state.
 
 (scenario ladder-against-wall
   "A ladder slides down a frictionless wall and floor and leaves the wall at 2/3 of its height."
@@ -21,4 +25,4 @@
                :position ((* (/ l 2) (cos a)) (* (/ l 2) (sin a))) :angle (- pi a)
                :velocity (0 0))
   (query leaves-wall-at (value (y ladder) :at (:lift-off ladder wall)))
-  (simulate :states 2))
+  (simulate :states 1))

@@ -1,0 +1,100 @@
+;;;; src/kb/corners.lisp -- a corner of a rotating polygon or segment touching a fixed
+;;;; straight face: a ladder's ends on its wall and floor, a block resting on an incline by
+;;;; its two bottom corners, a block tipping about one.
+;;;;
+;;;; The simulator describes each such pair as an entity (it finds the corners and faces;
+;;;; ames.geometry's rotating-contacts.lisp gives their geometry as functions of the
+;;;; rotating body's configuration):
+;;;;   (corner-contact K :observer A :obstacle B :geometry C)
+;;;;       A the rotating body, B the fixed one, C an AMES.GEOMETRY:ROTATING-CONTACT whose
+;;;;       expressions are over (pos A :x), (pos A :y) and (angle A).
+;;;; The corner touches while its gap is 0; it pushes A along the face's normal with the
+;;;; magnitude (normal-force K), at the corner (a moment about A's centre: rotation.lisp's
+;;;; moment of a contact force, whose arm the geometry gives); the restriction keeps the
+;;;; gap's second derivative zero. The contact ends when the normal force would turn
+;;;; attractive, (:lift-off A B): a ladder leaving its wall, a block's corner rising as it
+;;;; tips about the other one; or when the corner slides past an end of a bounded face.
+;;;; A flat face resting on a face is two such contacts (why: rotating-contacts.lisp).
+;;;; Quantity terms are those of mechanics.lisp (normal-force K) and rotation.lisp.
+
+(in-package #:ames.kb)
+
+(defun corner-geometry (situation contact)
+  "The AMES.GEOMETRY:ROTATING-CONTACT of the corner contact entity CONTACT."
+  (entity-property (entity-named situation contact) :geometry))
+
+(defun corner-rates (situation contact)
+  "The rotating body's velocity, angular velocity, acceleration and angular acceleration
+terms, as four values, for the corner CONTACT's observer."
+  (let ((body (entity-property (entity-named situation contact) :observer)))
+    (values (list `(vel ,body :x) `(vel ,body :y)) `(angvel ,body)
+            (list `(acc ,body :x) `(acc ,body :y)) `(angacc ,body))))
+
+(defun corner-touching (situation contact)
+  "Template CORNER-TOUCHING: the corner is on or behind the face's line, (<= GAP 0): it
+holds at the start of a state where the corner touches, and is reached when it arrives."
+  (list '<= (ames.geometry:rotating-contact-gap (corner-geometry situation contact)) 0))
+
+(defun corner-past-an-end (situation contact)
+  "Template CORNER-PAST-AN-END: the corner has slid past an end of a bounded face; never
+(an empty disjunction) on a half-plane's line."
+  (let* ((geometry (corner-geometry situation contact))
+         (place (ames.geometry:rotating-contact-place geometry))
+         (extent (ames.geometry:rotating-contact-extent geometry)))
+    (if extent
+        `(or (< ,place 0) (> ,place ,extent))
+        '(or))))
+
+(defun corner-gap-acceleration (situation contact)
+  "Template CORNER-GAP-ACCELERATION: the second time derivative of the corner's gap."
+  (multiple-value-bind (velocity omega acceleration alpha) (corner-rates situation contact)
+    (ames.geometry:contact-gap-acceleration (corner-geometry situation contact)
+                                            velocity omega acceleration alpha)))
+
+(defun register-corner-templates (kb)
+  "Register in KB the template functions of corner contacts."
+  (register-template kb 'corner-touching #'corner-touching
+                     :documentation "A rotating body's corner is on or behind a face's line.")
+  (register-template kb 'corner-past-an-end #'corner-past-an-end
+                     :documentation "The corner has slid past an end of the face.")
+  (register-template kb 'corner-gap-acceleration #'corner-gap-acceleration
+                     :documentation "The second time derivative of the corner's gap.")
+  (register-template kb 'corner-normal
+                     (lambda (situation contact axis)
+                       (axis-component (ames.geometry:rotating-contact-normal
+                                        (corner-geometry situation contact))
+                                       axis))
+                     :documentation "The unit normal along which the face pushes the corner.")
+  (register-template kb 'corner-tangent
+                     (lambda (situation contact axis)
+                       (axis-component (ames.geometry:rotating-contact-tangent
+                                        (corner-geometry situation contact))
+                                       axis))
+                     :documentation "The unit tangent of the face at the corner."))
+
+(register-corner-templates *mechanics*)
+
+(defcomponent corner-contact (:knowledge-base *mechanics*)
+  "A rotating body's corner touches a fixed face while its gap is zero. The contact ends
+when keeping it would need an attractive normal force (the corner lifts off: a ladder
+leaves its wall, a block tips about its other corner) or when the corner slides past an
+end of the face."
+  (:arguments (?contact :entity corner-contact :where (:observer ?body1 :obstacle ?body2)))
+  (:activation (corner-touching ?contact)
+               (:event (:contact ?body1 ?body2) :impact (:collision ?body1 ?body2)))
+  (:deactivation (:when (< (normal-force ?contact) 0) :event (:lift-off ?body1 ?body2))
+                 (:when (corner-past-an-end ?contact) :event (:leaves ?body1 ?body2 :endpoint)))
+  (:assert (corner-in-contact ?body1 ?body2 :at ?contact)))
+
+(defcomponent corner-normal-force (:knowledge-base *mechanics*)
+  "A touching corner is pushed along the face's normal by a compensating force, whose
+magnitude keeps the corner on the face: the gap's second derivative is zero. It acts at
+the corner, so it has a moment about the body's centre (rotation.lisp)."
+  (:arguments (?contact :belief (corner-in-contact ?body1 ?body2 :at ?contact)))
+  (:assert (force (normal ?contact) :type normal :from ?body2 :on ?body1 :contact ?contact)
+           (reported :forces (:normal ?body1 ?body2 (normal-force ?contact))))
+  (:equations (= (force-x (normal ?contact))
+                 (* (normal-force ?contact) (corner-normal ?contact :x)))
+              (= (force-y (normal ?contact))
+                 (* (normal-force ?contact) (corner-normal ?contact :y)))
+              (= (corner-gap-acceleration ?contact) 0)))

@@ -1,0 +1,83 @@
+;;;; src/simulator/corners.lisp -- the corner contacts of rotating polygons and segments with
+;;;; the fixed bodies' straight faces, described as entities for the knowledge base.
+;;;;
+;;;; A rotating body that is not a disc touches a fixed body at its corners: its contact
+;;;; points turn with it, and the configuration-space obstacles of translating shapes do
+;;;; not describe them. For each corner of such a body (a polygon's vertex, a segment's
+;;;; end) and each straight face of each fixed body (a polygon's edge, a segment, a
+;;;; half-plane's line), ames.geometry's VERTEX-ON-FACE gives the contact's gap, normal,
+;;;; place along the face and arm as expressions of the body's (pos B :x), (pos B :y) and
+;;;; (angle B); the situation gets one (corner-contact K :observer B :obstacle F :geometry
+;;;; C) entity per pair (src/kb/corners.lisp says what it means). Only the faces the corner
+;;;; is in front of or on at the scenario's start (gap >= 0 decided) are described: a face
+;;;; whose line the corner is behind (the underside of an incline under a block on its
+;;;; slope) cannot be reached before another face of that convex body.
+
+(in-package #:ames.simulator)
+
+(defun corner-contact-name (index)
+  "The symbol naming the INDEXth corner contact in the engine's situation."
+  (intern (format nil "CORNER-~D" index) '#:ames.simulator))
+
+(defun corner-body-p (body)
+  "True when the scenario BODY is a free rotating polygon or segment: it touches with
+its corners."
+  (and (scenario-body-rotating-p body) (not (scenario-body-fixed-p body))
+       (member (shape-kind (scenario-body-shape body)) '(:polygon :segment))))
+
+(defun faced-body-p (body)
+  "True when the scenario BODY is fixed and bounded by straight faces only."
+  (and (scenario-body-fixed-p body)
+       (member (shape-kind (scenario-body-shape body)) '(:polygon :segment :half-plane))))
+
+(defun corner-configuration (body)
+  "The configuration of the rotating BODY over its state terms."
+  (let ((name (scenario-body-name body)))
+    (ames.geometry:make-configuration `(ames.kb:pos ,name :x) `(ames.kb:pos ,name :y)
+                                      `(ames.kb:angle ,name))))
+
+(defun at-scenario-start (body expression)
+  "EXPRESSION with BODY's state terms replaced by their values at the scenario's start."
+  (let ((name (scenario-body-name body))
+        (position (scenario-body-position body)))
+    (substitute-expressions (list (cons `(ames.kb:pos ,name :x) (first position))
+                                  (cons `(ames.kb:pos ,name :y) (second position))
+                                  (cons `(ames.kb:angle ,name) (scenario-body-angle body)))
+                            expression)))
+
+(defvar *corner-contacts* (make-hash-table :test #'eq :weakness :key)
+  "The corner contacts of each run, found once: run -> alist name -> geometry.")
+
+(defun run-corner-contacts (run)
+  "The alist name -> AMES.GEOMETRY:ROTATING-CONTACT of RUN's corner contacts (see the
+file header), found at the first call."
+  (multiple-value-bind (contacts found) (gethash run *corner-contacts*)
+    (if found
+        contacts
+        (setf (gethash run *corner-contacts*) (find-corner-contacts run)))))
+
+(defun find-corner-contacts (run)
+  "RUN's corner contacts, numbered from 0 (see RUN-CORNER-CONTACTS)."
+  (let ((scenario (run-scenario run)) (index 0) (contacts '()))
+    (dolist (body (remove-if-not #'corner-body-p (scenario-bodies scenario)))
+      (dolist (fixed (remove-if-not #'faced-body-p (scenario-bodies scenario)))
+        (dolist (contact (ames.geometry:corner-contacts
+                          (run-bridge run) (run-shape run (scenario-body-name body))
+                          (corner-configuration body) (run-shape run (scenario-body-name fixed))
+                          :fixed-position (scenario-body-position fixed)))
+          (when (holds run `(>= ,(at-scenario-start body (ames.geometry:rotating-contact-gap contact)) 0))
+            (push (list* (corner-contact-name index) (scenario-body-name body)
+                         (scenario-body-name fixed) contact)
+                  contacts)
+            (incf index)))))
+    (nreverse contacts)))
+
+(defun run-shape (run name)
+  "The geometry shape of RUN's body NAME."
+  (cdr (assoc name (run-shapes run))))
+
+(defun corner-contact-entities (run)
+  "The situation's CORNER-CONTACT entities of RUN (see the file header)."
+  (loop for (name observer obstacle . geometry) in (run-corner-contacts run)
+        collect (list 'ames.kb:corner-contact name :observer observer :obstacle obstacle
+                      :geometry geometry)))

@@ -1,0 +1,197 @@
+;;;; src/simulator/rotation-path.lisp -- the :TURNING integrator: a rotating body whose contacts
+;;;; leave it one degree of freedom, its angle, integrated by the energy integral.
+;;;;
+;;;; A ladder on its wall and floor, a block tipping about a corner, a rod on a hinge: the
+;;;; solved model gives the body's accelerations as functions of its angle theta and angular
+;;;; velocity omega alone. When the angular acceleration is a function A(theta) of the angle
+;;;; alone (a constant generalized inertia: the ladder's m l^2/3, a pivot's I + m d^2) and the
+;;;; centre's accelerations are those of a point X(theta), a = X'(theta) alpha + X''(theta)
+;;;; omega^2 (checked: X' is the omega-free part over A, and its derivative must be the
+;;;; omega^2 part), the motion is one degree of freedom along theta:
+;;;;   X(theta) = X0 + integral of X' from theta0 to theta,   omega^2 = E(theta) from
+;;;;   theta'' = A(theta) (the bridge's autonomous ODE solver, as for a curved contact),
+;;;; the velocities X'(theta) omega with omega = direction sqrt(E). The group's variable is
+;;;; +ARC-LENGTH+ standing for theta; the events are found along theta by the algebra's
+;;;; COORDINATE-ROOT-AHEAD (each factor's earliest zero ahead, every turn considered: the
+;;;; conditions are periodic in theta), and their times by the travel-time integral (an
+;;;; elliptic form for the ladder). A root beyond the next turning point of E is not
+;;;; reached. Nothing here knows which force or contact holds the body.
+
+(in-package #:ames.simulator)
+
+(defun rotation-path-rates (run solved group)
+  "For GROUP, one rotating body B alone: (values B ALPHA AX AY) its angular acceleration
+and its centre's accelerations from SOLVED, each over (angle B) and (angvel B) only;
+else NIL."
+  (let ((bodies (group-bodies group)))
+    (when (and (null (rest bodies)) (rotating-p run (first bodies)))
+      (let* ((body (first bodies))
+             (allowed (list `(ames.kb:angle ,body) `(ames.kb:angvel ,body)))
+             (others (set-difference (solved-model-state solved) allowed :test #'equal))
+             (rates (list (angular-rate solved body)
+                          (cdr (assoc `(ames.kb:vel ,body :x) (solved-model-rates solved) :test #'equal))
+                          (cdr (assoc `(ames.kb:vel ,body :y) (solved-model-rates solved) :test #'equal)))))
+        (when (every (lambda (rate) (and rate (free-of-all-p others rate))) rates)
+          (apply #'values body rates))))))
+
+(defun omega-coefficients (run expression omega)
+  "(C0 C2) with EXPRESSION = C0 + C2 OMEGA^2, C0 and C2 free of OMEGA; NIL otherwise."
+  (let ((coefficients (handler-case (ames.maxima:polynomial-coefficients-in (run-bridge run) expression omega)
+                        (ames.maxima:maxima-condition () nil))))
+    (when (and coefficients (<= (length coefficients) 3)
+               (or (< (length coefficients) 2) (eql 0 (tidy run (second coefficients)))))
+      (list (first coefficients) (or (third coefficients) 0)))))
+
+(defun centre-along-angle (run theta acceleration omega driving theta0 x0)
+  "The centre's coordinate X(theta) (in the name THETA) whose acceleration over the angle
+and OMEGA is ACCELERATION, when the angular acceleration is DRIVING (over THETA): X' is
+the omega-free part over DRIVING and its derivative must be the omega^2 part. (values X
+X') or NIL."
+  (let ((parts (omega-coefficients run acceleration omega)))
+    (when (and parts (not (eql 0 (tidy run driving))))
+      (let* ((slope (tidy run `(/ ,(first parts) ,driving) :full))
+             (bridge (run-bridge run)))
+        (when (and (eql 0 (tidy run `(- ,(ames.maxima:maxima-derivative bridge slope theta) ,(second parts))))
+                   (free-of-p omega slope))
+          (let ((antiderivative (ames.maxima:call-or-nil
+                                 (lambda () (ames.maxima:maxima-antiderivative bridge slope theta)))))
+            (when (and antiderivative
+                       (ames.maxima:equivalent-p bridge (ames.maxima:maxima-derivative bridge antiderivative theta)
+                                                 slope))
+              (values (tidy run `(+ ,x0 (- ,antiderivative ,(substitute-expressions
+                                                               (list (cons theta theta0)) antiderivative)))
+                            :full)
+                      slope))))))))
+
+(defun integrate-rotation-path (run solved group)
+  "Fill GROUP's motion along its body's angle (see the file header) and make it a
+:TURNING group; NIL (GROUP unchanged) when it is no such motion, the initial velocity is
+not the one the angle gives, or the direction of motion is not decided."
+  (multiple-value-bind (body alpha ax ay) (rotation-path-rates run solved group)
+    (when body
+      (let* ((theta-term `(ames.kb:angle ,body)) (omega-term `(ames.kb:angvel ,body))
+             (s +arc-length+)
+             (over-angle (lambda (x) (substitute-expressions (list (cons theta-term s)) x)))
+             (driving-parts (omega-coefficients run (funcall over-angle alpha) omega-term))
+             (theta0 (body-angle run body)) (omega0 (body-angular-velocity run body))
+             (p0 (body-position run body)) (v0 (body-velocity run body)))
+        (when (and driving-parts (eql 0 (tidy run (second driving-parts))))
+          (let ((driving (first driving-parts)))
+            (multiple-value-bind (x x-slope)
+                (centre-along-angle run s (funcall over-angle ax) omega-term driving theta0 (first p0))
+              (multiple-value-bind (y y-slope)
+                  (and x (centre-along-angle run s (funcall over-angle ay) omega-term driving theta0 (second p0)))
+                (when (and y
+                           (holds run `(= ,(first v0) (* ,(at-arc x-slope theta0) ,omega0)))
+                           (holds run `(= ,(second v0) (* ,(at-arc y-slope theta0) ,omega0))))
+                  (fill-rotation-path run group body driving s theta0 omega0
+                                      (list x y) (list x-slope y-slope)))))))))))
+
+(defun fill-rotation-path (run group body driving s theta0 omega0 centre slopes)
+  "Set GROUP's motion along the angle S of BODY (see INTEGRATE-ROTATION-PATH): the energy
+integral of S'' = DRIVING from THETA0 at OMEGA0, CENTRE (X Y) and their SLOPES over S.
+GROUP, or NIL when the ODE has no energy integral or the direction is not decided."
+  (let* ((ode (handler-case (ames.maxima:solve-autonomous-ode (run-bridge run) driving s
+                                                               :initial-position theta0
+                                                               :initial-velocity omega0)
+                ((or ames.maxima:solve-failed ames.maxima:maxima-question) () nil)))
+         (direction (let ((sign (sign-of run omega0)))
+                      (if (member sign '(1 -1)) sign (sign-of run (at-arc driving theta0))))))
+    (when (and ode (member direction '(1 -1)))
+      (let* ((energy (tidy run (ames.maxima:ode-solution-speed-squared ode)))
+             (speed (tidy run `(* ,direction (sqrt ,energy)))))
+        (setf (group-variable group) s
+              (group-s0 group) theta0
+              (group-direction group) direction
+              (group-speed-squared group) energy
+              (group-speed group) speed
+              (group-ode-kind group) (ames.maxima:ode-solution-kind ode)
+              (group-line group) (list :coordinate `(= ,s (ames.kb:angle ,body)))
+              (group-kind group) :turning
+              (group-motion group)
+              (list (cons `(ames.kb:pos ,body :x) (first centre))
+                    (cons `(ames.kb:pos ,body :y) (second centre))
+                    (cons `(ames.kb:vel ,body :x) (tidy run `(* ,(first slopes) ,speed) :full))
+                    (cons `(ames.kb:vel ,body :y) (tidy run `(* ,(second slopes) ,speed) :full))
+                    (cons `(ames.kb:angle ,body) s)
+                    (cons `(ames.kb:angvel ,body) speed)))
+        group))))
+
+;;; Where a condition fires along the angle
+
+(defun angle-root-ahead (run group function)
+  "Where FUNCTION (of the angle) first reaches zero going negative ahead of GROUP's start:
+(values :AT S), (values :NEVER) or (values :UNKNOWN FACT)."
+  (let ((function (tidy run function :full)))
+    (when (free-of-p +arc-length+ function)
+      (return-from angle-root-ahead (values :never)))
+    (multiple-value-bind (root status)
+        (handler-case (ames.algebra:coordinate-root-ahead (run-bridge run) function +arc-length+
+                                                         (group-s0 group) (group-direction group))
+          (ames.maxima:maxima-error () (values :unknown nil)))
+      (case root
+        (:none (values :never))
+        (:unknown (values :unknown (or status `(:roots-of (= ,function 0)))))
+        (t (let ((slope (tidy run `(* ,(group-direction group)
+                                      ,(at-arc (ames.geometry:differentiate function +arc-length+) root)))))
+             (case (ames.algebra:decided-or-by-values (run-bridge run) `(<= ,slope 0))
+               (:true (values :at root))
+               (t (values :unknown `(< ,slope 0))))))))))
+
+(defun angle-relation-root (run group relation over-angle)
+  "Where RELATION (an inequality or an OR of them) first holds ahead along GROUP's angle."
+  (if (eq (first relation) 'or)
+      (let ((best nil) (unknown nil))
+        (dolist (part (rest relation))
+          (multiple-value-bind (status s) (angle-relation-root run group part over-angle)
+            (case status
+              (:at (if (or (null best) (eq (nearer-p run group s best) :true))
+                       (setf best s)
+                       (unless (eq (nearer-p run group best s) :true) (setf unknown `(< ,s ,best)))))
+              (:unknown (setf unknown s)))))
+        (cond (unknown (values :unknown unknown)) (best (values :at best)) (t (values :never))))
+      (angle-root-ahead run group (funcall over-angle (violation-function relation)))))
+
+(defun reached-before-turning (run group s)
+  "Whether GROUP's body reaches the angle S before its speed vanishes: :TRUE, :FALSE, or
+(values :UNKNOWN FACT) (the parameter values decide the order when the run has some)."
+  (multiple-value-bind (turn status)
+      (handler-case (ames.algebra:coordinate-root-ahead (run-bridge run) (group-speed-squared group)
+                                                       +arc-length+ (group-s0 group) (group-direction group))
+        (ames.maxima:maxima-error () (values :unknown nil)))
+    (case turn
+      (:none :true)
+      (:unknown (values :unknown (or status `(>= ,(at-arc (group-speed-squared group) s) 0))))
+      (t (let ((before `(< (* ,(group-direction group) (- ,s ,turn)) 0)))
+           (case (ames.algebra:decided-or-by-values (run-bridge run) before)
+             (:true :true)
+             (:false :false)
+             (t (values :unknown before))))))))
+
+(defun turning-candidate (run solved group condition)
+  "When CONDITION, over GROUP's motion along its angle, fires: a CANDIDATE (its TIME the
+travel time, its AT-ARC the angle), :NEVER, or (values :UNKNOWN FACT). A condition met
+only beyond the body's next turning point is reported unsupported (nothing watches
+that turning point yet)."
+  (let ((relation (ames.engine:termination-condition-relation condition))
+        (over-angle (lambda (x) (motion-value (list group) (over-state-terms run solved x)))))
+    (multiple-value-bind (status s) (angle-relation-root run group relation over-angle)
+      (case status
+        (:at
+         (multiple-value-bind (reached fact) (reached-before-turning run group s)
+           (case reached
+             (:true
+              (let* ((f (funcall over-angle (violation-function relation)))
+                     (rate (and (not (eq (first relation) 'or))
+                                (tidy run `(* ,(at-arc (ames.geometry:differentiate f +arc-length+) s)
+                                              ,(at-arc (group-speed group) s))))))
+                (make-candidate condition
+                                (condition-event condition (and rate (holds run `(< ,rate 0)) rate))
+                                (arc-travel-time run group s)
+                                :at-arc s :group group :rate rate)))
+             (:false (error 'unsupported-situation
+                            :datum (group-bodies group)
+                            :detail "The body would turn back before the event; a turning point of a rotation is not supported yet."))
+             (t (values :unknown fact)))))
+        (:never :never)
+        (t (values :unknown s))))))
