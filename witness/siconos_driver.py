@@ -513,7 +513,11 @@ def sx_states(names, qs, key):
 
 def main():
     text = open(sys.argv[1]).read() if len(sys.argv) > 1 else sys.stdin.read()
-    model = json.loads(text)
+    simulate(json.loads(text))
+
+
+def simulate(model):
+    """Simulate MODEL (a decoded model description) and print the s-expression answer."""
     if model.get("hinges") or any("inertia" in b for b in model.get("bodies", [])):
         from siconos_rotation import main_rotation   # bodies that turn: 3 degrees of freedom
         main_rotation(model)
