@@ -224,7 +224,8 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "compare")
                  (:file "compare-curved")
                  (:file "generate")
-                 (:file "generate-curved")))
+                 (:file "generate-curved")
+                 (:file "generate-drag")))
    (:module "interface" :pathname "src/interface/" :serial t
     :depends-on ("report" "check" "witness")
     :components ((:file "package")

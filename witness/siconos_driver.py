@@ -101,6 +101,9 @@ class Body:
         self.q = np.array(spec["q"], dtype=float)
         self.v = np.array(spec["v"], dtype=float)
         self.force = np.array(spec.get("force", [0.0, 0.0]), dtype=float)
+        drag = spec.get("drag") or {}
+        self.linear_drag = float(drag.get("linear", 0.0))        # F = -b v
+        self.quadratic_drag = float(drag.get("quadratic", 0.0))  # F = -c |v| v
         shape = spec["shape"]
         self.kind = shape["kind"]
         self.r = float(shape.get("r", 0.0))

@@ -1,0 +1,207 @@
+;;;; ames-wrong-drag-fall-5-16 -- a disagreement found by the witness (make crosscheck).
+;;;; verdict: ames-wrong
+;;;; reason: state 2: start: AMES 3.1874423952238944d0, witness 1.2499210269095833d0
+;;;; Run: bin/ames check /work/wt/witness/t/../witness/disagreements/ames-wrong-drag-fall-5-16.lisp --numeric
+
+(scenario drag-fall-16 "A ball falls through a medium with drag onto the floor." (gravity 10)
+ (restitution 1) (body floor :fixed t :shape (half-plane (1 0) (0 0)))
+ (body ball :mass 3/2 :position (0 5/4) :velocity (0 0) :shape point) (drag air :on ball :linear 2)
+ (simulate :states 4))
+
+
+;; AMES's answer:
+;;   (:SCENARIO AMES-SCENARIO::DRAG-FALL-16 :STATES
+;;    ((:INDEX 0 :START 0 :DURATION 0.5622948175033722d0 :CONTACTS NIL :ACCELERATIONS
+;;      ((AMES-SCENARIO::FLOOR (0 0))
+;;       (AMES-SCENARIO::BALL (0 (- (* 10 (EXP (- (/ (* 4 AMES.BASE:TAU) 3))))))))
+;;      :FORCES
+;;      ((:DRAG AMES-SCENARIO::AIR AMES-SCENARIO::BALL
+;;        (0 (* (EXP (- (/ (* 4 AMES.BASE:TAU) 3))) (- (* 15 (EXP (/ (* 4 AMES.BASE:TAU) 3))) 15))))
+;;       (:GRAVITY AMES-SCENARIO::BALL (0 -15)))
+;;      :POSITIONS
+;;      ((AMES-SCENARIO::FLOOR (0 0))
+;;       (AMES-SCENARIO::BALL
+;;        (0
+;;         (-
+;;          (/
+;;           (* (EXP (- (/ (* 4 AMES.BASE:TAU) 3)))
+;;              (+ 45 (* (- (* 60 AMES.BASE:TAU) 55) (EXP (/ (* 4 AMES.BASE:TAU) 3)))))
+;;           8)))))
+;;      :VELOCITIES
+;;      ((AMES-SCENARIO::FLOOR (0 0))
+;;       (AMES-SCENARIO::BALL
+;;        (0
+;;         (-
+;;          (/ (* (EXP (- (/ (* 4 AMES.BASE:TAU) 3))) (- (* 15 (EXP (/ (* 4 AMES.BASE:TAU) 3))) 15))
+;;             2)))))
+;;      :INITIAL-VELOCITIES ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 0))) :END-EVENT
+;;      (:COLLISION AMES-SCENARIO::BALL AMES-SCENARIO::FLOOR :IMPULSE 305200999/25714466 :ENERGY-LOST 0)
+;;      :FINAL-POSITIONS ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 0))) :FINAL-VELOCITIES
+;;      ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 -305200999/77143398))) :IMPACT
+;;      (:CONTACTS
+;;       ((AMES-SCENARIO::BALL AMES-SCENARIO::FLOOR :FEATURE (:EDGE 0 :OF AMES-SCENARIO::FLOOR)
+;;         :OBSERVER-FEATURE (:POINT :OF AMES-SCENARIO::BALL)))
+;;       :IMPULSES ((:IMPULSE AMES-SCENARIO::BALL AMES-SCENARIO::FLOOR 305200999/25714466)) :ENERGY-LOST
+;;       0 :VELOCITIES-BEFORE
+;;       ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 -305200999/77143398))) :VELOCITIES-AFTER
+;;       ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 305200999/77143398))))
+;;      :ENERGY
+;;      ((:KINETIC AMES-SCENARIO::BALL
+;;        (/
+;;         (* (EXP (- (/ (* 8 AMES.BASE:TAU) 3)))
+;;            (- (+ 675 (* 675 (EXP (/ (* 8 AMES.BASE:TAU) 3))))
+;;               (* 1350 (EXP (/ (* 4 AMES.BASE:TAU) 3)))))
+;;         16))
+;;       (:POTENTIAL (:GRAVITY AMES-SCENARIO::BALL)
+;;        (-
+;;         (/
+;;          (* (EXP (- (/ (* 4 AMES.BASE:TAU) 3)))
+;;             (+ 675 (* (- (* 900 AMES.BASE:TAU) 825) (EXP (/ (* 4 AMES.BASE:TAU) 3)))))
+;;          8))))
+;;      :MOMENTUM
+;;      ((:MOMENTUM AMES-SCENARIO::BALL
+;;        (0
+;;         (-
+;;          (/ (* (EXP (- (/ (* 4 AMES.BASE:TAU) 3))) (- (* 45 (EXP (/ (* 4 AMES.BASE:TAU) 3))) 45))
+;;             4))))))
+;;     (:INDEX 1 :START 14370811/25557431 :DURATION 0.6876262094061982d0 :CONTACTS NIL :ACCELERATIONS
+;;      ((AMES-SCENARIO::FLOOR (0 0))
+;;       (AMES-SCENARIO::BALL (0 (- (/ (* 1767552968 (EXP (- (/ (* 4 AMES.BASE:TAU) 3)))) 115715097)))))
+;;      :FORCES
+;;      ((:DRAG AMES-SCENARIO::AIR AMES-SCENARIO::BALL
+;;        (0
+;;         (/
+;;          (* (EXP (- (/ (* 4 AMES.BASE:TAU) 3)))
+;;             (- (* 578575485 (EXP (/ (* 4 AMES.BASE:TAU) 3))) 883776484))
+;;          38571699)))
+;;       (:GRAVITY AMES-SCENARIO::BALL (0 -15)))
+;;      :POSITIONS
+;;      ((AMES-SCENARIO::FLOOR (0 0))
+;;       (AMES-SCENARIO::BALL
+;;        (0
+;;         (-
+;;          (/
+;;           (* (EXP (- (/ (* 4 AMES.BASE:TAU) 3)))
+;;              (+ 220944121
+;;                 (* (- (* 192858495 AMES.BASE:TAU) 220944121) (EXP (/ (* 4 AMES.BASE:TAU) 3)))))
+;;           25714466)))))
+;;      :VELOCITIES
+;;      ((AMES-SCENARIO::FLOOR (0 0))
+;;       (AMES-SCENARIO::BALL
+;;        (0
+;;         (-
+;;          (/
+;;           (* (EXP (- (/ (* 4 AMES.BASE:TAU) 3)))
+;;              (- (* 578575485 (EXP (/ (* 4 AMES.BASE:TAU) 3))) 883776484))
+;;           77143398)))))
+;;      :INITIAL-VELOCITIES ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 305200999/77143398)))
+;;      :END-EVENT
+;;      (:COLLISION AMES-SCENARIO::BALL AMES-SCENARIO::FLOOR :IMPULSE 106864737/12199252 :ENERGY-LOST 0)
+;;      :FINAL-POSITIONS ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 0))) :FINAL-VELOCITIES
+;;      ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 -35621579/12199252))) :ACCUMULATION
+;;      (:FACTOR 1373984823092721/1861611948726374 :CYCLE 308261043446241/448297402323335 :TIME
+;;       696781198727373620823758207789/218601973723961160336263192755)
+;;      :IMPACT
+;;      (:CONTACTS
+;;       ((AMES-SCENARIO::BALL AMES-SCENARIO::FLOOR :FEATURE (:EDGE 0 :OF AMES-SCENARIO::FLOOR)
+;;         :OBSERVER-FEATURE (:POINT :OF AMES-SCENARIO::BALL)))
+;;       :IMPULSES ((:IMPULSE AMES-SCENARIO::BALL AMES-SCENARIO::FLOOR 106864737/12199252)) :ENERGY-LOST
+;;       0 :VELOCITIES-BEFORE
+;;       ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 -35621579/12199252))) :VELOCITIES-AFTER
+;;       ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 35621579/12199252))))
+;;      :ENERGY
+;;      ((:KINETIC AMES-SCENARIO::BALL
+;;        (/
+;;         (* (EXP (- (/ (* 8 AMES.BASE:TAU) 3)))
+;;            (- (+ 781060873671402256 (* 334749591842985225 (EXP (/ (* 8 AMES.BASE:TAU) 3))))
+;;               (* 1022662815723789480 (EXP (/ (* 4 AMES.BASE:TAU) 3)))))
+;;         7934805139981872))
+;;       (:POTENTIAL (:GRAVITY AMES-SCENARIO::BALL)
+;;        (-
+;;         (/
+;;          (* (EXP (- (/ (* 4 AMES.BASE:TAU) 3)))
+;;             (+ 3314161815
+;;                (* (- (* 2892877425 AMES.BASE:TAU) 3314161815) (EXP (/ (* 4 AMES.BASE:TAU) 3)))))
+;;          25714466))))
+;;      :MOMENTUM
+;;      ((:MOMENTUM AMES-SCENARIO::BALL
+;;        (0
+;;         (-
+;;          (/
+;;           (* (EXP (- (/ (* 4 AMES.BASE:TAU) 3)))
+;;              (- (* 578575485 (EXP (/ (* 4 AMES.BASE:TAU) 3))) 883776484))
+;;           51428932))))))
+;;     (:INDEX 2 :START 696781198727373620823758207789/218601973723961160336263192755 :DURATION :FOREVER
+;;      :CONTACTS
+;;      ((AMES-SCENARIO::BALL AMES-SCENARIO::FLOOR :FEATURE (:EDGE 0 :OF AMES-SCENARIO::FLOOR)
+;;        :OBSERVER-FEATURE (:POINT :OF AMES-SCENARIO::BALL)))
+;;      :ACCELERATIONS ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 0))) :FORCES
+;;      ((:DRAG AMES-SCENARIO::AIR AMES-SCENARIO::BALL (0 0)) (:GRAVITY AMES-SCENARIO::BALL (0 -15))
+;;       (:NORMAL AMES-SCENARIO::BALL AMES-SCENARIO::FLOOR 15))
+;;      :POSITIONS ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 0))) :VELOCITIES
+;;      ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 0))) :INITIAL-VELOCITIES
+;;      ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 0))) :END-EVENT :NONE :FINAL-POSITIONS NIL
+;;      :FINAL-VELOCITIES NIL :ENERGY
+;;      ((:KINETIC AMES-SCENARIO::BALL 0) (:POTENTIAL (:GRAVITY AMES-SCENARIO::BALL) 0)) :MOMENTUM
+;;      ((:MOMENTUM AMES-SCENARIO::BALL (0 0)))))
+;;    :OUTCOME :COMPLETE :ANSWERS NIL)
+
+;; witness's answer:
+;;   (:STATUS :OK :SCHEME :EVENT-DRIVEN :EVENTS
+;;    ((:TIME 0.562294817503378d0 :SPEED 3.956281508367112d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -3.450744464478239d-16))) :VELOCITIES
+;;      (("ball" (0.0d0 -3.956281508367112d0))) :AFTER (("ball" (0.0d0 3.956281508367113d0))))
+;;     (:TIME 0.8800211891874701d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.5842633428822056d0))) :VELOCITIES (("ball" (0.0d0 2.385922405825911d-14)))
+;;      :AFTER (("ball" (0.0d0 2.385922405825911d-14))))
+;;     (:TIME 1.2499210269095833d0 :SPEED 2.919980585694944d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -4.718447854656915d-16))) :VELOCITIES
+;;      (("ball" (0.0d0 -2.919980585694944d0))) :AFTER (("ball" (0.0d0 2.919980585694944d0))))
+;;     (:TIME 1.4965376414595875d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.3403608308733786d0))) :VELOCITIES (("ball" (0.0d0 3.028142786434121d-15)))
+;;      :AFTER (("ball" (0.0d0 3.028142786434121d-15))))
+;;     (:TIME 1.7734897560295448d0 :SPEED 2.315706705504671d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -2.914335439641036d-16))) :VELOCITIES
+;;      (("ball" (0.0d0 -2.315706705504671d0))) :AFTER (("ball" (0.0d0 2.315706705504671d0))))
+;;     (:TIME 1.9753003613415867d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.22320048866997996d0))) :VELOCITIES (("ball" (0.0d0 -2.685517959269757d-15)))
+;;      :AFTER (("ball" (0.0d0 -2.685517959269757d-15))))
+;;     (:TIME 2.1969859549854043d0 :SPEED 1.9192552840539154d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -2.636779683484747d-16))) :VELOCITIES
+;;      (("ball" (0.0d0 -1.9192552840539154d0))) :AFTER (("ball" (0.0d0 1.9192552840539154d0))))
+;;     (:TIME 2.3678757110374087d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.15776829289290278d0))) :VELOCITIES (("ball" (0.0d0 -1.529317986267468d-15)))
+;;      :AFTER (("ball" (0.0d0 -1.529317986267468d-15))))
+;;     (:TIME 2.552806781272157d0 :SPEED 1.6389529788136445d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -2.7755575615628914d-16))) :VELOCITIES
+;;      (("ball" (0.0d0 -1.6389529788136445d0))) :AFTER (("ball" (0.0d0 1.6389529788136445d0))))
+;;     (:TIME 2.7010388848317266d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.11747395811320471d0))) :VELOCITIES (("ball" (0.0d0 -2.89473509724189d-15)))
+;;      :AFTER (("ball" (0.0d0 -2.89473509724189d-15))))
+;;     (:TIME 2.8597228036394893d0 :SPEED 1.430207244859682d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -3.671108556035918d-16))) :VELOCITIES
+;;      (("ball" (0.0d0 -1.430207244859682d0))) :AFTER (("ball" (0.0d0 1.430207244859682d0))))
+;;     (:TIME 2.9906252400090283d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.09088716108852975d0))) :VELOCITIES (("ball" (0.0d0 -2.9891792708600914d-15)))
+;;      :AFTER (("ball" (0.0d0 -2.9891792708600914d-15))))
+;;     (:TIME 3.1296123336971386d0 :SPEED 1.2686880557167861d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -3.616898447411643d-16))) :VELOCITIES
+;;      (("ball" (0.0d0 -1.2686880557167861d0))) :AFTER (("ball" (0.0d0 1.2686880557167861d0))))
+;;     (:TIME 3.2468254687060316d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.07241752876874243d0))) :VELOCITIES (("ball" (0.0d0 -1.7138652896508587d-15)))
+;;      :AFTER (("ball" (0.0d0 -1.7138652896508587d-15))))
+;;     (:TIME 3.3704793992337767d0 :SPEED 1.1399825996495727d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -4.909267437014364d-16))) :VELOCITIES
+;;      (("ball" (0.0d0 -1.1399825996495727d0))) :AFTER (("ball" (0.0d0 1.1399825996495727d0))))
+;;     (:TIME 3.4766025605504414d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.059063240312211544d0))) :VELOCITIES (("ball" (0.0d0 -5.4595508615269815d-15)))
+;;      :AFTER (("ball" (0.0d0 -5.4595508615269815d-15))))
+;;     (:TIME 3.5879782367959345d0 :SPEED 1.0350057759720082d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -3.634245682171411d-16))) :VELOCITIES
+;;      (("ball" (0.0d0 -1.0350057759720082d0))) :AFTER (("ball" (0.0d0 1.0350057759720082d0))))
+;;     (:TIME 3.684932996141909d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.04909363698531727d0))) :VELOCITIES (("ball" (0.0d0 7.388244882426449d-15)))
+;;      :AFTER (("ball" (0.0d0 7.388244882426449d-15)))))
+;;    :END
+;;    (:TIME 3.687978236795934d0 :POSITIONS (("ball" (0.0d0 0.0490473322229015d0))) :VELOCITIES
+;;     (("ball" (0.0d0 -0.03039066699189252d0)))))

@@ -1,0 +1,217 @@
+;;;; ames-wrong-drag-fall-5-32 -- a disagreement found by the witness (make crosscheck).
+;;;; verdict: ames-wrong
+;;;; reason: state 2: start: AMES 6.359528362453072d0, witness 1.877239106650783d0
+;;;; Run: bin/ames check /work/wt/witness/t/../witness/disagreements/ames-wrong-drag-fall-5-32.lisp --numeric
+
+(scenario drag-fall-32 "A ball falls through a medium with drag onto the floor." (gravity 55/4)
+ (restitution 1) (body floor :fixed t :shape (half-plane (1 0) (0 0)))
+ (body ball :mass 3 :position (0 7/2) :velocity (0 0) :shape point) (drag air :on ball :linear 9/5)
+ (simulate :states 4))
+
+
+;; AMES's answer:
+;;   (:SCENARIO AMES-SCENARIO::DRAG-FALL-32 :STATES
+;;    ((:INDEX 0 :START 0 :DURATION 0.7682597152872901d0 :CONTACTS NIL :ACCELERATIONS
+;;      ((AMES-SCENARIO::FLOOR (0 0))
+;;       (AMES-SCENARIO::BALL (0 (- (/ (* 55 (EXP (- (/ (* 3 AMES.BASE:TAU) 5)))) 4)))))
+;;      :FORCES
+;;      ((:DRAG AMES-SCENARIO::AIR AMES-SCENARIO::BALL
+;;        (0
+;;         (/ (* (EXP (- (/ (* 3 AMES.BASE:TAU) 5))) (- (* 165 (EXP (/ (* 3 AMES.BASE:TAU) 5))) 165))
+;;            4)))
+;;       (:GRAVITY AMES-SCENARIO::BALL (0 -165/4)))
+;;      :POSITIONS
+;;      ((AMES-SCENARIO::FLOOR (0 0))
+;;       (AMES-SCENARIO::BALL
+;;        (0
+;;         (-
+;;          (/
+;;           (* (EXP (- (/ (* 3 AMES.BASE:TAU) 5)))
+;;              (+ 1375 (* (- (* 825 AMES.BASE:TAU) 1501) (EXP (/ (* 3 AMES.BASE:TAU) 5)))))
+;;           36)))))
+;;      :VELOCITIES
+;;      ((AMES-SCENARIO::FLOOR (0 0))
+;;       (AMES-SCENARIO::BALL
+;;        (0
+;;         (-
+;;          (/ (* (EXP (- (/ (* 3 AMES.BASE:TAU) 5))) (- (* 275 (EXP (/ (* 3 AMES.BASE:TAU) 5))) 275))
+;;             12)))))
+;;      :INITIAL-VELOCITIES ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 0))) :END-EVENT
+;;      (:COLLISION AMES-SCENARIO::BALL AMES-SCENARIO::FLOOR :IMPULSE 520152933/10242976 :ENERGY-LOST 0)
+;;      :FINAL-POSITIONS ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 0))) :FINAL-VELOCITIES
+;;      ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 -173384311/20485952))) :IMPACT
+;;      (:CONTACTS
+;;       ((AMES-SCENARIO::BALL AMES-SCENARIO::FLOOR :FEATURE (:EDGE 0 :OF AMES-SCENARIO::FLOOR)
+;;         :OBSERVER-FEATURE (:POINT :OF AMES-SCENARIO::BALL)))
+;;       :IMPULSES ((:IMPULSE AMES-SCENARIO::BALL AMES-SCENARIO::FLOOR 520152933/10242976)) :ENERGY-LOST
+;;       0 :VELOCITIES-BEFORE
+;;       ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 -173384311/20485952))) :VELOCITIES-AFTER
+;;       ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 173384311/20485952))))
+;;      :ENERGY
+;;      ((:KINETIC AMES-SCENARIO::BALL
+;;        (/
+;;         (* (EXP (- (/ (* 6 AMES.BASE:TAU) 5)))
+;;            (- (+ 75625 (* 75625 (EXP (/ (* 6 AMES.BASE:TAU) 5))))
+;;               (* 151250 (EXP (/ (* 3 AMES.BASE:TAU) 5)))))
+;;         96))
+;;       (:POTENTIAL (:GRAVITY AMES-SCENARIO::BALL)
+;;        (-
+;;         (/
+;;          (* (EXP (- (/ (* 3 AMES.BASE:TAU) 5)))
+;;             (+ 75625 (* (- (* 45375 AMES.BASE:TAU) 82555) (EXP (/ (* 3 AMES.BASE:TAU) 5)))))
+;;          48))))
+;;      :MOMENTUM
+;;      ((:MOMENTUM AMES-SCENARIO::BALL
+;;        (0
+;;         (-
+;;          (/ (* (EXP (- (/ (* 3 AMES.BASE:TAU) 5))) (- (* 275 (EXP (/ (* 3 AMES.BASE:TAU) 5))) 275))
+;;             4))))))
+;;     (:INDEX 1 :START 24358925/31706628 :DURATION 1.108979391363495d0 :CONTACTS NIL :ACCELERATIONS
+;;      ((AMES-SCENARIO::FLOOR (0 0))
+;;       (AMES-SCENARIO::BALL (0 (- (/ (* 1928562133 (EXP (- (/ (* 3 AMES.BASE:TAU) 5)))) 102429760)))))
+;;      :FORCES
+;;      ((:DRAG AMES-SCENARIO::AIR AMES-SCENARIO::BALL
+;;        (0
+;;         (/
+;;          (* (EXP (- (/ (* 3 AMES.BASE:TAU) 5)))
+;;             (- (* 4225227600 (EXP (/ (* 3 AMES.BASE:TAU) 5))) 5785686399))
+;;          102429760)))
+;;       (:GRAVITY AMES-SCENARIO::BALL (0 -165/4)))
+;;      :POSITIONS
+;;      ((AMES-SCENARIO::FLOOR (0 0))
+;;       (AMES-SCENARIO::BALL
+;;        (0
+;;         (-
+;;          (/
+;;           (* (EXP (- (/ (* 3 AMES.BASE:TAU) 5)))
+;;              (+ 9642810665
+;;                 (* (- (* 4225227600 AMES.BASE:TAU) 9642810665) (EXP (/ (* 3 AMES.BASE:TAU) 5)))))
+;;           184373568)))))
+;;      :VELOCITIES
+;;      ((AMES-SCENARIO::FLOOR (0 0))
+;;       (AMES-SCENARIO::BALL
+;;        (0
+;;         (-
+;;          (/
+;;           (* (EXP (- (/ (* 3 AMES.BASE:TAU) 5)))
+;;              (- (* 1408409200 (EXP (/ (* 3 AMES.BASE:TAU) 5))) 1928562133))
+;;           61457856)))))
+;;      :INITIAL-VELOCITIES ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 173384311/20485952)))
+;;      :END-EVENT
+;;      (:COLLISION AMES-SCENARIO::BALL AMES-SCENARIO::FLOOR :IMPULSE 3255269710/79963641 :ENERGY-LOST
+;;       0)
+;;      :FINAL-POSITIONS ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 0))) :FINAL-VELOCITIES
+;;      ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 -1627634855/239890923))) :ACCUMULATION
+;;      (:FACTOR 33343649513056960/41593322399509053 :CYCLE 2916511842959/2629906259460 :TIME
+;;       34493869370201277311488870363/5423966590644451303029512445)
+;;      :IMPACT
+;;      (:CONTACTS
+;;       ((AMES-SCENARIO::BALL AMES-SCENARIO::FLOOR :FEATURE (:EDGE 0 :OF AMES-SCENARIO::FLOOR)
+;;         :OBSERVER-FEATURE (:POINT :OF AMES-SCENARIO::BALL)))
+;;       :IMPULSES ((:IMPULSE AMES-SCENARIO::BALL AMES-SCENARIO::FLOOR 3255269710/79963641))
+;;       :ENERGY-LOST 0 :VELOCITIES-BEFORE
+;;       ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 -1627634855/239890923)))
+;;       :VELOCITIES-AFTER
+;;       ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 1627634855/239890923))))
+;;      :ENERGY
+;;      ((:KINETIC AMES-SCENARIO::BALL
+;;        (/
+;;         (* (EXP (- (/ (* 6 AMES.BASE:TAU) 5)))
+;;            (- (+ 3719351900841509689 (* 1983616474644640000 (EXP (/ (* 6 AMES.BASE:TAU) 5))))
+;;               (* 5432409301777647200 (EXP (/ (* 3 AMES.BASE:TAU) 5)))))
+;;         2518045376077824))
+;;       (:POTENTIAL (:GRAVITY AMES-SCENARIO::BALL)
+;;        (-
+;;         (/
+;;          (* (EXP (- (/ (* 3 AMES.BASE:TAU) 5)))
+;;             (+ 530354586575
+;;                (* (- (* 232387518000 AMES.BASE:TAU) 530354586575) (EXP (/ (* 3 AMES.BASE:TAU) 5)))))
+;;          245831424))))
+;;      :MOMENTUM
+;;      ((:MOMENTUM AMES-SCENARIO::BALL
+;;        (0
+;;         (-
+;;          (/
+;;           (* (EXP (- (/ (* 3 AMES.BASE:TAU) 5)))
+;;              (- (* 1408409200 (EXP (/ (* 3 AMES.BASE:TAU) 5))) 1928562133))
+;;           20485952))))))
+;;     (:INDEX 2 :START 34493869370201277311488870363/5423966590644451303029512445 :DURATION :FOREVER
+;;      :CONTACTS
+;;      ((AMES-SCENARIO::BALL AMES-SCENARIO::FLOOR :FEATURE (:EDGE 0 :OF AMES-SCENARIO::FLOOR)
+;;        :OBSERVER-FEATURE (:POINT :OF AMES-SCENARIO::BALL)))
+;;      :ACCELERATIONS ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 0))) :FORCES
+;;      ((:DRAG AMES-SCENARIO::AIR AMES-SCENARIO::BALL (0 0)) (:GRAVITY AMES-SCENARIO::BALL (0 -165/4))
+;;       (:NORMAL AMES-SCENARIO::BALL AMES-SCENARIO::FLOOR 165/4))
+;;      :POSITIONS ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 0))) :VELOCITIES
+;;      ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 0))) :INITIAL-VELOCITIES
+;;      ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 0))) :END-EVENT :NONE :FINAL-POSITIONS NIL
+;;      :FINAL-VELOCITIES NIL :ENERGY
+;;      ((:KINETIC AMES-SCENARIO::BALL 0) (:POTENTIAL (:GRAVITY AMES-SCENARIO::BALL) 0)) :MOMENTUM
+;;      ((:MOMENTUM AMES-SCENARIO::BALL (0 0)))))
+;;    :OUTCOME :COMPLETE :ANSWERS NIL)
+
+;; witness's answer:
+;;   (:STATUS :OK :SCHEME :EVENT-DRIVEN :EVENTS
+;;    ((:TIME 0.7682597152872829d0 :SPEED 8.46357108520014d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -3.608224830031759d-16))) :VELOCITIES
+;;      (("ball" (0.0d0 -8.46357108520014d0))) :AFTER (("ball" (0.0d0 8.46357108520014d0))))
+;;     (:TIME 1.2921161751717867d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 2.100907935999251d0))) :VELOCITIES (("ball" (0.0d0 1.7607697391050707d-15)))
+;;      :AFTER (("ball" (0.0d0 1.7607697391050707d-15))))
+;;     (:TIME 1.877239106650783d0 :SPEED 6.784895546047983d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -5.065392549852277d-16))) :VELOCITIES
+;;      (("ball" (0.0d0 -6.784895546047983d0))) :AFTER (("ball" (0.0d0 6.784895546047985d0))))
+;;     (:TIME 2.309464433838474d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 1.4029954957878368d0))) :VELOCITIES (("ball" (0.0d0 -2.5992900052395576d-14)))
+;;      :AFTER (("ball" (0.0d0 -2.5992900052395576d-14))))
+;;     (:TIME 2.7825707298924423d0 :SPEED 5.663414273524837d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -1.7937040741600185d-15))) :VELOCITIES
+;;      (("ball" (0.0d0 -5.663414273524837d0))) :AFTER (("ball" (0.0d0 5.663414273524837d0))))
+;;     (:TIME 3.150646657694246d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 1.0039504439355544d0))) :VELOCITIES (("ball" (0.0d0 -4.268199021213941d-15)))
+;;      :AFTER (("ball" (0.0d0 -4.268199021213941d-15))))
+;;     (:TIME 3.547962507203627d0 :SPEED 4.8607226645040456d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -7.494005416219807d-16))) :VELOCITIES
+;;      (("ball" (0.0d0 -4.8607226645040456d0))) :AFTER (("ball" (0.0d0 4.8607226645040456d0))))
+;;     (:TIME 3.8685590213435965d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.7542009922635793d0))) :VELOCITIES (("ball" (0.0d0 8.385626177816635d-16)))
+;;      :AFTER (("ball" (0.0d0 8.385626177816635d-16))))
+;;     (:TIME 4.211115171068012d0 :SPEED 4.257626463631214d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 0.0d0))) :VELOCITIES (("ball" (0.0d0 -4.257626463631214d0))) :AFTER
+;;      (("ball" (0.0d0 4.257626463631214d0))))
+;;     (:TIME 4.495126792779098d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.5874444418713373d0))) :VELOCITIES (("ball" (0.0d0 7.502964907216884d-15)))
+;;      :AFTER (("ball" (0.0d0 7.502964907216884d-15))))
+;;     (:TIME 4.7962393833806996d0 :SPEED 3.7878314556681763d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -2.1007501294079134d-15))) :VELOCITIES
+;;      (("ball" (0.0d0 -3.7878314556681763d0))) :AFTER (("ball" (0.0d0 3.7878314556681763d0))))
+;;     (:TIME 5.051185337283351d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.47054098258635313d0))) :VELOCITIES (("ball" (0.0d0 4.629035056743205d-15)))
+;;      :AFTER (("ball" (0.0d0 4.629035056743205d-15))))
+;;     (:TIME 5.319827248153078d0 :SPEED 3.411501684951992d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -5.620504062164855d-16))) :VELOCITIES
+;;      (("ball" (0.0d0 -3.411501684951992d0))) :AFTER (("ball" (0.0d0 3.411501684951992d0))))
+;;     (:TIME 5.551118845031292d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.3854037127608771d0))) :VELOCITIES (("ball" (0.0d0 -1.5021599923964637d-15)))
+;;      :AFTER (("ball" (0.0d0 -1.5021599923964637d-15))))
+;;     (:TIME 5.793627212827818d0 :SPEED 3.1032478293256265d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -1.371488643139851d-15))) :VELOCITIES
+;;      (("ball" (0.0d0 -3.1032478293256265d0))) :AFTER (("ball" (0.0d0 3.1032478293256265d0))))
+;;     (:TIME 6.005290111326284d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.32147162444152916d0))) :VELOCITIES (("ball" (0.0d0 5.920548543071398d-15)))
+;;      :AFTER (("ball" (0.0d0 5.920548543071398d-15))))
+;;     (:TIME 6.226308409057923d0 :SPEED 2.8461186188384557d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -6.765421556309548d-16))) :VELOCITIES
+;;      (("ball" (0.0d0 -2.8461186188384557d0))) :AFTER (("ball" (0.0d0 2.8461186188384557d0))))
+;;     (:TIME 6.421419362301144d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.2722383527568835d0))) :VELOCITIES (("ball" (0.0d0 -6.118415439550024d-14)))
+;;      :AFTER (("ball" (0.0d0 -6.118415439550024d-14))))
+;;     (:TIME 6.624452485001565d0 :SPEED 2.6283624253867117d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -3.9898639947466563d-17))) :VELOCITIES
+;;      (("ball" (0.0d0 -2.6283624253867117d0))) :AFTER (("ball" (0.0d0 2.6283624253867117d0))))
+;;     (:TIME 6.805416307934829d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.23351643347460968d0))) :VELOCITIES (("ball" (0.0d0 -3.8542540198899554d-14)))
+;;      :AFTER (("ball" (0.0d0 -3.8542540198899554d-14)))))
+;;    :END
+;;    (:TIME 6.860452485001565d0 :POSITIONS (("ball" (0.0d0 0.21291952805406358d0))) :VELOCITIES
+;;     (("ball" (0.0d0 -0.7443892914457433d0)))))
