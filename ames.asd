@@ -223,9 +223,11 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "server")
                  (:file "compare")
                  (:file "compare-curved")
+                 (:file "compare-angles")
                  (:file "generate")
                  (:file "generate-curved")
-                 (:file "generate-drag")))
+                 (:file "generate-drag")
+                 (:file "generate-rotation")))
    (:module "interface" :pathname "src/interface/" :serial t
     :depends-on ("report" "check" "witness")
     :components ((:file "package")
