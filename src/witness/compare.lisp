@@ -155,7 +155,8 @@ when it is a keyword (:FOREVER), NIL when it has none."
   (cond ((keywordp expression) expression)
         (t (let* ((expression (canonical-expression expression)) ; compare-curved.lisp
                   (value (or (precise-value expression bindings)
-                            (expression-value expression bindings))))
+                            (expression-value expression bindings)
+                            (complex-real-value expression bindings)))) ; complex-values.lisp
              (and value (coerce value 'double-float))))))
 
 (defun evaluate-vectors (entries bindings)

@@ -24,5 +24,5 @@ AMES's geometry, knowledge base or simulator, so that its answers are independen
    #:*curved-tolerance* #:witness-sample-times #:witness-horizon-extra
    ;; generation (generate.lisp)
    #:*families* #:*random* #:*symbolic* #:random-scenario #:generator-families
-   #:*curved-families*
+   #:*curved-families* #:*drag-families* #:*rotation-families*
    #:write-disagreement))
