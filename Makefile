@@ -2,9 +2,10 @@
 #   make demo   install missing Debian packages, then run the main job: bin/ames on the wedge
 #   make test   install missing Debian packages, then run every FiveAM suite
 #   make bench  run the benchmarks (they print numbers)
-#   make crosscheck  N random scenarios (default 1000; N=, SEED=, FAMILIES=a,b settable) through AMES and
-#               the witness (Siconos), counts per family and verdict printed; disagreements
-#               written under witness/disagreements/
+#   make crosscheck  N random scenarios (default 1000; N=, SEED=, FAMILIES=a,b, JOBS= settable) through AMES and
+#               the witness (Siconos) in JOBS parallel shards (default 2; each one warm Lisp,
+#               Maxima and Python), counts per family and verdict and the time per scenario
+#               printed; disagreements written under witness/disagreements/
 #   make fuzz   the nightly-size fuzz: 10,000 whole-path cases and 500 runs with a kill -9 of
 #               Maxima, figures printed (FUZZ_FORMS, FUZZ_CRASH_RUNS, FUZZ_SEED size it)
 
@@ -16,6 +17,7 @@ LISP  = $(SBCL) --noinform --non-interactive --no-sysinit --no-userinit
 N    ?= 1000
 SEED ?= 1
 FAMILIES ?=
+JOBS ?= 2
 
 .PHONY: deps demo test bench fuzz crosscheck clean
 
@@ -44,7 +46,13 @@ fuzz: deps
 	$(LISP) --load t/fuzz.lisp
 
 crosscheck: deps
-	N=$(N) SEED=$(SEED) FAMILIES="$(FAMILIES)" $(LISP) --load t/crosscheck.lisp
+	@$(LISP) --eval '(require :asdf)' --eval '(asdf:load-asd (truename "ames.asd"))' \
+	  --eval '(asdf:load-system "ames")' >/dev/null
+	@dir=build/crosscheck-$(SEED); rm -rf $$dir; mkdir -p $$dir; start=$$(date +%s); \
+	seq 0 $$(($(JOBS) - 1)) | N=$(N) SEED=$(SEED) FAMILIES="$(FAMILIES)" SBCL="$(SBCL)" \
+	  parallel -j $(JOBS) --line-buffer witness/crosscheck-shard {} $(JOBS) $$dir; \
+	SUMMARY=$$dir SEED=$(SEED) $(LISP) --load t/crosscheck.lisp; status=$$?; \
+	echo "  wall time: $$(( $$(date +%s) - start )) s on $(JOBS) processes"; exit $$status
 
 clean:
 	rm -rf build

@@ -270,3 +270,37 @@ ground, where it rests; the self-check passes."
       (is (equal '(0 0) (per-body (ames::state-final-positions falling) "BALL")))
       (is (eq :forever (ames::state-duration (second states))))
       (is (null (getf check :failures)) "self-check failures ~S" (getf check :failures)))))
+
+;;; Bounces under drag (make crosscheck found AMES summing them as a geometric series)
+
+(test bounces-under-drag-are-no-geometric-series
+  "A ball bouncing elastically (e = 1) under linear drag loses speed only to the drag, and
+a smaller fraction of it the slower it goes (the flight's loss is of order b v / m g of
+its speed): the ratio of successive impact speeds grows toward 1, so the impacts form no
+geometric series and never accumulate. (AMES summed them from the first two cycles, as
+under gravity alone, and put the ball at rest at t = 4.12; the witness has impacts at
+1.058, 2.060, 2.767, 3.316 s.)"
+  (with-fixture simulator-bridge ()
+    (multiple-value-bind (scenario history)
+        (drag-form-history "(scenario drag-bounces \"\" (gravity 17/2) (restitution 1)
+                              (body floor :fixed t :shape (half-plane (1 0) (0 0)))
+                              (body ball :mass 1/2 :position (0 13/4) :velocity (0 0) :shape point)
+                              (drag air :on ball :linear 3/5) (simulate :states 4))"
+                           bridge)
+      (declare (ignore scenario))
+      (let* ((states (ames::history-states history))
+             (speeds (loop for state in states
+                           for impact = (ames.simulator:state-impact state)
+                           when impact
+                             collect (abs (expression-value
+                                           (second (per-body (getf impact :velocities-before) "BALL")))))))
+        (is (notany #'ames.simulator:state-accumulation states) "no accumulation under drag")
+        (is (= 4 (length states)))
+        (is (<= 3 (length speeds)) "impact speeds ~S" speeds)
+        (when (<= 3 (length speeds))
+          (destructuring-bind (v1 v2 v3 &rest more) speeds
+            (declare (ignore more))
+            (is (> v1 v2 v3) "the speeds fall: ~S" speeds)
+            (is (> (/ v3 v2) (+ (/ v2 v1) 1/100)) "the ratio grows: ~S" speeds)
+            ;; the second impact at t = 2.0603 (the witness: 2.06029179577)
+            (is (< (abs (- (expression-value (ames::state-start (third states))) 2.06029179577d0)) 1d-8))))))))

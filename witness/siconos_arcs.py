@@ -9,8 +9,9 @@ The event-driven driver (siconos_driver.Driver) with what is not linear in the p
   derivative, which Siconos's acceleration-level LCP needs), with Newton's law; an arc's
   angular extent is handled like a face's extent (the particle leaving a quarter circle at
   its end :leaves it);
-- universal gravitation between every two bodies with mass (free, or fixed attractors):
-  the bodies are one LagrangianDS whose internal force FInt(q) is computed here;
+- universal gravitation between every two bodies with mass (free, or fixed attractors),
+  and drag (linear -b v, quadratic -c |v| v, per body): the bodies are one LagrangianDS
+  whose internal force FInt(q, v) is computed here;
 - bumpers: a spring with a free end that only pushes. A body whose support point along
   -u reaches the free end (P + L0 u) starts pressing it, (:contact BODY BUMPER); from
   then on the bumper is a linear spring on that point, k (L0 - u.(x - P)) u, until its
@@ -23,7 +24,7 @@ passes through zero and reverses (a turning point of one-degree-of-freedom motio
 the states at the times the model asks for ("samples"), so that a state that lasts
 forever can be compared at a few times.
 
-The gravitation's dynamical system and the bumpers are in siconos_forces.py.
+The dynamical system of gravitation and drag and the bumpers are in siconos_forces.py.
 
 Lsodar finds a lift-off from an arc as a root of the contact force, computed by the
 acceleration-level LCP: to about 1e-7 relative (the comparator's *CURVED-TOLERANCE*).
@@ -34,9 +35,9 @@ import math
 import numpy as np
 import siconos.kernel as sk
 
-from siconos_driver import Driver, Segment, Unsupported, hermite, lagrangian_system, make_contacts, \
+from siconos_driver import Contact, Driver, Segment, Unsupported, hermite, lagrangian_system, make_contacts, \
     restitution
-from siconos_forces import Bumper, GravitationDS, split
+from siconos_forces import Bumper, GravitationDS, nonlinear_forces_p, split
 
 STEP = 0.002        # the output step (s): turning points and bumpers are found on it
 
@@ -162,13 +163,15 @@ class ArcSegment(Segment):
         self.n = n
         nsds, linear = lagrangian_system(model, bodies, t0, t_end, qs, vs, springs)
         self.ds = linear
-        if model.get("gravitation"):
+        if nonlinear_forces_p(model):
             nsds = sk.NonSmoothDynamicalSystem(t0, t_end)
             attractors = [(np.array(a["q"], dtype=float), float(a["mass"]))
                           for a in model.get("attractors", [])]
             self.ds = GravitationDS(list(np.concatenate(qs)), list(np.concatenate(vs)),
                                     np.array(linear.mass(), dtype=float), np.array(linear.K(), dtype=float),
-                                    [b.mass for b in bodies], float(model["gravitation"]), attractors)
+                                    [b.mass for b in bodies], float(model.get("gravitation") or 0.0),
+                                    attractors, [b.linear_drag for b in bodies],
+                                    [b.quadratic_drag for b in bodies])
             self.ds.setFExtPtr(np.array(linear.fExt(), dtype=float))
             nsds.insertDynamicalSystem(self.ds)
         self.relations = []
@@ -210,9 +213,9 @@ def arc_contacts(model, bodies):
 
 
 def curved_model_p(model):
-    """Whether MODEL needs this driver: arcs, gravitation, bumpers or two round bodies."""
+    """Whether MODEL needs this driver: arcs, gravitation, drag, bumpers or two round bodies."""
     round_bodies = [b for b in model.get("bodies", []) if b["shape"]["kind"] == "circle"]
-    return bool(any(o.get("arcs") for o in model.get("obstacles", [])) or model.get("gravitation")
+    return bool(any(o.get("arcs") for o in model.get("obstacles", [])) or nonlinear_forces_p(model)
                 or model.get("bumpers") or len(round_bodies) >= 2 or
                 (round_bodies and len(model.get("bodies", [])) >= 2 and
                  any(b["shape"]["kind"] == "point" for b in model["bodies"])))
@@ -261,25 +264,28 @@ class ArcDriver(Driver):
             (bumper.engaged.add if engage else bumper.engaged.discard)(j)
             return tc, qc, vc, []
         self.observe(t0, q0, v0, t1, q1, v1, change[0] if change else t1)
-        if change is None and self.model.get("gravitation"):
+        if change is None and nonlinear_forces_p(self.model):
             return self.impact(active, t1, q1, v1)
         return change
 
     def impact(self, active, t, qs, vs):
-        """Under gravitation, Siconos 4.4's impact with e = 0 fails (an std::exception in
-        processEvents when the forces depend on the positions; a model that starts with the
-        contact closed runs): the impact of a circle contact closing at T is applied here
-        by Newton's law, and the next model starts just after it. None when no such
-        contact closes at T."""
-        closing = [c for c in active if isinstance(c, CircleContact)
+        """Under gravitation or drag, Siconos 4.4's impact with e = 0 fails (an
+        std::exception in processEvents when the forces depend on the state; a model that
+        starts with the contact closed runs): the impact of a contact (on a circle or a
+        face) closing at T is applied here by Newton's law, and the next model starts just
+        after it. None when no such contact closes at T."""
+        closing = [c for c in active if isinstance(c, (CircleContact, Contact))
                    and abs(c.gap(qs)) <= 1e-7 and c.rate(vs) < -1e-9]
         if not closing:
             return None
         if len(closing) > 1:
-            raise Unsupported("several circle contacts closing at once under gravitation")
+            raise Unsupported("several contacts closing at once under gravitation or drag")
         c = closing[0]
         n = len(self.bodies)
-        jac, _ = c.rows(np.concatenate(qs), np.concatenate(vs))
+        if isinstance(c, CircleContact):
+            jac, _ = c.rows(np.concatenate(qs), np.concatenate(vs))
+        else:
+            jac = c.row(n)
         inverse_mass = np.array([1.0 / b.mass for b in self.bodies for _ in (0, 1)])
         rate = float(np.dot(jac, np.concatenate(vs)))
         e = c.restitution(self.model, self.bodies)

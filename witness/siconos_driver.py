@@ -101,6 +101,9 @@ class Body:
         self.q = np.array(spec["q"], dtype=float)
         self.v = np.array(spec["v"], dtype=float)
         self.force = np.array(spec.get("force", [0.0, 0.0]), dtype=float)
+        drag = spec.get("drag") or {}
+        self.linear_drag = float(drag.get("linear", 0.0))        # F = -b v
+        self.quadratic_drag = float(drag.get("quadratic", 0.0))  # F = -c |v| v
         shape = spec["shape"]
         self.kind = shape["kind"]
         self.r = float(shape.get("r", 0.0))
@@ -513,7 +516,11 @@ def sx_states(names, qs, key):
 
 def main():
     text = open(sys.argv[1]).read() if len(sys.argv) > 1 else sys.stdin.read()
-    model = json.loads(text)
+    simulate(json.loads(text))
+
+
+def simulate(model):
+    """Simulate MODEL (a decoded model description) and print the s-expression answer."""
     if model.get("hinges") or any("inertia" in b for b in model.get("bodies", [])):
         from siconos_rotation import main_rotation   # bodies that turn: 3 degrees of freedom
         main_rotation(model)

@@ -1,6 +1,6 @@
 """siconos_forces.py -- the forces of the witness's arcs driver (siconos_arcs.py) that are
-not constant: universal gravitation (a LagrangianDS whose FInt is computed here) and
-bumpers (springs that only push, engaged and released by the driver)."""
+not constant: universal gravitation and drag (a LagrangianDS whose FInt is computed here)
+and bumpers (springs that only push, engaged and released by the driver)."""
 
 import numpy as np
 import siconos.kernel as sk
@@ -12,19 +12,25 @@ def split(q, n):
 
 
 class GravitationDS(sk.LagrangianDS):
-    """Every free body as one LagrangianDS: M q'' + FInt(q) = FExt, FExt the constant
+    """Every free body as one LagrangianDS: M q'' + FInt(q, v) = FExt, FExt the constant
     forces (gravity, pushes, springs' constant parts), FInt = K q minus universal
-    gravitation (between free bodies and towards the fixed attractors)."""
+    gravitation (between free bodies and towards the fixed attractors; BIG_G 0 for none)
+    plus drag: b_k v_k + c_k |v_k| v_k on body k (LINEAR and QUADRATIC, one per body)."""
 
-    def __init__(self, q, v, mass, stiffness, masses, big_g, attractors):
+    def __init__(self, q, v, mass, stiffness, masses, big_g, attractors, linear=None, quadratic=None):
         sk.LagrangianDS.__init__(self, q, v, mass)
         self.k, self.masses, self.big_g, self.attractors = stiffness, masses, big_g, attractors
+        n = len(masses)
+        self.linear = list(linear) if linear is not None else [0.0] * n
+        self.quadratic = list(quadratic) if quadratic is not None else [0.0] * n
         self.setFIntPtr(np.zeros(len(q)))
 
     def pull(self, q):
         n = len(self.masses)
-        qs = split(q, n)
         f = np.zeros(2 * n)
+        if not self.big_g:
+            return f
+        qs = split(q, n)
         for i in range(n):
             for j in range(i + 1, n):
                 d = qs[j] - qs[i]
@@ -36,9 +42,24 @@ class GravitationDS(sk.LagrangianDS):
                 f[2 * i:2 * i + 2] += self.big_g * self.masses[i] * mass * d / float(np.linalg.norm(d)) ** 3
         return f
 
+    def drag(self, v):
+        """The drag forces' opposite, b v + c |v| v per body."""
+        f = np.zeros(len(v))
+        for k, (b, c) in enumerate(zip(self.linear, self.quadratic)):
+            vk = v[2 * k:2 * k + 2]
+            f[2 * k:2 * k + 2] = b * vk + c * float(np.linalg.norm(vk)) * vk
+        return f
+
     def computeFInt(self, time, q=None, v=None):
         q = np.array(self.q() if q is None else q, dtype=float)
-        self.fInt()[:] = self.k.dot(q) - self.pull(q)
+        v = np.array(self.velocity() if v is None else v, dtype=float)
+        self.fInt()[:] = self.k.dot(q) - self.pull(q) + self.drag(v)
+
+
+def nonlinear_forces_p(model):
+    """Whether MODEL has forces that depend on the state besides springs: universal
+    gravitation or drag."""
+    return bool(model.get("gravitation") or any(b.get("drag") for b in model.get("bodies", [])))
 
 
 class Bumper:

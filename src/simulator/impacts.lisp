@@ -176,11 +176,15 @@ AFTER (every body, both axes), when there is one; else NIL."
 (defun zeno-accumulation (run previous current)
   "When the impact records PREVIOUS and CURRENT (plists :TIME :POSITIONS :AFTER
 :CONTACTS) repeat one another, the same contacts at the same positions with every
-velocity after scaled by one factor 0 < LAMBDA < 1, the impacts go on forever at times
+velocity after scaled by one factor 0 < LAMBDA < 1, and the flight between them under
+constant accelerations (CURRENT's :UNIFORM: a flight from the same place with its velocity
+scaled by LAMBDA then lasts LAMBDA times as long; a force that depends on the velocity or
+the position, a drag or a spring, breaks the series), the impacts go on forever at times
 in a geometric series: returns the plist (:FACTOR LAMBDA :CYCLE D :TIME T) with D the
 time between the two impacts and T their accumulation point, CURRENT's time plus
 LAMBDA D / (1 - LAMBDA). Else NIL."
   (when (and previous
+             (getf current :uniform)
              (equal (getf previous :contacts) (getf current :contacts))
              (closed-form-time-p (getf previous :time))
              (closed-form-time-p (getf current :time))

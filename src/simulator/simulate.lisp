@@ -96,7 +96,10 @@ velocities' limit, zero, and STATE says so (STATE-ACCUMULATION)."
   (let* ((impact (state-impact state))
          (record (list :time (run-time run) :positions (run-positions run)
                        :after (run-velocities run)
-                       :contacts (mapcar (lambda (c) (subseq c 0 2)) (getf impact :contacts))))
+                       :contacts (mapcar (lambda (c) (subseq c 0 2)) (getf impact :contacts))
+                       ;; a flight that scales with its start speed: constant accelerations
+                       :uniform (every (lambda (entry) (free-of-p 'tau (second entry)))
+                                       (state-accelerations state))))
          (accumulation (zeno-accumulation run (first (run-impacts run)) record)))
     (push record (run-impacts run))
     (when accumulation

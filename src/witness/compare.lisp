@@ -4,7 +4,8 @@
 ;;;; as data; only the numbers it prints are compared (the :numeric plist of each state, and
 ;;;; for a last state that lasts forever its closed forms evaluated at the witness's end).
 ;;;; Per state: the start time, the end event (kind and bodies), the positions and the
-;;;; velocities at its end (just before its event), to *VALUE-TOLERANCE* relative. The
+;;;; velocities at its end (just before its event), to *VALUE-TOLERANCE* relative, and a
+;;;; rotating body's angle and angular velocity (compare-angles.lisp). The
 ;;;; witness finds events by Lsodar's root finding (about 1e-12 here); where AMES sums a
 ;;;; Zeno sequence of impacts, Siconos stops the sequence when the rebound speed falls
 ;;;; under its own tolerance, so the accumulation time is compared to
@@ -154,7 +155,8 @@ when it is a keyword (:FOREVER), NIL when it has none."
   (cond ((keywordp expression) expression)
         (t (let* ((expression (canonical-expression expression)) ; compare-curved.lisp
                   (value (or (precise-value expression bindings)
-                            (expression-value expression bindings))))
+                            (expression-value expression bindings)
+                            (complex-real-value expression bindings)))) ; complex-values.lisp
              (and value (coerce value 'double-float))))))
 
 (defun evaluate-vectors (entries bindings)
@@ -233,7 +235,8 @@ AMES's closed forms at the witness's end give its positions and velocities."
       (compare-vectors walk "position at the witness's end"
                        (evaluate-vectors (getf state :positions) bindings) (getf end :positions))
       (compare-vectors walk "velocity at the witness's end"
-                       (evaluate-vectors (getf state :velocities) bindings) (getf end :velocities)))))
+                       (evaluate-vectors (getf state :velocities) bindings) (getf end :velocities))
+      (compare-angles-at-end walk state bindings end)))) ; compare-angles.lisp
 
 (defun check-witnessable (walk event)
   "End the comparison as :UNSUPPORTED when the witness cannot say anything of EVENT: a
@@ -279,6 +282,7 @@ bumper turns within one state of closed forms in time)."
                 (getf witness-event :pairs))))
     (compare-vectors walk "final position" (getf numeric :final-positions) (getf witness-event :positions))
     (compare-vectors walk "final velocity" (getf numeric :final-velocities) (getf witness-event :velocities))
+    (compare-final-angles walk state numeric witness-event) ; compare-angles.lisp
     (setf (walk-time walk) (getf witness-event :time))
     (when (getf state :accumulation)
       (skip-accumulation walk event))))

@@ -7,8 +7,9 @@
 ;;;; pulleys (points given by body index and offset, or fixed points), and for rotating
 ;;;; bodies (rotation.lisp) their inertia, angle and angular velocity, the hinges, the wound
 ;;;; rope ends, the forces at points and the angles the queries ask about; arcs, circles,
-;;;; gravitation and bumpers in model-curved.lisp. What the witness cannot model (outlines,
-;;;; drag, driven bodies) is refused with WITNESS-UNSUPPORTED, never approximated.
+;;;; gravitation and bumpers in model-curved.lisp; a body's linear and quadratic drag
+;;;; coefficients (summed over its drags). What the witness cannot model (outlines, driven
+;;;; bodies) is refused with WITNESS-UNSUPPORTED, never approximated.
 
 (in-package #:ames.witness)
 
@@ -21,7 +22,7 @@ thing; DETAIL says why."))
   (error 'witness-unsupported :datum datum :detail (apply #'format nil control arguments)))
 
 (defparameter +unsupported-words+
-  '(:driven :drag :outline)
+  '(:driven :outline)
   "Words of the scenario language that name what the witness does not model.")
 
 (defun check-modelled (form)
@@ -93,6 +94,19 @@ when it has none."
         (destructuring-bind (x y) (point-of (scenario-force-value force) values "a force")
           (incf fx x) (incf fy y))))))
 
+(defun body-drag (scenario body values)
+  "The drag entry of BODY's model: its linear coefficient B (F = -B v) and its quadratic
+coefficient C (F = -C |v| v), each the sum of its drags of that law; none without drag."
+  (let ((linear 0d0) (quadratic 0d0) (any nil))
+    (dolist (data (scenario-kb-clauses scenario))
+      (when (and (eq (first data) :drag) (eq (getf (cddr data) :on) (scenario-body-name body)))
+        (setf any t)
+        (let ((c (value-of (getf (cddr data) :coefficient) values "a drag coefficient")))
+          (ecase (getf (cddr data) :law)
+            (:linear (incf linear c))
+            (:quadratic (incf quadratic c))))))
+    (and any `(("drag" . (("linear" . ,linear) ("quadratic" . ,quadratic)))))))
+
 (defun model-point (scenario body-name point values)
   "The driver's POINT of BODY-NAME's point POINT (own frame): a free body's index and
 offset, or a fixed body's point in the world."
@@ -152,6 +166,7 @@ cannot model."
                                             ("v" . (:array ,@(point-of (scenario-body-velocity body) values "a velocity")))
                                             ("shape" . ,(shape-model body values))
                                             ("force" . (:array ,@(body-force scenario body values)))
+                                            ,@(body-drag scenario body values)
                                             ,@(body-rotation-model scenario body values)))))
       ("springs" . (:array ,@(springs-model scenario values)))
       ("friction" . (:array ,@(loop for friction in (scenario-frictions scenario)

@@ -15,6 +15,8 @@ AMES's geometry, knowledge base or simulator, so that its answers are independen
    ;; the driver (driver.lisp)
    #:*python* #:*driver-path* #:siconos-available-p #:run-witness
    #:witness-status #:witness-events #:witness-end
+   ;; the warm server (server.lisp)
+   #:with-witness-server #:*witness-server* #:*witness-seconds*
    ;; comparison (compare.lisp)
    #:compare-results #:comparison-verdict #:comparison-rows #:comparison-reason
    #:print-comparison #:*time-tolerance* #:*value-tolerance* #:*accumulation-tolerance* #:*first-order-tolerance*
@@ -22,5 +24,5 @@ AMES's geometry, knowledge base or simulator, so that its answers are independen
    #:*curved-tolerance* #:witness-sample-times #:witness-horizon-extra
    ;; generation (generate.lisp)
    #:*families* #:*random* #:*symbolic* #:random-scenario #:generator-families
-   #:*curved-families*
+   #:*curved-families* #:*drag-families* #:*rotation-families*
    #:write-disagreement))

@@ -1,0 +1,196 @@
+;;;; ames-wrong-drag-fall-5-28 -- a disagreement found by the witness (make crosscheck).
+;;;; verdict: ames-wrong
+;;;; reason: state 2: start: AMES 4.118827849976503d0, witness 2.060291795771749d0
+;;;; Run: bin/ames check /work/wt/witness/t/../witness/disagreements/ames-wrong-drag-fall-5-28.lisp --numeric
+
+(scenario drag-fall-28 "A ball falls through a medium with drag onto the floor." (gravity 17/2)
+ (restitution 1) (body floor :fixed t :shape (half-plane (1 0) (0 0)))
+ (body ball :mass 1/2 :position (0 13/4) :velocity (0 0) :shape point)
+ (drag air :on ball :linear 3/5) (simulate :states 4))
+
+
+;; AMES's answer:
+;;   (:SCENARIO AMES-SCENARIO::DRAG-FALL-28 :STATES
+;;    ((:INDEX 0 :START 0 :DURATION 1.0580512916285683d0 :CONTACTS NIL :ACCELERATIONS
+;;      ((AMES-SCENARIO::FLOOR (0 0))
+;;       (AMES-SCENARIO::BALL (0 (- (/ (* 17 (EXP (- (/ (* 6 AMES.BASE:TAU) 5)))) 2)))))
+;;      :FORCES
+;;      ((:DRAG AMES-SCENARIO::AIR AMES-SCENARIO::BALL
+;;        (0
+;;         (/ (* (EXP (- (/ (* 6 AMES.BASE:TAU) 5))) (- (* 17 (EXP (/ (* 6 AMES.BASE:TAU) 5))) 17)) 4)))
+;;       (:GRAVITY AMES-SCENARIO::BALL (0 -17/4)))
+;;      :POSITIONS
+;;      ((AMES-SCENARIO::FLOOR (0 0))
+;;       (AMES-SCENARIO::BALL
+;;        (0
+;;         (-
+;;          (/
+;;           (* (EXP (- (/ (* 6 AMES.BASE:TAU) 5)))
+;;              (+ 425 (* (- (* 510 AMES.BASE:TAU) 659) (EXP (/ (* 6 AMES.BASE:TAU) 5)))))
+;;           72)))))
+;;      :VELOCITIES
+;;      ((AMES-SCENARIO::FLOOR (0 0))
+;;       (AMES-SCENARIO::BALL
+;;        (0
+;;         (-
+;;          (/ (* (EXP (- (/ (* 6 AMES.BASE:TAU) 5))) (- (* 85 (EXP (/ (* 6 AMES.BASE:TAU) 5))) 85))
+;;             12)))))
+;;      :INITIAL-VELOCITIES ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 0))) :END-EVENT
+;;      (:COLLISION AMES-SCENARIO::BALL AMES-SCENARIO::FLOOR :IMPULSE 184847133/36291245 :ENERGY-LOST 0)
+;;      :FINAL-POSITIONS ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 0))) :FINAL-VELOCITIES
+;;      ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 -184847133/36291245))) :IMPACT
+;;      (:CONTACTS
+;;       ((AMES-SCENARIO::BALL AMES-SCENARIO::FLOOR :FEATURE (:EDGE 0 :OF AMES-SCENARIO::FLOOR)
+;;         :OBSERVER-FEATURE (:POINT :OF AMES-SCENARIO::BALL)))
+;;       :IMPULSES ((:IMPULSE AMES-SCENARIO::BALL AMES-SCENARIO::FLOOR 184847133/36291245)) :ENERGY-LOST
+;;       0 :VELOCITIES-BEFORE
+;;       ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 -184847133/36291245))) :VELOCITIES-AFTER
+;;       ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 184847133/36291245))))
+;;      :ENERGY
+;;      ((:KINETIC AMES-SCENARIO::BALL
+;;        (/
+;;         (* (EXP (- (/ (* 12 AMES.BASE:TAU) 5)))
+;;            (- (+ 7225 (* 7225 (EXP (/ (* 12 AMES.BASE:TAU) 5))))
+;;               (* 14450 (EXP (/ (* 6 AMES.BASE:TAU) 5)))))
+;;         576))
+;;       (:POTENTIAL (:GRAVITY AMES-SCENARIO::BALL)
+;;        (-
+;;         (/
+;;          (* (EXP (- (/ (* 6 AMES.BASE:TAU) 5)))
+;;             (+ 7225 (* (- (* 8670 AMES.BASE:TAU) 11203) (EXP (/ (* 6 AMES.BASE:TAU) 5)))))
+;;          288))))
+;;      :MOMENTUM
+;;      ((:MOMENTUM AMES-SCENARIO::BALL
+;;        (0
+;;         (-
+;;          (/ (* (EXP (- (/ (* 6 AMES.BASE:TAU) 5))) (- (* 85 (EXP (/ (* 6 AMES.BASE:TAU) 5))) 85))
+;;             24))))))
+;;     (:INDEX 1 :START 51147121/48340871 :DURATION 1.002240504143165d0 :CONTACTS NIL :ACCELERATIONS
+;;      ((AMES-SCENARIO::FLOOR (0 0))
+;;       (AMES-SCENARIO::BALL (0 (- (/ (* 5302921421 (EXP (- (/ (* 6 AMES.BASE:TAU) 5)))) 362912450)))))
+;;      :FORCES
+;;      ((:DRAG AMES-SCENARIO::AIR AMES-SCENARIO::BALL
+;;        (0
+;;         (/
+;;          (* (EXP (- (/ (* 6 AMES.BASE:TAU) 5)))
+;;             (- (* 3084755825 (EXP (/ (* 6 AMES.BASE:TAU) 5))) 5302921421))
+;;          725824900)))
+;;       (:GRAVITY AMES-SCENARIO::BALL (0 -17/4)))
+;;      :POSITIONS
+;;      ((AMES-SCENARIO::FLOOR (0 0))
+;;       (AMES-SCENARIO::BALL
+;;        (0
+;;         (-
+;;          (/
+;;           (* (EXP (- (/ (* 6 AMES.BASE:TAU) 5)))
+;;              (+ 5302921421
+;;                 (* (- (* 3701706990 AMES.BASE:TAU) 5302921421) (EXP (/ (* 6 AMES.BASE:TAU) 5)))))
+;;           522593928)))))
+;;      :VELOCITIES
+;;      ((AMES-SCENARIO::FLOOR (0 0))
+;;       (AMES-SCENARIO::BALL
+;;        (0
+;;         (-
+;;          (/
+;;           (* (EXP (- (/ (* 6 AMES.BASE:TAU) 5)))
+;;              (- (* 3084755825 (EXP (/ (* 6 AMES.BASE:TAU) 5))) 5302921421))
+;;           435494940)))))
+;;      :INITIAL-VELOCITIES ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 184847133/36291245)))
+;;      :END-EVENT
+;;      (:COLLISION AMES-SCENARIO::BALL AMES-SCENARIO::FLOOR :IMPULSE 154210592/45016995 :ENERGY-LOST 0)
+;;      :FINAL-POSITIONS ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 0))) :FINAL-VELOCITIES
+;;      ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 -154210592/45016995))) :ACCUMULATION
+;;      (:FACTOR 1119298875173408/1664252492405067 :CYCLE 28843395035028/28778915755043 :TIME
+;;       64596294838694594260006336963/15683174240715863685428506337)
+;;      :IMPACT
+;;      (:CONTACTS
+;;       ((AMES-SCENARIO::BALL AMES-SCENARIO::FLOOR :FEATURE (:EDGE 0 :OF AMES-SCENARIO::FLOOR)
+;;         :OBSERVER-FEATURE (:POINT :OF AMES-SCENARIO::BALL)))
+;;       :IMPULSES ((:IMPULSE AMES-SCENARIO::BALL AMES-SCENARIO::FLOOR 154210592/45016995)) :ENERGY-LOST
+;;       0 :VELOCITIES-BEFORE
+;;       ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 -154210592/45016995))) :VELOCITIES-AFTER
+;;       ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 154210592/45016995))))
+;;      :ENERGY
+;;      ((:KINETIC AMES-SCENARIO::BALL
+;;        (/
+;;         (* (EXP (- (/ (* 12 AMES.BASE:TAU) 5)))
+;;            (- (+ 28120975597300659241 (* 9515718499871430625 (EXP (/ (* 12 AMES.BASE:TAU) 5))))
+;;               (* 32716435485894054650 (EXP (/ (* 6 AMES.BASE:TAU) 5)))))
+;;         758623371062414400))
+;;       (:POTENTIAL (:GRAVITY AMES-SCENARIO::BALL)
+;;        (-
+;;         (/
+;;          (* (EXP (- (/ (* 6 AMES.BASE:TAU) 5)))
+;;             (+ 90149664157
+;;                (* (- (* 62929018830 AMES.BASE:TAU) 90149664157) (EXP (/ (* 6 AMES.BASE:TAU) 5)))))
+;;          2090375712))))
+;;      :MOMENTUM
+;;      ((:MOMENTUM AMES-SCENARIO::BALL
+;;        (0
+;;         (-
+;;          (/
+;;           (* (EXP (- (/ (* 6 AMES.BASE:TAU) 5)))
+;;              (- (* 3084755825 (EXP (/ (* 6 AMES.BASE:TAU) 5))) 5302921421))
+;;           870989880))))))
+;;     (:INDEX 2 :START 64596294838694594260006336963/15683174240715863685428506337 :DURATION :FOREVER
+;;      :CONTACTS
+;;      ((AMES-SCENARIO::BALL AMES-SCENARIO::FLOOR :FEATURE (:EDGE 0 :OF AMES-SCENARIO::FLOOR)
+;;        :OBSERVER-FEATURE (:POINT :OF AMES-SCENARIO::BALL)))
+;;      :ACCELERATIONS ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 0))) :FORCES
+;;      ((:DRAG AMES-SCENARIO::AIR AMES-SCENARIO::BALL (0 0)) (:GRAVITY AMES-SCENARIO::BALL (0 -17/4))
+;;       (:NORMAL AMES-SCENARIO::BALL AMES-SCENARIO::FLOOR 17/4))
+;;      :POSITIONS ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 0))) :VELOCITIES
+;;      ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 0))) :INITIAL-VELOCITIES
+;;      ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 0))) :END-EVENT :NONE :FINAL-POSITIONS NIL
+;;      :FINAL-VELOCITIES NIL :ENERGY
+;;      ((:KINETIC AMES-SCENARIO::BALL 0) (:POTENTIAL (:GRAVITY AMES-SCENARIO::BALL) 0)) :MOMENTUM
+;;      ((:MOMENTUM AMES-SCENARIO::BALL (0 0)))))
+;;    :OUTCOME :COMPLETE :ANSWERS NIL)
+
+;; witness's answer:
+;;   (:STATUS :OK :SCHEME :EVENT-DRIVEN :EVENTS
+;;    ((:TIME 1.0580512916285763d0 :SPEED 5.093435978842893d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -7.216449660063518d-16))) :VELOCITIES
+;;      (("ball" (0.0d0 -5.093435978842893d0))) :AFTER (("ball" (0.0d0 5.093435978842893d0))))
+;;     (:TIME 1.5095391041142783d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 1.0464913099634567d0))) :VELOCITIES (("ball" (0.0d0 3.1827262993080306d-16)))
+;;      :AFTER (("ball" (0.0d0 3.1827262993080306d-16))))
+;;     (:TIME 2.060291795771749d0 :SPEED 3.4256083063740768d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -1.1102230246251565d-16))) :VELOCITIES
+;;      (("ball" (0.0d0 -3.4256083063740768d0))) :AFTER (("ball" (0.0d0 3.4256083063740768d0))))
+;;     (:TIME 2.3890266898330883d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.5261347561298726d0))) :VELOCITIES (("ball" (0.0d0 9.147955830345419d-17)))
+;;      :AFTER (("ball" (0.0d0 9.147955830345419d-17))))
+;;     (:TIME 2.7674757528532448d0 :SPEED 2.5854553288186413d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -4.40619762898109d-16))) :VELOCITIES
+;;      (("ball" (0.0d0 -2.5854553288186413d0))) :AFTER (("ball" (0.0d0 2.5854553288186413d0))))
+;;     (:TIME 3.0267744422046254d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.3178470573139154d0))) :VELOCITIES (("ball" (0.0d0 1.4966013386801068d-16)))
+;;      :AFTER (("ball" (0.0d0 1.4966013386801068d-16))))
+;;     (:TIME 3.316059618029383d0 :SPEED 2.077507525178546d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -7.528699885739343d-16))) :VELOCITIES
+;;      (("ball" (0.0d0 -2.077507525178546d0))) :AFTER (("ball" (0.0d0 2.077507525178546d0))))
+;;     (:TIME 3.53038742191058d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.21310099411616804d0))) :VELOCITIES (("ball" (0.0d0 5.058904277475742d-15)))
+;;      :AFTER (("ball" (0.0d0 5.058904277475742d-15))))
+;;     (:TIME 3.764803933924511d0 :SPEED 1.7368191599300369d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -4.544975507059235d-16))) :VELOCITIES
+;;      (("ball" (0.0d0 -1.7368191599300369d0))) :AFTER (("ball" (0.0d0 1.7368191599300369d0))))
+;;     (:TIME 3.9475493945254203d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.15290228775683348d0))) :VELOCITIES (("ball" (0.0d0 7.496241583199719d-17)))
+;;      :AFTER (("ball" (0.0d0 7.496241583199719d-17))))
+;;     (:TIME 4.144702212501025d0 :SPEED 1.4923162079703376d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -5.759281940243d-16))) :VELOCITIES
+;;      (("ball" (0.0d0 -1.4923162079703376d0))) :AFTER (("ball" (0.0d0 1.4923162079703376d0))))
+;;     (:TIME 4.304020655547248d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.11509120124489165d0))) :VELOCITIES (("ball" (0.0d0 -1.5873701834012756d-14)))
+;;      :AFTER (("ball" (0.0d0 -1.5873701834012756d-14))))
+;;     (:TIME 4.474180592733993d0 :SPEED 1.308250024009907d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -7.216449660063518d-16))) :VELOCITIES
+;;      (("ball" (0.0d0 -1.308250024009907d0))) :AFTER (("ball" (0.0d0 1.308250024009907d0))))
+;;     (:TIME 4.615417772313116d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.08977833094227197d0))) :VELOCITIES (("ball" (0.0d0 2.1001123135979296d-15)))
+;;      :AFTER (("ball" (0.0d0 2.1001123135979296d-15)))))
+;;    :END
+;;    (:TIME 4.620180592733993d0 :POSITIONS (("ball" (0.0d0 0.08968210540522757d0))) :VELOCITIES
+;;     (("ball" (0.0d0 -0.040368502476334826d0)))))
