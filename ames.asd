@@ -55,6 +55,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "quick-signs")
                  (:file "sturm")
                  (:file "truth")
+                 (:file "inverse-angles")
                  (:file "values")
                  (:file "roots")
                  (:file "integrator-support")
