@@ -290,6 +290,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "scenario-rotation")
                (:file "witness-curved")
                (:file "leftward-arcs")
+               (:file "trust-fresh")
                (:file "simulator-fuzz")
                (:file "truth-scenarios")
                (:file "truth-branches")
