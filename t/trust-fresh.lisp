@@ -144,3 +144,56 @@ Declared mu > tan a: no fork, it stays at rest forever."
       (is (null (ames::state-branches state)) "forked under mu > tan a")
       (is (eq :forever (ames::state-duration state)))
       (is-same-vector bridge "at rest" (per-body (ames:state-velocities state) "P") '(0 0)))))
+
+;;; Class 9: the numeric integrator evaluates abs (a spring's length |x| whose sign the
+;;; assumptions leave open: a block on a spring on a rough floor, released from a stretch,
+;;; failed its branch under values: "met an operator it cannot evaluate")
+
+(test the-numeric-integrator-evaluates-abs
+  "|x - 2| at x = 1/2 and 3; |sin y| at y = -1."
+  (let ((f (ames.simulator::numeric-function '(abs (- x 2)) '(x)))
+        (g (ames.simulator::numeric-function '(* 3 (abs (sin y))) '(y))))
+    (is (= 3/2 (funcall f (vector 0.5d0))))
+    (is (= 1 (funcall f (vector 3d0))))
+    (is (< (abs (- (funcall g (vector -1d0)) (* 3 (sin 1d0)))) 1d-15))))
+
+(defparameter *spring-on-a-rough-floor*
+  "(scenario spring-on-rough-floor
+     \"A block on a rough floor on a wall spring, released from a stretch aa.\"
+     (parameters (m :positive (:value 1)) (g :positive (:value 10)) (k :positive (:value 100))
+                 (mu :positive (:value 1/10)) (aa :positive (> aa (/ (* mu m g) k)) (:value 1/5)))
+     (gravity g)
+     (body floor :fixed t :shape (half-plane (1 0) (0 0)))
+     (body wall :fixed t :shape (half-plane (0 0) (0 1)))
+     (body blk :mass m :position ((+ 2 aa) 0) :velocity (0 0) :shape (polygon (0 0) (1 0) (1 1) (0 1)))
+     (spring s :from (wall (0 1/2)) :to (blk (0 1/2)) :stiffness k :rest-length 2)
+     (friction blk floor :static mu)
+     (simulate :states 2))"
+  "Serway's damped-by-friction oscillator: each half swing loses 2 mu m g/k of amplitude.")
+
+(test a-block-on-a-spring-on-a-rough-floor-loses-two-mu-m-g-over-k-each-swing
+  "Released at 2 + aa (k aa > mu m g), the block stops after pi sqrt(m/k) at
+2 - aa + 2 mu m g/k; with the defaults (k (aa - 2 mu m g/k) = 18 > mu m g = 1) it slides
+back and stops after another half period at 2 + aa - 4 mu m g/k = 54/25."
+  (with-fixture simulator-bridge ()
+    (let* ((history (numeric-history *spring-on-a-rough-floor* bridge))
+           (scenario (ames:history-scenario history))
+           (path (ames.check::checked-path (ames:history-states history))))
+      (is (null (getf (self-check-of history) :failures)))
+      (let ((stops (remove-if-not (lambda (s) (equal '(:stops-sliding "BLK" "FLOOR")
+                                                     (event-names (ames::state-end-event s))))
+                                  path)))
+        (is (= 2 (length stops)) "~D stops" (length stops))
+        (when stops
+          (call-with-scenario-facts
+           bridge scenario
+           (lambda ()
+             (is-same bridge "first half swing" (ames::state-duration (first stops))
+                      (in-scenario-terms scenario '(* pi (sqrt (/ m k)))))
+             (is-same bridge "first stop" (first (per-body (ames::state-final-positions (first stops)) "BLK"))
+                      (in-scenario-terms scenario '(+ (- 2 aa) (/ (* 2 mu m g) k)))))))
+        (when (second stops)
+          (is (< (abs (- (expression-value (first (per-body (ames::state-final-positions (second stops)) "BLK"))
+                                           (in-scenario-terms scenario '((m . 1) (g . 10) (k . 100) (mu . 1/10) (aa . 1/5))))
+                         54/25))
+                 1d-9)))))))
