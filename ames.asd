@@ -291,6 +291,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "witness-curved")
                (:file "leftward-arcs")
                (:file "trust-fresh")
+               (:file "trust-fresh-impacts")
                (:file "simulator-fuzz")
                (:file "truth-scenarios")
                (:file "truth-branches")
