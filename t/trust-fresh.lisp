@@ -197,3 +197,51 @@ back and stops after another half period at 2 + aa - 4 mu m g/k = 54/25."
                                            (in-scenario-terms scenario '((m . 1) (g . 10) (k . 100) (mu . 1/10) (aa . 1/5))))
                          54/25))
                  1d-9)))))))
+
+;;; Class 1 and 2 on a loop: a ball too slow to loop leaves it, lands back on it, slides and turns
+
+(defparameter *slow-loop*
+  "(scenario slow-ball-in-a-loop
+     \"A ball launched at sqrt(3 g r) inside a vertical loop leaves it and lands back on it.\"
+     (parameters (m :positive (:value 1)) (g :positive (:value 10)) (r :positive (:value 1)))
+     (gravity g)
+     (body loop :fixed t :shape (arc :center (0 r) :radius r :from (- (/ pi 2)) :to (* 3/2 pi) :solid :outside))
+     (body ball :mass m :position (0 0) :velocity ((sqrt (* 3 g r)) 0) :shape point)
+     (simulate :states 3))"
+  "Launched along the bottom at v0^2 = 3 g r: it leaves the loop where N = 0, at height
+(v0^2 + g r)/(3 g) = 4 r/3, x = 2 sqrt(2) r/3, with speed sqrt(g r/3) (v^2 = g (y - r)).")
+
+(test a-slow-ball-lands-back-on-its-loop-slides-and-turns
+  "It leaves at (2 sqrt 2 r/3, 4 r/3) moving (-sqrt(g r/3)/3, 2 sqrt(2 g r/3)/3); the
+parabola meets the circle again at (10 sqrt 2 r/27, 4 r/27) after 8 sqrt(2 r/(3 g))/3; the
+plastic landing keeps the tangential part, v_t^2 = 20449 g r/19683, and the ball slides on
+until it turns at height 4 r/27 + v_t^2/(2 g) = 26281 r/39366. (It used to end exit 1 on a
+complex number, the finished states lost.)"
+  (with-fixture simulator-bridge ()
+    (let* ((history (numeric-history *slow-loop* bridge))
+           (scenario (ames:history-scenario history))
+           (states (ames:history-states history)))
+      (is (= 3 (length states)) "~D states" (length states))
+      (is (null (getf (self-check-of history) :failures)) "~S" (getf (self-check-of history) :failures))
+      (destructuring-bind (&optional leave flight slide) states
+        (when slide
+          (is (equal '(:lift-off "BALL" "LOOP") (event-names (ames::state-end-event leave))))
+          (is (equal '(:collision "BALL" "LOOP") (event-names (ames::state-end-event flight))))
+          (flet ((x (form) (in-scenario-terms scenario form)))
+            (call-with-scenario-facts
+             bridge scenario
+             (lambda ()
+               (is-same-vector bridge "where it leaves" (per-body (ames::state-final-positions leave) "BALL")
+                               (x '((* 2/3 (sqrt 2) r) (* 4/3 r))))
+               (is-same bridge "the flight" (ames::state-duration flight)
+                        (x '(* 8/3 (sqrt (/ (* 2 r) (* 3 g))))))
+               (is-same-vector bridge "where it lands" (per-body (ames::state-final-positions flight) "BALL")
+                               (x '((* 10/27 (sqrt 2) r) (* 4/27 r))))))
+            ;; the turning point's closed form holds nested arc tangents: compared by value
+            (loop for (g r) in '((10 1) (981/100 2) (1 1/2))
+                  for bindings = (in-scenario-terms scenario `((m . 1) (g . ,g) (r . ,r)))
+                  do (is (< (abs (- (expression-value (second (per-body (ames::state-final-positions slide) "BALL"))
+                                                      bindings)
+                                    (* 26281/39366 r)))
+                            1d-9)
+                         "turning height at g = ~A, r = ~A" g r))))))))

@@ -200,7 +200,8 @@ Signals UNTRANSLATABLE-EXPRESSION, MAXIMA-ERROR, MAXIMA-TIMEOUT."
 
 (defun decide-uncached (bridge relation)
   "DECIDE's work, without its cache of verdicts. A relation whose Lisp-side reasoning
-meets an arithmetic error (it divides by a literal 0) is :UNKNOWN."
+meets an arithmetic error (it divides by a literal 0), or one a request of which Maxima
+refuses with an error (not a timeout), is :UNKNOWN."
   (labels ((verdict (condition)
              (case (expression-operator condition)
                (not (ecase (verdict (second condition))
@@ -220,7 +221,10 @@ meets an arithmetic error (it divides by a literal 0) is :UNKNOWN."
                (t (let ((answer (handler-case (decide-relation bridge condition)
                                   ;; the reasoning's own arithmetic met a division by a
                                   ;; literal zero (the relation is undefined): nothing is proven
-                                  (arithmetic-error () :unknown))))
+                                  (arithmetic-error () :unknown)
+                                  ;; Maxima refused a request of the deciding (logarc()
+                                  ;; knows no atan2): nothing is proven either
+                                  (maxima-error () :unknown))))
                     (if (eq answer :unknown)
                         (decide-by-cases-of-abs bridge condition)
                         answer))))))
