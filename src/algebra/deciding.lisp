@@ -87,7 +87,10 @@ whose sides agree to round-off is decided exactly or left :UNKNOWN
     (let ((verdict (decide-with-imaginary-radicands bridge relation)))
       (unless (eq verdict :fall-back)
         (return-from decide-relation verdict))))
-  (decide-relation-in-maxima bridge relation))
+  (handler-case (decide-relation-in-maxima bridge relation)
+    ;; is() and sign() refused the relation (logarc() knows no atan2): what a physicist
+    ;; knows may still rewrite it into a form they take
+    (maxima-error () (decide-by-reasoning bridge relation))))
 
 (defun decide-relation-in-maxima (bridge relation)
   "The truth of RELATION by Maxima's is(); when it does not know, :UNKNOWN if numeric

@@ -49,3 +49,32 @@ trigonometric angle, with the difference of its sides expanded (SIMPLIFY's
           (if (or (null expanded) (inverse-angle-kernel-p expanded))
               :unknown
               (decide bridge (list (expression-operator relation) expanded 0)))))))
+
+;;; Polar angles: atan2(y, x) with y of a known sign
+
+(defun polar-angles (expression)
+  "The atan(Y, X) (two arguments: the polar angle of (X, Y)) in EXPRESSION, innermost first."
+  (let ((found '()))
+    (labels ((walk (x)
+               (when (and (consp x) (not (quantity-term-p x)))
+                 (mapc #'walk (expression-arguments x))
+                 (when (and (eq (expression-operator x) 'atan) (= 2 (length (expression-arguments x))))
+                   (pushnew x found :test #'equal)))))
+      (walk expression))
+    (nreverse found)))
+
+(defun decide-by-polar-angles (prover relation)
+  "Step 8: each polar angle atan2(Y, X) of RELATION whose Y is proven positive (negative)
+written pi/2 - atan(X/Y) (-pi/2 - atan(X/Y)), an identity on that side of the x axis, so
+that its range is (0, pi) ((-pi, 0)); the relation decided afresh. :UNKNOWN when no Y's
+sign is known."
+  (let* ((bridge (prover-bridge prover))
+         (bindings (loop for angle in (polar-angles relation)
+                         for (y x) = (expression-arguments angle)
+                         for quarter = (cond ((holds-p bridge (list '> y 0)) '(/ pi 2))
+                                             ((holds-p bridge (list '< y 0)) '(- (/ pi 2))))
+                         when quarter
+                           collect (cons angle `(- ,quarter (atan (/ ,x ,y)))))))
+    (if (null bindings)
+        :unknown
+        (decide bridge (substitute-subexpressions bindings relation)))))
