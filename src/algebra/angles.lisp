@@ -194,7 +194,8 @@ from bounds that are expressions of other subjects (b > a with a > 0 gives b > 0
   "The range of the arithmetic EXPRESSION over the subjects' RANGES (an alist from
 SUBJECT-RANGES; a subject not in it is unbounded), by interval arithmetic on sums,
 differences and multiples by constants, atan, asin and acos taking their principal
-values; NIL when EXPRESSION is of another kind."
+values (atan of two arguments, the polar angle, in (-pi, pi]); NIL when EXPRESSION is of
+another kind."
   (labels ((range (x)
              (let ((constant (pi-linear-value x)))
                (cond (constant (point-range constant))
@@ -224,8 +225,10 @@ values; NIL when EXPRESSION is of another kind."
                                  (and divisor inner (zerop (cdr divisor)) (/= 0 (car divisor))
                                       (range-scaled inner (pi-number (/ (car divisor)))))))
                             ;; the inverse functions' principal values, whatever the argument
-                            (atan (and (= 1 (length arguments))
-                                       (make-range (pi-number 0 -1/2) (pi-number 0 1/2) t t)))
+                            (atan (if (= 1 (length arguments))
+                                      (make-range (pi-number 0 -1/2) (pi-number 0 1/2) t t)
+                                      ;; atan2(y, x): the polar angle, in (-pi, pi]
+                                      (make-range (pi-number 0 -1) (pi-number 0 1) t nil)))
                             (asin (make-range (pi-number 0 -1/2) (pi-number 0 1/2)))
                             (acos (make-range (pi-number 0) (pi-number 0 1)))
                             (t nil)))))))

@@ -87,7 +87,10 @@ whose sides agree to round-off is decided exactly or left :UNKNOWN
     (let ((verdict (decide-with-imaginary-radicands bridge relation)))
       (unless (eq verdict :fall-back)
         (return-from decide-relation verdict))))
-  (decide-relation-in-maxima bridge relation))
+  (handler-case (decide-relation-in-maxima bridge relation)
+    ;; is() and sign() refused the relation (logarc() knows no atan2): what a physicist
+    ;; knows may still rewrite it into a form they take
+    (maxima-error () (decide-by-reasoning bridge relation))))
 
 (defun decide-relation-in-maxima (bridge relation)
   "The truth of RELATION by Maxima's is(); when it does not know, :UNKNOWN if numeric
@@ -200,7 +203,8 @@ Signals UNTRANSLATABLE-EXPRESSION, MAXIMA-ERROR, MAXIMA-TIMEOUT."
 
 (defun decide-uncached (bridge relation)
   "DECIDE's work, without its cache of verdicts. A relation whose Lisp-side reasoning
-meets an arithmetic error (it divides by a literal 0) is :UNKNOWN."
+meets an arithmetic error (it divides by a literal 0), or one a request of which Maxima
+refuses with an error (not a timeout), is :UNKNOWN."
   (labels ((verdict (condition)
              (case (expression-operator condition)
                (not (ecase (verdict (second condition))
@@ -220,7 +224,10 @@ meets an arithmetic error (it divides by a literal 0) is :UNKNOWN."
                (t (let ((answer (handler-case (decide-relation bridge condition)
                                   ;; the reasoning's own arithmetic met a division by a
                                   ;; literal zero (the relation is undefined): nothing is proven
-                                  (arithmetic-error () :unknown))))
+                                  (arithmetic-error () :unknown)
+                                  ;; Maxima refused a request of the deciding (logarc()
+                                  ;; knows no atan2): nothing is proven either
+                                  (maxima-error () :unknown))))
                     (if (eq answer :unknown)
                         (decide-by-cases-of-abs bridge condition)
                         answer))))))

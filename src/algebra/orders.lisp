@@ -65,13 +65,16 @@ when WEAK; V is E when SIGN is 0, from an equation). These are the orderings Max
 sign() does not use inside sums. Without SOLVED, the facts with V alone on a side (V >
 E, E < V ...); with SOLVED, the equations V = E and the facts with no variable of
 RELATION alone on a side, each solved for the first variable of RELATION it is linear
-in (see LINEAR-ORDER)."
+in (see LINEAR-ORDER). A bound by a square root is read squared too (SQUARED-ROOT-FACTS)."
   (flet ((useful-p (order)
            (and order
                 (free-of-p (first order) (second order))
                 (not (numberp (second order)))
                 (not (free-of-p (first order) relation)))))
-    (loop for fact in (current-assumptions bridge)
+    (loop for fact in (let ((facts (current-assumptions bridge)))
+                        ;; a bound by a square root counts squared too (v0 < sqrt(2 g r) is
+                        ;; v0^2 < 2 g r, linear in g and in r)
+                        (append facts (squared-root-facts (flatten-facts facts))))
           for operator = (expression-operator fact)
           for lhs = (relation-lhs fact)
           for rhs = (relation-rhs fact)

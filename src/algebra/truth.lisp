@@ -13,7 +13,11 @@
 ;;;;      ranges of u and v is u against v (reversed);
 ;;;;   5. squares: two sides of one sign, one with a radical, compared through their squares;
 ;;;;   6. angles: sin, cos and tan of compound angles whose ranges give them a sign stand
-;;;;      for fresh variables of that sign (in [-1, 1] for sin and cos).
+;;;;      for fresh variables of that sign (in [-1, 1] for sin and cos);
+;;;;   7. inverse angles: sin, cos and tan of angles made of asin, acos, atan expanded into
+;;;;      algebra (inverse-angles.lisp);
+;;;;   8. polar angles: atan2(y, x) with y of known sign written pi/2 - atan(x/y) or
+;;;;      -pi/2 - atan(x/y) (inverse-angles.lisp).
 ;;;; Every step is an equivalence or a sound relaxation, so a :TRUE or :FALSE it finds is
 ;;;; proven; a step that cannot apply answers :UNKNOWN. Steps ask DECIDE about smaller or
 ;;;; rewritten relations; DECIDE stops a question that is already under way, and
@@ -378,7 +382,8 @@ when that decides nothing, for DECIDE-RELATION's usual strategies."
 
 (defparameter *reasoning-steps*
   '(decide-by-quarter-turns decide-by-signed-parts decide-by-common-factors
-    decide-by-monotonicity decide-by-squares decide-by-angle-substitution)
+    decide-by-monotonicity decide-by-squares decide-by-angle-substitution
+    decide-by-inverse-angle-expansion decide-by-polar-angles)
   "The steps of DECIDE-BY-REASONING, in the order they are tried.")
 
 (defun decide-by-reasoning (bridge relation)

@@ -187,11 +187,17 @@ tests them. Returns (values ALIST CHOSEN), CHOSEN the generic entries."
   (list :state index :claim (check-failure-claim failure)
         :discrepancy (check-failure-discrepancy failure) :detail (check-failure-detail failure)))
 
+(defun numbers-known-p (history)
+  "True when every number of HISTORY's claims is known: it has parameter values, or its
+scenario has no parameters at all (a problem given in numbers)."
+  (or (history-parameter-values history)
+      (null (ames.scenario:scenario-parameters (history-scenario history)))))
+
 (defun self-check-history (history)
   "Check HISTORY's claims under its parameter values (see the file header) and record the
-result in its notes as :SELF-CHECK. Does nothing without values or when *SELF-CHECK* is
-NIL. Returns the result plist, or NIL."
-  (let ((values (history-parameter-values history)))
+result in its notes as :SELF-CHECK. Does nothing when numbers are not known (see
+NUMBERS-KNOWN-P) or when *SELF-CHECK* is NIL. Returns the result plist, or NIL."
+  (let ((values (numbers-known-p history)))
     (when (and values (not *self-check*))
       (setf (getf (history-notes history) :self-check) (list :skipped t)))
     (when (and *self-check* values)

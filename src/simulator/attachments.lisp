@@ -56,6 +56,21 @@ curved one, or a straight one whose outward normal is against AXIS."
       (ames.algebra:holds-p bridge (list '< (ames.geometry:dot axis (ames.geometry:contact-outward-normal contact 0))
                                          0))))
 
+(defun free-body-p (body)
+  "True when the scenario BODY moves under the forces on it (neither fixed nor driven)."
+  (not (or (scenario-body-fixed-p body) (scenario-body-driven-p body))))
+
+(defun refuse-point-against-probe (probe body)
+  "Signal UNSUPPORTED-SITUATION: the free point BODY and the PROBE's point (a point
+attached to another body, such as a bumper's free end) have no locus on each other, so a
+meeting of the two would go unseen and the body would pass through the probe's point."
+  (error 'unsupported-situation
+         :datum (scenario-body-name body)
+         :detail (format nil "~A is a point, and so is the end of ~A it could press: ~
+the model has no contact between two points, so it would pass through it unseen; give ~A a ~
+shape (a small polygon or circle)."
+                         (scenario-body-name body) (getf probe :point) (scenario-body-name body))))
+
 (defun probe-loci (scenario bridge first-index)
   "The loci of the probes the phenomena declare (AMES.KB:PROBES-OF: points attached to
 bodies that retreat along an axis when pressed, such as a bumper's free end) on every
@@ -73,6 +88,8 @@ FIRST-INDEX."
              (axis (mapcar (lambda (x) (ames.maxima:simplify bridge x)) (getf probe :axis))))
         (dolist (body (scenario-bodies scenario))
           (let ((shape (translated-shape (scenario-body-shape body) end)))
+            (when (and (null shape) (not (eq body mount)) (free-body-p body))
+              (refuse-point-against-probe probe body))
             (unless (or (eq body mount) (null shape)
                         (and (scenario-body-fixed-p body) (scenario-body-fixed-p mount)))
               (let ((pair (ames.geometry:make-contact-pair-with-observer

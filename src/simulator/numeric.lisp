@@ -50,6 +50,7 @@ EXPRESSION may hold numbers, PI and SYMBOLS only."
                                         (lambda (v) (expt (funcall base v) integer))
                                         (lambda (v) (real-power (funcall base v) (funcall power v))))))
                             (sqrt (unary (lambda (a) (if (minusp a) (error 'floating-point-invalid-operation) (sqrt a)))))
+                            (abs (unary #'abs))
                             (exp (unary #'exp))
                             (log (unary (lambda (a) (if (plusp a) (log a) (error 'floating-point-invalid-operation)))))
                             (sin (unary #'sin)) (cos (unary #'cos)) (tan (unary #'tan))

@@ -105,8 +105,13 @@ then has no closed form)."
   "EXPRESSION, a closed form at a state's end, simplified for the next state: a sine or
 cosine of an angle with an arc tangent in it (a spring's motion at a root found by the
 half angle, sin(2 atan u)) expanded first, so that it becomes algebraic in u (2 u / (1 +
-u^2)) and a velocity that vanishes there simplifies to 0."
-  (tidy-real run (if (trig-of-atan-p expression) (tidy run expression :trigexpand) expression)))
+u^2)) and a velocity that vanishes there simplifies to 0. Where that expansion leaves
+the algebra (a complex number: the angle holds a root Maxima writes with %i, as a
+landing point found from a quartic), the expression is kept as it is."
+  (tidy-real run (if (trig-of-atan-p expression)
+                     (handler-case (tidy run expression :trigexpand)
+                       (ames.maxima:untranslatable-result () expression))
+                     expression)))
 
 (defun trig-of-atan-p (expression)
   "True when EXPRESSION has a sine or cosine whose argument contains an arc tangent."
