@@ -56,6 +56,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "sturm")
                  (:file "truth")
                  (:file "values")
+                 (:file "values-first")
                  (:file "roots")
                  (:file "integrator-support")
                  (:file "quadrature")
