@@ -39,6 +39,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "presentation")
                  (:file "calculus")
                  (:file "questions")
+                 (:file "prefetch")
                  (:static-file "maxima-server.lisp")))
    (:module "algebra" :pathname "src/algebra/" :serial t
     :depends-on ("base" "maxima-bridge")
@@ -89,6 +90,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "union")
                  (:file "contacts")
                  (:file "obstacle")
+                 (:file "prefetch")
                  (:file "touching")))
    (:module "engine" :pathname "src/engine/" :serial t
     :depends-on ("base" "tms")

@@ -278,6 +278,16 @@ contact pairs). Call under the scenario's assumptions."
                            (lambda ()
                              (ames.geometry:parse-shape (scenario-body-shape body)
                                                         :bridge bridge)))))))
+    ;; the pairs' simplifications asked first, many in a round trip (no result changes)
+    (ames.geometry:prefetch-contact-pairs
+     (loop for (body . more-bodies) on (scenario-bodies scenario)
+           for (shape . more-shapes) on shapes
+           append (loop for other in more-bodies
+                        for other-shape in more-shapes
+                        unless (and (scenario-body-fixed-p body) (scenario-body-fixed-p other))
+                          collect (list (scenario-body-name body) shape
+                                        (scenario-body-name other) other-shape)))
+     :bridge bridge :fixed (mapcar #'scenario-body-name (scenario-fixed-bodies scenario)))
     (loop for (body . more-bodies) on (scenario-bodies scenario)
           for (shape . more-shapes) on shapes
           do (loop for other in more-bodies
