@@ -254,6 +254,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "bridge-safety")
                (:file "bridge-shortcuts")
                (:file "quick-signs")
+               (:file "speed-batches")
                (:file "bridge-integrators")
                (:file "bridge-truth")
                (:file "truth-table")
