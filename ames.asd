@@ -40,6 +40,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "calculus")
                  (:file "questions")
                  (:file "root-forms")
+                 (:file "prefetch")
                  (:static-file "maxima-server.lisp")
                  (:static-file "maxima-server-functions.lisp")))
    (:module "algebra" :pathname "src/algebra/" :serial t
@@ -59,6 +60,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "truth")
                  (:file "inverse-angles")
                  (:file "values")
+                 (:file "values-first")
                  (:file "roots")
                  (:file "integrator-support")
                  (:file "quadrature")
@@ -93,6 +95,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "union")
                  (:file "contacts")
                  (:file "obstacle")
+                 (:file "prefetch")
                  (:file "touching")
                  (:file "rotating-contacts")))
    (:module "engine" :pathname "src/engine/" :serial t
@@ -274,6 +277,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "bridge-safety")
                (:file "bridge-shortcuts")
                (:file "quick-signs")
+               (:file "speed-batches")
                (:file "bridge-integrators")
                (:file "bridge-truth")
                (:file "truth-table")

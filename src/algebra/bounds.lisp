@@ -68,12 +68,15 @@
 
 (defun subject-intervals (facts)
   "An alist (SUBJECT LOWER . UPPER) of the numeric bounds FACTS put on each subject."
-  (let ((intervals '()))
+  (let ((intervals '())
+        (entries (make-hash-table :test #'equal)))
     (dolist (fact (flatten-facts facts) (nreverse intervals))
       (multiple-value-bind (subject side bound) (fact-bound fact)
         (when subject
-          (let ((entry (or (assoc subject intervals :test #'equal)
-                           (let ((new (list subject nil))) (push new intervals) new))))
+          (let ((entry (or (gethash subject entries)
+                           (let ((new (list subject nil)))
+                             (push new intervals)
+                             (setf (gethash subject entries) new)))))
             (when (member side '(:lower :both))
               (setf (second entry) (tighter-bound (second entry) bound :lower)))
             (when (member side '(:upper :both))

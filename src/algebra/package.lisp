@@ -17,6 +17,8 @@ It asks Maxima only through the bridge.")
    ;; numbers before proofs (values.lisp)
    #:call-with-parameter-values #:with-parameter-values #:current-parameter-values
    #:value-truth #:decide-by-values #:facts-from-values
+   ;; the values decide first (values-first.lisp)
+   #:call-with-values-first #:values-first-p #:decide-first-cheaply
    #:undecided-witnesses #:explain-undecided
    ;; roots (roots.lisp, trig-roots.lisp)
    #:earliest-root #:earliest-trigonometric-root

@@ -172,6 +172,15 @@ from its ends; log-uniform in size over four decades where a side is open-ended.
           ((zerop (random 2 random-state)) size)
           (t (- size)))))
 
+(defun distinct-subjects (subjects)
+  "SUBJECTS without repetitions, exactly as (REMOVE-DUPLICATES SUBJECTS :TEST #'EQUAL)
+gives them (each kept at its last occurrence), in time linear in their number."
+  (let ((left (make-hash-table :test #'equal)))
+    (dolist (subject subjects) (incf (gethash subject left 0)))
+    (loop for subject in subjects
+          when (zerop (decf (gethash subject left)))
+            collect subject)))
+
 (defun call-with-admissible-points (bridge relation function &optional assuming)
   "Call FUNCTION on random points (alists subject -> double float, over the subjects of
 RELATION and of the facts in force) that surely satisfy the facts in force and the
@@ -179,17 +188,21 @@ facts ASSUMING, until it returns true or the limits (*WITNESS-DRAWS*,
 *WITNESS-ADMISSIBLE-POINTS*) are reached. Returns the flattened facts."
   (let* ((facts (flatten-facts (append (current-assumptions bridge) assuming)))
          (intervals (subject-intervals facts))
-         (subjects (remove-duplicates (append (expression-variables relation)
-                                              (mapcan #'expression-variables facts))
-                                      :test #'equal))
+         (subjects (distinct-subjects (append (expression-variables relation)
+                                              (mapcan #'expression-variables facts))))
+         ;; each subject's interval looked up once, not at every draw
+         (subject-intervals (let ((table (make-hash-table :test #'equal)))
+                              (dolist (entry (reverse intervals))
+                                (setf (gethash (car entry) table) (cdr entry)))
+                              (mapcar (lambda (subject) (values (gethash subject table)))
+                                      subjects)))
          (random-state (sb-ext:seed-random-state 1994))
          (admissible 0))
     (loop repeat *witness-draws*
           while (< admissible *witness-admissible-points*)
-          do (let ((point (mapcar (lambda (subject)
-                                    (cons subject (random-value (cdr (assoc subject intervals :test #'equal))
-                                                                random-state)))
-                                  subjects)))
+          do (let ((point (mapcar (lambda (subject interval)
+                                    (cons subject (random-value interval random-state)))
+                                  subjects subject-intervals)))
                (when (every (lambda (fact) (eq (condition-truth fact point) :true)) facts)
                  (incf admissible)
                  (when (funcall function point) (return)))))

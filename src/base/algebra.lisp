@@ -40,9 +40,20 @@ no limit).")
 (defconstant tau 'tau
   "The state-local time variable: every qualitative state starts at TAU = 0.")
 
+(defvar *arithmetic-operator-table* (cons nil nil)
+  "(SOURCE . TABLE): an EQ hash table of the operators of the list SOURCE, the
++ARITHMETIC-OPERATORS+ it was made from (made again when that list is another).")
+
 (defun arithmetic-operator-p (symbol)
   "True when SYMBOL names an arithmetic operator of the algebra."
-  (and (symbolp symbol) (assoc symbol +arithmetic-operators+) t))
+  (and (symbolp symbol)
+       (let ((cache *arithmetic-operator-table*))
+         (unless (eq (car cache) +arithmetic-operators+)
+           (let ((table (make-hash-table :test #'eq)))
+             (dolist (entry +arithmetic-operators+) (setf (gethash (first entry) table) t))
+             (setf cache (cons +arithmetic-operators+ table)
+                   *arithmetic-operator-table* cache)))
+         (values (gethash symbol (cdr cache))))))
 
 (defun relation-operator-p (symbol)
   "True when SYMBOL names a relation of the algebra."

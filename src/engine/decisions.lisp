@@ -230,11 +230,12 @@ for a belief, through a collection whose pattern it matches."
 ;;; its head: model building is then near linear in the number of beliefs.
 
 (defun belief-index-keys (belief)
-  "The keys under which BELIEF is indexed: (HEAD 0 FIRST-POSITIONAL) and (HEAD KEY
-VALUE) for each of its properties, where that element or value is an atom (a name)."
+  "The keys under which BELIEF is indexed: (HEAD 0 FIRST-POSITIONAL), where that element
+is an atom (a name) or a ground form (the (derivative (path-position C) ...) of N^2
+contacts), and (HEAD KEY VALUE) for each of its properties whose value is an atom."
   (let ((head (pattern-head belief))
         (positional (positional-part belief)))
-    (append (and positional (atom (first positional))
+    (append (and positional (ground-p (first positional))
                  (list (list head 0 (first positional))))
             (loop for (key value) on (property-part belief) by #'cddr
                   when (atom value)
@@ -268,7 +269,7 @@ ground, the shortest list winning."
              (let ((entry (gethash key (model-belief-index model) '(0))))
                (when (< (car entry) (car best))
                  (setf best entry)))))
-      (when (and positional (atom (first positional)) (ground-p (first positional)))
+      (when (and positional (ground-p (first positional)))
         (narrow (list head 0 (first positional))))
       (loop for (key value) on (property-part pattern) by #'cddr
             when (and (atom value) (ground-p value))

@@ -98,22 +98,31 @@ the datum's value and whether the key is present; an absent key fails."
                       when (eq (car cell) key) return cell)))
       (values (cadr tail) (and tail t)))))
 
+(defun match-positionals (pattern belief bindings)
+  "Match the positional parts of PATTERN and BELIEF (see POSITIONAL-PART) element by
+element, without copying them, extending BINDINGS. Returns the bindings, true on success
+(the parts of equal length and every element matching), and the two property parts."
+  (let ((p (cdr pattern)) (b (cdr belief)))
+    (loop
+      (let ((p-end (or (atom p) (keywordp (car p))))
+            (b-end (or (atom b) (keywordp (car b)))))
+        (cond ((and p-end b-end) (return (values bindings t p b)))
+              ((or p-end b-end) (return (values nil nil)))
+              (t (multiple-value-bind (extended ok) (match-structure (car p) (car b) bindings)
+                   (unless ok (return (values nil nil)))
+                   (setf bindings extended p (cdr p) b (cdr b)))))))))
+
 (defun match-pattern (pattern belief bindings)
   "Match the belief PATTERN against the belief BELIEF, extending BINDINGS (see the
 file header for the rules). Returns the bindings and, as second value, true on
 success."
   (if (and (consp belief)
            (eq (pattern-head pattern) (pattern-head belief)))
-      (let ((pattern-positional (positional-part pattern))
-            (belief-positional (positional-part belief)))
-        (if (/= (length pattern-positional) (length belief-positional))
-            (values nil nil)
-            (multiple-value-bind (bindings ok)
-                (match-structure pattern-positional belief-positional bindings)
-              (if ok
-                  (match-properties (property-part pattern)
-                                    (plist-lookup (property-part belief)) bindings)
-                  (values nil nil)))))
+      (multiple-value-bind (bindings ok pattern-properties belief-properties)
+          (match-positionals pattern belief bindings)
+        (if ok
+            (match-properties pattern-properties (plist-lookup belief-properties) bindings)
+            (values nil nil)))
       (values nil nil)))
 
 ;;; Unification (variables on both sides), for the static dependency graph

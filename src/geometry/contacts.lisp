@@ -100,31 +100,42 @@
                                  :name (arc-piece-name piece)
                                  :full (arc-piece-full piece))))))
 
+(defun simple-contact-measures (decider piece)
+  "The measures of the simple contact along PIECE (a tidied piece), before they are
+tidied: a plist of :TANGENT (a vector, or NIL for an arc), :TANGENT-ANGLE (or NIL) and
+:LENGTH (:INFINITE for an infinite line)."
+  (let ((straight (line-piece-p piece)))
+    (list :tangent (and straight (unit-vector decider (line-direction piece)))
+          :tangent-angle (and straight (angle-of-vector decider (line-direction piece)))
+          :length (etypecase piece
+                    (line-piece (if (line-piece-infinite piece)
+                                    :infinite
+                                    (decided-length decider (line-direction piece))))
+                    (arc-piece (e* (arc-piece-radius piece)
+                                   (if (arc-piece-full piece)
+                                       (e* 2 'pi)
+                                       (let ((sweep (arc-signed-sweep piece)))
+                                         (if (eq (arc-piece-sense piece) :ccw)
+                                             sweep (e- sweep))))))))))
+
 (defun make-simple-contact (decider piece &key observer obstacle observer-feature
                                               obstacle-feature index)
   "The simple contact along PIECE between the features OBSERVER-FEATURE of the body
 OBSERVER and OBSTACLE-FEATURE of OBSTACLE, its expressions tidied by the bridge."
   (let* ((piece (tidy-piece decider piece))
-         (straight (line-piece-p piece)))
+         (measures (simple-contact-measures decider piece))
+         (tangent (getf measures :tangent))
+         (angle (getf measures :tangent-angle))
+         (length (getf measures :length)))
     (make-instance
      'simple-contact
      :observer observer :obstacle obstacle
      :observer-feature (named-feature observer-feature observer)
      :obstacle-feature (named-feature obstacle-feature obstacle)
      :piece piece :index index :decider decider
-     :tangent (and straight (tidy-vector decider (unit-vector decider (line-direction piece))))
-     :tangent-angle (and straight (tidy decider (angle-of-vector decider (line-direction piece))))
-     :length (etypecase piece
-               (line-piece (if (line-piece-infinite piece)
-                               :infinite
-                               (tidy decider (decided-length decider (line-direction piece)))))
-               (arc-piece (tidy decider
-                                (e* (arc-piece-radius piece)
-                                    (if (arc-piece-full piece)
-                                        (e* 2 'pi)
-                                        (let ((sweep (arc-signed-sweep piece)))
-                                          (if (eq (arc-piece-sense piece) :ccw)
-                                              sweep (e- sweep)))))))))))
+     :tangent (and tangent (tidy-vector decider tangent))
+     :tangent-angle (and angle (tidy decider angle))
+     :length (if (eq length :infinite) :infinite (tidy decider length)))))
 
 ;;; Geometry of a contact
 

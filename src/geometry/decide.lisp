@@ -37,8 +37,11 @@ facts only) and the subject named when a fact cannot be decided."
       (make-decider :bridge bridge-or-decider :subject subject)))
 
 (defun bridge-decide (bridge relation)
-  "Ask the Maxima bridge whether RELATION holds: :TRUE, :FALSE or :UNKNOWN."
-  (ames.algebra:decide bridge relation))
+  "Ask the Maxima bridge whether RELATION holds: :TRUE, :FALSE or :UNKNOWN. Under values
+that decide first, a relation they settle gets only a cheap proof: an :UNKNOWN is an
+open fact, which the values then settle where it matters (see
+AMES.ALGEBRA:DECIDE-FIRST-CHEAPLY)."
+  (ames.algebra:decide-first-cheaply bridge relation))
 
 (defun undecidable (decider relation &optional detail)
   "Signal UNDECIDABLE-GEOMETRIC-FACT for RELATION, its detail saying which parameter

@@ -81,7 +81,7 @@ decided."
                                                          (shape-form obstacle-shape))
                                             :detail detail)))
       (multiple-value-bind (sum-pieces inside-test)
-          (handler-case (obstacle-boundary decider observer-shape obstacle-shape)
+          (handler-case (remembered-obstacle-boundary decider observer-shape obstacle-shape)
             (unsupported-shape-pair (condition) (unsupported (ames-error-detail condition))))
         (let* ((contacts (loop for sp in sum-pieces
                                for i from 0
@@ -119,6 +119,19 @@ BOUNDARY (pieces): q is inside a closed part and on no boundary piece."
       (lambda (decider q)
         (and (some (lambda (part) (inside-convex-p decider q part)) parts)
              (notany (lambda (piece) (point-on-piece-p decider q piece)) boundary)))))
+
+(defvar *remembered-boundaries* nil
+  "NIL, or an EQUAL hash table (OBSERVER-SHAPE . OBSTACLE-SHAPE) -> (SUM-PIECES
+INSIDE-TEST), the OBSTACLE-BOUNDARY values already computed under the facts in force
+(bound by CALL-WITH-PREFETCHED-CONTACT-PAIRS).")
+
+(defun remembered-obstacle-boundary (decider observer-shape obstacle-shape)
+  "OBSTACLE-BOUNDARY's values, taken from *REMEMBERED-BOUNDARIES* when they are there."
+  (let ((entry (and *remembered-boundaries*
+                    (gethash (cons observer-shape obstacle-shape) *remembered-boundaries*))))
+    (if entry
+        (values-list entry)
+        (obstacle-boundary decider observer-shape obstacle-shape))))
 
 (defun obstacle-boundary (decider observer-shape obstacle-shape)
   "The simple-contact pieces (SUM-PIECEs) of OBSTACLE-SHAPE seen by OBSERVER-SHAPE, and

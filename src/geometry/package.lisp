@@ -41,6 +41,7 @@ and call inside ames.maxima:with-assumptions for symbolic shapes):
    #:shape-surface-p #:shape-closed-p
    ;; pairs of bodies
    #:choose-observer #:make-contact-pair #:make-contact-pair-with-observer
+   #:call-with-prefetched-contact-pairs
    #:contact-pair #:pair-observer #:pair-obstacle #:pair-observer-shape
    #:pair-obstacle-shape #:pair-contacts
    #:relative-position #:contacts-at #:penetrates-p #:check-separation

@@ -116,8 +116,11 @@ outcome is :STOPPED and its notes' :STOPPED-BY is the BUDGET-EXCEEDED."
                (lambda ()
                  (ames.algebra:with-parameter-values (values)
                    (let ((history (handler-bind ((ambiguous-transition #'stop-simulation))
-                                    (simulate scenario :bridge bridge :parameter-values values
-                                                       :limits limits))))
+                                    ;; the values decide first (a cheap proof, else assumed)
+                                    (ames.algebra:call-with-values-first
+                                     (lambda ()
+                                       (simulate scenario :bridge bridge :parameter-values values
+                                                          :limits limits))))))
                      (dolist (fact (ames.algebra:facts-from-values))
                        (unless (member fact (getf (history-notes history) :assumed)
                                        :key (lambda (entry) (getf entry :fact)) :test #'equal)

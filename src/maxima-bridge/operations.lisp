@@ -89,6 +89,12 @@ ratsimp() gives (seen on every simplification of the test suite and the scenario
            (and (mform-p form +mexpt+) (not (integerp (third form))))
            (some #'radical-form-p (cdr form)))))
 
+(defun simplest-form-request (form)
+  "The one request SIMPLEST-FORM sends for the Maxima FORM: its candidates' list."
+  (mcall "$AMES_SIMPLIFICATION_CANDIDATES" form
+         (if (trigonometric-form-p form) +true+ +false+)
+         (if (radical-form-p form) +true+ +false+)))
+
 (defun simplest-form (bridge form expression)
   "The smallest translatable result of several simplifications of FORM: ratsimp,
 trigsimp, ratsimp after trigsimp, factor after ratsimp and radcan (the first of equal
@@ -96,10 +102,7 @@ size wins), each computed once in one round trip; the trigsimp ones only when FO
 sin, cos or tan, radcan only when it has radicals, logarithms or exponentials (otherwise
 they equal the ratsimp one)."
   (let* ((candidates (mlist-items
-                      (maxima-request bridge (mcall "$AMES_SIMPLIFICATION_CANDIDATES" form
-                                                    (if (trigonometric-form-p form) +true+ +false+)
-                                                    (if (radical-form-p form) +true+ +false+))
-                                      :datum expression)))
+                      (maxima-request bridge (simplest-form-request form) :datum expression)))
          (best nil))
     (dolist (candidate candidates)
       (let ((translated (handler-case (from-mx bridge candidate)

@@ -265,10 +265,44 @@ AMES-ERRORs leaving THUNK (a BUDGET-EXCEEDED, a Maxima failure) the context of L
                                                     and ~A"
                                           fact (ames-error-detail condition))))))))
 
+(defun scenario-pair (scenario bridge body shape other other-shape)
+  "The contact pair of SCENARIO's bodies BODY and OTHER, of the parsed SHAPE and
+OTHER-SHAPE, checked not to overlap at the start; geometry conditions named by the pair."
+  (let ((location (format nil "bodies ~A and ~A"
+                          (symbol-name (scenario-body-name body))
+                          (symbol-name (scenario-body-name other)))))
+    (call-wrapping-geometry-conditions
+     scenario location
+     (lambda ()
+       (let* ((pair (ames.geometry:make-contact-pair
+                     (scenario-body-name body) shape
+                     (scenario-body-name other) other-shape
+                     :bridge bridge
+                     ;; as the simulator does, so that the two agree on
+                     ;; the observer and the bridge's cache serves both
+                     :fixed (mapcar #'scenario-body-name
+                                    (scenario-fixed-bodies scenario))))
+              (observer (if (eq (ames.geometry:pair-observer pair)
+                                (scenario-body-name body))
+                            body other))
+              (obstacle (if (eq observer body) other body)))
+         (when (ames.geometry:penetrates-p
+                pair (ames.geometry:relative-position
+                      pair (scenario-body-position observer)
+                      (scenario-body-position obstacle)))
+           (semantic-reject
+            scenario 'overlapping-bodies-error location
+            (list (scenario-body-name body) (scenario-body-name other))
+            "~A and ~A overlap at the start"
+            (symbol-name (scenario-body-name body))
+            (symbol-name (scenario-body-name other))))
+         pair)))))
+
 (defun scenario-geometry (scenario bridge)
   "Parse every shape of SCENARIO with the geometry layer and check that no two bodies,
 not both fixed, overlap at the start; return the WORLD so built (the shapes and the
 contact pairs). Call under the scenario's assumptions."
+<<<<<<< HEAD
   (let ((pairs '())
         (shapes
           (loop for body in (scenario-bodies scenario)
@@ -317,10 +351,40 @@ contact pairs). Call under the scenario's assumptions."
                                   (symbol-name (scenario-body-name body))
                                   (symbol-name (scenario-body-name other))))
                                (push pair pairs)))))))
+=======
+  (let* ((shapes
+           (loop for body in (scenario-bodies scenario)
+                 collect (let ((body body))
+                           (call-wrapping-geometry-conditions
+                            scenario (format nil "body ~A" (symbol-name (scenario-body-name body)))
+                            (lambda ()
+                              (ames.geometry:parse-shape (scenario-body-shape body)
+                                                         :bridge bridge))))))
+         ;; each pair of bodies not both fixed: (BODY SHAPE OTHER OTHER-SHAPE)
+         (pairings (loop for (body . more-bodies) on (scenario-bodies scenario)
+                         for (shape . more-shapes) on shapes
+                         append (loop for other in more-bodies
+                                      for other-shape in more-shapes
+                                      unless (and (scenario-body-fixed-p body)
+                                                  (scenario-body-fixed-p other))
+                                        collect (list body shape other other-shape))))
+         (pairs
+           ;; the pairs' simplifications asked first, many in a round trip, and the
+           ;; obstacles' boundaries computed once (no result changes)
+           (ames.geometry:call-with-prefetched-contact-pairs
+            (loop for (body shape other other-shape) in pairings
+                  collect (list (scenario-body-name body) shape
+                                (scenario-body-name other) other-shape))
+            (lambda ()
+              (loop for (body shape other other-shape) in pairings
+                    collect (scenario-pair scenario bridge body shape other other-shape)))
+            :bridge bridge
+            :fixed (mapcar #'scenario-body-name (scenario-fixed-bodies scenario)))))
+>>>>>>> speed
     (make-world scenario
                 (mapcar (lambda (body shape) (cons (scenario-body-name body) shape))
                         (scenario-bodies scenario) shapes)
-                (nreverse pairs))))
+                pairs)))
 
 (defun check-scenario-geometry (scenario bridge)
   "Check SCENARIO's shapes with the geometry layer (ames.geometry:parse-shape) and that

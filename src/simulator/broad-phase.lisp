@@ -57,7 +57,25 @@ the signs the bridge gave (SIGNS)."
   "The sign of EXPRESSION for every admissible value of the parameters, whose signs
 SIGNS gives (an alist), by the rules of signs (AMES.ALGEBRA:RULES-OF-SIGNS, the one sign
 system): a sign set (all three signs when nothing is known)."
-  (ames.algebra:rules-of-signs (lambda (parameter) (cdr (assoc parameter signs))) expression))
+  (let ((table (signs-table signs)))
+    (ames.algebra:rules-of-signs (lambda (parameter) (values (gethash parameter table)))
+                                 expression)))
+
+(defvar *signs-table* (cons nil nil)
+  "(SIGNS . TABLE): the EQL hash table of the last alist SIGNS given to SIGNS-TABLE.")
+
+(defun signs-table (signs)
+  "The alist SIGNS (parameter -> sign, as PARAMETER-SIGNS makes it, never changed after)
+as an EQL hash table, the first entry of a parameter winning as in ASSOC; the last one
+made is reused for the same list."
+  (let ((cache *signs-table*))
+    (if (and (car cache) (eq (car cache) signs))
+        (cdr cache)
+        (let ((table (make-hash-table :test #'eql)))
+          (dolist (entry (reverse signs))
+            (setf (gethash (car entry) table) (cdr entry)))
+          (setf *signs-table* (cons signs table))
+          table))))
 
 (defparameter *float-sign-margin* 1d-6
   "A constant expression evaluated in double precision (roots, pi) has its value's sign

@@ -87,18 +87,25 @@ or below a threshold) before a comparison of two times that it would settle."
 (defun compare-times (run a b)
   "Whether the time A comes no later than B: :TRUE, :FALSE or (values :UNKNOWN FACT).
 Closed forms are compared under the assumptions; where that fails and the run has
-parameter values, the numbers decide (and the fact is noted as assumed from them)."
+parameter values, the numbers decide (and the fact is noted as assumed from them).
+Where the values decide first (AMES.ALGEBRA:VALUES-FIRST-P), the closed forms get only a
+cheap proof before the numbers, and the full one only when the numbers are too close."
   (let* ((closed (and (closed-form-time-p a) (closed-form-time-p b)))
          (fact (if closed `(<= ,a ,b) (list :no-later a b)))
-         (verdict (if closed (decide run fact) :unknown)))
+         (cheap (and closed (ames.algebra:values-first-p) (run-numbers-known-p run)))
+         (verdict (cond ((not closed) :unknown)
+                        (cheap (ames.algebra:decide-first-cheaply (run-bridge run) fact))
+                        (t (decide run fact)))))
     (if (not (eq verdict :unknown))
         verdict
         (let ((na (numeric-time run a)) (nb (numeric-time run b)))
-          (if (and na nb (> (abs (- na nb)) (* 1d-9 (max 1d0 (abs na)))))
-              (progn (push (list :fact (if (<= na nb) fact (list :not fact)) :from :values)
-                           (run-assumed run))
-                     (if (<= na nb) :true :false))
-              (values :unknown fact))))))
+          (cond ((and na nb (> (abs (- na nb)) (* 1d-9 (max 1d0 (abs na)))))
+                 (push (list :fact (if (<= na nb) fact (list :not fact)) :from :values)
+                       (run-assumed run))
+                 (if (<= na nb) :true :false))
+                ((and cheap (not (eq (setf verdict (decide run fact)) :unknown)))
+                 verdict)
+                (t (values :unknown fact)))))))
 
 (defun same-time-p (run a b)
   "True when the times A and B are proven equal."

@@ -193,7 +193,8 @@ turn from its tangent to the next one's is to the left or none): an observer at 
 a corner is outside the obstacle when it is outside either face, so the two contacts
 are alternatives. At a concave corner both faces can push at once."
   (let ((by-geometry (make-hash-table :test #'eq))
-        (alternatives '()))
+        (alternatives '())
+        (entries (make-hash-table :test #'eq)))
     (loop for (name . geometry) in contacts
           do (setf (gethash geometry by-geometry) name))
     (loop for (name . geometry) in contacts
@@ -204,10 +205,13 @@ are alternatives. At a concave corner both faces can push at once."
                                (turn (ames.geometry:cross (ames.geometry:contact-unit-tangent geometry length)
                                                 (ames.geometry:contact-unit-tangent neighbour 0))))
                           (when (ames.algebra:holds-p bridge `(>= ,turn 0))
-                            (push other (cdr (or (assoc name alternatives)
-                                                 (car (push (list name) alternatives)))))
-                            (push name (cdr (or (assoc other alternatives)
-                                                (car (push (list other) alternatives)))))))))
+                            (flet ((entry (key)
+                                     ;; ALTERNATIVES's entry of KEY (as ASSOC finds it), made when new
+                                     (or (gethash key entries)
+                                         (setf (gethash key entries)
+                                               (car (push (list key) alternatives))))))
+                              (push other (cdr (entry name)))
+                              (push name (cdr (entry other))))))))
     alternatives))
 
 (defun body-entity (body &rest properties)

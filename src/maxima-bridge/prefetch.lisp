@@ -1,0 +1,59 @@
+;;;; src/maxima-bridge/prefetch.lisp -- many simplifications asked in few round trips, answered later from the cache.
+;;;;
+;;;; A caller that will simplify many independent expressions one at a time (the geometry
+;;;; tidying every contact of every pair of bodies: N^2 of them in a chain of N blocks) pays
+;;;; a round trip each, and on a loaded machine each round trip waits for both processes
+;;;; to be scheduled. PREFETCH-SIMPLIFICATIONS asks the same requests SIMPLIFY :FULL would
+;;;; send, many in one round trip, and stores each answer in the cache under the key the
+;;;; single request has: SIMPLIFY then finds it there. The answers are the ones the single
+;;;; requests would get (the same forms, evaluated in turn); a batch that fails in any way
+;;;; (a Maxima error or question, a timeout) is dropped, and its requests are then asked
+;;;; one at a time as without the prefetch, their conditions signalled where they belong.
+
+(in-package #:ames.maxima)
+
+(defparameter *prefetch-batch-size* 48
+  "The most requests PREFETCH-SIMPLIFICATIONS sends in one round trip.")
+
+(defun uncached-simplification-requests (bridge expressions)
+  "The (KEY . REQUEST) pairs of the :FULL simplification requests of EXPRESSIONS that
+BRIDGE's cache does not hold yet, each once, in order. Atoms, numbers and untranslatable
+expressions are left out."
+  (let ((seen (make-hash-table :test #'equal))
+        (cache (bridge-cache bridge))
+        (assumptions (assumption-key bridge))
+        (pairs '()))
+    (dolist (expression expressions (nreverse pairs))
+      (unless (or (atom expression) (rationalp expression))
+        (let ((form (handler-case (to-mx bridge expression :any)
+                      (maxima-condition () nil))))
+          (when (consp form)
+            (let* ((request (simplest-form-request form))
+                   (key (cons request assumptions)))
+              (unless (or (gethash key seen) (nth-value 1 (gethash key cache)))
+                (setf (gethash key seen) t)
+                (push (cons key request) pairs)))))))))
+
+(defun prefetch-simplifications (bridge expressions)
+  "Ask BRIDGE's Maxima for the :FULL simplifications (see SIMPLIFY) of EXPRESSIONS that
+it has not answered under the facts in force, up to *PREFETCH-BATCH-SIZE* in a round
+trip, and cache each answer as its single request's. Returns nothing useful; a batch
+that fails is dropped (see this file's header). Signals MAXIMA-BUDGET-EXCEEDED when the
+run's time is up."
+  (let ((pairs (uncached-simplification-requests bridge expressions)))
+    (loop while pairs
+          do (let* ((batch (subseq pairs 0 (min *prefetch-batch-size* (length pairs))))
+                    (answers (handler-case
+                                 (mlist-items (maxima-request bridge (mlist (mapcar #'cdr batch))
+                                                              :cache nil :datum :prefetch))
+                               (maxima-budget-exceeded (condition) (error condition))
+                               (maxima-condition () nil)))
+                    (cache (bridge-cache bridge)))
+               (setf pairs (nthcdr (length batch) pairs))
+               (when (= (length answers) (length batch))
+                 (when (>= (+ (hash-table-count cache) (length batch)) *cache-limit*)
+                   (clrhash cache))
+                 (loop for (key) in batch
+                       for answer in answers
+                       do (setf (gethash key cache) answer)))))
+    nil))
