@@ -80,12 +80,12 @@ cos a, alpha = -(2/3) g sin a / r, at the foot after sqrt(3 L / (g sin a)); its 
            bridge scenario
            (lambda ()
              (let ((energy (ames.simulator::state-total-energy state)))
-               (is (ames.simulator::reported-kinetic-energy state 'disc nil))
+               (is (ames.simulator::reported-body-term state (ames.kb::query-reported-term :kinetic-energy) 'disc nil))
                (is-same bridge "energy conserved" energy (subst 0 'tau energy))
                (is (not (ames.maxima:equivalent-p
-                         bridge (ames.simulator::reported-kinetic-energy state 'disc nil)
+                         bridge (ames.simulator::reported-body-term state (ames.kb::query-reported-term :kinetic-energy) 'disc nil)
                          (in-scenario-terms scenario '(* 1/2 m (expt (* 2/3 g (sin a) tau) 2))))))
-               (is-same bridge "kinetic energy with rotation" (ames.simulator::reported-kinetic-energy state 'disc nil)
+               (is-same bridge "kinetic energy with rotation" (ames.simulator::reported-body-term state (ames.kb::query-reported-term :kinetic-energy) 'disc nil)
                         (in-scenario-terms scenario '(* 3/4 m (expt (* 2/3 g (sin a) tau) 2)))))
              (let ((answers (ames::history-answers history)))
                (is-same bridge "speed at the foot" (second (assoc "SPEED-AT-FOOT" answers :test #'same-name-p*))

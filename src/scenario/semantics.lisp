@@ -302,56 +302,6 @@ OTHER-SHAPE, checked not to overlap at the start; geometry conditions named by t
   "Parse every shape of SCENARIO with the geometry layer and check that no two bodies,
 not both fixed, overlap at the start; return the WORLD so built (the shapes and the
 contact pairs). Call under the scenario's assumptions."
-<<<<<<< HEAD
-  (let ((pairs '())
-        (shapes
-          (loop for body in (scenario-bodies scenario)
-                collect (let ((body body))
-                          (call-wrapping-geometry-conditions
-                           scenario (format nil "body ~A" (symbol-name (scenario-body-name body)))
-                           (lambda ()
-                             (ames.geometry:parse-shape (scenario-body-shape body)
-                                                        :bridge bridge)))))))
-    (loop for (body . more-bodies) on (scenario-bodies scenario)
-          for (shape . more-shapes) on shapes
-          do (loop for other in more-bodies
-                   for other-shape in more-shapes
-                   unless (or (and (scenario-body-fixed-p body) (scenario-body-fixed-p other))
-                              ;; a turning polygon's contacts are its corners' (the simulator's
-                              ;; corners.lisp): no translating obstacle describes them
-                              (corner-shaped-rotating-p body) (corner-shaped-rotating-p other))
-                     do (let ((location (format nil "bodies ~A and ~A"
-                                                (symbol-name (scenario-body-name body))
-                                                (symbol-name (scenario-body-name other))))
-                              (body body) (other other) (shape shape)
-                              (other-shape other-shape))
-                          (call-wrapping-geometry-conditions
-                           scenario location
-                           (lambda ()
-                             (let* ((pair (ames.geometry:make-contact-pair
-                                           (scenario-body-name body) shape
-                                           (scenario-body-name other) other-shape
-                                           :bridge bridge
-                                           ;; as the simulator does, so that the two agree on
-                                           ;; the observer and the bridge's cache serves both
-                                           :fixed (mapcar #'scenario-body-name
-                                                          (scenario-fixed-bodies scenario))))
-                                    (observer (if (eq (ames.geometry:pair-observer pair)
-                                                      (scenario-body-name body))
-                                                  body other))
-                                    (obstacle (if (eq observer body) other body)))
-                               (when (ames.geometry:penetrates-p
-                                      pair (ames.geometry:relative-position
-                                            pair (scenario-body-position observer)
-                                            (scenario-body-position obstacle)))
-                                 (semantic-reject
-                                  scenario 'overlapping-bodies-error location
-                                  (list (scenario-body-name body) (scenario-body-name other))
-                                  "~A and ~A overlap at the start"
-                                  (symbol-name (scenario-body-name body))
-                                  (symbol-name (scenario-body-name other))))
-                               (push pair pairs)))))))
-=======
   (let* ((shapes
            (loop for body in (scenario-bodies scenario)
                  collect (let ((body body))
@@ -365,8 +315,13 @@ contact pairs). Call under the scenario's assumptions."
                          for (shape . more-shapes) on shapes
                          append (loop for other in more-bodies
                                       for other-shape in more-shapes
-                                      unless (and (scenario-body-fixed-p body)
-                                                  (scenario-body-fixed-p other))
+                                      unless (or (and (scenario-body-fixed-p body)
+                                                      (scenario-body-fixed-p other))
+                                                 ;; a turning polygon's contacts are its
+                                                 ;; corners' (the simulator's corners.lisp):
+                                                 ;; no translating obstacle describes them
+                                                 (corner-shaped-rotating-p body)
+                                                 (corner-shaped-rotating-p other))
                                         collect (list body shape other other-shape))))
          (pairs
            ;; the pairs' simplifications asked first, many in a round trip, and the
@@ -380,7 +335,6 @@ contact pairs). Call under the scenario's assumptions."
                     collect (scenario-pair scenario bridge body shape other other-shape)))
             :bridge bridge
             :fixed (mapcar #'scenario-body-name (scenario-fixed-bodies scenario)))))
->>>>>>> speed
     (make-world scenario
                 (mapcar (lambda (body shape) (cons (scenario-body-name body) shape))
                         (scenario-bodies scenario) shapes)
