@@ -200,8 +200,8 @@ and the reduced discriminant S^2/4 - P: the roots are S/2 -+ sqrt(S^2/4 - P)."
   "True when OFFSET, a root solve() gave, is decidedly not a real number: the imaginary
 part is decidedly not zero (sqrt(h - top) under h < top). Such a root of
 a polynomial in time is no time at which anything happens."
-  (let ((imaginary (maxima-request (search-bridge search) (mcall "$IMAGPART" offset)
-                                   :datum (search-expression search))))
+  (let ((imaginary (root-form-imaginary-part (search-bridge search) offset
+                                             :datum (search-expression search))))
     (and (not (eql imaginary 0))
          (equal (set-difference (sign-pattern-of search imaginary) '(:positive :negative)) '()))))
 

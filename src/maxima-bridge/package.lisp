@@ -32,7 +32,7 @@ layer above, AMES.ALGEBRA: it asks through the exported operations only.")
    #:maxima-is #:maxima-is-opposite #:maxima-signs #:maxima-difference-signs
    #:maxima-fact-signs #:square-root-part-signs #:ratsimp-with-sines #:cached-answer #:cache-answer #:assumption-key
    ;; the requests of the earliest-root search, over opaque root forms (root-forms.lisp)
-   #:offset-polynomial #:numeric-root-form-p #:complex-root-form-p #:root-form-signs
+   #:offset-polynomial #:numeric-root-form-p #:complex-root-form-p #:root-form-signs #:root-form-imaginary-part
    #:root-form-expression #:root-at-offset #:linear-root-offset #:vieta-forms
    #:root-form-sum #:root-form-difference #:rational-radicand #:real-square-root-form
    #:solved-root-offsets #:real-root-offsets

@@ -39,6 +39,11 @@ AFTER, and COEFFICIENTS the root forms (c0 c1 ... cd) of its coefficients, or
 facts in force (FORM-SIGNS: sign() of FORM in several simplified forms)."
   (form-signs bridge form :datum datum))
 
+(defun root-form-imaginary-part (bridge form &key datum)
+  "The imaginary part of the root form FORM, a root form (0 when FORM is real). One
+request (imagpart), with DATUM for errors."
+  (maxima-request bridge (mcall "$IMAGPART" form) :datum datum))
+
 (defun root-form-expression (bridge form)
   "The root form FORM in prefix algebra, translated as it is (no request). Signals
 UNTRANSLATABLE-RESULT when it leaves the algebra."
