@@ -95,8 +95,8 @@ GROUP, or NIL when the ODE has no energy integral or the direction is not decide
                                                                :initial-position theta0
                                                                :initial-velocity omega0)
                 ((or ames.maxima:solve-failed ames.maxima:maxima-question) () nil)))
-         (direction (let ((sign (sign-of run omega0)))
-                      (if (member sign '(1 -1)) sign (sign-of run (at-arc driving theta0))))))
+         (direction (or (sign-direction (sign-of run omega0))
+                        (sign-direction (sign-of run (at-arc driving theta0))))))
     (when (and ode (member direction '(1 -1)))
       (let* ((energy (tidy run (ames.maxima:ode-solution-speed-squared ode)))
              (speed (tidy run `(* ,direction (sqrt ,energy)))))
