@@ -23,7 +23,9 @@
 ;;;;            and (moment . F) is defined: every such moment enters B's angular-momentum
 ;;;;            law. A component applying a force at a point (a rope wound on a disc, a
 ;;;;            hinge) asserts it and defines the moment, with the template
-;;;;            (moment-about ARM F), ARM the point's offset (RX RY) from the centre.
+;;;;            (moment-at-point B (PX PY) F) for a point of B's own frame, or
+;;;;            (moment-about ARM F), ARM the point's offset (RX RY) from the centre as
+;;;;            expressions (not template forms: a template gets its arguments unexpanded).
 ;;;;   templates
 ;;;;     (inertia B)                      B's moment of inertia about its centre of mass
 ;;;;     (sum-of-moments FORCES)          the sum of the moments of the forces FORCES
@@ -180,8 +182,11 @@ the moments about it of the forces that act at its points: I alpha = sum of r x 
 
 (defcomponent moment-of-a-contact-force (:knowledge-base *mechanics*)
   "A contact's forces (the normal force, friction) act on a rotating disc at the contact
-point: their moment about its centre is r x F, r from the centre to that point."
+point: their moment about its centre is r x F, r from the centre to that point. (Other
+interactions that pair their forces by a :contact key, a spring's span, are not contacts
+of shapes: where they act is theirs to say.)"
   (:arguments (?force :belief (force ?force :on ?body :contact ?contact))
+              (?contact :entity simple-contact)
               (?body :entity body :where (:fixed nil :rotating t)))
   (:assert (acts-at ?force :on ?body))
   (:equations (= (moment-of ?force) (moment-at-contact ?contact ?body ?force))))
