@@ -252,3 +252,44 @@ cart held back by its reaction."
                ;; the cart is the contact's observer: the disc's friction on it, backward
                ;; along the contact's tangent (+x)
                (check-friction bridge state "CART" "DISC" :static `(- (* ,(x 'm) (/ ,big-a 3))))))))))))
+
+(defparameter *disc-on-a-spring*
+  '(scenario disc-on-a-spring "A disc on a rough floor tied at its centre to a wall by a spring."
+    (parameters (m :positive) (r :positive) (g :positive) (k :positive) (d :positive)
+                (l :positive (> l (+ d r))) (mu :positive (> mu (/ (* k d) (* 3 m g)))))
+    (gravity g)
+    (body floor :fixed t :shape (half-plane (1 0) (0 0)))
+    (body wall :fixed t :shape (half-plane (0 -1) (0 1)))
+    (body disc :mass m :inertia :uniform :shape (circle r) :position ((+ l d) r) :velocity (0 0))
+    (spring s :from (wall (0 r)) :to (disc (0 0)) :stiffness k :rest-length l)
+    (friction disc floor :static mu)
+    (simulate :states 1))
+  "A uniform disc pulled d past a spring's rest length, released on a rough floor where
+friction can hold it rolling (mu > k d / (3 m g)).")
+
+(test disc-rolls-to-and-fro-on-a-spring
+  "A rolling disc on a spring (a linear motion, the angle solved with the position): it
+oscillates at w = sqrt(2 k / (3 m)), the spring's k over the mass m + I / r^2, forever
+(static friction, at most k d / 3, never reaches mu m g), x = l + d cos(w t), turning at
+alpha = -a / r; the energy, with (1/2) I omega^2, is conserved."
+  (with-fixture simulator-bridge ()
+    (let ((scenario (ames:parse-scenario *disc-on-a-spring*)))
+      (multiple-value-bind (history states) (run-of scenario bridge)
+        (is (eq :complete (ames::history-outcome history)))
+        (let ((state (first states)))
+          (is (eq :forever (ames::state-duration state)))
+          (flet ((x (form) (in-scenario-terms scenario form)))
+            (call-with-scenario-facts
+             bridge scenario
+             (lambda ()
+               (let ((w (x '(sqrt (/ (* 2 k) (* 3 m))))))
+                 (is-same bridge "x" (first (per-body (ames::state-positions state) "DISC"))
+                          (x `(+ l (* d (cos (* ,w tau))))))
+                 (is-same bridge "omega r = -v"
+                          (x `(* r ,(rotation-entry (ames.simulator:state-angular-velocities state) "DISC")))
+                          (x `(* d ,w (sin (* ,w tau)))))
+                 (is-same bridge "alpha r = -a"
+                          (x `(* r ,(rotation-entry (ames.simulator:state-angular-accelerations state) "DISC")))
+                          (x `(- ,(first (per-body (ames::state-accelerations state) "DISC")))))
+                 (let ((energy (ames.simulator::state-total-energy state)))
+                   (is-same bridge "energy conserved" energy (subst 0 'tau energy))))))))))))

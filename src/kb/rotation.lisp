@@ -176,8 +176,11 @@ the moments about it of the forces that act at its points: I alpha = sum of r x 
 
 (defcomponent moment-of-a-contact-force (:knowledge-base *mechanics*)
   "A contact's forces (the normal force, friction) act on a rotating disc at the contact
-point: their moment about its centre is r x F, r from the centre to that point."
+point: their moment about its centre is r x F, r from the centre to that point. (Other
+interactions that pair their forces by a :contact key, a spring's span, are not contacts
+of shapes: where they act is theirs to say.)"
   (:arguments (?force :belief (force ?force :on ?body :contact ?contact))
+              (?contact :entity simple-contact)
               (?body :entity body :where (:fixed nil :rotating t)))
   (:assert (acts-at ?force :on ?body))
   (:equations (= (moment-of ?force) (moment-at-contact ?contact ?body ?force))))

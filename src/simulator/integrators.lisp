@@ -98,10 +98,11 @@ SOLVED model, whose accelerations depend on one another's motion), in body order
                                   (member (ames.geometry:contact-observer (contact-geometry run contact))
                                           (group-bodies group)))
                                 (path-terms solved)))
-         (rates (loop for body in (group-bodies group)
-                      append (loop for axis in '(:x :y)
-                                   collect (cdr (assoc `(ames.kb:vel ,body ,axis)
-                                                       (solved-model-rates solved) :test #'equal))))))
+         (rates (append (loop for body in (group-bodies group)
+                              append (loop for axis in '(:x :y)
+                                           collect (cdr (assoc `(ames.kb:vel ,body ,axis)
+                                                               (solved-model-rates solved) :test #'equal))))
+                        (rotation-rates run solved group))))
     (setf (group-kind group)
           (cond ((and (null curved) (notany (lambda (r) (mentions-state-p solved r)) rates))
                  :constant)
@@ -232,13 +233,17 @@ searched, under parameter values: see numeric.lisp)."
 
 (defun integrate-linear (run solved group)
   "Fill GROUP's motion through the bridge's closed-form solver of linear ODEs with
-constant coefficients (springs along fixed directions: sines and cosines in TAU).
+constant coefficients (springs along fixed directions: sines and cosines in TAU), a
+rotating body's angle and angular velocity with its position and velocity.
 Returns GROUP, or NIL when the bridge finds no closed form (the group is then
 integrated numerically): a failed or unverifiable solution, or a sign question the
 assumptions leave open."
   (let* ((bodies (group-bodies group))
-         (positions (loop for b in bodies append (list `(ames.kb:pos ,b :x) `(ames.kb:pos ,b :y))))
-         (velocities (loop for b in bodies append (list `(ames.kb:vel ,b :x) `(ames.kb:vel ,b :y))))
+         (rotating (group-rotating-bodies run group))
+         (positions (append (loop for b in bodies append (list `(ames.kb:pos ,b :x) `(ames.kb:pos ,b :y)))
+                            (loop for b in rotating collect `(ames.kb:angle ,b))))
+         (velocities (append (loop for b in bodies append (list `(ames.kb:vel ,b :x) `(ames.kb:vel ,b :y)))
+                             (loop for b in rotating collect `(ames.kb:angvel ,b))))
          (accelerations (mapcar (lambda (v) (cdr (assoc v (solved-model-rates solved) :test #'equal)))
                                 velocities))
          (initial (lambda (terms)

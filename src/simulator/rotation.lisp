@@ -72,15 +72,15 @@ translates, whose entity is unchanged."
         collect (cons `(ames.kb:angvel ,body) (tidy run `(+ ,omega0 (* ,alpha tau)) :full))))
 
 (defun rotation-kind (run solved group kind)
-  "KIND, GROUP's integrator as classified for its translation, checked for its rotation:
-:CONSTANT only when the angular accelerations are constant too; a rotating group that no
-closed-form integrator here covers is :NUMERIC."
-  (cond ((null (group-rotating-bodies run group)) kind)
-        ((and (eq kind :constant)
-              (notany (lambda (rate) (mentions-state-p solved rate))
-                      (rotation-rates run solved group)))
-         :constant)
-        (t :numeric)))
+  "KIND, GROUP's integrator as CLASSIFY-GROUP found it over its accelerations and angular
+accelerations (ROTATION-RATES), kept where its integrator covers the rotation: :CONSTANT
+(polynomials in TAU) and :LINEAR (the linear solver takes the angles with the positions);
+any other rotating group is :NUMERIC (the curve's and the line's integrators know one
+coordinate along a path, not a turning body)."
+  (declare (ignore solved))
+  (if (or (null (group-rotating-bodies run group)) (member kind '(:constant :linear)))
+      kind
+      :numeric))
 
 ;;; What a state reports
 
