@@ -1,5 +1,6 @@
 ;;;; t/wound-ropes.lisp -- hinges and ropes wound on turning discs (issue 23): an Atwood machine
-;;;; over a massive pulley, a yo-yo, and the force of the hinge of a swinging rod.
+;;;; over a massive pulley, a yo-yo, the force of the hinge of a swinging rod, a drum whose rope
+;;;; runs over a pulley, and the refusal of a wound rope that would swing.
 ;;;;
 ;;;; Expected results are the textbook's, written in the scenario files' headers:
 ;;;;   Atwood machine over a disc pulley of inertia I, radius R, mass M, hinged at its centre:
@@ -189,3 +190,63 @@ gives omega^2 = 3 g/l, (5/2) m g straight up (the weight plus m omega^2 l/2)."
                (is-same-vector bridge "the hinge at the bottom"
                                (at-rotation hinge '(- (/ pi 2)) (x '(- (sqrt (/ (* 3 g) l)))))
                                (x '(0 (* 5/2 m g))))))))))))
+
+;;; A drum whose rope runs over a pulley; a wound rope that would swing
+
+(defparameter *drum-over-pulley*
+  "(scenario drum-over-pulley \"A hinged drum, its rope wound on top and led over a pulley to a hanging mass.\"
+     (parameters (m :positive (:value 1)) (big-m :positive (:value 2)) (big-r :positive (:value 1/5))
+                 (i :positive (:value 1/25)) (g :positive (:value 981/100))
+                 (d :positive (> d big-r) (:value 1)) (h :positive (:value 1)))
+     (gravity g)
+     (body drum :mass big-m :inertia i :shape (circle big-r) :position (0 0) :velocity (0 0))
+     (hinge axle :body drum :at (0 0))
+     (body support :fixed t :shape point :position (d big-r))
+     (pulley wheel :on support :at (0 0))
+     (body weight :mass m :shape point :position (d (- big-r h)) :velocity (0 0))
+     (rope cord :length (+ d h) :through ((drum (0 big-r) :wound) wheel (weight (0 0))))
+     (simulate :states 1 :until 1/4))"
+  "A rope wound first (on top of a hinged drum), horizontal to a pulley, then down.")
+
+(test drum-pays-out-over-a-pulley
+  "A drum (inertia I, radius R) whose rope leaves its top, runs over a pulley and holds a
+mass m: a = g/(1 + I/(m R^2)) down, the drum turning clockwise at a/R, the tension
+m g/(1 + m R^2/I), and the hinge pushing back against the rope: (-T, M g)."
+  (with-fixture simulator-bridge ()
+    (let* ((scenario (first (ames:read-scenarios-from-string *drum-over-pulley*)))
+           (history (simulate-stopping-when-ambiguous scenario bridge))
+           (state (first (ames::history-states history))))
+      (flet ((x (form) (in-scenario-terms scenario form)))
+        (is (not (null state)))
+        (when state
+          (let ((a (x '(/ g (+ 1 (/ i (* m (expt big-r 2)))))))
+                (tension (x '(/ (* m g) (+ 1 (/ (* m (expt big-r 2)) i))))))
+            (call-with-scenario-facts
+             bridge scenario
+             (lambda ()
+               (is-same-vector bridge "the mass falls" (per-body (ames::state-accelerations state) "WEIGHT")
+                               `(0 (- ,a)))
+               (is-same bridge "the drum turns clockwise" (angular-acceleration-in state "DRUM")
+                        `(- (/ ,a ,(x 'big-r))))
+               (is-same bridge "tension" (third (force-entry state :tension "CORD")) tension)
+               (is-same-vector bridge "the hinge" (fourth (force-entry state :hinge "AXLE"))
+                               `((- ,tension) ,(x '(* big-m g))))))))))))
+
+(test a-wound-rope-that-would-swing-is-refused
+  "A yo-yo hung from a point off to its side: its string's piece would swing round the disc
+(the tangent point wandering), which is not modelled: the run stops with an
+UNMODELLED-SITUATION rather than a wrong answer."
+  (with-fixture simulator-bridge ()
+    (let* ((scenario (first (ames:read-scenarios-from-string
+                             "(scenario slanted-yoyo \"A yo-yo on a slanted string.\"
+                                (parameters (m :positive) (g :positive) (r :positive) (i :positive)
+                                            (top :positive (> top r)))
+                                (gravity g)
+                                (body ceiling :fixed t :shape (half-plane (0 top) (1 top)))
+                                (body yoyo :mass m :inertia i :shape (circle r) :position (0 0) :velocity (0 0))
+                                (rope string :length (sqrt (- (+ (expt (+ r (/ top 2)) 2) (expt top 2)) (expt r 2)))
+                                      :through ((ceiling ((+ r (/ top 2)) top)) (yoyo (r 0) :wound)))
+                                (simulate :states 1))")))
+           (condition (handler-case (progn (simulate-stopping-when-ambiguous scenario bridge) nil)
+                        (ames-error (c) c))))
+      (is (typep condition 'ames.kb:unmodelled-situation) "~A" condition))))

@@ -37,13 +37,26 @@ a pulley name its body's position plus its point; a list (X Y) of expressions."
       (mapcar (lambda (p x) `(+ ,p ,x)) (or position '(0 0)) offset))))
 
 (defun rope-start-path-length (scenario rope)
-  "The length at the start of the path of ROPE through its points (an expression)."
-  (let ((points (mapcar (lambda (point) (rope-point-at-start scenario point))
-                        (scenario-rope-through rope))))
-    (cons '+ (loop for (a b) on points
-                   while b
-                   collect `(sqrt (+ (expt (- ,(first b) ,(first a)) 2)
-                                     (expt (- ,(second b) ,(second a)) 2)))))))
+  "The length at the start of the path of ROPE through its points (an expression). A piece
+ending wound on a disc (:wound) runs to its tangent point: sqrt(d^2 - R^2), d the distance
+of the next point from the disc's centre, R the wound point's distance from it."
+  (let* ((through (scenario-rope-through rope))
+         (points (mapcar (lambda (point) (rope-point-at-start scenario point)) through))
+         (wound (scenario-rope-wound-ends rope))
+         (last (1- (length points))))
+    (flet ((distance-squared (a b)
+             `(+ (expt (- ,(first b) ,(first a)) 2) (expt (- ,(second b) ,(second a)) 2))))
+      (cons '+ (loop for (a b) on points
+                     for index from 0
+                     while b
+                     collect (let ((wound-point (cond ((and (= index 0) (member :first wound)) (first through))
+                                                      ((and (= index (1- last)) (member :last wound)) (nth last through)))))
+                               (if wound-point
+                                   (let ((centre (rope-point-at-start scenario (list (first wound-point) '(0 0))))
+                                         (other (if (= index 0) b a)))
+                                     `(sqrt (- ,(distance-squared centre other)
+                                               ,(distance-squared '(0 0) (second wound-point)))))
+                                   `(sqrt ,(distance-squared a b)))))))))
 
 (defun body-names-location (word bodies)
   "\"WORD A B\" for the clause WORD about BODIES, or \"clause WORD\" without bodies."

@@ -202,21 +202,42 @@ TAKE-CONSTANT-ROOTS)."
   (and (consp expression)
        (or (eq (first expression) 'sqrt) (some #'find-sqrt (rest expression)))))
 
+(defun rational-square-root (x)
+  "The square root of the positive rational X when it is rational, else NIL."
+  (and (rationalp x) (plusp x)
+       (let ((n (isqrt (numerator x))) (d (isqrt (denominator x))))
+         (and (= (* n n) (numerator x)) (= (* d d) (denominator x)) (/ n d)))))
+
+(defun scaled-square (radicand)
+  "When RADICAND is X^2, X^2 / N or N X^2 with N a rational square, (values X SQRT-OF-SCALE);
+else NIL."
+  (flet ((square-base (x) (and (consp x) (eq (first x) 'expt) (eql (third x) 2) (second x))))
+    (cond ((square-base radicand) (values (square-base radicand) 1))
+          ((and (consp radicand) (eq (first radicand) '/) (= (length radicand) 3)
+                (square-base (second radicand)) (rational-square-root (third radicand)))
+           (values (square-base (second radicand)) (/ (rational-square-root (third radicand)))))
+          ((and (consp radicand) (eq (first radicand) '*) (= (length radicand) 3)
+                (rational-square-root (second radicand)) (square-base (third radicand)))
+           (values (square-base (third radicand)) (rational-square-root (second radicand))))
+          (t nil))))
+
 (defun take-constant-roots (run expression)
   "EXPRESSION with each square root of a constant (no quantity term in it) whose radicand
-is the square of an expression X of decided sign replaced by X or -X: the length of a
-span along an axis, sqrt((top - h)^2) = top - h when top > h, which Maxima alone leaves
-when its sign needs the order of the parameters."
+is the square of an expression X of decided sign, possibly scaled by a rational square
+(SCALED-SQUARE), replaced by X or -X (times the scale's root): the length of a span along
+an axis, sqrt((top - h)^2) = top - h when top > h, sqrt((2 top - h)^2/4) = (2 top - h)/2,
+which Maxima alone leaves when its sign needs the order of the parameters."
   (cond ((atom expression) expression)
         ((quantity-term-p expression) expression)
         ((and (eq (first expression) 'sqrt)
               (notany #'quantity-term-p (expression-variables (second expression))))
-         (let ((radicand (tidy run (second expression) :full)))
-           (if (and (consp radicand) (eq (first radicand) 'expt) (eql (third radicand) 2))
-               (case (one-sign (sign-of run (second radicand)))
-                 (:positive (second radicand))
-                 (:negative `(- ,(second radicand)))
-                 (t expression))
+         (multiple-value-bind (base scale) (scaled-square (tidy run (second expression) :full))
+           (if base
+               (let ((root (if (eql scale 1) base `(* ,scale ,base))))
+                 (case (one-sign (sign-of run base))
+                   (:positive root)
+                   (:negative `(- ,root))
+                   (t expression)))
                expression)))
         (t (cons (first expression)
                  (mapcar (lambda (x) (take-constant-roots run x)) (rest expression))))))
