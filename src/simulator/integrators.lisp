@@ -18,6 +18,8 @@
 ;;;;   :SPEED-LINE accelerations that depend on the velocities alone and keep the group on a
 ;;;;              fixed line (quadratic drag): a Riccati equation in the speed along it,
 ;;;;              closed forms in TAU (speed-line.lisp); else :NUMERIC;
+;;;;   :ROTATION-PATH one rotating body held to one degree of freedom, its angle (a ladder
+;;;;              on its wall and floor): like :LINE along the angle (rotation-path.lisp);
 ;;;;   :NUMERIC   anything else: no closed form (numbers only under --set).
 
 (in-package #:ames.simulator)

@@ -1,5 +1,5 @@
-;;;; src/simulator/rotation-path.lisp -- the :TURNING integrator: a rotating body whose contacts
-;;;; leave it one degree of freedom, its angle, integrated by the energy integral.
+;;;; src/simulator/rotation-path.lisp -- the :ROTATION-PATH integrator: a rotating body whose
+;;;; contacts leave it one degree of freedom, its angle, integrated by the energy integral.
 ;;;;
 ;;;; A ladder on its wall and floor, a block tipping about a corner, a rod on a hinge: the
 ;;;; solved model gives the body's accelerations as functions of its angle theta and angular
@@ -65,7 +65,7 @@ X') or NIL."
 
 (defun integrate-rotation-path (run solved group)
   "Fill GROUP's motion along its body's angle (see the file header) and make it a
-:TURNING group; NIL (GROUP unchanged) when it is no such motion, the initial velocity is
+:ROTATION-PATH group; NIL (GROUP unchanged) when it is no such motion, the initial velocity is
 not the one the angle gives, or the direction of motion is not decided."
   (multiple-value-bind (body alpha ax ay) (rotation-path-rates run solved group)
     (when body
@@ -107,7 +107,7 @@ GROUP, or NIL when the ODE has no energy integral or the direction is not decide
               (group-speed group) speed
               (group-ode-kind group) (ames.maxima:ode-solution-kind ode)
               (group-line group) (list :coordinate `(= ,s (ames.kb:angle ,body)))
-              (group-kind group) :turning
+              (group-kind group) :rotation-path
               (group-motion group)
               (list (cons `(ames.kb:pos ,body :x) (first centre))
                     (cons `(ames.kb:pos ,body :y) (second centre))
