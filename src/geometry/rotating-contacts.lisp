@@ -116,6 +116,16 @@ of mass moves with VELOCITY (a vector) and it turns at OMEGA: v + omega k x arm.
 point, along the contact's tangent (0 when it rolls or rests)."
   (dot (contact-point-velocity contact velocity omega) (rotating-contact-tangent contact)))
 
+(defun contact-slip-acceleration (contact omega acceleration alpha)
+  "The rate of CONTACT's slip velocity for a corner on a fixed face (its tangent fixed):
+(a + alpha k x r - omega^2 r) . t. Signals an error for a fixed corner on the body's face
+(whose tangent turns)."
+  (let ((arm (rotating-contact-arm contact)))
+    (ecase (rotating-contact-kind contact)
+      (:vertex-on-face
+       (dot (v+ acceleration (vscale alpha (rot-ccw arm)) (vscale (e- (e* omega omega)) arm))
+            (rotating-contact-tangent contact))))))
+
 (defun contact-gap-acceleration (contact velocity omega acceleration alpha)
   "The second time derivative of CONTACT's gap, for the centre's VELOCITY and
 ACCELERATION and the angular velocity OMEGA and acceleration ALPHA. A corner on a fixed

@@ -51,8 +51,23 @@ holds at the start of a state where the corner touches, and is reached when it a
     (ames.geometry:contact-gap-acceleration (corner-geometry situation contact)
                                             velocity omega acceleration alpha)))
 
+(defun corner-slip-speed (situation contact)
+  "Template CORNER-SLIP-SPEED: the corner's velocity along the face's tangent."
+  (multiple-value-bind (velocity omega) (corner-rates situation contact)
+    (ames.geometry:contact-slip-velocity (corner-geometry situation contact) velocity omega)))
+
+(defun corner-slip-acc (situation contact)
+  "Template CORNER-SLIP-ACC: the rate of CORNER-SLIP-SPEED."
+  (multiple-value-bind (velocity omega acceleration alpha) (corner-rates situation contact)
+    (declare (ignore velocity))
+    (ames.geometry:contact-slip-acceleration (corner-geometry situation contact) omega acceleration alpha)))
+
 (defun register-corner-templates (kb)
   "Register in KB the template functions of corner contacts."
+  (register-template kb 'corner-slip-speed #'corner-slip-speed
+                     :documentation "A corner's velocity along the face it touches.")
+  (register-template kb 'corner-slip-acc #'corner-slip-acc
+                     :documentation "The rate of a corner's velocity along the face.")
   (register-template kb 'corner-touching #'corner-touching
                      :documentation "A rotating body's corner is on or behind a face's line.")
   (register-template kb 'corner-past-an-end #'corner-past-an-end

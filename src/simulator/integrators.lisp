@@ -231,7 +231,8 @@ searched, under parameter values: see numeric.lisp)."
                            (integrate-speed-line run solved group))
                  (setf (group-kind group) :numeric)))
         ;; a rotating body left one degree of freedom, its angle (rotation-path.lisp)
-        (:numeric (integrate-rotation-path run solved group))))))
+        (:numeric (or (integrate-rotating-equilibrium run solved group)
+                      (integrate-rotation-path run solved group)))))))
 
 (defun integrate-linear (run solved group)
   "Fill GROUP's motion through the bridge's closed-form solver of linear ODEs with
