@@ -225,3 +225,20 @@ that turning point yet)."
              (t (values :unknown fact)))))
         (:never :never)
         (t (values :unknown s))))))
+
+(defun check-rotation-paths-forever (run groups)
+  "Signal UNSUPPORTED-SITUATION when a :ROTATION-PATH group of GROUPS (a state no event
+ends) may reach a turning point ahead, where its angle would turn back: nothing watches
+that turning point yet, and the motion over the angle holds only up to it."
+  (dolist (group groups)
+    (when (eq (group-kind group) :rotation-path)
+      (let ((turn (handler-case (ames.algebra:coordinate-root-ahead
+                                 (run-bridge run) (group-speed-squared group) +arc-length+
+                                 (group-s0 group) (group-direction group))
+                    (ames.maxima:maxima-error () :unknown))))
+        (unless (eq turn :none)
+          (error 'unsupported-situation
+                 :datum (group-bodies group)
+                 :detail (format nil "The body turns back~:[~; at the angle ~S~] before any event ~
+                                      ends the state; a turning point of a rotation is not ~
+                                      supported yet." (not (keywordp turn)) turn)))))))

@@ -340,6 +340,7 @@ trajectory and the arc length reached."
 (defun note-state-forever (run state groups)
   "Record that STATE, which no event ends, lasts forever; periodic when every body
 oscillates with one frequency."
+  (check-rotation-paths-forever run groups)
   (let ((oscillation (and (not (state-periodic state))
                           (linear-oscillation run groups))))
     (when oscillation
