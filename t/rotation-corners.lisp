@@ -75,3 +75,25 @@ phi'^2 = 3 g (sin a - sin phi) / l from phi = a down to asin((2/3) sin a)."
           (is (realp printed))
           (is (and (realp printed) (< (abs (- printed expected)) 1d-8))
               "duration ~A, expected ~A" printed expected))))))
+
+(test ladder-stays-up-on-a-rough-floor
+  "Against a smooth wall on a floor rough enough (mu > 1/(2 tan a)) the ladder stays at
+rest forever: the floor's push m g, the wall's m g / (2 tan a), static friction at the foot
+m g / (2 tan a) toward the wall."
+  (with-fixture simulator-bridge ()
+    (let ((scenario (scenario-named "ladder-on-rough-floor")))
+      (multiple-value-bind (history states) (run-of scenario bridge)
+        (is (eq :complete (ames::history-outcome history)))
+        (let ((state (first states)))
+          (is (eq :forever (ames::state-duration state)))
+          (flet ((x (form) (in-scenario-terms scenario form)))
+            (call-with-scenario-facts
+             bridge scenario
+             (lambda ()
+               (is-same bridge "the floor's push" (normal-force-between state "LADDER" "FLOOR") (x '(* m g)))
+               (is-same bridge "the wall's push" (normal-force-between state "LADDER" "WALL")
+                        (x '(/ (* m g) (* 2 (tan a)))))
+               (check-friction bridge state "LADDER" "FLOOR" :static (x '(/ (* m g) (* 2 (tan a)))))
+               (is-same-vector bridge "at rest" (per-body (ames::state-velocities state) "LADDER") (quote (0 0)))
+               (is-same bridge "not turning"
+                        (rotation-entry (ames.simulator:state-angular-velocities state) "LADDER") 0)))))))))

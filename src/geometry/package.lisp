@@ -70,6 +70,6 @@ and call inside ames.maxima:with-assumptions for symbolic shapes):
    #:rotating-contact-arm #:rotating-contact-gap #:rotating-contact-normal
    #:rotating-contact-tangent #:rotating-contact-place #:rotating-contact-extent
    #:vertex-on-face #:face-on-vertex
-   #:contact-point-velocity #:contact-gap-rate #:contact-slip-velocity
+   #:contact-point-velocity #:contact-gap-rate #:contact-slip-velocity #:contact-slip-acceleration
    #:contact-gap-acceleration #:contact-torque
    #:shape-corners #:shape-faces #:corner-contacts #:corner-touching-p #:resting-face-contacts))

@@ -52,7 +52,9 @@
   "The world position of the point LOCAL of the body's own frame in CONFIGURATION."
   (v+ (configuration-centre configuration) (rotated local (configuration-theta configuration))))
 
-(defstruct (rotating-contact (:constructor %make-rotating-contact))
+(defstruct (rotating-contact (:constructor %make-rotating-contact
+                                 (kind feature other-feature configuration point arm gap
+                                  normal tangent place extent &optional face-start)))
   "A contact of a rotating body with a fixed body's straight face or corner (see the
 file header): KIND (:VERTEX-ON-FACE or :FACE-ON-VERTEX), the rotating body's FEATURE and
 the fixed body's OTHER-FEATURE (feature names as in shapes.lisp, or NIL), the
@@ -75,12 +77,9 @@ when it has a symbolic length; FEATURE and OTHER-FEATURE name what touches."
          (arm (rotated vertex (configuration-theta configuration)))
          (point (v+ (configuration-centre configuration) arm))
          (offset (v- point face-start)))
-    (%make-rotating-contact
-     :kind :vertex-on-face :feature feature :other-feature other-feature
-     :configuration configuration :point point :arm arm
-     :gap (dot offset normal) :normal normal :tangent tangent
-     :place (dot offset tangent)
-     :extent (and (not unbounded) (vector-length direction)))))
+    (%make-rotating-contact :vertex-on-face feature other-feature configuration point arm
+                            (dot offset normal) normal tangent (dot offset tangent)
+                            (and (not unbounded) (vector-length direction)))))
 
 (defun face-on-vertex (decider face-start face-end corner configuration
                        &key feature other-feature)
@@ -96,13 +95,10 @@ outward normal."
          (start (body-point configuration face-start))
          (offset (v- corner start))
          (normal (vneg outward)))
-    (%make-rotating-contact
-     :kind :face-on-vertex :feature feature :other-feature other-feature
-     :configuration configuration :point corner
-     :arm (v- corner (configuration-centre configuration))
-     :gap (dot offset outward) :normal normal :tangent (rot-ccw normal)
-     :place (dot offset face-tangent)
-     :extent (vector-length local-direction) :face-start start)))
+    (%make-rotating-contact :face-on-vertex feature other-feature configuration corner
+                            (v- corner (configuration-centre configuration))
+                            (dot offset outward) normal (rot-ccw normal) (dot offset face-tangent)
+                            (vector-length local-direction) start)))
 
 ;;; Velocities and accelerations
 
@@ -119,6 +115,16 @@ of mass moves with VELOCITY (a vector) and it turns at OMEGA: v + omega k x arm.
   "The velocity with which the rotating body slides along the fixed one at CONTACT's
 point, along the contact's tangent (0 when it rolls or rests)."
   (dot (contact-point-velocity contact velocity omega) (rotating-contact-tangent contact)))
+
+(defun contact-slip-acceleration (contact omega acceleration alpha)
+  "The rate of CONTACT's slip velocity for a corner on a fixed face (its tangent fixed):
+(a + alpha k x r - omega^2 r) . t. Signals an error for a fixed corner on the body's face
+(whose tangent turns)."
+  (let ((arm (rotating-contact-arm contact)))
+    (ecase (rotating-contact-kind contact)
+      (:vertex-on-face
+       (dot (v+ acceleration (vscale alpha (rot-ccw arm)) (vscale (e- (e* omega omega)) arm))
+            (rotating-contact-tangent contact))))))
 
 (defun contact-gap-acceleration (contact velocity omega acceleration alpha)
   "The second time derivative of CONTACT's gap, for the centre's VELOCITY and

@@ -5,9 +5,10 @@
 ;;;; The simulator describes each such pair as an entity (it finds the corners and faces;
 ;;;; ames.geometry's rotating-contacts.lisp gives their geometry as functions of the
 ;;;; rotating body's configuration):
-;;;;   (corner-contact K :observer A :obstacle B :geometry C)
+;;;;   (corner-contact K :observer A :obstacle B :geometry C :mates (K ...))
 ;;;;       A the rotating body, B the fixed one, C an AMES.GEOMETRY:ROTATING-CONTACT whose
-;;;;       expressions are over (pos A :x), (pos A :y) and (angle A).
+;;;;       expressions are over (pos A :x), (pos A :y) and (angle A); MATES the corners of A
+;;;;       on the same face touching at the state's start (friction.lisp needs them).
 ;;;; The corner touches while its gap is 0; it pushes A along the face's normal with the
 ;;;; magnitude (normal-force K), at the corner (a moment about A's centre: rotation.lisp's
 ;;;; moment of a contact force, whose arm the geometry gives); the restriction keeps the
@@ -31,9 +32,11 @@ terms, as four values, for the corner CONTACT's observer."
             (list `(acc ,body :x) `(acc ,body :y)) `(angacc ,body))))
 
 (defun corner-touching (situation contact)
-  "Template CORNER-TOUCHING: the corner is on or behind the face's line, (<= GAP 0): it
-holds at the start of a state where the corner touches, and is reached when it arrives."
-  (list '<= (ames.geometry:rotating-contact-gap (corner-geometry situation contact)) 0))
+  "Template CORNER-TOUCHING: the corner is on the face's line, (= GAP 0): at the start
+of a state where it touches with no normal velocity, whether the contact holds is the
+consistency search's choice (a block's uphill corner rises at once when it tips); later it
+is reached as the gap closes."
+  (list '= (ames.geometry:rotating-contact-gap (corner-geometry situation contact)) 0))
 
 (defun corner-past-an-end (situation contact)
   "Template CORNER-PAST-AN-END: the corner has slid past an end of a bounded face; never
@@ -51,8 +54,33 @@ holds at the start of a state where the corner touches, and is reached when it a
     (ames.geometry:contact-gap-acceleration (corner-geometry situation contact)
                                             velocity omega acceleration alpha)))
 
+(defun corner-slip-speed (situation contact)
+  "Template CORNER-SLIP-SPEED: the corner's velocity along the face's tangent."
+  (multiple-value-bind (velocity omega) (corner-rates situation contact)
+    (ames.geometry:contact-slip-velocity (corner-geometry situation contact) velocity omega)))
+
+(defun corner-slip-acc (situation contact)
+  "Template CORNER-SLIP-ACC: the rate of CORNER-SLIP-SPEED."
+  (multiple-value-bind (velocity omega acceleration alpha) (corner-rates situation contact)
+    (declare (ignore velocity))
+    (ames.geometry:contact-slip-acceleration (corner-geometry situation contact) omega acceleration alpha)))
+
+(defun face-normal-force (situation contact)
+  "Template FACE-NORMAL-FORCE: the sum of the normal forces of CONTACT's mates (the
+corners of its body touching its face, itself included)."
+  (let ((mates (entity-property (entity-named situation contact) :mates)))
+    (if (rest mates)
+        (cons '+ (mapcar (lambda (mate) (list 'normal-force mate)) mates))
+        (list 'normal-force contact))))
+
 (defun register-corner-templates (kb)
   "Register in KB the template functions of corner contacts."
+  (register-template kb 'face-normal-force #'face-normal-force
+                     :documentation "The normal forces of the corners touching one face, summed.")
+  (register-template kb 'corner-slip-speed #'corner-slip-speed
+                     :documentation "A corner's velocity along the face it touches.")
+  (register-template kb 'corner-slip-acc #'corner-slip-acc
+                     :documentation "The rate of a corner's velocity along the face.")
   (register-template kb 'corner-touching #'corner-touching
                      :documentation "A rotating body's corner is on or behind a face's line.")
   (register-template kb 'corner-past-an-end #'corner-past-an-end
@@ -65,6 +93,20 @@ holds at the start of a state where the corner touches, and is reached when it a
                                         (corner-geometry situation contact))
                                        axis))
                      :documentation "The unit normal along which the face pushes the corner.")
+  (register-template kb 'lone-corner-tangent
+                     (lambda (situation contact axis)
+                       (let ((mates (entity-property (entity-named situation contact) :mates)))
+                         (when (rest mates)
+                           (error 'unmodelled-situation
+                                  :datum contact
+                                  :detail (format nil "friction where ~D corners of ~A rest on one face ~
+                                                       is statically indeterminate and not modelled yet"
+                                                  (length mates)
+                                                  (entity-property (entity-named situation contact) :observer))))
+                         (axis-component (ames.geometry:rotating-contact-tangent
+                                          (corner-geometry situation contact))
+                                         axis)))
+                     :documentation "The face's tangent at a corner touching it alone (friction).")
   (register-template kb 'corner-tangent
                      (lambda (situation contact axis)
                        (axis-component (ames.geometry:rotating-contact-tangent

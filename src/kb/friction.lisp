@@ -83,6 +83,43 @@ by consistency)."
    (:transition :to :static :when (> (slip-speed ?contact) 0)
                 :event (:stops-sliding ?body1 ?body2))))
 
+(defcomponent corner-friction (:knowledge-base *mechanics*)
+  "Friction where a rotating body's corners touch a rough fixed face (corners.lisp): the
+same law as COULOMB-FRICTION along the face's tangent, the slip being the corner's own
+velocity along it. Two corners of one body touching one rough face (a flat face resting
+on it) are not modelled yet: their frictions act on one line, only their sum moves or
+turns the body, and no equation tells the share of each (statically indeterminate); the
+tangent template then signals UNMODELLED-SITUATION rather than guess."
+  (:arguments (?contact :belief (corner-in-contact ?body1 ?body2 :at ?contact))
+              (?pair :belief (rough ?body1 ?body2 :by ?pair :static ?mu-s :kinetic ?mu-k)))
+  (:assert (force (friction ?contact) :type friction :from ?body2 :on ?body1 :contact ?contact))
+  (:equations (= (force-x (friction ?contact))
+                 (* (friction-force ?contact) (lone-corner-tangent ?contact :x)))
+              (= (force-y (friction ?contact))
+                 (* (friction-force ?contact) (lone-corner-tangent ?contact :y))))
+  (:mode :static
+   (:entry (= (corner-slip-speed ?contact) 0))
+   (:assert (reported :forces (:friction ?body1 ?body2 (friction-force ?contact) :mode :static)))
+   (:equations (= (corner-slip-acc ?contact) 0))
+   (:transition :to :sliding-backward
+                :when (> (friction-force ?contact) (* ?mu-s (face-normal-force ?contact)))
+                :event (:starts-sliding ?body1 ?body2))
+   (:transition :to :sliding-forward
+                :when (< (friction-force ?contact) (- (* ?mu-s (face-normal-force ?contact))))
+                :event (:starts-sliding ?body1 ?body2)))
+  (:mode :sliding-forward
+   (:entry (> (corner-slip-speed ?contact) 0))
+   (:assert (reported :forces (:friction ?body1 ?body2 (friction-force ?contact) :mode :sliding)))
+   (:equations (= (friction-force ?contact) (- (* ?mu-k (face-normal-force ?contact)))))
+   (:transition :to :static :when (< (corner-slip-speed ?contact) 0)
+                :event (:stops-sliding ?body1 ?body2)))
+  (:mode :sliding-backward
+   (:entry (< (corner-slip-speed ?contact) 0))
+   (:assert (reported :forces (:friction ?body1 ?body2 (friction-force ?contact) :mode :sliding)))
+   (:equations (= (friction-force ?contact) (* ?mu-k (face-normal-force ?contact))))
+   (:transition :to :static :when (> (corner-slip-speed ?contact) 0)
+                :event (:stops-sliding ?body1 ?body2))))
+
 (defun friction-entities (scenario)
   "Each (friction A B :static MU-S :kinetic MU-K) clause of SCENARIO as the entity
 (friction-coefficients FRICTION-i :between (A B) :static MU-S :kinetic MU-K)."

@@ -77,8 +77,11 @@ state terms."
 
 (defun violation-function (relation)
   "For a strict or loose inequality RELATION, an expression F with RELATION true exactly
-when F < 0 (strict) or F <= 0 (loose), and whether it is loose."
+when F < 0 (strict) or F <= 0 (loose), and whether it is loose. An equation (= X 0) over
+a gap (a corner's touching, src/kb/corners.lisp) is reached as the loose X <= 0: the
+gap closing from outside."
   (ecase (first relation)
+    (= (values `(- ,(relation-lhs relation) ,(relation-rhs relation)) t))
     (< (values `(- ,(relation-lhs relation) ,(relation-rhs relation)) nil))
     (<= (values `(- ,(relation-lhs relation) ,(relation-rhs relation)) t))
     (> (values `(- ,(relation-rhs relation) ,(relation-lhs relation)) nil))

@@ -11,7 +11,9 @@
 ;;;; C) entity per pair (src/kb/corners.lisp says what it means). Only the faces the corner
 ;;;; is in front of or on at the scenario's start (gap >= 0 decided) are described: a face
 ;;;; whose line the corner is behind (the underside of an incline under a block on its
-;;;; slope) cannot be reached before another face of that convex body.
+;;;; slope) cannot be reached before another face of that convex body. The corners of one
+;;;; body touching one face at a state's start are each other's MATES (friction on such a
+;;;; resting face is statically indeterminate: src/kb/friction.lisp, CORNER-FRICTION).
 
 (in-package #:ames.simulator)
 
@@ -76,8 +78,38 @@ file header), found at the first call."
   "The geometry shape of RUN's body NAME."
   (cdr (assoc name (run-shapes run))))
 
+(defun touching-now-p (run body geometry)
+  "True when the corner contact GEOMETRY of the rotating BODY (a name) has its gap 0 at
+the start of the current state (decided)."
+  (let ((position (body-position run body)))
+    (holds run `(= ,(substitute-expressions
+                     (list (cons `(ames.kb:pos ,body :x) (first position))
+                           (cons `(ames.kb:pos ,body :y) (second position))
+                           (cons `(ames.kb:angle ,body) (body-angle run body)))
+                     (ames.geometry:rotating-contact-gap geometry))
+                   0))))
+
+(defun face-mates (run)
+  "Alist corner contact name -> the names of the corner contacts of the same rotating
+body on the same face that touch at the start of the current state (itself first when
+it touches), in order: a flat face resting on a face is two of them."
+  (let ((touching (loop for (name body nil . geometry) in (run-corner-contacts run)
+                        when (touching-now-p run body geometry)
+                          collect name)))
+    (loop for (name body obstacle . geometry) in (run-corner-contacts run)
+          collect (cons name
+                        (loop for (other other-body other-obstacle . other-geometry) in (run-corner-contacts run)
+                              when (and (member other touching)
+                                        (eq other-body body) (eq other-obstacle obstacle)
+                                        (equal (ames.geometry:rotating-contact-other-feature other-geometry)
+                                               (ames.geometry:rotating-contact-other-feature geometry)))
+                                collect other)))))
+
 (defun corner-contact-entities (run)
-  "The situation's CORNER-CONTACT entities of RUN (see the file header)."
-  (loop for (name observer obstacle . geometry) in (run-corner-contacts run)
-        collect (list 'ames.kb:corner-contact name :observer observer :obstacle obstacle
-                      :geometry geometry)))
+  "The situation's CORNER-CONTACT entities of RUN (see the file header), each with
+:MATES, the corners of its body touching its face now (FACE-MATES; itself alone when it
+does not touch)."
+  (let ((mates (face-mates run)))
+    (loop for (name observer obstacle . geometry) in (run-corner-contacts run)
+          collect (list 'ames.kb:corner-contact name :observer observer :obstacle obstacle
+                        :geometry geometry :mates (or (cdr (assoc name mates)) (list name))))))

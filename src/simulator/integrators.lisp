@@ -18,6 +18,8 @@
 ;;;;   :SPEED-LINE accelerations that depend on the velocities alone and keep the group on a
 ;;;;              fixed line (quadratic drag): a Riccati equation in the speed along it,
 ;;;;              closed forms in TAU (speed-line.lisp); else :NUMERIC;
+;;;;   :ROTATION-PATH one rotating body held to one degree of freedom, its angle (a ladder
+;;;;              on its wall and floor): like :LINE along the angle (rotation-path.lisp);
 ;;;;   :NUMERIC   anything else: no closed form (numbers only under --set).
 
 (in-package #:ames.simulator)
@@ -230,7 +232,8 @@ searched, under parameter values: see numeric.lisp)."
                            (integrate-speed-line run solved group))
                  (setf (group-kind group) :numeric)))
         ;; a rotating body left one degree of freedom, its angle (rotation-path.lisp)
-        (:numeric (integrate-rotation-path run solved group))))))
+        (:numeric (or (integrate-rotating-equilibrium run solved group)
+                      (integrate-rotation-path run solved group)))))))
 
 (defun integrate-linear (run solved group)
   "Fill GROUP's motion through the bridge's closed-form solver of linear ODEs with

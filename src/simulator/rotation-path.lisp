@@ -1,5 +1,5 @@
-;;;; src/simulator/rotation-path.lisp -- the :TURNING integrator: a rotating body whose contacts
-;;;; leave it one degree of freedom, its angle, integrated by the energy integral.
+;;;; src/simulator/rotation-path.lisp -- the :ROTATION-PATH integrator: a rotating body whose
+;;;; contacts leave it one degree of freedom, its angle, integrated by the energy integral.
 ;;;;
 ;;;; A ladder on its wall and floor, a block tipping about a corner, a rod on a hinge: the
 ;;;; solved model gives the body's accelerations as functions of its angle theta and angular
@@ -65,7 +65,7 @@ X') or NIL."
 
 (defun integrate-rotation-path (run solved group)
   "Fill GROUP's motion along its body's angle (see the file header) and make it a
-:TURNING group; NIL (GROUP unchanged) when it is no such motion, the initial velocity is
+:ROTATION-PATH group; NIL (GROUP unchanged) when it is no such motion, the initial velocity is
 not the one the angle gives, or the direction of motion is not decided."
   (multiple-value-bind (body alpha ax ay) (rotation-path-rates run solved group)
     (when body
@@ -107,7 +107,7 @@ GROUP, or NIL when the ODE has no energy integral or the direction is not decide
               (group-speed group) speed
               (group-ode-kind group) (ames.maxima:ode-solution-kind ode)
               (group-line group) (list :coordinate `(= ,s (ames.kb:angle ,body)))
-              (group-kind group) :turning
+              (group-kind group) :rotation-path
               (group-motion group)
               (list (cons `(ames.kb:pos ,body :x) (first centre))
                     (cons `(ames.kb:pos ,body :y) (second centre))
@@ -116,6 +116,36 @@ GROUP, or NIL when the ODE has no energy integral or the direction is not decide
                     (cons `(ames.kb:angle ,body) s)
                     (cons `(ames.kb:angvel ,body) speed)))
         group))))
+
+;;; A rotating body at rest in equilibrium
+
+(defun integrate-rotating-equilibrium (run solved group)
+  "When GROUP's bodies rotate, start at rest (every velocity and angular velocity 0) and
+every rate of SOLVED for them vanishes at the start, the state's ODEs keep them there
+(the solution of an ODE with smooth rates is unique): GROUP becomes :CONSTANT with its
+positions and angles constant and its velocities 0 (a ladder held by friction). NIL
+otherwise."
+  (let* ((bodies (group-bodies group))
+         (velocities (loop for body in bodies
+                           append (list `(ames.kb:vel ,body :x) `(ames.kb:vel ,body :y))
+                           when (rotating-p run body) collect `(ames.kb:angvel ,body)))
+         (initial (solved-model-initial solved)))
+    (when (and (some (lambda (body) (rotating-p run body)) bodies)
+               (every (lambda (v) (eql 0 (tidy run (cdr (assoc v initial :test #'equal))))) velocities)
+               (every (lambda (v)
+                        (let ((rate (cdr (assoc v (solved-model-rates solved) :test #'equal))))
+                          (and rate (eql 0 (tidy run (substitute-expressions initial rate) :full)))))
+                      velocities))
+      (setf (group-kind group) :constant
+            (group-motion group)
+            (loop for body in bodies
+                  append (loop for axis in '(:x :y)
+                               collect (cons `(ames.kb:pos ,body ,axis) (axis-of (body-position run body) axis))
+                               collect (cons `(ames.kb:vel ,body ,axis) 0))
+                  when (rotating-p run body)
+                    append (list (cons `(ames.kb:angle ,body) (body-angle run body))
+                                 (cons `(ames.kb:angvel ,body) 0))))
+      group)))
 
 ;;; Where a condition fires along the angle
 
@@ -195,3 +225,20 @@ that turning point yet)."
              (t (values :unknown fact)))))
         (:never :never)
         (t (values :unknown s))))))
+
+(defun check-rotation-paths-forever (run groups)
+  "Signal UNSUPPORTED-SITUATION when a :ROTATION-PATH group of GROUPS (a state no event
+ends) may reach a turning point ahead, where its angle would turn back: nothing watches
+that turning point yet, and the motion over the angle holds only up to it."
+  (dolist (group groups)
+    (when (eq (group-kind group) :rotation-path)
+      (let ((turn (handler-case (ames.algebra:coordinate-root-ahead
+                                 (run-bridge run) (group-speed-squared group) +arc-length+
+                                 (group-s0 group) (group-direction group))
+                    (ames.maxima:maxima-error () :unknown))))
+        (unless (eq turn :none)
+          (error 'unsupported-situation
+                 :datum (group-bodies group)
+                 :detail (format nil "The body turns back~:[~; at the angle ~S~] before any event ~
+                                      ends the state; a turning point of a rotation is not ~
+                                      supported yet." (not (keywordp turn)) turn)))))))

@@ -70,7 +70,7 @@ IMPULSIVE-P), else the first candidate's."
 (one of the fired candidates is on it), else the end time. Signals
 UNSUPPORTED-SITUATION for a curved motion ended by another group's event (its place
 then has no closed form)."
-  (if (member (group-kind group) '(:path :line :turning))
+  (if (member (group-kind group) '(:path :line :rotation-path))
       (let ((own (find group fired :key #'candidate-group)))
         (unless own
           (error 'unsupported-situation
@@ -193,7 +193,7 @@ body on a curve, (:ON-PATH (X Y) :ARC-LENGTH S) over the arc length."
   (mapcar (lambda (body)
             (let ((group (find body groups :key #'group-bodies :test #'member))
                   (motion (body-motion run groups body what)))
-              (list body (if (and group (member (group-kind group) '(:path :line :turning)))
+              (list body (if (and group (member (group-kind group) '(:path :line :rotation-path)))
                              (list :on-path (mapcar (lambda (x) (tidy run x)) motion)
                                    :arc-length +arc-length+)
                              motion))))
@@ -345,6 +345,7 @@ trajectory and the arc length reached."
 (defun note-state-forever (run state groups)
   "Record that STATE, which no event ends, lasts forever; periodic when every body
 oscillates with one frequency."
+  (check-rotation-paths-forever run groups)
   (let ((oscillation (and (not (state-periodic state))
                           (linear-oscillation run groups))))
     (when oscillation

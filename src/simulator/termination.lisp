@@ -323,7 +323,7 @@ broad-phase.lisp) never fires."
                   ((every (lambda (g) (member (group-kind g) '(:constant :linear :speed-line))) involved)
                    ;; where the root is undecided, a number under values (numeric-roots.lisp)
                    (tau-candidate run solved groups condition))
-                  ((and (null (rest involved)) (eq (group-kind (first involved)) :turning))
+                  ((and (null (rest involved)) (eq (group-kind (first involved)) :rotation-path))
                    (turning-candidate run solved (first involved) condition))
                   ((and (null (rest involved)) (member (group-kind (first involved)) '(:path :line)))
                    (path-candidate run solved (first involved) condition))
