@@ -201,6 +201,8 @@ class RotationDriver(Events):
             lams = self.impulses()
             q = self.project(q, lams)
             self.contact_events(tp, qp, vp, t, q, v, lams, state)
+            if self.truncated:   # an impact whose law is not AMES's (siconos_rotation_events.py)
+                return t, q, v
             self.probe_events(tp, qp, vp, t, q, v, lams)
             self.last_hinges = self.hinge_forces(lams)
             qp, vp, tp = q, v, t
