@@ -97,6 +97,8 @@ class RotationDriver(Events):
         self.hinges = [Hinge(h, self.bodies, self.n) for h in model.get("hinges", [])]
         self.ropes = [Rope(r, self.bodies, self.q0) for r in model.get("ropes", [])]
         self.has_friction = any(c.friction for c in self.contacts)
+        for c in self.contacts:
+            c.coulomb = self.has_friction   # one law for every contact of a FrictionContact
         if self.has_friction and self.hinges:
             raise Unsupported("a hinge together with friction (Siconos's GenericMechanical "
                               "problem is three-dimensional)")
