@@ -244,6 +244,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "compare")
                  (:file "compare-curved")
                  (:file "compare-angles")
+                 (:file "compare-first-order")
                  (:file "generate")
                  (:file "generate-curved")
                  (:file "generate-drag")

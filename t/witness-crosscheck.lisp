@@ -98,3 +98,42 @@ the state agrees; an angular velocity off by 1 %, AMES is wrong."
              (ames.witness:comparison-verdict (ames.witness:compare-results ames witness '() :t-end 1)))))
     (is (eq :agree (verdict -6)))
     (is (eq :ames-wrong (verdict -606/100)))))
+
+(test first-order-events-at-one-instant-are-one
+  "Moreau-Jean (step h) may report a disc's impact on the floor and its lift-off from the
+slope a step apart, the lift-off first with the state after the impact: they are one
+event, compared with the state before the impact, to 20 h."
+  (flet ((verdict (witness-vx)
+           (let* ((ames '(:states ((:index 0 :start 0 :duration 1 :end-event (:collision disc floor)
+                                    :final-positions ((disc (2 1/5))) :final-velocities ((disc (7 -14)))))))
+                  (witness `(:status :ok :scheme :moreau-jean :step 1d-3
+                             :events ((:time 1.0005d0 :pairs ((:lift-off "disc" "incline"))
+                                       :positions (("disc" (2d0 0.2d0))) :velocities (("disc" (6.2d0 0d0))))
+                                      (:time 1.0015d0 :pairs ((:collision "disc" "floor"))
+                                       :positions (("disc" (2d0 0.195d0))) :velocities (("disc" (,witness-vx -14d0)))))
+                             :end (:time 1.1d0))))
+             (ames.witness:comparison-verdict (ames.witness:compare-results ames witness '() :t-end 1)))))
+    (is (eq :agree (verdict 7.01d0)))
+    (is (eq :ames-wrong (verdict 7.5d0)))))
+
+(test rotation-witness-mixes-rough-and-smooth-contacts
+  "A disc rolling down a rough incline (3-4-5, mu above tan(a)/3) onto a smooth floor: the
+witness's Coulomb problem takes the floor as a contact with mu = 0 (Siconos failed with
+an std::exception on the mixed laws); the disc reaches the floor in the corner rolling,
+its speed there sqrt(4 g sin(a) d / 3) after rolling a distance d from rest (sin a = 3/5)."
+  (with-siconos
+    (let* ((answer (witness-run "(scenario c \"\" (gravity 10)
+                                   (body floor :fixed t :shape (half-plane (1 0) (0 0)))
+                                   (body incline :fixed t :shape (polygon (0 0) (4 0) (0 3)))
+                                   (body disc :mass 1 :inertia :uniform :shape (circle 1/10)
+                                         :position (103/50 79/50) :velocity (0 0))
+                                   (friction disc incline :static 1/2) (simulate :states 2))" 3/2))
+           (impact (find-if (lambda (e) (assoc :collision (getf e :pairs)))
+                            (ames.witness:witness-events answer))))
+      (is (eq :ok (ames.witness:witness-status answer)) "~S" (getf answer :message))
+      (is (not (null impact)))
+      (when impact
+        ;; the centre r = 1/10 off the slope's point (2, 3/2), down the slope to the
+        ;; corner's (4 + 1/30, 1/10): d = (79/50 - 1/10) / (3/5) = 37/15
+        (let ((v (second (assoc "disc" (getf impact :velocities) :test #'string=))))
+          (is (near (sqrt (/ (* 4 10 3/5 37/15) 3d0)) (sqrt (+ (expt (first v) 2) (expt (second v) 2))) 5d-3)))))))

@@ -102,6 +102,7 @@ class FrictionDriver(Driver):
         """One Moreau-Jean segment from T0 (see SEGMENT-STEPS), its pending slide starts
         recorded at its end."""
         self.pending = {}
+        self.slid = {}      # contact -> the steps it has slid, one way, until now
         try:
             return self.segment_steps(t0, qs, vs)
         finally:
@@ -172,8 +173,13 @@ class FrictionDriver(Driver):
                 self.record(t0, [(":lift-off",) + names], q0, v0, v0)
             elif before and after and t0 > 2 * STEP:   # the first steps settle the initial modes
                 s0, s1 = tangential(c, v0), tangential(c, v1)
+                slid = self.slid.get(c, 0)   # the steps it has slid so far, one way
+                self.slid[c] = slid + 1 if abs(s1) > SPEED_TOL and s0 * s1 > 0 else 0
+                # a slide ends only once it has lasted CONFIRM_STEPS steps: the LCP's noise
+                # can give a contact at rest a few steps of speed (a particle at rest on a
+                # rough incline, make crosscheck SEED=101 #588)
                 if abs(s0) > SPEED_TOL and (abs(s1) <= SPEED_TOL or s0 * s1 < 0) \
-                        and c not in self.pending:
+                        and c not in self.pending and slid + 1 >= CONFIRM_STEPS:
                     ts = between(t0, t1, s0, s1)
                     qs = [q + v * (ts - t0) for q, v in zip(q0, v0)]
                     self.record(ts, [(":stops-sliding",) + names], qs, v1, v1)

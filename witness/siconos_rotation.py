@@ -97,6 +97,8 @@ class RotationDriver(Events):
         self.hinges = [Hinge(h, self.bodies, self.n) for h in model.get("hinges", [])]
         self.ropes = [Rope(r, self.bodies, self.q0) for r in model.get("ropes", [])]
         self.has_friction = any(c.friction for c in self.contacts)
+        for c in self.contacts:
+            c.coulomb = self.has_friction   # one law for every contact of a FrictionContact
         if self.has_friction and self.hinges:
             raise Unsupported("a hinge together with friction (Siconos's GenericMechanical "
                               "problem is three-dimensional)")
@@ -201,6 +203,8 @@ class RotationDriver(Events):
             lams = self.impulses()
             q = self.project(q, lams)
             self.contact_events(tp, qp, vp, t, q, v, lams, state)
+            if self.truncated:   # an impact whose law is not AMES's (siconos_rotation_events.py)
+                return t, q, v
             self.probe_events(tp, qp, vp, t, q, v, lams)
             self.last_hinges = self.hinge_forces(lams)
             qp, vp, tp = q, v, t

@@ -29,6 +29,12 @@ class Events:
             vn0, vn1 = r.normal_speed(qp, vp), r.normal_speed(q, v)
             if pressing and not s["pressing"] and vn0 < -collide and vn1 - vn0 > JUMP:
                 self.record(t, [(r.kinds["close"],) + r.names], qp, vp)
+                if getattr(r, "friction", 0.0) and abs(r.tangential_speed(qp, vp)) > SPEED_TOL:
+                    # Siconos's impact law is Newton-Coulomb (a tangential impulse up to mu
+                    # times the normal one); AMES's impacts are frictionless: what follows
+                    # an impact that slides on a rough contact is not witnessed
+                    self.truncated = "an impact of %s on %s while sliding on a rough contact: " \
+                        "Siconos's impacts have Coulomb friction, AMES's none" % r.names
             if isinstance(r, Contact) and r.front and (pressing or s["pressing"]) \
                     and not r.face.covers(r.point(q)):
                 self.leaves(r, tp, qp, vp, q, v)   # off the end of its face: not a lift-off

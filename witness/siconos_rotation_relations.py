@@ -111,6 +111,9 @@ class Contact(Relation):
         self.body, self.face, self.vertex = body, face, vertex
         self.n_dofs, self.mu, self.e = n_dofs, mu, e
         self.friction = mu is not None
+        # a frictionless contact in a model with friction is a Coulomb contact with mu = 0:
+        # Siconos's FrictionContact problem takes only contacts of that law (coulomb)
+        self.coulomb = self.friction
         self.names = (body.name, face.name)
         self.front = False
         self.update_front(q0)
@@ -143,7 +146,7 @@ class Contact(Relation):
 
     def rows_at(self, q):
         d = self.offset(q)
-        k = 2 if self.friction else 1
+        k = 2 if self.coulomb else 1
         C = np.zeros((k, self.n_dofs))
         i = 3 * self.body.index
         for row, u in enumerate([self.face.n, self.face.t][:k]):
@@ -155,8 +158,8 @@ class Contact(Relation):
         return C, e
 
     def law(self):
-        if self.friction:
-            return sk.NewtonImpactFrictionNSL(self.e, 0.0, self.mu, 2)
+        if self.coulomb:
+            return sk.NewtonImpactFrictionNSL(self.e, 0.0, self.mu or 0.0, 2)
         return sk.NewtonImpactNSL(self.e)
 
     def tangential_speed(self, q, v):

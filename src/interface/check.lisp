@@ -35,15 +35,16 @@ s-expression report as data, or NIL with FAILURE :REFUSED or :CRASH and MESSAGE.
     (error (condition) (values nil :crash (format nil "~A: ~A" (type-of condition) condition)))))
 
 (defun witness-horizon (answer values)
-  "How far the witness runs: a little past AMES's last event, or a while into a last
-state that lasts forever."
+  "How far the witness runs: a little past AMES's last event (20 ms: a first-order witness
+confirms a slide's start or end over a few of its steps, 1 ms for rotating bodies), or a
+while into a last state that lasts forever."
   (let ((states (ames.witness:ames-path (getf answer :states)))
         (end (ames.witness:ames-end-time answer values)))
     (when end
       (let ((last-event (getf (car (last states)) :end-event)))
         (if (eq last-event :none)
             (+ end 1/2 (ames.witness:witness-horizon-extra answer values))
-            (+ end (* 1d-6 (+ 1 end))))))))
+            (+ end (max (* 1d-6 (+ 1 end)) 1/50)))))))
 
 (defun witness-check (scenario &key settings numeric (limits *limits*))
   "Run SCENARIO through AMES and the witness; a plist (:VERDICT V :REASON TEXT

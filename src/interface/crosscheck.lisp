@@ -123,12 +123,19 @@ families and verdicts in the order they first come."
 
 (defun mean-of (numbers) (if numbers (/ (reduce #'+ numbers) (length numbers)) 0))
 
+(defun median-of (sorted)
+  "The median of the SORTED numbers (not empty)."
+  (let ((n (length sorted)))
+    (if (oddp n)
+        (nth (floor n 2) sorted)
+        (/ (+ (nth (1- (floor n 2)) sorted) (nth (floor n 2) sorted)) 2))))
+
 (defun print-time-figures (records stream)
   "The time per scenario of RECORDS: mean, median and largest, and the witness's share."
   (let ((seconds (sort (mapcar (lambda (r) (getf r :seconds)) records) #'<)))
     (when seconds
       (format stream "  time per scenario: mean ~,2F s, median ~,2F s, largest ~,1F s (witness ~,2F s of the mean); ~,1F s in all~%"
-              (mean-of seconds) (nth (floor (length seconds) 2) seconds) (car (last seconds))
+              (mean-of seconds) (median-of seconds) (car (last seconds))
               (mean-of (mapcar (lambda (r) (getf r :witness-seconds)) records))
               (reduce #'+ seconds)))))
 

@@ -271,7 +271,7 @@ bumper turns within one state of closed forms in time)."
   (unless (walk-events walk)
     (finish walk :ames-wrong "AMES ends the state with ~S at ~A; the witness has no more events"
             (event-head event) end))
-  (let ((witness-event (pop (walk-events walk))))
+  (let ((witness-event (merge-simultaneous-events walk (pop (walk-events walk))))) ; compare-first-order.lisp
     (compare-number walk "end time" end (getf witness-event :time))
     (let ((ok (event-matches-p event witness-event)))
       (push (list (walk-index walk) "end event" (format nil "~(~{~A~^ ~}~)" (event-head event))
@@ -306,7 +306,7 @@ long pause is Siconos's residue); the next state's start is compared to
 WITNESS (see RUN-WITNESS), the scenario's parameter VALUES (for closed forms) and the
 witness's horizon T-END. Returns a COMPARISON."
   (let ((*value-tolerance* (case (getf witness :scheme)
-                              (:moreau-jean *first-order-tolerance*)
+                              (:moreau-jean (first-order-tolerance witness)) ; compare-first-order.lisp
                               (:curved *curved-tolerance*) ; compare-curved.lisp
                               (t *value-tolerance*))))
     (catch 'comparison

@@ -18,14 +18,16 @@
   (format nil "(body ~A :mass m :inertia ~(~S~) :shape (circle ~A) :position (~{~A~^ ~}) :velocity (~{~A~^ ~}) :angular-velocity ~A)"
           name inertia r position velocity omega))
 
-(defun friction-text (a b)
-  "A friction clause between A and B with coefficient mu, or none (one time in four)."
-  (if (zerop (random 4 *random*)) "" (format nil "(friction ~A ~A :static mu)" a b)))
+(defun friction-text (a b &optional (none 1/4))
+  "A friction clause between A and B with coefficient mu, or none (with probability NONE)."
+  (if (< (random 1d0 *random*) none) "" (format nil "(friction ~A ~A :static mu)" a b)))
 
 (defun family-disc-incline (name)
   "A disc or a hoop on a fixed incline: released at rest, launched up the slope rolling, or
 launched down it without spin; friction below or above the rolling threshold (tan a / 3
-for a disc, tan a / 2 for a hoop), or none. It leaves the slope at its foot or turns."
+for a disc, tan a / 2 for a hoop), or none. The incline stands on the floor: coming down,
+the disc hits the floor in the corner while it still touches the slope (plastic impact),
+then rolls or slides along the floor."
   (destructuring-bind (a b c) (pick '(4 3 5) '(3 4 5) '(12 5 13) '(8 15 17))
     (let* ((scale (random-ratio 1 2)) (l (* a scale)) (hh (* b scale))
            (f (random-ratio 1/4 1/2)) (r (random-ratio 1/10 1/4 20))
@@ -37,14 +39,19 @@ for a disc, tan a / 2 for a hoop), or none. It leaves the slope at its foot or t
       (scenario-text name "A disc or a hoop on an incline."
                      (parameters-text 'g (random-ratio 5 15) 'm (random-ratio 1/2 3)
                                       'mu (random-ratio 1/20 1 20))
-                     (list (format nil "(body incline :fixed t :shape (polygon (0 0) (~A 0) (0 ~A)))" l hh)
+                     (list (floor-text)
+                           (format nil "(body incline :fixed t :shape (polygon (0 0) (~A 0) (0 ~A)))" l hh)
                            (ecase start
                              (:rest (wheel-text "disc" inertia r centre '(0 0) 0))
                              (:up-rolling (wheel-text "disc" inertia r centre
                                                       (mapcar (lambda (d) (* (- v) d)) down) (/ v r)))
                              (:down-sliding (wheel-text "disc" inertia r centre
                                                         (mapcar (lambda (d) (* v d)) down) 0)))
-                           (friction-text "disc" "incline"))
+                           (friction-text "disc" "incline")
+                           ;; the floor rough one time in two: an impact on a rough
+                           ;; contact ends what the witness can say (its impacts have
+                           ;; Coulomb friction, AMES's none)
+                           (friction-text "disc" "floor" 1/2))
                      3))))
 
 (defun family-disc-floor (name)
