@@ -325,6 +325,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "leftward-arcs")
                (:file "trust-fresh")
                (:file "trust-fresh-impacts")
+               (:file "trust-fresh-curves")
                (:file "simulator-fuzz")
                (:file "truth-scenarios")
                (:file "truth-branches")

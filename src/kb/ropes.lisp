@@ -252,7 +252,8 @@ rope and pulley clauses)."
   (:impulse :rope-impulse :names 1 :words "impulse of the jerk along ~A")
   (:event :slackens :words "~A goes slack")
   (:event :tightens :words "~A becomes taut")
-  (:event :rope-piece-closes :words "~A closes up between ~A and ~A (a body reaches its pulley)")
+  (:event :rope-piece-closes
+   :words "~A closes up between ~A and ~A (a body reaches its pulley), or that piece has turned a right angle")
   (:quantity :tension :force :tension))
 
 ;;; A taut rope's piece closing up: a body reaching its pulley
