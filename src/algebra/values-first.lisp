@@ -8,7 +8,8 @@
 ;;;; formulas, after the run, never runs under it), the callers that fall back to the
 ;;;; values when DECIDE cannot settle a relation (the geometry's open facts, the order of
 ;;;; two event times) ask DECIDE-FIRST-CHEAPLY instead of DECIDE: the rules of signs
-;;;; (QUICK-VERDICT, no Maxima) and a single is() question, a proof where they answer;
+;;;; (QUICK-VERDICT, no Maxima), is() and sign() in a few forms (DECIDE's first, cheap
+;;;; strategies), a proof where they answer;
 ;;;; else :UNKNOWN, and the caller's values decide, recording the fact as assumed from the
 ;;;; values (the report lists those apart from what is proven). A relation the values do
 ;;;; not decide (too close to call, a variable without a value) gets DECIDE's full work,
@@ -41,15 +42,27 @@ variable it names has a value in the current run."
 
 (defun cheap-proof (bridge relation)
   "The truth of RELATION proven within a small fixed budget: DECIDE's cached verdict, the
-rules of signs, then one is() question (not asked of a relation with square roots of
-negative radicands, which is() would take for real: see DECIDE-RELATION). :UNKNOWN when
-none proves it."
+rules of signs, then Maxima's is() and the sign() of the difference of the sides in its
+few simplified forms (DECIDE's first strategies; not asked of a relation with square
+roots of negative radicands, which Maxima would take for real: see DECIDE-RELATION).
+:UNKNOWN when none proves it."
   (multiple-value-bind (verdict found) (cached-answer bridge (verdict-key bridge relation) :count nil)
     (when found (return-from cheap-proof verdict)))
-  (let ((quick (quick-verdict bridge relation)))
+  (let ((quick (quick-verdict bridge relation))
+        (operator (expression-operator relation)))
     (cond ((not (eq quick :unknown)) quick)
           ((imaginary-radicands bridge relation) :unknown)
-          (t (handler-case (maxima-is bridge relation)
+          (t (handler-case
+                 (let ((verdict (maxima-is bridge relation)))
+                   (if (eq verdict :unknown)
+                       (relation-verdict operator
+                                         (maxima-difference-signs
+                                          bridge (relation-lhs relation) (relation-rhs relation)
+                                          :datum relation
+                                          :enough (lambda (signs)
+                                                    (not (eq (relation-verdict operator signs)
+                                                             :unknown)))))
+                       verdict))
                (maxima-condition () :unknown))))))
 
 (defun decide-first-cheaply (bridge relation)
