@@ -13,7 +13,8 @@
 ;;;; else :UNKNOWN, and the caller's values decide, recording the fact as assumed from the
 ;;;; values (the report lists those apart from what is proven). A relation the values do
 ;;;; not decide (too close to call, a variable without a value) gets DECIDE's full work,
-;;;; as without values.
+;;;; as without values, and so does one asked under a fact that fails at the values (a
+;;;; branch the values do not select, simulated under --all-branches).
 ;;;; Only those callers: where :UNKNOWN makes a branch or an approximate root, the
 ;;;; values deciding would change the results, not just their wording.
 
@@ -65,14 +66,25 @@ roots of negative radicands, which Maxima would take for real: see DECIDE-RELATI
                        verdict))
                (maxima-condition () :unknown))))))
 
+(defun facts-hold-at-values-p (bridge)
+  "True when every fact in force in BRIDGE that is over valued parameters alone holds at
+the run's values (under --all-branches, a branch the values do not select has a fact
+that fails there: the values say nothing about it)."
+  (every (lambda (fact)
+           (or (not (and (consp fact) (valued-relation-p fact)))
+               (eq (value-truth fact) :true)))
+         (flatten-facts (current-assumptions bridge))))
+
 (defun decide-first-cheaply (bridge relation)
   "DECIDE for a caller that falls back to the run's values on :UNKNOWN: while values
-decide first (VALUES-FIRST-P) and they settle RELATION (a relation of the algebra over
-valued parameters), only CHEAP-PROOF's attempt (:TRUE, :FALSE, or :UNKNOWN for the
-caller's values to settle); otherwise DECIDE itself. Signals what DECIDE signals."
+decide first (VALUES-FIRST-P), the facts in force hold at them and they settle RELATION
+(a relation of the algebra over valued parameters), only CHEAP-PROOF's attempt (:TRUE,
+:FALSE, or :UNKNOWN for the caller's values to settle); otherwise DECIDE itself.
+Signals what DECIDE signals."
   (if (and (values-first-p)
            (relation-operator-p (expression-operator relation))
            (valued-relation-p relation)
-           (value-truth relation))
+           (value-truth relation)
+           (facts-hold-at-values-p bridge))
       (cheap-proof bridge relation)
       (decide bridge relation)))
