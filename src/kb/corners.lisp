@@ -140,3 +140,13 @@ the corner, so it has a moment about the body's centre (rotation.lisp)."
               (= (force-y (normal ?contact))
                  (* (normal-force ?contact) (corner-normal ?contact :y)))
               (= (corner-gap-acceleration ?contact) 0)))
+
+(defcomponent moment-of-a-corner-force (:knowledge-base *mechanics*)
+  "A corner contact's forces (its normal force, a friction on it) act on the rotating body
+at the corner: their moment about its centre is r x F, r the corner's arm from the centre
+(the geometry's, see rotation.lisp's MOMENT-AT-CONTACT)."
+  (:arguments (?force :belief (force ?force :on ?body :contact ?contact))
+              (?contact :entity corner-contact)
+              (?body :entity body :where (:fixed nil :rotating t)))
+  (:assert (acts-at ?force :on ?body))
+  (:equations (= (moment-of ?force) (moment-at-contact ?contact ?body ?force))))
