@@ -23,7 +23,9 @@
 ;;;;            and (moment . F) is defined: every such moment enters B's angular-momentum
 ;;;;            law. A component applying a force at a point (a rope wound on a disc, a
 ;;;;            hinge) asserts it and defines the moment, with the template
-;;;;            (moment-about ARM F), ARM the point's offset (RX RY) from the centre.
+;;;;            (moment-at-point B (PX PY) F) for a point of B's own frame, or
+;;;;            (moment-about ARM F), ARM the point's offset (RX RY) from the centre as
+;;;;            expressions (not template forms: a template gets its arguments unexpanded).
 ;;;;   templates
 ;;;;     (inertia B)                      B's moment of inertia about its centre of mass
 ;;;;     (sum-of-moments FORCES)          the sum of the moments of the forces FORCES
