@@ -1,10 +1,12 @@
-;;;; scenarios/awaiting-rotation/atwood-massive-pulley.lisp -- an Atwood machine whose pulley is
+;;;; scenarios/atwood-massive-pulley.lisp -- an Atwood machine whose pulley is
 ;;;; a disc of inertia I hinged at its centre: a rope wound on each side.
 ;;;;
 ;;;; Expected results (textbook): a = (m1 - m2) g / (m1 + m2 + I / R^2) (m1 down, m2 up),
 ;;;; the pulley's angular acceleration a / R (counter-clockwise: m1 hangs on its left), the
 ;;;; tensions T1 = m1 (g - a) and T2 = m2 (g + a), different since the pulley has inertia;
-;;;; the hinge holds M g + T1 + T2. m1 reaches the floor after sqrt(2 h / a).
+;;;; the hinge holds M g + T1 + T2 (the query hinge-holds). m1 reaches the floor after
+;;;; sqrt(2 h / a). One state: the landing's impact, with a rope wound on a turning disc, is
+;;;; not modelled yet (src/kb/ropes.lisp refuses it).
 
 (scenario atwood-massive-pulley
   "An Atwood machine over a disc pulley of inertia I."

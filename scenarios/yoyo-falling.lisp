@@ -1,4 +1,4 @@
-;;;; scenarios/awaiting-rotation/yoyo-falling.lisp -- a yo-yo falls as its string, wound on its
+;;;; scenarios/yoyo-falling.lisp -- a yo-yo falls as its string, wound on its
 ;;;; axle and tied to the ceiling, unwinds.
 ;;;;
 ;;;; The yo-yo: a disc of radius R, mass m, inertia I about its centre; the string is wound

@@ -9,7 +9,9 @@
 ;;;;   a_centre + alpha k x r - omega^2 r = 0,      r = R(theta) (X Y)
 ;;;; (the rigid body's acceleration at the point r from its centre of mass), and the force
 ;;;; acts at the pin, so its moment about the centre is r x F. Reported in :forces as
-;;;; (:hinge NAME B (FX FY)); the query (hinge-force NAME) reads it, a vector.
+;;;; (:hinge NAME B (FX FY)); the query (hinge-force NAME) reads it, a vector. An impact in
+;;;; a scenario with a hinge is refused (UNMODELLED-SITUATION): the impact model
+;;;; (impacts.lisp) has no pin to hold.
 ;;;;
 ;;;; The rotating body's quantity terms are the rotation core's (rotation.lisp): its angle,
 ;;;; angular velocity and angular acceleration, and the moment of a force acting at a point.
@@ -23,6 +25,18 @@
                   :body (ames.scenario:scenario-hinge-body hinge)
                   :at (ames.scenario:scenario-hinge-point hinge)))
           (ames.scenario:scenario-hinges scenario)))
+
+(defun hinge-impact-entities (scenario)
+  "No entities at an impact: signals UNMODELLED-SITUATION when SCENARIO has a hinge (an
+impact's impulses would have to keep the pin at rest and turn the body about it, which
+the impact model does not do: without this the hinged body would recoil as a free one)."
+  (let ((hinge (first (ames.scenario:scenario-hinges scenario))))
+    (when hinge
+      (error 'unmodelled-situation
+             :datum (ames.scenario:scenario-hinge-name hinge)
+             :detail (format nil "An impact in a scenario with the hinge ~(~A~) is not modelled (the impulses would have to hold the pin)."
+                             (ames.scenario:scenario-hinge-name hinge))))
+    '()))
 
 (defun hinge-arm (situation hinge)
   "The world vector from the hinged body's centre to its pin (rotation.lisp's TURNED-ARM)."
@@ -55,5 +69,6 @@ acts at the pin: its moment about the centre is r x F."
   "A rotating body's point pinned to the fixed frame (the hinge clause): the reaction
 force that holds it, with its moment about the body's centre."
   (:entities #'hinge-entities)
+  (:impact-entities #'hinge-impact-entities)
   (:force :hinge :names 2 :words "force of hinge ~A on ~A" :label (:name 0))
   (:quantity :hinge-force :force :hinge))

@@ -216,7 +216,12 @@ direction): sqrt(|w|^2 - R^2) - SENSE R (theta - theta0)."
          "How far the neighbouring point has moved across the piece relative to the centre.")
     (reg 'wound-piece-radius
          (lambda (situation segment) (nth-value 2 (wound-piece situation segment)))
-         "The radius a wound piece leaves its disc at.")
+         "The radius a wound piece leaves its disc at.")))
+
+(defun register-wound-rope-refusals (kb)
+  "Register in KB the templates that refuse what wound ropes do not model."
+  (flet ((reg (head function documentation)
+           (register-template kb head function :documentation documentation)))
     (reg 'wound-piece-swings
          (lambda (situation segment)
            (error 'unmodelled-situation
@@ -235,6 +240,7 @@ direction): sqrt(|w|^2 - R^2) - SENSE R (theta - theta0)."
          "Signals UNMODELLED-SITUATION: a wound rope's side is not told.")))
 
 (register-wound-rope-templates *mechanics*)
+(register-wound-rope-refusals *mechanics*)
 
 ;;; The components
 
