@@ -65,18 +65,8 @@ is reached as the gap closes."
     (declare (ignore velocity))
     (ames.geometry:contact-slip-acceleration (corner-geometry situation contact) omega acceleration alpha)))
 
-(defun face-normal-force (situation contact)
-  "Template FACE-NORMAL-FORCE: the sum of the normal forces of CONTACT's mates (the
-corners of its body touching its face, itself included)."
-  (let ((mates (entity-property (entity-named situation contact) :mates)))
-    (if (rest mates)
-        (cons '+ (mapcar (lambda (mate) (list 'normal-force mate)) mates))
-        (list 'normal-force contact))))
-
 (defun register-corner-templates (kb)
   "Register in KB the template functions of corner contacts."
-  (register-template kb 'face-normal-force #'face-normal-force
-                     :documentation "The normal forces of the corners touching one face, summed.")
   (register-template kb 'corner-slip-speed #'corner-slip-speed
                      :documentation "A corner's velocity along the face it touches.")
   (register-template kb 'corner-slip-acc #'corner-slip-acc
@@ -93,20 +83,6 @@ corners of its body touching its face, itself included)."
                                         (corner-geometry situation contact))
                                        axis))
                      :documentation "The unit normal along which the face pushes the corner.")
-  (register-template kb 'lone-corner-tangent
-                     (lambda (situation contact axis)
-                       (let ((mates (entity-property (entity-named situation contact) :mates)))
-                         (when (rest mates)
-                           (error 'unmodelled-situation
-                                  :datum contact
-                                  :detail (format nil "friction where ~D corners of ~A rest on one face ~
-                                                       is statically indeterminate and not modelled yet"
-                                                  (length mates)
-                                                  (entity-property (entity-named situation contact) :observer))))
-                         (axis-component (ames.geometry:rotating-contact-tangent
-                                          (corner-geometry situation contact))
-                                         axis)))
-                     :documentation "The face's tangent at a corner touching it alone (friction).")
   (register-template kb 'corner-tangent
                      (lambda (situation contact axis)
                        (axis-component (ames.geometry:rotating-contact-tangent

@@ -86,39 +86,52 @@ by consistency)."
 (defcomponent corner-friction (:knowledge-base *mechanics*)
   "Friction where a rotating body's corners touch a rough fixed face (corners.lisp): the
 same law as COULOMB-FRICTION along the face's tangent, the slip being the corner's own
-velocity along it. Two corners of one body touching one rough face (a flat face resting
-on it) are not modelled yet: their frictions act on one line, only their sum moves or
-turns the body, and no equation tells the share of each (statically indeterminate); the
-tangent template then signals UNMODELLED-SITUATION rather than guess."
+velocity along it. Two corners of one body touching one rough face share their friction
+as RESTING-FACE-FRICTION says."
   (:arguments (?contact :belief (corner-in-contact ?body1 ?body2 :at ?contact))
               (?pair :belief (rough ?body1 ?body2 :by ?pair :static ?mu-s :kinetic ?mu-k)))
   (:assert (force (friction ?contact) :type friction :from ?body2 :on ?body1 :contact ?contact))
   (:equations (= (force-x (friction ?contact))
-                 (* (friction-force ?contact) (lone-corner-tangent ?contact :x)))
+                 (* (friction-force ?contact) (corner-tangent ?contact :x)))
               (= (force-y (friction ?contact))
-                 (* (friction-force ?contact) (lone-corner-tangent ?contact :y))))
+                 (* (friction-force ?contact) (corner-tangent ?contact :y))))
   (:mode :static
    (:entry (= (corner-slip-speed ?contact) 0))
    (:assert (reported :forces (:friction ?body1 ?body2 (friction-force ?contact) :mode :static)))
    (:equations (= (corner-slip-acc ?contact) 0))
    (:transition :to :sliding-backward
-                :when (> (friction-force ?contact) (* ?mu-s (face-normal-force ?contact)))
+                :when (> (friction-force ?contact) (* ?mu-s (normal-force ?contact)))
                 :event (:starts-sliding ?body1 ?body2))
    (:transition :to :sliding-forward
-                :when (< (friction-force ?contact) (- (* ?mu-s (face-normal-force ?contact))))
+                :when (< (friction-force ?contact) (- (* ?mu-s (normal-force ?contact))))
                 :event (:starts-sliding ?body1 ?body2)))
   (:mode :sliding-forward
    (:entry (> (corner-slip-speed ?contact) 0))
    (:assert (reported :forces (:friction ?body1 ?body2 (friction-force ?contact) :mode :sliding)))
-   (:equations (= (friction-force ?contact) (- (* ?mu-k (face-normal-force ?contact)))))
+   (:equations (= (friction-force ?contact) (- (* ?mu-k (normal-force ?contact)))))
    (:transition :to :static :when (< (corner-slip-speed ?contact) 0)
                 :event (:stops-sliding ?body1 ?body2)))
   (:mode :sliding-backward
    (:entry (< (corner-slip-speed ?contact) 0))
    (:assert (reported :forces (:friction ?body1 ?body2 (friction-force ?contact) :mode :sliding)))
-   (:equations (= (friction-force ?contact) (* ?mu-k (face-normal-force ?contact))))
+   (:equations (= (friction-force ?contact) (* ?mu-k (normal-force ?contact))))
    (:transition :to :static :when (> (corner-slip-speed ?contact) 0)
                 :event (:stops-sliding ?body1 ?body2))))
+
+(defcomponent resting-face-friction (:knowledge-base *mechanics*)
+  "Two corners of one body on one rough face, both touching (a flat face resting on it):
+their frictions act on one line, so only their sum moves or turns the body and nothing in
+the motion tells the share of each (statically indeterminate). Each corner's friction is
+taken in proportion to its normal force, F1 N2 = F2 N1: the share with which each corner
+holds exactly when their sum does (|F_i| <= MU N_i for both iff |F1 + F2| <= MU (N1 + N2)),
+so that neither starts sliding before the face does."
+  (:arguments (?face :entity resting-face :where (:observer ?body1 :obstacle ?body2
+                                                  :corners (?k1 ?k2)))
+              (?k1 :belief (corner-in-contact ?body1 ?body2 :at ?k1))
+              (?k2 :belief (corner-in-contact ?body1 ?body2 :at ?k2))
+              (?pair :belief (rough ?body1 ?body2 :by ?pair :static ?mu-s :kinetic ?mu-k)))
+  (:equations (= (* (friction-force ?k1) (normal-force ?k2))
+                 (* (friction-force ?k2) (normal-force ?k1)))))
 
 (defun friction-entities (scenario)
   "Each (friction A B :static MU-S :kinetic MU-K) clause of SCENARIO as the entity

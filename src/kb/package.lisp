@@ -56,5 +56,5 @@ syntax in src/scenario/.")
    ;; rotation (rotation.lisp): a rotating body's state variables and what it reports
    #:angle #:angvel #:angacc #:moment #:acts-at #:rotational-energy #:angular-momentum
    ;; corners of rotating polygons and segments on fixed faces (corners.lisp)
-   #:corner-contact
+   #:corner-contact #:resting-face
    #:unmodelled-situation))

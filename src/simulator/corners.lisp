@@ -108,8 +108,18 @@ it touches), in order: a flat face resting on a face is two of them."
 (defun corner-contact-entities (run)
   "The situation's CORNER-CONTACT entities of RUN (see the file header), each with
 :MATES, the corners of its body touching its face now (FACE-MATES; itself alone when it
-does not touch)."
-  (let ((mates (face-mates run)))
-    (loop for (name observer obstacle . geometry) in (run-corner-contacts run)
-          collect (list 'ames.kb:corner-contact name :observer observer :obstacle obstacle
-                        :geometry geometry :mates (or (cdr (assoc name mates)) (list name))))))
+does not touch); and a RESTING-FACE entity (resting-face F :observer B :obstacle O
+:corners (K1 K2)) for each two corners of one body touching one face now."
+  (let ((mates (face-mates run)) (faces '()) (index 0))
+    (append
+     (loop for (name observer obstacle . geometry) in (run-corner-contacts run)
+           for face-mates = (cdr (assoc name mates))
+           when (and (eq name (first face-mates)) (rest face-mates))
+             do (loop for other in (rest face-mates)
+                      do (push (list 'ames.kb:resting-face
+                                     (intern (format nil "FACE-~D" (incf index)) '#:ames.simulator)
+                                     :observer observer :obstacle obstacle :corners (list name other))
+                               faces))
+           collect (list 'ames.kb:corner-contact name :observer observer :obstacle obstacle
+                         :geometry geometry :mates (or face-mates (list name))))
+     (reverse faces))))
