@@ -148,20 +148,26 @@ and under its parameters' values; its energy (the turning included) is conserved
 ;;; A rod on a hinge: the hinge's force (the swing itself has no closed form in time here)
 
 (defparameter *hinged-rod*
-  "(scenario hinged-rod \"A uniform rod hinged at one end, released horizontal.\"
-     (parameters (m :positive (:value 1)) (g :positive (:value 981/100)) (l :positive (:value 1)))
+  "(scenario hinged-rod \"A uniform rod hinged at one end, released horizontal above a floor.\"
+     (parameters (m :positive (:value 1)) (g :positive (:value 981/100)) (l :positive (:value 1))
+                 (d :positive (< d l) (:value 1/2)))
      (gravity g)
+     (body floor :fixed t :shape (half-plane (1 (- d)) (0 (- d))))
      (body rod :mass m :inertia :uniform :shape (segment ((- (/ l 2)) 0) ((/ l 2) 0))
                :position ((/ l 2) 0) :velocity (0 0))
      (hinge pin :body rod :at ((- (/ l 2)) 0))
-     (simulate :states 1 :until 1/2))"
-  "The rod of scenarios/awaiting-rotation/rod-hinged-released-horizontal.lisp without its
-queries at (reaches ...).")
+     (simulate :states 1))"
+  "The rod of scenarios/awaiting-rotation/rod-hinged-released-horizontal.lisp above a floor
+at depth d < l: one state along its angle (the energy integral), ended by its free end
+striking the floor (the swing's turning point, and a time limit, have no closed form yet).")
 
 (defun at-rotation (expression angle angular-velocity)
   "EXPRESSION with every rotating body's angle term put to ANGLE and its angular velocity
-term to ANGULAR-VELOCITY."
-  (cond ((and (consp expression) (eq (first expression) 'ames.kb:angle)) angle)
+term to ANGULAR-VELOCITY; in a state along one body's angle (a rotation path, whose
+coordinate is the angle: the simulator's ARC-LENGTH symbol), that coordinate to ANGLE (the
+angular velocity there is already the energy integral's, a function of the angle)."
+  (cond ((eq expression 'ames.simulator::arc-length) angle)
+        ((and (consp expression) (eq (first expression) 'ames.kb:angle)) angle)
         ((and (consp expression) (eq (first expression) 'ames.kb:angvel)) angular-velocity)
         ((consp expression) (mapcar (lambda (x) (at-rotation x angle angular-velocity)) expression))
         (t expression)))
@@ -169,7 +175,8 @@ term to ANGULAR-VELOCITY."
 (test hinge-holds-a-swinging-rod
   "A uniform rod (m, l) hinged at one end and released horizontal: its angular acceleration
 is -3 g cos(theta)/(2 l); the hinge holds m g/4 at release and, at the bottom, where energy
-gives omega^2 = 3 g/l, (5/2) m g straight up (the weight plus m omega^2 l/2)."
+gives omega^2 = 3 g/l, (5/2) m g straight up (the weight plus m omega^2 l/2): the
+formulas of the state along its angle, evaluated at those angles."
   (with-fixture simulator-bridge ()
     (let* ((scenario (first (ames:read-scenarios-from-string *hinged-rod*)))
            (history (simulate-stopping-when-ambiguous scenario bridge))
