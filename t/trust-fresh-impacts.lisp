@@ -152,3 +152,32 @@ numbers, every number is known: the run is self-checked."
           (is (same-expression-p bridge (normal-force-between push "B2" "B3") 6))
           (is (same-expression-p bridge (normal-force-between rest "B3" "WALL") 12))
           (is (eq :forever (ames::state-duration rest))))))))
+
+;;; Class 9: a rope piece of no length is an input error naming the rope (it was "Maxima
+;;; failed: 0 to a negative exponent", exit 1)
+
+(test a-rope-piece-of-no-length-is-an-error-naming-the-rope
+  "A pendulum tied at a fixed point with a pulley put at that same point: the piece from
+the tie to the pulley has no length, so no direction; the scenario is refused by a
+condition naming the rope. Tied there without the pulley, it is accepted (it runs into
+what it cannot model, not into that refusal)."
+  (flet ((pendulum (pulley)
+           (format nil "(scenario pendulum \"A particle on a cord from a fixed point.\"
+                          (parameters (m :positive) (g :positive) (l :positive))
+                          (gravity g)
+                          (body pivot :fixed t :position (0 0) :shape point)
+                          (body p :mass m :position (l 0) :velocity (0 0) :shape point)
+                          ~:[~;(pulley hook :on pivot :at (0 0))~]
+                          (rope cord :length l :through ((pivot (0 0)) ~:[~;hook ~](p (0 0))))
+                          (simulate :states 1))" pulley pulley)))
+    (with-fixture simulator-bridge ()
+      (flet ((refusal (text)
+               (handler-case (progn (ames:simulate (first (ames:read-scenarios-from-string text)) :bridge bridge)
+                                    nil)
+                 (ames:scenario-expression-error (condition) condition)
+                 (ames.base:ames-error () nil))))
+        (let ((condition (refusal (pendulum t))))
+          (is (not (null condition)) "a rope piece of no length was accepted")
+          (when condition
+            (is (search "CORD" (princ-to-string condition)) "~A" condition)))
+        (is (null (refusal (pendulum nil))) "the pendulum tied without the pulley was refused")))))

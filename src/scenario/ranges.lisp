@@ -10,7 +10,7 @@
 ;;;;   friction A B     0 <= mu-s, 0 <= mu-k <= mu-s
 ;;;;   restitution      0 <= e <= 1
 ;;;;   spring S         k > 0, rest length > 0
-;;;;   rope R           length > 0
+;;;;   rope R           length > 0; each piece between its points > 0 at the start (lenient)
 ;;;;   gravitation      G > 0
 ;;;; One fact is checked only where it can be decided (LENIENT): a rope is at least as long
 ;;;; as the path through its attachment points and pulleys at the start (taut when equal);
@@ -37,26 +37,9 @@ a pulley name its body's position plus its point; a list (X Y) of expressions."
       (mapcar (lambda (p x) `(+ ,p ,x)) (or position '(0 0)) offset))))
 
 (defun rope-start-path-length (scenario rope)
-  "The length at the start of the path of ROPE through its points (an expression). A piece
-ending wound on a disc (:wound) runs to its tangent point: sqrt(d^2 - R^2), d the distance
-of the next point from the disc's centre, R the wound point's distance from it."
-  (let* ((through (scenario-rope-through rope))
-         (points (mapcar (lambda (point) (rope-point-at-start scenario point)) through))
-         (wound (scenario-rope-wound-ends rope))
-         (last (1- (length points))))
-    (flet ((distance-squared (a b)
-             `(+ (expt (- ,(first b) ,(first a)) 2) (expt (- ,(second b) ,(second a)) 2))))
-      (cons '+ (loop for (a b) on points
-                     for index from 0
-                     while b
-                     collect (let ((wound-point (cond ((and (= index 0) (member :first wound)) (first through))
-                                                      ((and (= index (1- last)) (member :last wound)) (nth last through)))))
-                               (if wound-point
-                                   (let ((centre (rope-point-at-start scenario (list (first wound-point) '(0 0))))
-                                         (other (if (= index 0) b a)))
-                                     `(sqrt (- ,(distance-squared centre other)
-                                               ,(distance-squared '(0 0) (second wound-point)))))
-                                   `(sqrt ,(distance-squared a b)))))))))
+  "The length at the start of the path of ROPE through its points (an expression): the
+sum of its pieces' (ROPE-PIECE-LENGTHS)."
+  (cons '+ (rope-piece-lengths scenario rope)))
 
 (defun body-names-location (word bodies)
   "\"WORD A B\" for the clause WORD about BODIES, or \"clause WORD\" without bodies."
@@ -102,16 +85,45 @@ rest length leniently when it defaults to the distance of the ends at the start)
                               (not (atom (scenario-spring-rest-length spring)))
                               (eq (first (scenario-spring-rest-length spring)) 'sqrt))))))
 
+(defun rope-piece-lengths (scenario rope)
+  "The start length of each straight piece of ROPE's path, between one of its points and
+the next (expressions). A piece ending wound on a disc (:wound) runs to its tangent point:
+sqrt(d^2 - R^2), d the distance of the next point from the disc's centre, R the wound
+point's distance from it."
+  (let* ((through (scenario-rope-through rope))
+         (points (mapcar (lambda (point) (rope-point-at-start scenario point)) through))
+         (wound (scenario-rope-wound-ends rope))
+         (last (1- (length points))))
+    (flet ((distance-squared (a b)
+             `(+ (expt (- ,(first b) ,(first a)) 2) (expt (- ,(second b) ,(second a)) 2))))
+      (loop for (a b) on points
+            for index from 0
+            while b
+            collect (let ((wound-point (cond ((and (= index 0) (member :first wound)) (first through))
+                                             ((and (= index (1- last)) (member :last wound))
+                                              (nth last through)))))
+                      (if wound-point
+                          (let ((centre (rope-point-at-start scenario (list (first wound-point) '(0 0))))
+                                (other (if (= index 0) b a)))
+                            `(sqrt (- ,(distance-squared centre other)
+                                      ,(distance-squared '(0 0) (second wound-point)))))
+                          `(sqrt ,(distance-squared a b))))))))
+
 (defun rope-facts (scenario rope)
   "The facts of one SCENARIO-ROPE: its length is positive, and (leniently) at least the
-length of its path at the start."
+length of its path at the start, and each piece of that path of a positive length (an end
+at its own pulley has no direction: Hooke's and the tension's 0/0)."
   (let ((location (format nil "rope ~A" (symbol-name (scenario-rope-name rope))))
         (length (scenario-rope-length rope)))
-    (list (list location `(> ,length 0) "the rope's length is positive"
-                'scenario-expression-error)
-          (list location `(>= ,length ,(rope-start-path-length scenario rope))
-                "the rope is at least as long as its path through its ends and pulleys at the start"
-                'scenario-expression-error :lenient t))))
+    (list* (list location `(> ,length 0) "the rope's length is positive"
+                 'scenario-expression-error)
+           (list location `(>= ,length ,(rope-start-path-length scenario rope))
+                 "the rope is at least as long as its path through its ends and pulleys at the start"
+                 'scenario-expression-error :lenient t)
+           (loop for piece in (rope-piece-lengths scenario rope)
+                 collect (list location `(> ,piece 0)
+                               "each piece of the rope between its ends and pulleys has a length at the start (no point at the next one)"
+                               'scenario-expression-error :lenient t)))))
 
 (defun coefficient-facts (scenario)
   "Every physical range SCENARIO's clauses need, as a list of (LOCATION RELATION WHAT
