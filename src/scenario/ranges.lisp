@@ -99,12 +99,14 @@ point's distance from it."
       (loop for (a b) on points
             for index from 0
             while b
-            collect (let ((wound-point (cond ((and (= index 0) (member :first wound)) (first through))
-                                             ((and (= index (1- last)) (member :last wound))
-                                              (nth last through)))))
+            collect (let* ((first-wound (and (= index 0) (member :first wound)))
+                           (wound-point (cond (first-wound (first through))
+                                              ((and (= index (1- last)) (member :last wound))
+                                               (nth last through)))))
                       (if wound-point
+                          ;; OTHER: the piece's end that is not on the disc
                           (let ((centre (rope-point-at-start scenario (list (first wound-point) '(0 0))))
-                                (other (if (= index 0) b a)))
+                                (other (if first-wound b a)))
                             `(sqrt (- ,(distance-squared centre other)
                                       ,(distance-squared '(0 0) (second wound-point)))))
                           `(sqrt ,(distance-squared a b))))))))
