@@ -93,7 +93,6 @@ phenomena, which orders the situation's entities, does not change."
     ("src/geometry/conditions.lisp" :contact "a condition's slot initarg")
     ("src/geometry/contacts.lisp" :contact "a condition's slot initarg")
     ("src/geometry/minkowski.lisp" :normal "a piece's normal vector")
-    ("src/geometry/rotating-contacts.lisp" :normal "a rotating contact's unit normal")
     ("src/simulator/touching.lisp" :normal "the key of a contact point's unit normal")
     ("src/report/svg.lisp" :normal "the key of a contact point's unit normal"))
   "The (FILE KEYWORD REASON) where a keyword of the mechanics occurs outside src/kb/ with
