@@ -178,7 +178,10 @@ velocity off by 1e-5, or another event, is a disagreement."
                 (planted (lambda (state) (setf (first (getf state :end-event)) :leaves)))))))))
 
 (defparameter *known-disagreements*
-  '()
+  '(("ames-wrong-spheres-spurious-turn.lisp"
+     "Two spheres under gravitation, after a plastic collision, rest against each other:
+AMES's numeric path state ends with a turning point after 8.7e-22 s (round-off); the
+witness has no event (make crosscheck SEED=101 #718)."))
   "Disagreements AMES has today, each kept as a scenario file under
 witness/disagreements/ with the reason; a test checks that each still disagrees, so
 that a fix shows up (then move the file to *WITNESSED-FIXES*).")
@@ -223,7 +226,11 @@ sign() took for negative, so the turning point looked unreachable. Same fix.")
      "A particle at rest on a rough incline steeper than nothing but below its angle of
 repose (tan a = 8/15 < mu = 13/20) stays at rest, as AMES says; the witness's LCP gave it
 one Moreau-Jean step of tangential speed above its tolerance and called it a slide start.
-Fixed in the witness: a slide start counts once it has lasted five steps."))
+Fixed in the witness: a slide start counts once it has lasted five steps.")
+    ("witness-wrong-rough-incline-stop-at-rest.lisp"
+     "A particle at rest on a rough incline (tan a = 5/12 < mu = 4/5): the witness's LCP
+gave it a few steps of speed and a slide's end at 4e-4 s, which the comparator took for
+an event AMES missed. Fixed in the witness: a slide ends once it has lasted five steps."))
   "Disagreements the witness found and AMES has since fixed: each must now agree, with
 its file under witness/disagreements/ kept as the regression case.")
 
