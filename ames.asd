@@ -174,6 +174,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "conditions-over-time")
                  (:file "choice")
                  (:file "integrators")
+                 (:file "equilibrium")
                  (:file "open-questions")
                  (:file "line")
                  (:file "speed-line")
