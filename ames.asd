@@ -315,6 +315,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "drag")
                (:file "wound-ropes")
                (:file "failure-classes")
+               (:file "rest-in-contact")
                (:file "refusals")
                (:file "witness")
                (:file "witness-rotation")
