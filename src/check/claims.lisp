@@ -8,7 +8,8 @@
 ;;;;   - the closed-form positions and velocities (in TAU, or over the arc length along a
 ;;;;     curve) are compared with the integration at several times, the final positions
 ;;;;     and velocities at the end (relative 1e-8, with an absolute floor near zero: 1e-11
-;;;;     of the largest such value in the state);
+;;;;     of the largest such value in the state; for the velocities of a state at rest to
+;;;;     double precision, of the largest position over the span: COMPARISON-SCALE);
 ;;;;   - every termination condition's event function is evaluated on the grid: none may
 ;;;;     fire before the claimed end, and one that names the claimed end event must fire
 ;;;;     at the claimed time;

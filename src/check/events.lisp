@@ -9,7 +9,7 @@
 ;;;; contact's extent (a body meets a face from its exterior: a gap already negative, or
 ;;;; entered from behind the face, is no meeting). "Below" and "above" zero mean by more
 ;;;; than the function's noise: how much it changes when the integrated state is off by
-;;;; 1e-8 of its scale. On the grid of the
+;;;; 1e-8 of its scale (the scale of its kind of quantity, EVENT-SCALES). On the grid of the
 ;;;; integration: none may fire before the claimed end (its first crossing located by
 ;;;; bisection and reported), and a condition naming the claimed end event must be at zero
 ;;;; (within ten times its noise) at the claimed time.

@@ -60,7 +60,6 @@ and their rates, all zero) kept at its start value, and return GROUP; else NIL."
           (group-terms group) (group-state-terms run solved group)
           (group-motion group)
           (mapcar (lambda (term)
-                    (cons term (tidy run (cdr (assoc term (solved-model-initial solved)
-                                                     :test #'equal)))))
+                    (cons term (cdr (assoc term (solved-model-initial solved) :test #'equal))))
                   (group-terms group)))
     group))

@@ -21,6 +21,8 @@
 ;;;;   :ROTATION-PATH one rotating body held to one degree of freedom, its angle (a ladder
 ;;;;              on its wall and floor): like :LINE along the angle (rotation-path.lisp);
 ;;;;   :NUMERIC   anything else: no closed form (numbers only under --set).
+;;;; A :PATH or :NUMERIC group that starts at rest in equilibrium (every rate zero at the
+;;;; start) is :CONSTANT instead: it stays there (equilibrium.lisp).
 
 (in-package #:ames.simulator)
 
