@@ -178,10 +178,7 @@ velocity off by 1e-5, or another event, is a disagreement."
                 (planted (lambda (state) (setf (first (getf state :end-event)) :leaves)))))))))
 
 (defparameter *known-disagreements*
-  '(("ames-wrong-spheres-spurious-turn.lisp"
-     "Two spheres under gravitation, after a plastic collision, rest against each other:
-AMES's numeric path state ends with a turning point after 8.7e-22 s (round-off); the
-witness has no event (make crosscheck SEED=101 #718)."))
+  '()
   "Disagreements AMES has today, each kept as a scenario file under
 witness/disagreements/ with the reason; a test checks that each still disagrees, so
 that a fix shows up (then move the file to *WITNESSED-FIXES*).")
@@ -230,7 +227,14 @@ Fixed in the witness: a slide start counts once it has lasted five steps.")
     ("witness-wrong-rough-incline-stop-at-rest.lisp"
      "A particle at rest on a rough incline (tan a = 5/12 < mu = 4/5): the witness's LCP
 gave it a few steps of speed and a slide's end at 4e-4 s, which the comparator took for
-an event AMES missed. Fixed in the witness: a slide ends once it has lasted five steps."))
+an event AMES missed. Fixed in the witness: a slide ends once it has lasted five steps.")
+    ("ames-wrong-spheres-spurious-turn.lisp"
+     "Two spheres under gravitation, after a plastic collision, rest against each other:
+AMES integrated the state numerically from its start rounded to doubles (sin(pi) =
+1.2e-16) and ended it with a turning point after 8.7e-22 s; the witness has no event
+(make crosscheck SEED=101 #718). Fixed: a group whose every rate is exactly zero at its
+start stays there (simulator/equilibrium.lisp), and the self-check measures an event's
+noise on its quantity's scale (an equilibrium's round-off is no event)."))
   "Disagreements the witness found and AMES has since fixed: each must now agree, with
 its file under witness/disagreements/ kept as the regression case.")
 

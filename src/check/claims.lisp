@@ -8,7 +8,8 @@
 ;;;;   - the closed-form positions and velocities (in TAU, or over the arc length along a
 ;;;;     curve) are compared with the integration at several times, the final positions
 ;;;;     and velocities at the end (relative 1e-8, with an absolute floor near zero: 1e-11
-;;;;     of the largest such value in the state);
+;;;;     of the largest such value in the state; for the velocities of a state at rest to
+;;;;     double precision, of the largest position over the span: COMPARISON-SCALE);
 ;;;;   - every termination condition's event function is evaluated on the grid: none may
 ;;;;     fire before the claimed end, and one that names the claimed end event must fire
 ;;;;     at the claimed time;
@@ -100,6 +101,24 @@ NIL (and a reason) when its start has no value."
         maximize (loop for (body) in (getf (setup-model setup) :bodies)
                        maximize (reduce #'max (mapcar #'abs (body-motion-values setup body what y time))))))
 
+(defparameter *rest-round-off* 1d-12
+  "A state whose velocities, over its whole span, move no body by more than this part of
+its coordinates is at rest to double precision: its velocities are round-off.")
+
+(defun comparison-scale (setup samples what)
+  "The absolute floor near zero of the comparison of positions or velocities (WHAT):
+1e-3 of the largest such value. When the state is at rest to double precision (see
+*REST-ROUND-OFF*: the start values of an equilibrium, rounded to doubles, drift by
+round-off), a velocity's floor is the largest position over the span: a velocity below
+it moves no body beyond the tolerance of the positions."
+  (let ((scale (motion-scale setup samples what))
+        (span (- (car (car (last samples))) (car (first samples)))))
+    (when (and (eq what :velocity) (plusp span))
+      (let ((positions (motion-scale setup samples :position)))
+        (when (< (* scale span) (* *rest-round-off* positions))
+          (setf scale (/ positions span)))))
+    (* 1d-3 (max 1d-9 scale))))
+
 (defun closed-motion (setup body motion)
   "BODY's reported MOTION (position or velocity) as two expressions the setup can
 evaluate: in TAU as it is, or, reported over the arc length along a curve (:ON-PATH (X Y)
@@ -129,7 +148,7 @@ grid SAMPLES: for each body and coordinate, the worst time."
   (let ((failures '()) (stride (max 1 (floor (1- (length samples)) *comparison-points*))))
     (loop for (what reported) in (list (list :position (state-positions state))
                                        (list :velocity (state-velocities state)))
-          for scale = (* 1d-3 (max 1d-9 (motion-scale setup samples what)))
+          for scale = (comparison-scale setup samples what)
           do (loop for (body) in (getf (setup-model setup) :bodies)
                    for closed = (closed-motion setup body (body-entry reported body))
                    when closed
@@ -189,7 +208,7 @@ of SAMPLES."
   (let ((failures '()) (end (car (car (last samples)))) (y (cdr (car (last samples)))))
     (loop for (what finals) in (list (list :position (state-final-positions state))
                                      (list :velocity (state-final-velocities state)))
-          for scale = (* 1d-3 (max 1d-9 (motion-scale setup samples what)))
+          for scale = (comparison-scale setup samples what)
           do (loop for (body) in (getf (setup-model setup) :bodies)
                    for final = (body-entry finals body)
                    when final

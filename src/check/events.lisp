@@ -9,7 +9,7 @@
 ;;;; contact's extent (a body meets a face from its exterior: a gap already negative, or
 ;;;; entered from behind the face, is no meeting). "Below" and "above" zero mean by more
 ;;;; than the function's noise: how much it changes when the integrated state is off by
-;;;; 1e-8 of its scale. On the grid of the
+;;;; 1e-8 of its scale (the scale of its kind of quantity, EVENT-SCALES). On the grid of the
 ;;;; integration: none may fire before the claimed end (its first crossing located by
 ;;;; bisection and reported), and a condition naming the claimed end event must be at zero
 ;;;; (within ten times its noise) at the claimed time.
@@ -65,6 +65,32 @@ change), options such as an impact's impulse aside."
           do (dotimes (i n) (setf (svref scales i) (max (svref scales i) (abs (svref y i))))))
     (dotimes (i n scales)
       (when (zerop (svref scales i)) (setf (svref scales i) 1d0)))))
+
+(defun quantity-kind (term)
+  "The kind of quantity the state TERM is, for its scale: lengths (positions, arc
+lengths), speeds (velocities, speeds along paths), or its own head (angles ...)."
+  (case (first term)
+    ((ames.kb:pos ames.kb:path-position) :length)
+    ((ames.kb:vel ames.kb:path-speed) :speed)
+    (t (first term))))
+
+(defun event-scales (setup samples)
+  "The scales the noise of SETUP's event functions is measured by: per state component,
+the largest |value| over SAMPLES of any component of its kind (QUANTITY-KIND: the x and
+y coordinates of every body share one, as a rotation of the axes would have them); and
+when the speeds, over the span of SAMPLES, move nothing by more than *REST-ROUND-OFF*
+of the lengths (an equilibrium's start rounded to doubles, drifting by round-off), the
+speeds' scale is the lengths' over the span: their signs are round-off, no event."
+  (let* ((own (state-scales samples))
+         (kinds (mapcar #'quantity-kind (setup-terms setup)))
+         (largest (make-hash-table))
+         (span (- (car (car (last samples))) (car (first samples)))))
+    (loop for kind in kinds for i from 0
+          do (setf (gethash kind largest) (max (gethash kind largest 0d0) (svref own i))))
+    (let ((lengths (gethash :length largest)) (speeds (gethash :speed largest)))
+      (when (and lengths speeds (plusp span) (< (* speeds span) (* *rest-round-off* lengths)))
+        (setf (gethash :speed largest) (/ lengths span))))
+    (coerce (mapcar (lambda (kind) (gethash kind largest)) kinds) 'simple-vector)))
 
 (defun noise (function y time scales)
   "How much FUNCTION's value at Y may change when each state component is off by
@@ -151,7 +177,7 @@ is zero is the motion turning back, which the periodic state includes."
   (let ((failures '()) (claimed-checked (null end)) (unsearchable nil)
         (end-event (state-end-event state))
         (cutoff (and end (* end (- 1 1d-6))))
-        (scales (state-scales samples)))
+        (scales (event-scales setup samples)))
     (when (and end (consp end-event) (eq (first end-event) :time-limit))
       (setf claimed-checked t))
     (dolist (condition (getf (setup-model setup) :conditions))

@@ -21,6 +21,8 @@
 ;;;;   :ROTATION-PATH one rotating body held to one degree of freedom, its angle (a ladder
 ;;;;              on its wall and floor): like :LINE along the angle (rotation-path.lisp);
 ;;;;   :NUMERIC   anything else: no closed form (numbers only under --set).
+;;;; A :PATH or :NUMERIC group that starts at rest in equilibrium (every rate zero at the
+;;;; start) is :CONSTANT instead: it stays there (equilibrium.lisp).
 
 (in-package #:ames.simulator)
 
@@ -224,7 +226,9 @@ searched, under parameter values: see numeric.lisp)."
       (setf (group-kind group) (rotation-kind run solved group (classify-group run solved group)))
       (ecase (group-kind group)
         (:constant (integrate-constant run solved group))
-        (:path (integrate-path run solved group))
+        ;; at rest in equilibrium: no direction of motion (equilibrium.lisp)
+        (:path (or (integrate-equilibrium run solved group)
+                   (integrate-path run solved group)))
         (:linear (unless (integrate-linear run solved group)
                    (setf (group-kind group) :numeric)))
         (:line (unless (or (integrate-line run solved group)
@@ -232,7 +236,7 @@ searched, under parameter values: see numeric.lisp)."
                            (integrate-speed-line run solved group))
                  (setf (group-kind group) :numeric)))
         ;; a rotating body left one degree of freedom, its angle (rotation-path.lisp)
-        (:numeric (or (integrate-rotating-equilibrium run solved group)
+        (:numeric (or (integrate-equilibrium run solved group)
                       (integrate-rotation-path run solved group)))))))
 
 (defun integrate-linear (run solved group)

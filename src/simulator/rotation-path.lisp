@@ -117,36 +117,6 @@ GROUP, or NIL when the ODE has no energy integral or the direction is not decide
                     (cons `(ames.kb:angvel ,body) speed)))
         group))))
 
-;;; A rotating body at rest in equilibrium
-
-(defun integrate-rotating-equilibrium (run solved group)
-  "When GROUP's bodies rotate, start at rest (every velocity and angular velocity 0) and
-every rate of SOLVED for them vanishes at the start, the state's ODEs keep them there
-(the solution of an ODE with smooth rates is unique): GROUP becomes :CONSTANT with its
-positions and angles constant and its velocities 0 (a ladder held by friction). NIL
-otherwise."
-  (let* ((bodies (group-bodies group))
-         (velocities (loop for body in bodies
-                           append (list `(ames.kb:vel ,body :x) `(ames.kb:vel ,body :y))
-                           when (rotating-p run body) collect `(ames.kb:angvel ,body)))
-         (initial (solved-model-initial solved)))
-    (when (and (some (lambda (body) (rotating-p run body)) bodies)
-               (every (lambda (v) (eql 0 (tidy run (cdr (assoc v initial :test #'equal))))) velocities)
-               (every (lambda (v)
-                        (let ((rate (cdr (assoc v (solved-model-rates solved) :test #'equal))))
-                          (and rate (eql 0 (tidy run (substitute-expressions initial rate) :full)))))
-                      velocities))
-      (setf (group-kind group) :constant
-            (group-motion group)
-            (loop for body in bodies
-                  append (loop for axis in '(:x :y)
-                               collect (cons `(ames.kb:pos ,body ,axis) (axis-of (body-position run body) axis))
-                               collect (cons `(ames.kb:vel ,body ,axis) 0))
-                  when (rotating-p run body)
-                    append (list (cons `(ames.kb:angle ,body) (body-angle run body))
-                                 (cons `(ames.kb:angvel ,body) 0))))
-      group)))
-
 ;;; Where a condition fires along the angle
 
 (defun angle-root-ahead (run group function)
