@@ -154,7 +154,15 @@ point; of the opposite sign, it never reaches zero from its side."
   (let ((direction (sign-direction (sign-of run (speed-multiple run group function)))))
     (cond ((not (eql direction (group-direction group))) (values :never))
           ((turning-preceded-p run solved group) (values :never))
-          (t (crossing-ahead run group (group-speed-squared group))))))
+          (t (zero-ahead run group (group-speed-squared group))))))
+
+(defun zero-ahead (run group function)
+  "Where FUNCTION (of GROUP's coordinate) first reaches zero going negative ahead of its
+start: along a curve or line (CROSSING-AHEAD), or along a rotating body's angle
+(ANGLE-ROOT-AHEAD, every turn considered)."
+  (if (eq (group-kind group) :rotation-path)
+      (angle-root-ahead run group function)
+      (crossing-ahead run group function)))
 
 (defun energy-affine-parts (run group function)
   "(values ALPHA BETA) with FUNCTION (of the arc length) = ALPHA + BETA E(s), E GROUP's
@@ -210,14 +218,16 @@ never lifts off, whatever the roots of N = 0 beyond its turning points."
 (defun periodic-swing (run solved fired)
   "When the state ends with FIRED, a single turning point (see TURNING-CROSSING) of a
 body on a curve that started at rest (its energy integral vanishes at the start: a
-turning point too), the motion between the two turning points is periodic, nothing
+turning point too), or of a body along its angle, the motion between the two turning
+points is periodic, nothing
 else interrupting it on the way there (nor, by the energy integral, on the way back):
 the plist (:PERIOD P :BETWEEN (S1 S2)), P the closed form of the bridge's
 LIBRATION-PERIOD. NIL otherwise (another end, or no closed form of the period)."
   (let* ((candidate (and fired (null (rest fired)) (first fired)))
          (group (and candidate (candidate-group candidate)))
          (condition (and candidate (candidate-condition candidate))))
-    (when (and group condition (eq (group-kind group) :path) (candidate-at-arc candidate))
+    (when (and group condition (member (group-kind group) '(:path :rotation-path))
+               (candidate-at-arc candidate))
       (let* ((relation (ames.engine:termination-condition-relation condition))
              (over-arc (lambda (x) (motion-value (list group) (over-state-terms run solved x))))
              (energy (group-speed-squared group)))
