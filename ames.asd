@@ -198,7 +198,8 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "simplest-conditions")
                  (:file "fork-continuation")
                  (:file "queries")
-                 (:file "questions")))
+                 (:file "questions")
+                 (:file "reaches-at")))
    (:module "check" :pathname "src/check/" :serial t
     :depends-on ("simulator")
     :components ((:file "package")
