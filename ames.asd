@@ -321,6 +321,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "scenario-rotation")
                (:file "rotation-rolling")
                (:file "rotation-corners")
+               (:file "hinged-swing")
                (:file "witness-curved")
                (:file "witness-crosscheck")
                (:file "leftward-arcs")
