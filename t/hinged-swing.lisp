@@ -57,7 +57,7 @@ from 0 to -pi; at the bottom omega = -sqrt(3 g / l) and the hinge holds (5/2) m 
             (let ((period (numeric-under bridge (getf periodic :period) values))
                   (textbook (numeric-under bridge (x '(* 4 (sqrt (/ (* 2 l) (* 3 g))) (elliptic-k 1/2))) values))
                   (quadrature (* 2 (ames.algebra:numeric-travel-time
-                                    bridge (x '(- (/ (* 3 g (sin th)) l))) (x 'th) 0 (x '(- pi)) values))))
+                                    bridge (x '(- (/ (* 3 g (sin tau)) l))) 'tau 0 (x '(- pi)) values))))
               (is (near-p period textbook) "period ~A, textbook ~A" period textbook)
               (is (near-p period quadrature) "period ~A, quadrature ~A" period quadrature))))))))
 
@@ -111,7 +111,7 @@ sqrt(g / (2 l)) on the way up."
                           (x '(sqrt (/ g (* 2 l)))))))
               (let ((duration (numeric-under bridge (ames::state-duration up) values))
                     (quadrature (ames.algebra:numeric-travel-time
-                                 bridge (x '(- (/ (* g (+ 2 (* 3 (sin th)))) l))) (x 'th)
+                                 bridge (x '(- (/ (* g (+ 2 (* 3 (sin tau)))) l))) 'tau
                                  (x '(- (/ pi 2))) (x '(- (asin 2/3))) values))
                     (period (numeric-under bridge (getf (ames::state-periodic swing) :period) values))
                     (textbook (numeric-under bridge (x '(* 4 (sqrt (/ (* 2 l) (* 3 g))) (elliptic-k 1/6))) values)))

@@ -13,19 +13,31 @@
 
 (in-package #:ames.simulator)
 
-(defun state-arc-span (state)
+(defun rotation-arc-start (scenario previous state)
+  "Where STATE's motion along a rotating body's angle starts (the body whose angle over
+STATE is the coordinate itself): its angle at the end of the PREVIOUS state, or the
+scenario's initial angle when STATE comes first; NIL for no such motion."
+  (let ((body (first (find +arc-length+ (state-angles state) :key #'second))))
+    (when body
+      (if previous
+          (second (assoc body (state-final-angles previous)))
+          (ames.scenario:scenario-body-angle (ames.scenario:find-scenario-body body scenario))))))
+
+(defun state-arc-span (scenario previous state)
   "(S0 S1), where STATE's motion along its coordinate starts and ends (the far turning
-point of a periodic swing), or NIL when either is not known."
+point of a periodic swing), or NIL when either is not known; PREVIOUS is the state
+before it (NIL for the first)."
   (let ((between (getf (state-periodic state) :between))
-        (start (arc-length-start state))
+        (start (or (arc-length-start state) (rotation-arc-start scenario previous state)))
         (end (arc-length-end state)))
     (cond ((and between (not (getf (state-periodic state) :coordinate))) between)
           ((and start end) (list start end)))))
 
-(defun reaches-along-arc (bridge state difference)
+(defun reaches-along-arc (bridge scenario previous state difference)
   "The arc length S where DIFFERENCE (over the arc length) first vanishes in STATE, or NIL
-when it does not in STATE; signals UNANSWERABLE when that is not decided."
-  (let ((span (or (state-arc-span state)
+when it does not in STATE (PREVIOUS the state before it); signals UNANSWERABLE when that
+is not decided."
+  (let ((span (or (state-arc-span scenario previous state)
                   (unanswerable "where state ~D starts and ends along its coordinate is not known"
                                 (state-index state)))))
     (destructuring-bind (s0 s1) span
@@ -77,12 +89,16 @@ UNANSWERABLE when that is not decided."
   "The STATE and point (a local time, or (:ARC S)) where QUANTITY first takes VALUE among
 STATES (see the file header); signals UNANSWERABLE when the run never reaches it or it
 is not decided."
-  (dolist (state (motion-states states) (unanswerable "~(~S~) never reaches ~(~S~) in this run" quantity value))
-    (let ((difference (quantity-in scenario state `(- ,quantity ,value))))
-      (when (and (not (free-of-p +arc-length+ difference)) (not (free-of-p 'tau difference)))
-        (unanswerable "in state ~D it varies both in time and along the path" (state-index state)))
-      (let ((point (if (free-of-p +arc-length+ difference)
-                       (reaches-in-time bridge state difference)
-                       (let ((s (reaches-along-arc bridge state difference)))
-                         (and s (list :arc s))))))
-        (when point (return (values state point)))))))
+  (loop for previous = nil then state
+        for state in (motion-states states)
+        for difference = (quantity-in scenario state `(- ,quantity ,value))
+        for point = (cond ((free-of-p +arc-length+ difference)
+                           (reaches-in-time bridge state difference))
+                          ((not (free-of-p 'tau difference))
+                           (unanswerable "in state ~D it varies both in time and along the path"
+                                         (state-index state)))
+                          (t (let ((s (reaches-along-arc bridge scenario previous state difference)))
+                               (and s (list :arc s)))))
+        when point
+          do (return-from reaches-point (values state point)))
+  (unanswerable "~(~S~) never reaches ~(~S~) in this run" quantity value))
