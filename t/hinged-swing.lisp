@@ -61,18 +61,23 @@ from 0 to -pi; at the bottom omega = -sqrt(3 g / l) and the hinge holds (5/2) m 
               (is (near-p period textbook) "period ~A, textbook ~A" period textbook)
               (is (near-p period quadrature) "period ~A, quadrature ~A" period quadrature))))))))
 
-(defparameter *pushed-rod*
-  "(scenario rod-hanging-pushed
+(defun pushed-rod (omega)
+  "The scenario text of a uniform rod hanging at rest from a hinge at its top end, set
+turning counter-clockwise at OMEGA (a string, an expression of g and l), its centre
+then moving at OMEGA l / 2."
+  (format nil "(scenario rod-hanging-pushed
      \"A uniform rod hanging from a hinge at its top end, set turning.\"
      (parameters (m :positive (:value 1)) (g :positive (:value 981/100)) (l :positive (:value 1)))
      (gravity g)
      (body rod :mass m :inertia :uniform :shape (segment ((- (/ l 2)) 0) ((/ l 2) 0))
-               :position (0 (- (/ l 2))) :velocity ((/ (sqrt (* g l)) 2) 0)
-               :angle (- (/ pi 2)) :angular-velocity (sqrt (/ g l)))
+               :position (0 (- (/ l 2))) :velocity ((/ (* ~A l) 2) 0)
+               :angle (- (/ pi 2)) :angular-velocity ~A)
      (hinge pin :body rod :at ((- (/ l 2)) 0))
      (query highest (value (angle rod) :at (:turns rod)))
      (query half-way (value (angular-velocity rod) :at (reaches (angle rod) (- (asin 5/6)))))
-     (simulate :states 3))"
+     (simulate :states 3))" omega omega))
+
+(defparameter *pushed-rod* (pushed-rod "(sqrt (/ g l))")
   "A rod hanging at rest on its hinge, set turning counter-clockwise at sqrt(g / l): it
 rises to sin theta = -2/3 (omega^2 = (g / l)(-2 - 3 sin theta)), turns there and swings
 for good between that angle and its mirror image -pi + asin(2/3).")
@@ -117,3 +122,24 @@ sqrt(g / (2 l)) on the way up."
                     (textbook (numeric-under bridge (x '(* 4 (sqrt (/ (* 2 l) (* 3 g))) (elliptic-k 1/6))) values)))
                 (is (near-p duration quadrature) "time to the turn ~A, quadrature ~A" duration quadrature)
                 (is (near-p period textbook) "period ~A, textbook ~A" period textbook)))))))))
+
+(test hinged-rod-sent-to-its-top-creeps-there-forever
+  "A hanging rod set turning at sqrt(6 g / l) has just the energy to reach the top:
+omega^2 = (3 g / l)(1 - sin theta) has a double zero at pi/2, which it approaches in no
+finite time. No turning point ends the state: it lasts forever, with no period."
+  (with-fixture simulator-bridge ()
+    (let ((scenario (first (ames:read-scenarios-from-string (pushed-rod "(sqrt (/ (* 6 g) l))")))))
+      (multiple-value-bind (history states) (run-of scenario bridge)
+        (is (= 1 (length states)))
+        (let ((state (first states)))
+          (is (eq :forever (ames::state-duration state)))
+          (is (null (ames::state-periodic state)))
+          (call-with-scenario-facts
+           bridge scenario
+           (lambda ()
+             (is-same bridge "omega^2 over the angle"
+                      (expt-2 (rotation-entry (ames.simulator:state-angular-velocities state) "ROD"))
+                      (substitute-expressions
+                       (list (cons (in-scenario-terms scenario 'tau) 'ames.simulator::arc-length))
+                       (in-scenario-terms scenario '(* (/ (* 3 g) l) (- 1 (sin tau)))))))))
+        (is (eq :complete (ames::history-outcome history)))))))

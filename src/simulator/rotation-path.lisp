@@ -250,7 +250,7 @@ that turning point yet, and the motion over the angle holds only up to it."
                                  (run-bridge run) (group-speed-squared group) +arc-length+
                                  (group-s0 group) (group-direction group))
                     (ames.maxima:maxima-error () :unknown))))
-        (unless (eq turn :none)
+        (unless (or (eq turn :none) (and (not (keywordp turn)) (creeping-end-p run group turn)))
           (error 'unsupported-situation
                  :datum (group-bodies group)
                  :detail (format nil "The body turns back~:[~; at the angle ~S~] before any event ~

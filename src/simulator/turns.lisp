@@ -150,11 +150,33 @@ a constant of proven sign (SPEED-MULTIPLE)."
 side of its sign ahead of the body: where E(s) = s'^2 reaches zero going negative.
 (values :AT S), (values :NEVER) or (values :UNKNOWN FACT). FUNCTION, the speed times
 the direction of motion, is positive while the body moves: it vanishes at the turning
-point; of the opposite sign, it never reaches zero from its side."
+point; of the opposite sign, it never reaches zero from its side. Where E vanishes
+with a zero slope (a double zero: an unstable equilibrium, such as a pendulum sent to
+its top with just the energy to get there) the body approaches it in no finite time:
+:NEVER."
   (let ((direction (sign-direction (sign-of run (speed-multiple run group function)))))
     (cond ((not (eql direction (group-direction group))) (values :never))
           ((turning-preceded-p run solved group) (values :never))
-          (t (zero-ahead run group (group-speed-squared group))))))
+          (t (multiple-value-bind (status s) (zero-ahead run group (group-speed-squared group))
+               (if (eq status :at)
+                   (let ((slope (tidy run (at-arc (ames.geometry:differentiate (group-speed-squared group)
+                                                                               +arc-length+)
+                                                  s))))
+                     (case (decide run `(= ,slope 0))
+                       ;; a double zero of E: the body creeps toward it for ever (an
+                       ;; unstable equilibrium reached in no finite time), never turning
+                       (:true (values :never))
+                       (:false (values :at s))
+                       (t (values :unknown `(/= ,slope 0)))))
+                   (values status s)))))))
+
+(defun creeping-end-p (run group s)
+  "True when GROUP's energy integral vanishes at S to second order (its slope there is
+proven 0): the body approaches S for ever and never reaches it."
+  (eq :true (decide run `(= ,(tidy run (at-arc (ames.geometry:differentiate (group-speed-squared group)
+                                                                             +arc-length+)
+                                               s))
+                            0))))
 
 (defun zero-ahead (run group function)
   "Where FUNCTION (of GROUP's coordinate) first reaches zero going negative ahead of its
