@@ -199,7 +199,8 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "simplest-conditions")
                  (:file "fork-continuation")
                  (:file "queries")
-                 (:file "questions")))
+                 (:file "questions")
+                 (:file "reaches-at")))
    (:module "check" :pathname "src/check/" :serial t
     :depends-on ("simulator")
     :components ((:file "package")
@@ -322,6 +323,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "scenario-rotation")
                (:file "rotation-rolling")
                (:file "rotation-corners")
+               (:file "hinged-swing")
                (:file "witness-curved")
                (:file "witness-crosscheck")
                (:file "leftward-arcs")

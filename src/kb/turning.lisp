@@ -10,7 +10,10 @@
 ;;;; no equations of their own; a body at rest starts in the one its tangential
 ;;;; acceleration is consistent with (the other's exit condition holds at once), as the
 ;;;; modes of friction are chosen. The simulator finds the speed's sign change where
-;;;; the energy integral reaches zero ahead of the body (simulator/turns.lisp).
+;;;; the energy integral reaches zero ahead of the body (simulator/turns.lisp). A body on
+;;;; a hinge has one degree of freedom too, its angle: its angular velocity changes sign
+;;;; where the energy integral over the angle vanishes (a physical pendulum), the same
+;;;; event.
 
 (in-package #:ames.kb)
 
@@ -28,6 +31,21 @@ state runs the other way."
    (:entry (< (path-speed ?contact) 0))
    (:transition :to :forward :when (> (path-speed ?contact) 0)
                 :event (:turns ?body1))))
+
+(defcomponent turning-point-of-a-hinged-body (:knowledge-base *mechanics*)
+  "A body turning on a hinge swings back where its angular velocity changes sign (its
+energy integral over the angle reaches zero, a physical pendulum at the top of its
+swing): event (:turns BODY), and the next state turns the other way. The angle is the
+hinged body's one degree of freedom, as the arc length is a curved contact's."
+  (:arguments (?hinge :entity hinge :where (:body ?body :at (?px ?py))))
+  (:mode :forward
+   (:entry (> (angvel ?body) 0))
+   (:transition :to :backward :when (< (angvel ?body) 0)
+                :event (:turns ?body)))
+  (:mode :backward
+   (:entry (< (angvel ?body) 0))
+   (:transition :to :forward :when (> (angvel ?body) 0)
+                :event (:turns ?body))))
 
 (define-phenomenon turning
   "Turning points of a motion of one degree of freedom (this file, radial-turning.lisp):

@@ -318,12 +318,6 @@ ROTATING-ATTACHMENTS)."
 (defun scenario-awaiting (scenario)
   "What SCENARIO asks that AMES does not simulate yet, as a list of (DATUM REASON): the
 rotating bodies of ROTATION-AWAITING (hinges, rotating polygons in contact, attachments
-off a rotating body's centre), each value query whose WHEN is (reaches QUANTITY VALUE).
-NIL for a scenario AMES runs. The simulator refuses a scenario with any (never runs a
-rotating body as a translating one)."
-  (append
-   (rotation-awaiting scenario)
-   (loop for (name question) in (scenario-queries scenario)
-         when (and (eq (first question) :value) (eq (first (getf (cddr question) :at)) :reaches))
-           collect (list name (format nil "query ~A asks for a value at (reaches ...), which ~
-                                           AMES does not answer yet" (symbol-name name))))))
+off a rotating body's centre). NIL for a scenario AMES runs. The simulator refuses a
+scenario with any (never runs a rotating body as a translating one)."
+  (rotation-awaiting scenario))

@@ -68,9 +68,14 @@ event printed (:leaves cart block :endpoint) when the cart is the observer."
 
 (defun at-point (expression state at)
   "EXPRESSION of STATE evaluated AT :START, :END or a local time: TAU put to 0, the
-duration or the time; over a curve's or a line's arc length, the arc length put to its
+duration or the time, or (:ARC S) the arc length S; over a curve's or a line's arc length, the arc length put to its
 start or end (no time needed: the energy integral gives the speed there)."
-  (cond ((not (free-of-p +arc-length+ expression))
+  (cond ((and (consp at) (eq (first at) :arc))
+         ;; a point along the state's coordinate (reaches-at.lisp)
+         (unless (free-of-p 'tau expression)
+           (unanswerable "in state ~D the time at that point has no closed form" (state-index state)))
+         (substitute-expressions (list (cons +arc-length+ (second at))) expression))
+        ((not (free-of-p +arc-length+ expression))
          (substitute-expressions
           (list (cons +arc-length+
                       (case at
@@ -215,7 +220,9 @@ decided under the assumptions in BRIDGE; signals UNANSWERABLE when it is not dec
 
 (defun value-at (bridge scenario states quantity when)
   "QUANTITY (a query's) at WHEN among STATES, simplified."
-  (multiple-value-bind (state at) (resolve-when bridge states when)
+  (multiple-value-bind (state at) (if (eq (first when) :reaches)
+                                      (reaches-point bridge scenario states (second when) (third when))
+                                      (resolve-when bridge states when))
     (let ((value (quantity-in scenario state quantity)))
       (simplified bridge (if (vector-p* value)
                              (mapcar (lambda (x) (at-point x state at)) value)

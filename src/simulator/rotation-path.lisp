@@ -170,31 +170,45 @@ GROUP, or NIL when the ODE has no energy integral or the direction is not decide
 
 (defun turning-candidate (run solved group condition)
   "When CONDITION, over GROUP's motion along its angle, fires: a CANDIDATE (its TIME the
-travel time, its AT-ARC the angle), :NEVER, or (values :UNKNOWN FACT). A condition met
-only beyond the body's next turning point is reported unsupported (nothing watches
-that turning point yet)."
-  (let ((relation (ames.engine:termination-condition-relation condition))
-        (over-angle (lambda (x) (motion-value (list group) (over-state-terms run solved x)))))
-    (multiple-value-bind (status s) (angle-relation-root run group relation over-angle)
+travel time, its AT-ARC the angle), :NEVER, or (values :UNKNOWN FACT). A condition on
+the angular velocity itself (SPEED-FUNCTION-P) fires at the turning point ahead, where
+the energy integral vanishes (TURNING-CROSSING). Another condition met only beyond that
+turning point never fires when the knowledge base watches it (TURNING-WATCHED-P), and
+is reported unsupported otherwise."
+  (let* ((relation (ames.engine:termination-condition-relation condition))
+         (over-angle (lambda (x) (motion-value (list group) (over-state-terms run solved x))))
+         (turning (speed-function-p run group (speed-condition-function relation over-angle))))
+    (multiple-value-bind (status s)
+        (if turning
+            ;; the angular velocity changes sign: a turning point (turns.lisp)
+            (turning-crossing run solved group (speed-condition-function relation over-angle))
+            (angle-relation-root run group relation over-angle))
       (case status
         (:at
-         (multiple-value-bind (reached fact) (reached-before-turning run group s)
+         (multiple-value-bind (reached fact) (if turning :true (reached-before-turning run group s))
            (case reached
-             (:true
-              (let* ((f (funcall over-angle (violation-function relation)))
-                     (rate (and (not (eq (first relation) 'or))
-                                (tidy run `(* ,(at-arc (ames.geometry:differentiate f +arc-length+) s)
-                                              ,(at-arc (group-speed group) s))))))
-                (make-candidate condition
-                                (condition-event condition (and rate (holds run `(< ,rate 0)) rate))
-                                (arc-travel-time run group s)
-                                :at-arc s :group group :rate rate)))
-             (:false (error 'unsupported-situation
-                            :datum (group-bodies group)
-                            :detail "The body would turn back before the event; a turning point of a rotation is not supported yet."))
+             (:true (angle-candidate run group condition relation over-angle s (not turning)))
+             (:false (if (turning-watched-p run solved group)
+                         ;; the knowledge base's turning point ends the state first
+                         :never
+                         (error 'unsupported-situation
+                                :datum (group-bodies group)
+                                :detail "The body would turn back before the event; a turning point of a rotation is not supported yet.")))
              (t (values :unknown fact)))))
         (:never :never)
         (t (values :unknown s))))))
+
+(defun angle-candidate (run group condition relation over-angle s with-rate)
+  "The CANDIDATE of CONDITION (its RELATION) firing at the angle S of GROUP; its rate in
+time there WITH-RATE (none at a turning point, where the speed's slope is infinite)."
+  (let* ((f (funcall over-angle (violation-function relation)))
+         (rate (and with-rate (not (eq (first relation) 'or))
+                    (tidy run `(* ,(at-arc (ames.geometry:differentiate f +arc-length+) s)
+                                  ,(at-arc (group-speed group) s))))))
+    (make-candidate condition
+                    (condition-event condition (and rate (holds run `(< ,rate 0)) rate))
+                    (arc-travel-time run group s)
+                    :at-arc s :group group :rate rate)))
 
 (defun check-rotation-paths-forever (run groups)
   "Signal UNSUPPORTED-SITUATION when a :ROTATION-PATH group of GROUPS (a state no event
@@ -206,7 +220,7 @@ that turning point yet, and the motion over the angle holds only up to it."
                                  (run-bridge run) (group-speed-squared group) +arc-length+
                                  (group-s0 group) (group-direction group))
                     (ames.maxima:maxima-error () :unknown))))
-        (unless (eq turn :none)
+        (unless (or (eq turn :none) (and (not (keywordp turn)) (creeping-end-p run group turn)))
           (error 'unsupported-situation
                  :datum (group-bodies group)
                  :detail (format nil "The body turns back~:[~; at the angle ~S~] before any event ~

@@ -345,7 +345,9 @@ trajectory and the arc length reached."
 (defun note-state-forever (run state groups)
   "Record that STATE, which no event ends, lasts forever; periodic when every body
 oscillates with one frequency."
-  (check-rotation-paths-forever run groups)
+  (unless (state-periodic state)
+    ;; a swing between two turning points is watched by them (turns.lisp)
+    (check-rotation-paths-forever run groups))
   (let ((oscillation (and (not (state-periodic state))
                           (linear-oscillation run groups))))
     (when oscillation

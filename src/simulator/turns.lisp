@@ -150,11 +150,41 @@ a constant of proven sign (SPEED-MULTIPLE)."
 side of its sign ahead of the body: where E(s) = s'^2 reaches zero going negative.
 (values :AT S), (values :NEVER) or (values :UNKNOWN FACT). FUNCTION, the speed times
 the direction of motion, is positive while the body moves: it vanishes at the turning
-point; of the opposite sign, it never reaches zero from its side."
+point; of the opposite sign, it never reaches zero from its side. Where E vanishes
+with a zero slope (a double zero: an unstable equilibrium, such as a pendulum sent to
+its top with just the energy to get there) the body approaches it in no finite time:
+:NEVER."
   (let ((direction (sign-direction (sign-of run (speed-multiple run group function)))))
     (cond ((not (eql direction (group-direction group))) (values :never))
           ((turning-preceded-p run solved group) (values :never))
-          (t (crossing-ahead run group (group-speed-squared group))))))
+          (t (multiple-value-bind (status s) (zero-ahead run group (group-speed-squared group))
+               (if (eq status :at)
+                   (let ((slope (tidy run (at-arc (ames.geometry:differentiate (group-speed-squared group)
+                                                                               +arc-length+)
+                                                  s))))
+                     (case (decide run `(= ,slope 0))
+                       ;; a double zero of E: the body creeps toward it for ever (an
+                       ;; unstable equilibrium reached in no finite time), never turning
+                       (:true (values :never))
+                       (:false (values :at s))
+                       (t (values :unknown `(/= ,slope 0)))))
+                   (values status s)))))))
+
+(defun creeping-end-p (run group s)
+  "True when GROUP's energy integral vanishes at S to second order (its slope there is
+proven 0): the body approaches S for ever and never reaches it."
+  (eq :true (decide run `(= ,(tidy run (at-arc (ames.geometry:differentiate (group-speed-squared group)
+                                                                             +arc-length+)
+                                               s))
+                            0))))
+
+(defun zero-ahead (run group function)
+  "Where FUNCTION (of GROUP's coordinate) first reaches zero going negative ahead of its
+start: along a curve or line (CROSSING-AHEAD), or along a rotating body's angle
+(ANGLE-ROOT-AHEAD, every turn considered)."
+  (if (eq (group-kind group) :rotation-path)
+      (angle-root-ahead run group function)
+      (crossing-ahead run group function)))
 
 (defun energy-affine-parts (run group function)
   "(values ALPHA BETA) with FUNCTION (of the arc length) = ALPHA + BETA E(s), E GROUP's
@@ -210,14 +240,16 @@ never lifts off, whatever the roots of N = 0 beyond its turning points."
 (defun periodic-swing (run solved fired)
   "When the state ends with FIRED, a single turning point (see TURNING-CROSSING) of a
 body on a curve that started at rest (its energy integral vanishes at the start: a
-turning point too), the motion between the two turning points is periodic, nothing
+turning point too), or of a body along its angle, the motion between the two turning
+points is periodic, nothing
 else interrupting it on the way there (nor, by the energy integral, on the way back):
 the plist (:PERIOD P :BETWEEN (S1 S2)), P the closed form of the bridge's
 LIBRATION-PERIOD. NIL otherwise (another end, or no closed form of the period)."
   (let* ((candidate (and fired (null (rest fired)) (first fired)))
          (group (and candidate (candidate-group candidate)))
          (condition (and candidate (candidate-condition candidate))))
-    (when (and group condition (eq (group-kind group) :path) (candidate-at-arc candidate))
+    (when (and group condition (member (group-kind group) '(:path :rotation-path))
+               (candidate-at-arc candidate))
       (let* ((relation (ames.engine:termination-condition-relation condition))
              (over-arc (lambda (x) (motion-value (list group) (over-state-terms run solved x))))
              (energy (group-speed-squared group)))
