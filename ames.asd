@@ -199,6 +199,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "simplest-conditions")
                  (:file "fork-continuation")
                  (:file "queries")
+                 (:file "query-proofs")
                  (:file "questions")
                  (:file "reaches-at")))
    (:module "check" :pathname "src/check/" :serial t

@@ -77,6 +77,35 @@ level of the tree of branches), and how it ends."
   "A final angle's or angular velocity's VIEW (:VALUE V [:NUMBER N]) as text, or NIL."
   (and view (format nil "~A~A" (text (getf view :value)) (numbers-text (getf view :number)))))
 
+(defun print-body-motion-text (body stream)
+  "Print one body's motion of a state's view (an element of its :BODIES) on STREAM: its
+acceleration, position and, for a rotating body, its rotation."
+  (format stream "  ~A:~%" (name-text (getf body :name)))
+  (destructuring-bind (&optional ax ay) (getf body :acceleration)
+    (destructuring-bind (&optional nx ny) (getf body :acceleration-numbers)
+      (format stream "    acceleration: a_x = ~A~A, a_y = ~A~A~%"
+              (text ax) (numbers-text nx) (text ay) (numbers-text ny))))
+  (let ((position (getf body :position))
+        (numbers (getf body :position-numbers)))
+    (cond ((eq position :no-closed-form)
+           (format stream "    position:     no closed form in time (integrated numerically)~%"))
+          ((and (consp position) (eq (first position) :on-path))
+           (format stream "    position:     on the curve at arc length s: x = ~A~A, y = ~A~A~%"
+                   (text (first (second position))) (numbers-text (first numbers))
+                   (text (second (second position))) (numbers-text (second numbers))))
+          ((consp position)
+           (format stream "    position:     x = ~A~A~%                  y = ~A~A~%"
+                   (text (first position)) (numbers-text (first numbers))
+                   (text (second position)) (numbers-text (second numbers))))
+          (t (format stream "    position:     ~A~%" (datum-text position)))))
+  (let ((rotation (getf body :rotation)))
+    (when rotation
+      (if (eq (getf rotation :angle) :no-closed-form)
+          (format stream "    rotation:     no closed form in time (integrated numerically)~%")
+          (format stream "    rotation:     ~@[alpha = ~A, ~]theta = ~A, omega = ~A~%"
+                  (and (getf rotation :angular-acceleration) (text (getf rotation :angular-acceleration)))
+                  (text (getf rotation :angle)) (text (getf rotation :angular-velocity)))))))
+
 (defun print-state-text (view stream)
   "Print one state's VIEW (see STATE-VIEW) on STREAM."
   (format stream "~%~:[State ~D~;Fork at the start of state ~D (no period of motion)~]~@[ (branch ~A)~], ~
@@ -97,31 +126,7 @@ level of the tree of branches), and how it ends."
                     (t (format nil "~@[~A = ~]~A~A" (getf force :symbol) (text value)
                                (numbers-text (getf force :numbers))))))))
   (dolist (body (getf view :bodies))
-    (format stream "  ~A:~%" (name-text (getf body :name)))
-    (destructuring-bind (&optional ax ay) (getf body :acceleration)
-      (destructuring-bind (&optional nx ny) (getf body :acceleration-numbers)
-        (format stream "    acceleration: a_x = ~A~A, a_y = ~A~A~%"
-                (text ax) (numbers-text nx) (text ay) (numbers-text ny))))
-    (let ((position (getf body :position))
-          (numbers (getf body :position-numbers)))
-      (cond ((eq position :no-closed-form)
-             (format stream "    position:     no closed form in time (integrated numerically)~%"))
-            ((and (consp position) (eq (first position) :on-path))
-             (format stream "    position:     on the curve at arc length s: x = ~A~A, y = ~A~A~%"
-                     (text (first (second position))) (numbers-text (first numbers))
-                     (text (second (second position))) (numbers-text (second numbers))))
-            ((consp position)
-             (format stream "    position:     x = ~A~A~%                  y = ~A~A~%"
-                     (text (first position)) (numbers-text (first numbers))
-                     (text (second position)) (numbers-text (second numbers))))
-            (t (format stream "    position:     ~A~%" (datum-text position)))))
-    (let ((rotation (getf body :rotation)))
-      (when rotation
-        (if (eq (getf rotation :angle) :no-closed-form)
-            (format stream "    rotation:     no closed form in time (integrated numerically)~%")
-            (format stream "    rotation:     ~@[alpha = ~A, ~]theta = ~A, omega = ~A~%"
-                    (and (getf rotation :angular-acceleration) (text (getf rotation :angular-acceleration)))
-                    (text (getf rotation :angle)) (text (getf rotation :angular-velocity)))))))
+    (print-body-motion-text body stream))
   (loop for (label . phrases) in (getf view :notes)
         do (format stream "  ~A:~%~{    ~A~%~}" label (mapcar #'phrase-string phrases)))
   (format stream "  ends: ~A~%" (phrase-string (getf view :end)))
