@@ -85,6 +85,19 @@ pair it proves with >= or <=; SIGNS when it proves nothing."
             ((and (member :zero signs) (proved '<=)) (list :negative :zero))
             (t signs)))))
 
+(defun check-root-search-arguments (expression variable after)
+  "Check the arguments of a search for the earliest root of EXPRESSION in VARIABLE after
+AFTER: both expressions translatable arithmetic, VARIABLE a variable or a quantity term,
+AFTER free of it. Signals UNTRANSLATABLE-EXPRESSION or INVALID-BRIDGE-ARGUMENT."
+  (check-translatable expression :arithmetic)
+  (check-translatable after :arithmetic)
+  (unless (subject-p variable)
+    (error 'invalid-bridge-argument :datum variable
+                                    :detail "the variable must be a variable or a quantity term"))
+  (unless (free-of-p variable after)
+    (error 'invalid-bridge-argument :datum after
+                                    :detail (format nil "the start may not depend on ~S" variable))))
+
 (defun earliest-root (bridge expression variable &key (after 0) (strictly t) (candidates t))
   "The earliest real root of EXPRESSION = 0 in VARIABLE greater than AFTER (or equal to
 it, when STRICTLY is false), proven earliest under the current assumptions. Returns
@@ -99,14 +112,7 @@ pairwise comparison (numeric ones through Sturm sequences, realroots(), giving a
 float); other expressions never yield :FOUND or :NONE, since solve() may miss roots.
 Signals UNTRANSLATABLE-EXPRESSION, INVALID-BRIDGE-ARGUMENT (VARIABLE not a name, AFTER
 depending on VARIABLE), MAXIMA-ERROR, MAXIMA-TIMEOUT."
-  (check-translatable expression :arithmetic)
-  (check-translatable after :arithmetic)
-  (unless (subject-p variable)
-    (error 'invalid-bridge-argument :datum variable
-                                    :detail "the variable must be a variable or a quantity term"))
-  (unless (free-of-p variable after)
-    (error 'invalid-bridge-argument :datum after
-                                    :detail (format nil "the start may not depend on ~S" variable)))
+  (check-root-search-arguments expression variable after)
   (let ((shifted (if (eql after 0)
                      expression
                      (substitute-expressions (list (cons variable (list '+ variable after)))

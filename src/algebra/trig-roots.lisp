@@ -32,14 +32,7 @@ carries candidates instead). Every root returned is substituted back: it must ma
 EXPRESSION simplify to 0 (or vanish numerically at admissible points); else :UNKNOWN.
 Signals UNTRANSLATABLE-EXPRESSION, INVALID-BRIDGE-ARGUMENT (VARIABLE not a name, AFTER
 depending on VARIABLE), MAXIMA-ERROR, MAXIMA-TIMEOUT."
-  (check-translatable expression :arithmetic)
-  (check-translatable after :arithmetic)
-  (unless (subject-p variable)
-    (error 'invalid-bridge-argument :datum variable
-                                    :detail "the variable must be a variable or a quantity term"))
-  (unless (free-of-p variable after)
-    (error 'invalid-bridge-argument :datum after
-                                    :detail (format nil "the start may not depend on ~S" variable)))
+  (check-root-search-arguments expression variable after)
   (unless (trigonometric-arguments expression variable)
     (return-from earliest-trigonometric-root
       (earliest-root bridge expression variable :after after :strictly strictly :candidates nil)))
