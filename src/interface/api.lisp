@@ -41,7 +41,7 @@ from AMES, at compile time too: one section of the tour."
   scenario-frictions scenario-friction scenario-friction-bodies
   scenario-friction-static scenario-friction-kinetic find-scenario-friction
   find-scenario-parameter find-scenario-body find-scenario-force
-  scenario-assumption-relations scenario-parameter-values
+  scenario-assumption-relations scenario-parameter-values admissible-parameter-values
   scenario-moving-bodies scenario-fixed-bodies
   scenario-branch scenario-all-branches scenario-restitutions scenario-restitution
   shape-kind constant-value)

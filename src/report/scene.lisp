@@ -7,9 +7,6 @@
 
 (in-package #:ames.report)
 
-(defparameter *illustrative-candidates* '(1 2 1/2 3/2 3 1/4 4 3/4 5 1/10 10)
-  "The values tried, in order, for a parameter that has none.")
-
 (defun relation-holds-p (relation point)
   "True when RELATION surely holds at POINT (an alist name -> number)."
   (let ((difference (expression-value (list '- (relation-lhs relation) (relation-rhs relation)) point)))
@@ -22,28 +19,8 @@
   "An alist (PARAMETER . NUMBER) for every parameter of HISTORY's scenario, and a second
 value: the parameters whose number was chosen here for illustration (no --set value and
 no (:value N) default). A chosen value satisfies every assumption over the parameters
-valued so far."
-  (let* ((scenario (history-scenario history))
-         (given (append (history-parameter-values history) (scenario-parameter-values scenario)))
-         (facts (scenario-assumption-relations scenario))
-         (values '()) (chosen '()))
-    (dolist (parameter (scenario-parameters scenario))
-      (let ((name (scenario-parameter-name parameter)))
-        (push (cons name
-                    (or (cdr (assoc name given))
-                        (progn
-                          (push name chosen)
-                          (or (find-if (lambda (candidate)
-                                         (let ((point (acons name candidate values)))
-                                           (every (lambda (fact)
-                                                    (or (set-difference (expression-variables fact)
-                                                                        (mapcar #'car point))
-                                                        (relation-holds-p fact point)))
-                                                  facts)))
-                                       *illustrative-candidates*)
-                              1))))
-              values)))
-    (values (nreverse values) (nreverse chosen))))
+valued so far (see ADMISSIBLE-PARAMETER-VALUES)."
+  (admissible-parameter-values (history-scenario history) (history-parameter-values history)))
 
 (defun number-at (expression bindings)
   "The double-float value of EXPRESSION under BINDINGS, or NIL."

@@ -94,4 +94,4 @@ and Maxima (assumptions, overlaps).")
    #:world-simple-contacts
    ;; the numbers of a run (values.lisp)
    #:parameter-value-error #:parameter-value-error-parameter #:parameter-value-error-assumption
-   #:check-parameter-values #:run-parameter-values))
+   #:check-parameter-values #:run-parameter-values #:admissible-parameter-values))

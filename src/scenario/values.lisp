@@ -79,3 +79,35 @@ is no parameter, PARAMETER-VALUE-ERROR for values that break an assumption."
                        when entry collect entry)))
     (check-values-against-assumptions scenario values)
     (check-coefficient-values scenario values)))
+
+(defparameter *illustrative-candidates* '(1 2 1/2 3/2 3 1/4 4 3/4 5 1/10 10)
+  "The values tried, in order, for a parameter that has none (see ADMISSIBLE-PARAMETER-VALUES).")
+
+(defun admissible-parameter-values (scenario &optional given)
+  "An alist (PARAMETER-SYMBOL . NUMBER) for every parameter of SCENARIO, in declaration
+order: the number GIVEN (an alist keyed by parameter symbols) holds for it, else its
+(:value N) default, else the first of *ILLUSTRATIVE-CANDIDATES* with which every
+assumption over the parameters valued so far surely holds (1 when none does). Second
+value: the parameters whose number was chosen here. The result is checked by
+CHECK-VALUES-AGAINST-ASSUMPTIONS only by the caller (a candidate search may fail)."
+  (let ((defaults (scenario-parameter-values scenario))
+        (facts (scenario-assumption-relations scenario))
+        (values '()) (chosen '()))
+    (flet ((admissible-p (point)
+             (every (lambda (fact)
+                      (or (set-difference (expression-variables fact) (mapcar #'car point))
+                          (eq :true (ames.algebra:value-truth fact point))))
+                    facts)))
+      (dolist (parameter (scenario-parameters scenario))
+        (let* ((name (scenario-parameter-name parameter))
+               (known (or (assoc name given) (assoc name defaults))))
+          (push (cons name
+                      (if known
+                          (cdr known)
+                          (progn
+                            (push name chosen)
+                            (or (find-if (lambda (candidate) (admissible-p (acons name candidate values)))
+                                         *illustrative-candidates*)
+                                1))))
+                values))))
+    (values (nreverse values) (nreverse chosen))))
