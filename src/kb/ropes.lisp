@@ -272,21 +272,19 @@ at the pulley, the rope jerked) is not modelled."
 (register-template *mechanics* 'rope-piece-caught #'caught-at-pulley
                    :documentation "Signals UNMODELLED-SITUATION: a taut rope's piece closed up.")
 
-(register-template *mechanics* 'rope-piece-along
-                   (lambda (situation segment)
-                     (multiple-value-bind (a b) (segment-points situation segment)
-                       `(aligned-span-length ,a ,b)))
-                   :documentation "A rope piece's length along its starting direction, (B - A).u0.")
-
 (defcomponent rope-piece-closing (:knowledge-base *mechanics*)
   "A taut rope's straight piece shortens to nothing when the body at one end reaches the
 point at the other (a weight pulled up into its pulley). Its length is watched along its
 starting direction, (B - A).u0, which changes sign there (the distance |B - A| only
-touches zero): the event (:rope-piece-closes ROPE A B) ends the state, and the next
-state, which would need the body caught at the pulley, is not modelled (an honest stop,
-not the body passing through the pulley)."
+touches zero) while the piece keeps its direction (its span's fixed direction, the only
+motion in which it can close up): the event (:rope-piece-closes ROPE A B) ends the
+state, and the next state, which would need the body caught at the pulley, is not
+modelled (an honest stop, not the body passing through the pulley). A piece that turns
+(a pendulum swinging on it) keeps its length, and its projection on its starting
+direction changing sign is no closing."
   (:arguments (?segment :entity rope-segment
-                        :where (:rope ?rope :from (?body1 ?_) :to (?body2 ?_) :within-one-body nil)))
-  (:activation (:believes (taut ?rope)) (<= (rope-piece-along ?segment) 0)
+                        :where (:rope ?rope :from (?body1 ?_) :to (?body2 ?_) :within-one-body nil))
+              (?opening :belief (aligned-span ?segment :from ?a :to ?b :opening ?opening)))
+  (:activation (:believes (taut ?rope)) (<= (line-span-length ?a ?b ?opening) 0)
                (:event (:rope-piece-closes ?rope ?body1 ?body2)))
   (:equations (= (rope-piece-caught ?segment) 0)))

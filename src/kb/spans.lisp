@@ -106,17 +106,71 @@ INITIAL-POS (at the state's start), VEL or ACC (its rates)."
                  (l `(span-length ,span)))
              `(- (/ (+ ,(ames.geometry:dot v v) ,(ames.geometry:dot d w)) ,l)
                  (/ (expt ,(ames.geometry:dot d v) 2) (expt ,l 3)))))
-         "The second derivative of |B - A|: (|v|^2 + d.a)/l - (d.v)^2/l^3.")))
+         "The second derivative of |B - A|: (|v|^2 + d.a)/l - (d.v)^2/l^3.")
+    (reg 'span-start-length-squared
+         (lambda (situation a b)
+           (let ((d0 (span-difference situation a b 'initial-pos))) (ames.geometry:dot d0 d0)))
+         "The square of the span's length at the start of the state.")
+    (reg 'span-start-speed-squared
+         (lambda (situation a b)
+           (let ((v0 (span-difference situation a b 'initial-vel))) (ames.geometry:dot v0 v0)))
+         "The square of the points' relative speed at the start of the state.")
+    (reg 'separating-span-direction
+         (lambda (situation a b axis) (axis-component (separating-direction situation a b) axis))
+         "A component of the unit vector along which a span of zero length at the start opens: its relative velocity's.")
+    (reg 'separating-span-length
+         (lambda (situation a b)
+           (ames.geometry:dot (span-difference situation a b 'pos) (separating-direction situation a b)))
+         "The length of a span opening from zero along the relative velocity w0: (B - A).w0.")
+    (reg 'separating-span-acceleration
+         (lambda (situation a b)
+           (ames.geometry:dot (span-difference situation a b 'acc) (separating-direction situation a b)))
+         "The second derivative of that length: (B'' - A'').w0.")
+    (reg 'separating-span-offset
+         (lambda (situation a b)
+           (ames.geometry:cross (span-difference situation a b 'initial-vel) (span-difference situation a b 'pos)))
+         "How far B - A has turned off the line it opened along (times the starting speed).")
+    (reg 'line-span-length
+         (lambda (situation a b opening)
+           (ames.geometry:dot (span-difference situation a b 'pos)
+                              (if opening
+                                  (separating-direction situation a b)
+                                  (initial-direction situation a b))))
+         "The length of a span that keeps to its line, signed along it (it changes sign where
+the points meet): (B - A).u0 along its starting direction, (B - A).w0 along its relative
+velocity when OPENING (it started at zero length).")
+    (reg 'span-direction-undefined #'undefined-span-direction
+         "Signals UNMODELLED-SITUATION: a span of zero length whose points do not move apart.")))
+
+(defun separating-direction (situation a b)
+  "The unit vector of the relative velocity of B from A at the start of the state: the
+direction a span of zero length opens along."
+  (let* ((v0 (span-difference situation a b 'initial-vel))
+         (norm (ames.geometry:vector-length v0)))
+    (mapcar (lambda (x) `(/ ,x ,norm)) v0)))
+
+(defun undefined-span-direction (situation span)
+  "Signal UNMODELLED-SITUATION naming SPAN: its points coincide at the start of the state
+and do not move apart, so its direction (Hooke's d/|d|, a tension's) is 0/0."
+  (declare (ignore situation))
+  (error 'unmodelled-situation
+         :datum span
+         :detail (format nil "~(~A~) has zero length, and its ends are at rest relative to each other: its direction is undefined (0/0); which way it opens is not modelled."
+                         span)))
 
 (register-span-templates *mechanics*)
 
 (defcomponent straight-span (:knowledge-base *mechanics*)
   "A straight span from point A to point B (see the file header): its length, unit
 direction and the length's second derivative, with the direction fixed at its starting
-value while the points move along the span's line, turning otherwise."
+value while the points move along the span's line, turning otherwise. A span that starts
+at zero length (its points met at the end of the state before) takes the direction they
+separate along, that of their relative velocity; with no relative velocity either, its
+direction is undefined and the span is refused, named (UNMODELLED-SITUATION)."
   (:arguments (?span :belief (span ?span :from ?a :to ?b)))
   (:mode :fixed-direction
-   (:entry (<= (expt (span-transverse-rate ?a ?b) 2) 0))
+   (:entry (<= (expt (span-transverse-rate ?a ?b) 2) 0) (> (span-start-length-squared ?a ?b) 0))
+   (:assert (aligned-span ?span :from ?a :to ?b :opening nil))
    (:equations (= (span-length ?span) (aligned-span-length ?a ?b))
                (= (span-direction ?span :x) (initial-span-direction ?a ?b :x))
                (= (span-direction ?span :y) (initial-span-direction ?a ?b :y))
@@ -127,4 +181,15 @@ value while the points move along the span's line, turning otherwise."
    (:equations (= (span-length ?span) (current-span-length ?a ?b))
                (= (span-direction ?span :x) (/ (span-vector ?a ?b :x) (span-length ?span)))
                (= (span-direction ?span :y) (/ (span-vector ?a ?b :y) (span-length ?span)))
-               (= (span-acceleration ?span) (turning-span-acceleration ?a ?b ?span)))))
+               (= (span-acceleration ?span) (turning-span-acceleration ?a ?b ?span))))
+  (:mode :separating
+   (:entry (<= (span-start-length-squared ?a ?b) 0) (> (span-start-speed-squared ?a ?b) 0))
+   (:assert (aligned-span ?span :from ?a :to ?b :opening t))
+   (:equations (= (span-length ?span) (separating-span-length ?a ?b))
+               (= (span-direction ?span :x) (separating-span-direction ?a ?b :x))
+               (= (span-direction ?span :y) (separating-span-direction ?a ?b :y))
+               (= (span-acceleration ?span) (separating-span-acceleration ?a ?b)))
+   (:transition :to :turning :when (> (expt (separating-span-offset ?a ?b) 2) 0) :event (:turns ?span)))
+  (:mode :undefined-direction
+   (:entry (<= (span-start-length-squared ?a ?b) 0) (<= (span-start-speed-squared ?a ?b) 0))
+   (:equations (= (span-direction-undefined ?span) 0))))

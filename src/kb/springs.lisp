@@ -116,6 +116,17 @@ met when the body reaches the free end and left when the compression returns to 
               (= (force-y (bumper ?contact ?body))
                  (* (stiffness ?spring) (compression ?contact) (bumper-direction ?spring :y)))))
 
+(defcomponent spring-closing (:knowledge-base *mechanics*)
+  "A spring whose ends move along its line can shrink to zero length and open again on
+the other side: its line of action is defined by its ends (Hooke's d/|d|), so its
+direction turns over there. Its length along the line, which changes sign where the ends
+meet, is watched: the event (:spring-closes S) ends the state at zero length, and the
+next state's span opens along the ends' relative velocity (spans.lisp)."
+  (:arguments (?spring :entity spring)
+              (?opening :belief (aligned-span ?spring :from ?a :to ?b :opening ?opening)))
+  (:activation (< (line-span-length ?a ?b ?opening) 0)
+               (:event (:spring-closes ?spring))))
+
 ;;; The potential energies (energy.lisp says what a state reports of energy)
 
 (defcomponent elastic-potential-energy (:knowledge-base *mechanics*)
@@ -180,4 +191,5 @@ when pressed, whose loci on the other bodies are POINT-CONTACT entities."
 end, pushing what presses its free end): the spring clause."
   (:entities #'spring-entities)
   (:probes #'bumper-probes)
-  (:force :spring :names 2 :words "spring ~A on ~A"))
+  (:force :spring :names 2 :words "spring ~A on ~A")
+  (:event :spring-closes :words "~A shrinks to zero length (its ends meet) and opens on the other side"))
