@@ -124,8 +124,12 @@ meet, is watched: the event (:spring-closes S) ends the state at zero length, an
 next state's span opens along the ends' relative velocity (spans.lisp)."
   (:arguments (?spring :entity spring)
               (?opening :belief (aligned-span ?spring :from ?a :to ?b :opening ?opening)))
-  (:activation (< (line-span-length ?a ?b ?opening) 0)
-               (:event (:spring-closes ?spring))))
+  (:mode :open
+   (:entry (>= (line-span-length ?a ?b ?opening) 0))
+   (:transition :to :through :when (< (line-span-length ?a ?b ?opening) 0) :event (:spring-closes ?spring)))
+  ;; never at a state's start: the length along the line starts at |d0| >= 0
+  (:mode :through
+   (:entry (< (line-span-length ?a ?b ?opening) 0))))
 
 ;;; The potential energies (energy.lisp says what a state reports of energy)
 
