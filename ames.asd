@@ -181,6 +181,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "broad-phase")
                  (:file "polynomial-signs")
                  (:file "termination")
+                 (:file "sinusoid-floors")
                  (:file "speed-line-roots")
                  (:file "check-model")
                  (:file "path")

@@ -72,12 +72,15 @@ assumptions do not decide; else (:EARLIEST-ROOT-OF (= G 0) :CANDIDATES ...)."
 not negative just after 0). Returns (values :AT TIME), (values :NEVER) or (values
 :UNKNOWN FACT)."
   (let ((g (tidy run g)))
-    (when (free-of-p 'tau g)
+    (when (or (free-of-p 'tau g) (sinusoid-never-negative-p run g))
       (return-from first-time-negative (values :never)))
     ;; a root at the start itself is divided out: look strictly after it
     (let ((root (earliest-root-after run g 0)))
       (cond ((eq root :none) (values :never))
-            ((eq root :unknown) (values :unknown (undecided-sign-fact run g 0)))
+            ((eq root :unknown)
+             (if (positive-after-start-p run g)
+                 (values :never)
+                 (values :unknown (or (sinusoid-floor-fact run g) (undecided-sign-fact run g 0)))))
             (t
              (let ((slope (tidy run (at-time (time-derivative g) root))))
                (case (decide run `(< ,slope 0))
