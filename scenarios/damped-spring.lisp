@@ -10,7 +10,7 @@
 (scenario damped-spring
   "A block on a spring in a viscous medium, pulled out and released."
   (parameters (m :positive (:value 1)) (k :positive (:value 4)) (c :positive (:value 1/2))
-              (l0 :positive (:value 1)) (a :positive (:value 1/5)) (g :positive (:value 981/100)))
+              (l0 :positive (:value 1)) (a :positive (< a l0) (:value 1/5)) (g :positive (:value 981/100)))
   (gravity g)
   (body floor :fixed t :shape (half-plane (1 0) (0 0)))
   (body wall :fixed t :position (-1 0) :shape point)

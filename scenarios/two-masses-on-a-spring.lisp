@@ -9,7 +9,7 @@
 (scenario two-masses-on-a-spring
   "Two particles joined by a spring on a frictionless floor; one is pushed."
   (parameters (m1 :positive (:value 1)) (m2 :positive (:value 2)) (k :positive (:value 3))
-              (g :positive (:value 981/100)) (v0 :positive (:value 1)) (l0 :positive (:value 1)))
+              (g :positive (:value 981/100)) (v0 :positive (< v0 (* l0 (sqrt (/ (* k (+ m1 m2)) (* m1 m2))))) (:value 1)) (l0 :positive (:value 1)))
   (gravity g)
   (body floor :fixed t :shape (half-plane (1 0) (0 0)))
   (body first :mass m1 :position (0 0) :velocity (0 0) :shape point)

@@ -9,6 +9,8 @@
 ;;;;     the fact that would, the one to branch on;
 ;;;;   - G = A + exp(-p tau) (B cos(w tau) + C sin(w tau)), p >= 0 (a damped oscillation), is
 ;;;;     never below A - sqrt(B^2 + C^2) either: the same test and fact, sufficient only;
+;;;;   - either one stationary at the start (w C = p B: a spring released from rest) has its
+;;;;     extremes at w tau = n pi, B (-1)^n exp(-p n pi / w): never below A - |B|;
 ;;;;   - G > 0 proven for every TAU > 0 by Maxima's signs (a sum of positive terms: a critically
 ;;;;     damped spring's length l0 + a (1 + c tau / 2m) exp(-c tau / 2m)).
 ;;;; Each is sound: it answers only what it proves.
@@ -33,57 +35,65 @@
     (walk g)
     nil))
 
-(defun replaced-subexpression (old new expression)
-  "EXPRESSION with every subexpression EQUAL to OLD replaced by NEW."
-  (cond ((equal expression old) new)
-        ((consp expression) (cons (first expression)
-                                  (mapcar (lambda (x) (replaced-subexpression old new x)) (rest expression))))
-        (t expression)))
+(defun exponentials-as-powers (run decay u expression)
+  "EXPRESSION with each exponential exp(X) whose argument X is a constant multiple q of
+DECAY's argument written (expt U q): the exponentials of one rate as powers of the
+symbol U."
+  (let ((rate (second decay)))
+    (labels ((walk (x)
+               (cond ((and (consp x) (eq (first x) 'exp) (not (free-of-p 'tau (second x))))
+                      (let ((q (tidy run `(/ ,(second x) ,rate))))
+                        (if (free-of-p 'tau q) `(expt ,u ,q) x)))
+                     ((consp x) (cons (first x) (mapcar #'walk (rest x))))
+                     (t x))))
+      (walk expression))))
 
 (defun damped-sinusoid (run g)
-  "(A B C W) with G = A + exp(-p tau) (B cos(W tau) + C sin(W tau)), p >= 0, checked by
+  "(A B C W P) with G = A + exp(-P tau) (B cos(W tau) + C sin(W tau)), P >= 0, checked by
 simplification; or NIL."
   (let* ((expanded (ignore-errors (tidy run g :expanded-trigexpand)))
          (decay (and expanded (decaying-exponential run expanded))))
     (when decay
       (let* ((u (gensym "DECAY"))
-             (linear (replaced-subexpression decay u expanded))
+             (linear (tidy run (exponentials-as-powers run decay u expanded)))
              (a (tidy run (substitute-expressions (list (cons u 0)) linear)))
              (wave (tidy run `(- ,(substitute-expressions (list (cons u 1)) linear) ,a)))
              (parts (and (free-of-p 'tau a) (time-sinusoid run wave))))
         (when (and parts
                    (holds run `(= ,(first parts) 0))
                    (holds run `(= (- ,g (+ ,a (* ,decay ,wave))) 0)))
-          (list a (second parts) (third parts) (fourth parts)))))))
+          (list a (second parts) (third parts) (fourth parts)
+                (tidy run `(- (/ ,(second decay) tau)))))))))
 
 (defun oscillation-floor-parts (run g)
-  "(A B C W) when G is an oscillation about A of amplitude at most sqrt(B^2 + C^2) (see the
-file header), else NIL."
-  (and (or (trigonometric-in-time-p g) (not (free-of-p 'tau g)))
-       (or (time-sinusoid run g) (damped-sinusoid run g))))
+  "(A R2) when G is an oscillation about A whose distance from A never exceeds
+sqrt(R2) after the start (see the file header), else NIL."
+  (let ((parts (and (trigonometric-in-time-p g)
+                    (or (time-sinusoid run g) (damped-sinusoid run g)))))
+    (when parts
+      (destructuring-bind (a b c w &optional (p 0)) parts
+        (list a (if (holds run `(= (- (* ,w ,c) (* ,p ,b)) 0))
+                    ;; stationary at the start: the extremes are at w tau = n pi, B (-1)^n exp(-p n pi / w)
+                    `(expt ,b 2)
+                    `(+ (expt ,b 2) (expt ,c 2))))))))
 
 (defun sinusoid-never-negative-p (run g)
-  "True when G's least value, A - sqrt(B^2 + C^2) by OSCILLATION-FLOOR-PARTS, is proven
-not negative: G never turns negative."
-  (and (trigonometric-in-time-p g)
-       (let ((parts (oscillation-floor-parts run g)))
-         (and parts
-              (destructuring-bind (a b c w) parts
-                (declare (ignore w))
-                (and (holds run `(>= ,a 0))
-                     (holds run `(>= (- (expt ,a 2) (+ (expt ,b 2) (expt ,c 2))) 0))))))))
+  "True when G's least value after the start, A - sqrt(R2) by OSCILLATION-FLOOR-PARTS, is
+proven not negative: G never turns negative."
+  (let ((parts (oscillation-floor-parts run g)))
+    (and parts
+         (destructuring-bind (a r2) parts
+           (and (holds run `(>= ,a 0))
+                (holds run `(>= (- (expt ,a 2) ,r2) 0)))))))
 
 (defun sinusoid-floor-fact (run g)
-  "For G an oscillation about A > 0 (OSCILLATION-FLOOR-PARTS), the relation
-A^2 - (B^2 + C^2) > 0 that would prove G never negative: the missing fact to branch on.
-NIL for any other G."
-  (and (trigonometric-in-time-p g)
-       (let ((parts (oscillation-floor-parts run g)))
-         (and parts
-              (destructuring-bind (a b c w) parts
-                (declare (ignore w))
-                (and (holds run `(> ,a 0))
-                     `(> ,(tidy run `(- (expt ,a 2) (+ (expt ,b 2) (expt ,c 2)))) 0)))))))
+  "For G an oscillation about A > 0 (OSCILLATION-FLOOR-PARTS), the relation A^2 - R2 > 0
+that would prove G never negative: the missing fact to branch on. NIL for any other G."
+  (let ((parts (oscillation-floor-parts run g)))
+    (and parts
+         (destructuring-bind (a r2) parts
+           (and (holds run `(> ,a 0))
+                `(> ,(tidy run `(- (expt ,a 2) ,r2)) 0))))))
 
 (defun positive-after-start-p (run g)
   "True when G > 0 is proven for every TAU > 0 under the assumptions (Maxima's signs):

@@ -70,15 +70,17 @@ assumptions do not decide; else (:EARLIEST-ROOT-OF (= G 0) :CANDIDATES ...)."
 (defun first-time-negative (run g)
   "The earliest time TAU > 0 from which G(TAU) < 0 (G a polynomial in TAU or a constant,
 not negative just after 0). Returns (values :AT TIME), (values :NEVER) or (values
-:UNKNOWN FACT)."
+:UNKNOWN FACT). Where the roots do not settle it, an oscillation's least value or a
+proven sign may (sinusoid-floors.lisp); FACT is then the floor's relation when there is
+one, to branch on."
   (let ((g (tidy run g)))
-    (when (or (free-of-p 'tau g) (sinusoid-never-negative-p run g))
+    (when (free-of-p 'tau g)
       (return-from first-time-negative (values :never)))
     ;; a root at the start itself is divided out: look strictly after it
     (let ((root (earliest-root-after run g 0)))
       (cond ((eq root :none) (values :never))
             ((eq root :unknown)
-             (if (positive-after-start-p run g)
+             (if (or (sinusoid-never-negative-p run g) (positive-after-start-p run g))
                  (values :never)
                  (values :unknown (or (sinusoid-floor-fact run g) (undecided-sign-fact run g 0)))))
             (t
@@ -88,7 +90,9 @@ not negative just after 0). Returns (values :AT TIME), (values :NEVER) or (value
                  (:false
                   ;; touches zero and turns back, or a double root: look beyond it
                   (let ((next (earliest-root-after run g root)))
-                    (if (eq next :none) (values :never) (values :unknown `(< ,slope 0)))))
+                    (if (or (eq next :none) (sinusoid-never-negative-p run g))
+                        (values :never)
+                        (values :unknown `(< ,slope 0))))))
                  (t (values :unknown `(< ,slope 0))))))))))
 
 (defun relation-time (run relation over-time)
