@@ -92,7 +92,7 @@ one, to branch on."
                   (let ((next (earliest-root-after run g root)))
                     (if (or (eq next :none) (sinusoid-never-negative-p run g))
                         (values :never)
-                        (values :unknown `(< ,slope 0))))))
+                        (values :unknown `(< ,slope 0)))))
                  (t (values :unknown `(< ,slope 0))))))))))
 
 (defun relation-time (run relation over-time)
