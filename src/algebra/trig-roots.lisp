@@ -84,9 +84,14 @@ relation or NIL (see the file header)."
       (let ((first (first-positive-root `(+ (* (- ,a ,b) (expt ,u 2)) (* 2 ,c ,u) (+ ,a ,b))))
             (even (eq (decide bridge `(= ,c 0)) :true)))
         (when first
-          ;; without a sine term, the only root in (0, pi) is acos(-A/B): cos is one-to-one there
+          ;; without a sine term, the only root in (0, pi) is acos(-A/B): cos is one-to-one there;
+          ;; without a cosine term, the roots in (0, pi) are asin(-A/C) and pi - asin(-A/C), with
+          ;; -A/C in (0, 1]: the first is asin(-A/C), the textbook's form
           (return-from earliest-angle
-            (values (if even `(acos (/ (- ,a) ,b)) `(* 2 (atan ,first))) :found))))
+            (values (cond (even `(acos (/ (- ,a) ,b)))
+                          ((eq (decide bridge `(= ,b 0)) :true) `(asin (/ (- ,a) ,c)))
+                          (t `(* 2 (atan ,first))))
+                    :found))))
       (when (settled `(= ,a ,b))
         (return-from earliest-angle (values 'pi :found)))
       (let ((second (first-positive-root `(- (+ (* (+ ,a ,b) (expt ,u 2)) (- ,a ,b)) (* 2 ,c ,u)))))

@@ -88,12 +88,16 @@ proven not negative: G never turns negative."
 
 (defun sinusoid-floor-fact (run g)
   "For G an oscillation about A > 0 (OSCILLATION-FLOOR-PARTS), the relation A^2 - R2 > 0
-that would prove G never negative: the missing fact to branch on. NIL for any other G."
+that would prove G never negative: the missing fact to branch on, when it is no larger
+than *LARGEST-BOUNDARY-FACT*. NIL for any other G."
   (let ((parts (oscillation-floor-parts run g)))
     (and parts
          (destructuring-bind (a r2) parts
-           (and (holds run `(> ,a 0))
-                `(> ,(tidy run `(- (expt ,a 2) ,r2)) 0))))))
+           (let ((fact (and (holds run `(> ,a 0))
+                            `(> ,(tidy run `(- (expt ,a 2) ,r2)) 0))))
+             ;; a fact on the parameters a textbook would state; a swollen one (the state
+             ;; starts where an earlier root left nested radicals) is no branch to offer
+             (and fact (<= (ames.maxima:expression-size fact) *largest-boundary-fact*) fact))))))
 
 (defun positive-after-start-p (run g)
   "True when G > 0 is proven for every TAU > 0 under the assumptions (Maxima's signs):
