@@ -132,6 +132,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "gravitation")
                  (:file "drag")
                  (:file "turning")
+                 (:file "rope-swing")
                  (:file "radial-turning")
                  (:file "energy")))
    (:module "scenario" :pathname "src/scenario/" :serial t
@@ -332,6 +333,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "trust-fresh")
                (:file "trust-fresh-impacts")
                (:file "trust-fresh-curves")
+               (:file "trust-round3")
                (:file "simulator-fuzz")
                (:file "truth-scenarios")
                (:file "truth-branches")
