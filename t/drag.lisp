@@ -65,7 +65,7 @@ exp(-c t / m)); the drag balances the weight in the limit."
   "(scenario underdamped-spring
      \"A block on a spring in oil, pulled out and released: c^2 < 4 m k.\"
      (parameters (m :positive) (c :positive) (k :positive (> k (/ (expt c 2) (* 4 m))))
-                 (l0 :positive) (a :positive) (g :positive))
+                 (l0 :positive) (a :positive (< a l0)) (g :positive))
      (gravity g)
      (body floor :fixed t :shape (half-plane (1 0) (0 0)))
      (body wall :fixed t :position (-1 0) :shape point)
@@ -73,7 +73,8 @@ exp(-c t / m)); the drag balances the weight in the limit."
      (spring s :from (wall (1 0)) :to (block (0 0)) :stiffness k :rest-length l0)
      (drag oil :on block :linear c)
      (simulate :states 1))"
-  "The damped oscillator with the under-damped case assumed.")
+  "The damped oscillator with the under-damped case assumed, pulled out by less than its
+rest length (else the spring might shrink to zero length).")
 
 (test underdamped-spring-solves-its-equation
   "Under c^2 < 4 m k the stretch x = X - l0 satisfies m x'' + c x' + k x = 0 (the motion

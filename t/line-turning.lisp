@@ -161,26 +161,30 @@ the turn, fails naming the turn."
   "(scenario mass-on-a-spring
      \"A block on a frictionless floor, tied by a spring to a point of the floor, pulled out and released.\"
      (parameters (m :positive (:value 2)) (k :positive (:value 8)) (g :positive (:value 10))
-                 (l0 :positive (:value 1)) (a :positive (:value 1/2)))
+                 (l0 :positive (:value 1)) (a :positive (< a l0) (:value 1/2)))
      (gravity g)
      (body floor :fixed t :shape (half-plane (1 0) (0 0)))
      (body block :mass m :position ((+ l0 a) 0) :velocity (0 0) :shape point)
      (spring coupling :from (floor (0 0)) :to (block (0 0)) :stiffness k :rest-length l0)
      (simulate :states 2))"
-  "Released at stretch a: x = l0 + a cos(sqrt(k/m) tau), between l0 - a and l0 + a.")
+  "Released at stretch a < l0: x = l0 + a cos(sqrt(k/m) tau), between l0 - a and l0 + a
+(with a > l0 the spring would shrink to zero length and open on the other side).")
 
 (defparameter *two-masses-without-drift*
   "(scenario two-masses-without-drift
      \"Two particles joined by a spring, pushed apart with zero total momentum.\"
      (parameters (m1 :positive (:value 1)) (m2 :positive (:value 2)) (k :positive (:value 3))
-                 (g :positive (:value 10)) (w :positive (:value 1)) (l0 :positive (:value 1)))
+                 (g :positive (:value 10)) (l0 :positive (:value 1))
+                 (w :positive (< w (* l0 (sqrt (/ k (* m1 m2 (+ m1 m2)))))) (:value 1/2)))
      (gravity g)
      (body floor :fixed t :shape (half-plane (1 0) (0 0)))
      (body first :mass m1 :position (0 0) :velocity ((- (* m2 w)) 0) :shape point)
      (body second :mass m2 :position (l0 0) :velocity ((* m1 w) 0) :shape point)
      (spring coupling :from (first (0 0)) :to (second (0 0)) :stiffness k :rest-length l0)
      (simulate :states 2))"
-  "The centre of mass stays put: the stretch oscillates with the reduced mass.")
+  "The centre of mass stays put: the stretch oscillates with the reduced mass, with an
+amplitude (m1 + m2) w sqrt(m1 m2 / (k (m1 + m2))) below l0 (above it the spring would
+shrink to zero length).")
 
 (defun periodic-note (history)
   "The :PERIODIC note of HISTORY's first state, checking that it lasts forever."
