@@ -5,7 +5,9 @@
 ;;;; released, the discriminant c^2 - 4 m k decides the motion: under-damped (c^2 < 4 m k),
 ;;;; x = a exp(-c t / (2 m)) (cos(w t) + c sin(w t) / (2 m w)), w = sqrt(4 m k - c^2) / (2 m);
 ;;;; critically damped (c^2 = 4 m k) and over-damped (c^2 > 4 m k) otherwise. The assumptions
-;;;; here do not decide it: the run branches three ways.
+;;;; here do not decide it: the run branches three ways. Pulled out by a < l0, the block never
+;;;; reaches the wall point (released from rest, the stretch never exceeds a): the spring
+;;;; never shrinks to zero length.
 
 (scenario damped-spring
   "A block on a spring in a viscous medium, pulled out and released."

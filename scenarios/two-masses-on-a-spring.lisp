@@ -4,7 +4,9 @@
 ;;;; Expected results: the centre of mass moves at m2 v0 / (m1 + m2); the stretch of the spring
 ;;;; oscillates at w = sqrt(k (m1 + m2) / (m1 m2)): x1 = m2 v0 (tau - sin(w tau)/w) / (m1 + m2)
 ;;;; and x2 = l0 + (m2 v0 tau + m1 v0 sin(w tau)/w) / (m1 + m2); the state lasts forever. Momentum
-;;;; m2 v0 and energy m2 v0^2 / 2 are conserved.
+;;;; m2 v0 and energy m2 v0^2 / 2 are conserved. The stretch's amplitude v0 / w stays below l0
+;;;; (the assumption on v0): faster, the spring would shrink to zero length and open on the
+;;;; other side, and without the bound the run branches on it.
 
 (scenario two-masses-on-a-spring
   "Two particles joined by a spring on a frictionless floor; one is pushed."

@@ -21,7 +21,14 @@
 ;;;; acceleration across it), its exit fires at once and the span turns from the start (the
 ;;;; simulator leaves a mode whose exit holds at once: src/simulator/choice.lisp). Both
 ;;;; descriptions are exact where they hold; the turning one is always right, the fixed one
-;;;; is simpler.
+;;;; is simpler. A span that starts at zero length (its points met at the end of the state
+;;;; before: a spring shrunk to nothing, springs.lisp) has no B - A to take a direction from:
+;;;; it opens along the points' relative velocity w0 (the limit of d/|d| as they separate),
+;;;; mode :SEPARATING, its length (B - A).w0; with no relative velocity either its direction
+;;;; is 0/0 and the span is refused by name (UNMODELLED-SITUATION). While a span keeps to
+;;;; its line (both modes along it) it asserts (aligned-span NAME :from A :to B :opening O),
+;;;; and (line-span-length A B O) is its length along the line, signed: it changes sign
+;;;; where the points meet, which springs and ropes watch.
 ;;;;
 ;;;; Quantity terms used here that the simulator provides: (pos B :x), (vel B :x), (acc B :x)
 ;;;; and (initial-pos B :x), a free body's position at the start of the state. A fixed body's
