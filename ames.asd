@@ -123,6 +123,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "rotation")
                  (:file "corners")
                  (:file "impacts")
+                 (:file "rotating-impacts")
                  (:file "friction")
                  (:file "spans")
                  (:file "springs")

@@ -64,6 +64,7 @@ CHECK-INCREMENTAL."
     (when impulsive
       (multiple-value-bind (after impact) (resolve-impact run)
         (setf (run-velocities run) after
+              (run-rotations run) (impact-rotations run impact)
               (state-impact state) impact
               (state-end-event state) (impact-event (state-end-event state) impact))
         (let ((events (state-simultaneous-events state)))

@@ -1,0 +1,151 @@
+;;;; src/kb/rotating-impacts.lisp -- impacts of rotating bodies: the angular impulse of an impulse
+;;;; that acts at a point, Newton's restitution on the relative velocity of the contact points,
+;;;; the rotational kinetic energy an impact dissipates.
+;;;;
+;;;; A rigid body struck at the point r from its centre of mass by the impulse J changes its
+;;;; momentum by J (impacts.lisp's CHANGE-OF-MOMENTUM) and its angular momentum about the
+;;;; centre by r x J:  I (omega' - omega) = sum of r x J.  Newton's law of restitution speaks
+;;;; of the normal velocity of the two material points in contact, v + omega k x r, not of
+;;;; the centres: the impact components (impacts.lisp) read the points' velocities through
+;;;; POINT-VELOCITY-AT-IMPACT, the centre's for a body that does not rotate (so a translating
+;;;; impact's equations are unchanged).
+;;;;
+;;;; THE VOCABULARY this file adds to the impact's situation (see impacts.lisp's header):
+;;;;   (body NAME ... :rotating T :inertia I [:radius R] :angle THETA :angular-velocity OMEGA)
+;;;;        a rotating free body, its angle and angular velocity just before
+;;;;   (touching-contact K ... [:observer-arm (RX RY)])
+;;;;        the offset of the contact point from the observer's centre when the geometry
+;;;;        gives it (a corner of a rotating polygon or segment); a disc's is -R n, the
+;;;;        obstacle disc's +R n (rotation.lisp's header)
+;;;; quantity terms
+;;;;   (angvel-after B)            B's angular velocity just after the impact
+;;;;   (angular-impulse . J)       the moment r x J about B's centre of the impulse J
+;;;; belief
+;;;;   (impulse-acts-at J :on B)   the impulse J acts at a point of the rotating body B and
+;;;;                               (angular-impulse . J) is defined (a hinge's, a wound
+;;;;                               rope's components assert it for their own impulses)
+;;;; An impact of a rotating body through a rough contact is refused (UNMODELLED-SITUATION):
+;;;; its friction impulse (sticking within the cone, sliding with mu J) is not modelled, and
+;;;; leaving it out would be a wrong answer (a spinning ball on a rough floor).
+
+(in-package #:ames.kb)
+
+(defun angular-velocity-before (situation body)
+  "The rotating BODY's angular velocity just before the impact."
+  (body-entity-property situation body :angular-velocity))
+
+(defun impact-arm (situation contact body)
+  "The offset (RX RY) from the rotating BODY's centre to the point of the touching
+CONTACT: the contact's :OBSERVER-ARM when the geometry gave it, else -R n for the
+observer disc and +R n for the obstacle disc (n the outward normal). Signals
+UNMODELLED-SITUATION for a rotating body that is not a disc and has no arm given."
+  (let* ((entity (entity-named situation contact))
+         (observer-p (eq body (entity-property entity :observer)))
+         (given (and observer-p (entity-property entity :observer-arm))))
+    (or given
+        (let ((radius (disc-radius situation body contact))
+              (normal (entity-property entity :normal)))
+          (mapcar (lambda (n) (if observer-p `(- (* ,radius ,n)) `(* ,radius ,n))) normal)))))
+
+(defun point-velocity-at-impact (situation contact body axis when)
+  "The AXIS component of the velocity of BODY's material point at the touching CONTACT,
+just before the impact (WHEN :BEFORE, an expression over the situation's values) or just
+after (:AFTER, over (vel-after BODY) and (angvel-after BODY)): v + omega k x r for a
+rotating body, the centre's velocity v for one that does not rotate."
+  (let ((v (ecase when
+             (:before (entity-vector situation body :velocity axis))
+             (:after (list 'vel-after body axis)))))
+    (if (rotating-body-p situation body)
+        (destructuring-bind (rx ry) (impact-arm situation contact body)
+          (let ((omega (ecase when
+                         (:before (angular-velocity-before situation body))
+                         (:after (list 'angvel-after body)))))
+            (ecase axis
+              (:x `(- ,v (* ,omega ,ry)))
+              (:y `(+ ,v (* ,omega ,rx))))))
+        v)))
+
+(defun rotational-energy-drop (situation body)
+  "The rotational kinetic energy of BODY just before the impact minus just after, as a
+list of terms: NIL for a body that does not rotate."
+  (when (rotating-body-p situation body)
+    (list `(* 1/2 ,(body-entity-property situation body :inertia)
+              (- (expt ,(angular-velocity-before situation body) 2)
+                 (expt (angvel-after ,body) 2))))))
+
+(defun impulse-moment (arm impulse)
+  "The moment r x J of the impulse named IMPULSE applied at the offset ARM (RX RY)."
+  (destructuring-bind (rx ry) arm
+    `(- (* ,rx ,(cons 'jy impulse)) (* ,ry ,(cons 'jx impulse)))))
+
+(defun refuse-rough-rotating-impact (situation contact)
+  "Template ROUGH-ROTATING-IMPACT: signals UNMODELLED-SITUATION, the touching CONTACT being
+rough and one of its bodies rotating (see the file header)."
+  (let ((entity (entity-named situation contact)))
+    (error 'unmodelled-situation
+           :datum contact
+           :detail (format nil "An impact of the rotating body ~(~A~) on ~(~A~), a rough pair, is not modelled: its friction impulse (sticking or sliding) is not, and the impact is refused rather than resolved frictionless."
+                           (entity-property entity :observer) (entity-property entity :obstacle)))))
+
+(defun register-rotating-impact-templates (kb)
+  "Register in KB the template functions of impacts of rotating bodies."
+  (flet ((reg (head function documentation)
+           (register-template kb head function :documentation documentation)))
+    (reg 'inertia (lambda (situation body) (body-entity-property situation body :inertia))
+         "A rotating body's moment of inertia about its centre of mass.")
+    (reg 'angvel-before #'angular-velocity-before
+         "A rotating body's angular velocity just before the impact.")
+    (reg 'angular-impulse-of (force-component-term 'angular-impulse)
+         "The angular impulse (about its body's centre) of a named impulse.")
+    (reg 'impulse-moment-at-contact
+         (lambda (situation contact body impulse)
+           (impulse-moment (impact-arm situation contact body) impulse))
+         "The moment about a rotating body's centre of an impulse at a contact's point.")
+    (reg 'impulse-moment-at-point
+         (lambda (situation body point impulse)
+           (destructuring-bind (px py) point
+             (let* ((theta (body-entity-property situation body :angle))
+                    (c `(cos ,theta)) (s `(sin ,theta)))
+               (impulse-moment (list `(- (* ,c ,px) (* ,s ,py)) `(+ (* ,s ,px) (* ,c ,py)))
+                               impulse))))
+         "The moment of an impulse acting at a rotating body's own point, turned by its angle.")
+    (reg 'sum-of-angular-impulses
+         (lambda (situation impulses)
+           (declare (ignore situation))
+           (if impulses (cons '+ (mapcar (lambda (j) (cons 'angular-impulse j)) impulses)) 0))
+         "The sum of the angular impulses of a list of impulses.")
+    (reg 'rough-rotating-impact #'refuse-rough-rotating-impact
+         "Signals UNMODELLED-SITUATION: a rough impact of a rotating body.")))
+
+(register-rotating-impact-templates *impacts*)
+
+(defcomponent angular-impulse-at-a-contact (:knowledge-base *impacts*)
+  "A touching contact's impulse acts on a rotating body at the contact point: its moment
+about the body's centre is r x J, r from the centre to that point."
+  (:arguments (?impulse :belief (impulse ?impulse :on ?body :contact ?contact))
+              (?contact :entity touching-contact)
+              (?body :entity body :where (:fixed nil :rotating t)))
+  (:assert (impulse-acts-at ?impulse :on ?body))
+  (:equations (= (angular-impulse-of ?impulse) (impulse-moment-at-contact ?contact ?body ?impulse))))
+
+(defcomponent change-of-angular-momentum (:knowledge-base *impacts*)
+  "A rotating free body's angular momentum about its centre changes by the sum of the
+angular impulses on it: I (omega' - omega) = sum of r x J (the angular-momentum law
+integrated over the impact; finite torques give none)."
+  (:arguments (?body :entity body :where (:fixed nil :driven nil :rotating t))
+              (?impulses :collect ?j :matching (impulse-acts-at ?j :on ?body)))
+  (:equations (= (* (inertia ?body) (- (angvel-after ?body) (angvel-before ?body)))
+                 (sum-of-angular-impulses ?impulses))))
+
+(defcomponent rough-impact-of-a-rotating-body (:knowledge-base *impacts*)
+  "A touching contact between a rough pair (a friction clause) with a rotating body is
+refused: the friction impulse is not modelled (see the file header)."
+  (:arguments (?contact :entity touching-contact :where (:observer ?body :rough t))
+              (?body :entity body :where (:rotating t)))
+  (:equations (= (rough-rotating-impact ?contact) 0)))
+
+(defcomponent rough-impact-on-a-rotating-body (:knowledge-base *impacts*)
+  "The same refusal when the rotating body of a rough touching contact is its obstacle."
+  (:arguments (?contact :entity touching-contact :where (:obstacle ?body :rough t))
+              (?body :entity body :where (:rotating t :fixed nil)))
+  (:equations (= (rough-rotating-impact ?contact) 0)))
