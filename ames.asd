@@ -326,6 +326,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "rotation-rolling")
                (:file "rotation-corners")
                (:file "hinged-swing")
+               (:file "rotating-impacts")
                (:file "witness-curved")
                (:file "witness-crosscheck")
                (:file "leftward-arcs")
