@@ -162,3 +162,54 @@ impact is refused (UNMODELLED-SITUATION) rather than resolved frictionless."
            (condition (handler-case (progn (run-of scenario bridge) nil)
                         (ames-error (c) c))))
       (is (typep condition 'ames.kb:unmodelled-situation) "~A" condition))))
+
+(test yoyo-string-jerked-taut
+  "A yo-yo falling freely the height s until its wound string jerks taut: v' = m r^2 v /
+(I + m r^2), omega' = m r |v| / (I + m r^2), the jerk m I |v| / (I + m r^2), the energy
+lost m g s I / (I + m r^2)."
+  (with-fixture simulator-bridge ()
+    (let* ((scenario (scenario-named "yoyo-string-jerked-taut"))
+           (impact (first-impact scenario bridge)))
+      (is (not (null impact)))
+      (when impact
+        (flet ((x (form) (in-scenario-terms scenario form)))
+          (let ((speed (x '(sqrt (* 2 g s))))
+                (k (x '(+ i (* m (expt r 2)))))
+                (jerk (find-if (lambda (entry) (eq (first entry) :rope-impulse)) (getf impact :impulses))))
+            (call-with-scenario-facts
+             bridge scenario
+             (lambda ()
+               (is-same-vector bridge "velocity after" (impact-entry impact :velocities-after "YOYO")
+                               `(0 (- (/ (* ,(x '(* m (expt r 2))) ,speed) ,k))))
+               (is-same bridge "angular velocity after" (impact-entry impact :angular-velocities-after "YOYO")
+                        `(/ (* ,(x '(* m r)) ,speed) ,k))
+               (is-same bridge "the jerk" (car (last jerk)) `(/ (* ,(x '(* m i)) ,speed) ,k))
+               (is-same bridge "energy lost" (getf impact :energy-lost) `(/ ,(x '(* m g s i)) ,k))
+               (is-energy-not-gained bridge scenario (getf impact :energy-lost))))))))))
+
+(test massive-pulley-atwood-landing
+  "The heavier mass of an Atwood machine over a massive pulley lands plastically: it stops,
+its rope goes slack (no jerk: a rope's impulse, if reported, is 0), the lighter mass and the pulley keep their speeds, and the
+energy lost is its (1/2) m1 v^2 = m1 (m1 - m2) g h R^2 / (I + (m1 + m2) R^2)."
+  (with-fixture simulator-bridge ()
+    (let* ((scenario (scenario-named "atwood-massive-pulley"))
+           (impact (first-impact scenario bridge)))
+      (is (not (null impact)))
+      (when impact
+        (flet ((x (form) (in-scenario-terms scenario form)))
+          (call-with-scenario-facts
+           bridge scenario
+           (lambda ()
+             (is-same-vector bridge "the heavy mass stops" (impact-entry impact :velocities-after "HEAVY") '(0 0))
+             (is-same-vector bridge "the light mass keeps its velocity"
+                             (impact-entry impact :velocities-after "LIGHT")
+                             (impact-entry impact :velocities-before "LIGHT"))
+             (is-same bridge "the pulley keeps its spin"
+                      (impact-entry impact :angular-velocities-after "PULLEY")
+                      (impact-entry impact :angular-velocities-before "PULLEY"))
+             (dolist (entry (getf impact :impulses))
+               (when (eq (first entry) :rope-impulse)
+                 (is-same bridge "no jerk along a rope" (car (last entry)) 0)))
+             (is-same bridge "energy lost" (getf impact :energy-lost)
+                      (x '(/ (* m1 (- m1 m2) g h (expt big-r 2)) (+ i (* (+ m1 m2) (expt big-r 2))))))
+             (is-energy-not-gained bridge scenario (getf impact :energy-lost)))))))))
