@@ -17,9 +17,9 @@
 ;;;;   (energy-lost impact)         the kinetic energy the impact dissipates
 ;;;; A touching contact may push or not; which is chosen by consistency, as for a state:
 ;;;; a pushing contact pulls at once if its impulse is negative, one that does not push is
-;;;; penetrated at once if the bodies still approach through it. Impacts are frictionless.
-;;;; A rotating body's contact point moves with v + omega k x r, and its impulses have
-;;;; moments: src/kb/rotating-impacts.lisp.
+;;;; penetrated at once if the bodies still approach through it. Impacts are frictionless
+;;;; but for a rough contact with a rotating body; a rotating body's contact point moves with
+;;;; v + omega k x r, and its impulses have moments: src/kb/rotating-impacts.lisp.
 
 (in-package #:ames.kb)
 
@@ -124,8 +124,8 @@ penetrated: the bodies do not approach through it after the impact."
   (:assert (impulse (impulse ?contact) :from ?body2 :on ?body1 :contact ?contact)
            (impulse (counter-impulse ?contact) :from ?body1 :on ?body2 :contact ?contact)
            (reported :impulses (:impulse ?body1 ?body2 (normal-impulse ?contact))))
-  (:equations (= (impulse-x (impulse ?contact)) (* (normal-impulse ?contact) (impact-normal ?contact :x)))
-              (= (impulse-y (impulse ?contact)) (* (normal-impulse ?contact) (impact-normal ?contact :y)))
+  (:equations (= (impulse-x (impulse ?contact)) (impulse-along-contact ?contact :x))
+              (= (impulse-y (impulse ?contact)) (impulse-along-contact ?contact :y))
               (= (separation-after ?contact)
                  (* -1 (restitution ?contact) (separation-before ?contact)))))
 
@@ -172,15 +172,26 @@ for E = 1 (an elastic impact)."
 (defun touching-contact-entity (scenario contact observer obstacle normal &key arm)
   "The impact situation's entity of the CONTACT touching at the impact between OBSERVER
 and OBSTACLE, with its outward NORMAL there and the restitution SCENARIO's (restitution
-...) clauses give the pair; :ROUGH T when a friction clause names the pair, and the
+...) clauses give the pair; :ROUGH-ROTATING T and :FRICTION MU when a friction clause
+names the pair and one of them rotates (rotating-impacts.lisp), and the
 contact point's offset ARM from the observer's centre when the geometry gives it (a
 rotating body's corner: rotating-impacts.lisp)."
   (append (list 'touching-contact contact :observer observer :obstacle obstacle :normal normal
                 :restitution (ames.scenario:scenario-restitution scenario observer obstacle))
-          (and (ames.scenario:find-scenario-friction observer obstacle scenario) (list :rough t))
+          (let ((friction (ames.scenario:find-scenario-friction observer obstacle scenario)))
+            (and friction
+                 (some (lambda (name)
+                         (let ((body (ames.scenario:find-scenario-body name scenario)))
+                           (and (ames.scenario:scenario-body-rotating-p body)
+                                (not (ames.scenario:scenario-body-fixed-p body)))))
+                       (list observer obstacle))
+                 ;; its friction impulse: rotating-impacts.lisp
+                 (list :rough-rotating t
+                       :friction (ames.scenario:scenario-friction-kinetic friction))))
           (and arm (list :observer-arm arm))))
 
 (define-phenomenon impact
   "Frictionless impacts: impulses along the contact normals and Newton's law of
 restitution (the restitution clause)."
-  (:impulse :impulse :names 2 :words "impulse of ~*~A on ~:*~:*~A"))
+  (:impulse :impulse :names 2 :words "impulse of ~*~A on ~:*~:*~A")
+  (:impulse :friction-impulse :names 2 :words "friction impulse of ~*~A on ~:*~:*~A, along the tangent"))

@@ -24,9 +24,14 @@
 ;;;;   (impulse-acts-at J :on B)   the impulse J acts at a point of the rotating body B and
 ;;;;                               (angular-impulse . J) is defined (a hinge's, a wound
 ;;;;                               rope's components assert it for their own impulses)
-;;;; An impact of a rotating body through a rough contact is refused (UNMODELLED-SITUATION):
-;;;; its friction impulse (sticking within the cone, sliding with mu J) is not modelled, and
-;;;; leaving it out would be a wrong answer (a spinning ball on a rough floor).
+;;;; Friction impulses. A touching contact of a rough pair (a friction clause) one of whose
+;;;; bodies rotates has :ROUGH-ROTATING T and :FRICTION MU (the pair's kinetic coefficient):
+;;;; its impulse on the observer is Jn n + Jt t (t the normal turned a quarter turn
+;;;; counter-clockwise), Jt by Coulomb's law over the impact (FRICTION-IMPULSE: sticking, the
+;;;; points leave without relative tangential velocity, |Jt| <= mu Jn; sliding, Jt = -+ mu Jn
+;;;; against the slip before, which must not reverse). Terms: (tangent-impulse K),
+;;;; (slip-after K). A rough impact between bodies that do not rotate stays frictionless, as
+;;;; impacts.lisp says (no spin to change: its textbook impact is the smooth one).
 
 (in-package #:ames.kb)
 
@@ -78,14 +83,32 @@ list of terms: NIL for a body that does not rotate."
   (destructuring-bind (rx ry) arm
     `(- (* ,rx ,(cons 'jy impulse)) (* ,ry ,(cons 'jx impulse)))))
 
-(defun refuse-rough-rotating-impact (situation contact)
-  "Template ROUGH-ROTATING-IMPACT: signals UNMODELLED-SITUATION, the touching CONTACT being
-rough and one of its bodies rotating (see the file header)."
-  (let ((entity (entity-named situation contact)))
-    (error 'unmodelled-situation
-           :datum contact
-           :detail (format nil "An impact of the rotating body ~(~A~) on ~(~A~), a rough pair, is not modelled: its friction impulse (sticking or sliding) is not, and the impact is refused rather than resolved frictionless."
-                           (entity-property entity :observer) (entity-property entity :obstacle)))))
+(defun impact-tangent (situation contact)
+  "The unit tangent (TX TY) of the touching CONTACT: its outward normal turned a quarter
+turn counter-clockwise (friction.lisp's and the corners' convention)."
+  (destructuring-bind (nx ny) (entity-property (entity-named situation contact) :normal)
+    (list `(- ,ny) nx)))
+
+(defun relative-point-velocity (situation contact when)
+  "The velocity (X Y) of the observer's contact point relative to the obstacle's at the
+touching CONTACT, just before (WHEN :BEFORE) or just after (:AFTER) the impact."
+  (let* ((entity (entity-named situation contact))
+         (a (entity-property entity :observer))
+         (b (entity-property entity :obstacle)))
+    (mapcar (lambda (axis)
+              `(- ,(point-velocity-at-impact situation contact a axis when)
+                  ,(point-velocity-at-impact situation contact b axis when)))
+            '(:x :y))))
+
+(defun impulse-along-contact (situation contact axis)
+  "Template IMPULSE-ALONG-CONTACT: the AXIS component of the touching CONTACT's impulse on
+its observer, (normal-impulse K) n, plus (tangent-impulse K) t on a contact whose friction
+impulse is modelled (:ROUGH-ROTATING, see the file header)."
+  (let* ((entity (entity-named situation contact))
+         (normal `(* (normal-impulse ,contact) ,(axis-component (entity-property entity :normal) axis))))
+    (if (entity-property entity :rough-rotating)
+        `(+ ,normal (* (tangent-impulse ,contact) ,(axis-component (impact-tangent situation contact) axis)))
+        normal)))
 
 (defun register-rotating-impact-templates (kb)
   "Register in KB the template functions of impacts of rotating bodies."
@@ -114,8 +137,21 @@ rough and one of its bodies rotating (see the file header)."
            (declare (ignore situation))
            (if impulses (cons '+ (mapcar (lambda (j) (cons 'angular-impulse j)) impulses)) 0))
          "The sum of the angular impulses of a list of impulses.")
-    (reg 'rough-rotating-impact #'refuse-rough-rotating-impact
-         "Signals UNMODELLED-SITUATION: a rough impact of a rotating body.")))
+    (reg 'impulse-along-contact #'impulse-along-contact
+         "A component of a touching contact's impulse on its observer.")
+    (reg 'slip-before
+         (lambda (situation contact)
+           (ames.geometry:dot (relative-point-velocity situation contact :before)
+                              (impact-tangent situation contact)))
+         "The contact points' relative velocity along the tangent just before the impact.")
+    (reg 'slip-after-at-points
+         (lambda (situation contact)
+           (ames.geometry:dot (relative-point-velocity situation contact :after)
+                              (impact-tangent situation contact)))
+         "The contact points' relative velocity along the tangent just after the impact.")
+    (reg 'impact-friction
+         (lambda (situation contact) (entity-property (entity-named situation contact) :friction))
+         "The coefficient of friction of a touching contact at an impact (the kinetic one).")))
 
 (register-rotating-impact-templates *impacts*)
 
@@ -137,15 +173,31 @@ integrated over the impact; finite torques give none)."
   (:equations (= (* (inertia ?body) (- (angvel-after ?body) (angvel-before ?body)))
                  (sum-of-angular-impulses ?impulses))))
 
-(defcomponent rough-impact-of-a-rotating-body (:knowledge-base *impacts*)
-  "A touching contact between a rough pair (a friction clause) with a rotating body is
-refused: the friction impulse is not modelled (see the file header)."
-  (:arguments (?contact :entity touching-contact :where (:observer ?body :rough t))
-              (?body :entity body :where (:rotating t)))
-  (:equations (= (rough-rotating-impact ?contact) 0)))
-
-(defcomponent rough-impact-on-a-rotating-body (:knowledge-base *impacts*)
-  "The same refusal when the rotating body of a rough touching contact is its obstacle."
-  (:arguments (?contact :entity touching-contact :where (:obstacle ?body :rough t))
-              (?body :entity body :where (:rotating t :fixed nil)))
-  (:equations (= (rough-rotating-impact ?contact) 0)))
+(defcomponent friction-impulse (:knowledge-base *impacts*)
+  "A rough touching contact with a rotating body that pushes also rubs: an impulse Jt
+along its tangent t (Coulomb's law over the impact, with the kinetic coefficient mu).
+Sticking, the contact points leave with no relative tangential velocity and |Jt| <= mu
+Jn; sliding, Jt = -+ mu Jn against the slip before the impact, and the slip must not have
+reversed just after (else it sticks). Which holds is settled by consistency."
+  (:arguments (?contact :entity touching-contact
+                        :where (:observer ?body1 :obstacle ?body2 :rough-rotating t)))
+  (:activation (:believes (impulse (impulse ?contact) :from ?body2 :on ?body1 :contact ?contact)))
+  (:assert (reported :impulses (:friction-impulse ?body1 ?body2 (tangent-impulse ?contact))))
+  (:equations (= (slip-after ?contact) (slip-after-at-points ?contact)))
+  (:mode :sticking
+   (:entry (= (slip-after ?contact) 0))
+   (:equations (= (slip-after ?contact) 0))
+   (:transition :to :sliding-backward
+                :when (> (tangent-impulse ?contact) (* (impact-friction ?contact) (normal-impulse ?contact)))
+                :event (:slides ?body1 ?body2))
+   (:transition :to :sliding-forward
+                :when (< (tangent-impulse ?contact) (- (* (impact-friction ?contact) (normal-impulse ?contact))))
+                :event (:slides ?body1 ?body2)))
+  (:mode :sliding-forward
+   (:entry (> (slip-before ?contact) 0))
+   (:equations (= (tangent-impulse ?contact) (- (* (impact-friction ?contact) (normal-impulse ?contact)))))
+   (:transition :to :sticking :when (< (slip-after ?contact) 0) :event (:sticks ?body1 ?body2)))
+  (:mode :sliding-backward
+   (:entry (< (slip-before ?contact) 0))
+   (:equations (= (tangent-impulse ?contact) (* (impact-friction ?contact) (normal-impulse ?contact))))
+   (:transition :to :sticking :when (> (slip-after ?contact) 0) :event (:sticks ?body1 ?body2))))

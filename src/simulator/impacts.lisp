@@ -118,14 +118,16 @@ the angular velocity (ames.kb:angvel-after BODY) in SOLVED."
         collect (list body theta (quantity-value solved `(ames.kb:angvel-after ,body)))))
 
 (defun impact-decider (run)
-  "The decider of an impact's model: whether a touching contact pushes is always a
-choice (settled by consistency); everything else goes to Maxima, and what the
+  "The decider of an impact's model: a relation over the impact's unknowns (whether a
+touching contact pushes, whether a rough one sticks) is always a choice (settled by
+consistency); everything else goes to Maxima, and what the
 assumptions leave open to the run's parameter values when it has them (the fact is
 recorded as assumed from the values: ames.algebra:DECIDE-BY-VALUES). An impact is no
 place to branch: its outcome is one, the question only how the algebra shows it."
   (lambda (relation)
-    (if (and (consp relation) (consp (second relation))
-             (eq (first (second relation)) 'ames.kb:separation-after))
+    (if (and (consp relation) (some #'quantity-term-p (expression-variables relation)))
+        ;; over the impact's unknowns (a contact's separation just after, a slip):
+        ;; settled by consistency
         :choice
         (let* ((relation (constant-roots-taken run relation))
                (verdict (decide run relation)))
