@@ -56,7 +56,8 @@ impact (AMES.KB:IMPACT-ENTITIES-OF: the ropes)."
                                             :angular-velocity (body-angular-velocity run name)))))))
              (scenario-bodies scenario))
      (ames.kb:impact-entities-of scenario)
-     (touching-corner-entities run)
+     (touching-corner-entities run (remove-if-not (lambda (entry) (member (first entry) contacts))
+                                                  (run-corner-contacts run)))
      (mapcar (lambda (contact)
                (let ((geometry (contact-geometry run contact)))
                  (destructuring-bind (observer obstacle) (contact-bodies run contact)
@@ -78,19 +79,26 @@ at the current positions and angle."
                      (cons `(ames.kb:angle ,body) (body-angle run body)))
                expression))))
 
-(defun touching-corners (run)
+(defun touching-corners (run &optional reached)
   "The corner contacts of RUN (corners.lisp: a rotating polygon's or segment's corner on
-a fixed face) whose gap is zero now, as entries (NAME BODY OBSTACLE . GEOMETRY)."
-  (remove-if-not (lambda (entry)
-                   (destructuring-bind (name body obstacle . geometry) entry
-                     (declare (ignore name obstacle))
-                     (touching-now-p run body geometry)))
-                 (run-corner-contacts run)))
+a fixed face) whose gap is zero now, or whose reaching ends the state (named by the
+instance of one of the REACHED candidates: a state ended numerically leaves the gap at
+its rounding, about 1e-15), as entries (NAME BODY OBSTACLE . GEOMETRY)."
+  (let ((named (loop for candidate in reached
+                     for condition = (candidate-condition candidate)
+                     when condition
+                       append (alexandria:flatten
+                               (ames.engine:termination-condition-instance condition)))))
+    (remove-if-not (lambda (entry)
+                     (destructuring-bind (name body obstacle . geometry) entry
+                       (declare (ignore obstacle))
+                       (or (member name named) (touching-now-p run body geometry))))
+                   (run-corner-contacts run))))
 
-(defun touching-corner-entities (run)
-  "The touching contacts of the corners touching now (TOUCHING-CORNERS), each with the
+(defun touching-corner-entities (run corners)
+  "The touching contacts of the CORNERS touching now (TOUCHING-CORNERS), each with the
 face's normal and the corner's arm from the body's centre at the current configuration."
-  (loop for (name body obstacle . geometry) in (touching-corners run)
+  (loop for (name body obstacle . geometry) in corners
         collect (ames.kb:touching-contact-entity
                  (run-scenario run) name body obstacle
                  (mapcar (lambda (x) (corner-now run body x))
@@ -142,12 +150,13 @@ state's."
     (unwind-protect (funcall thunk)
       (setf (run-model run) saved (run-decider-override run) nil))))
 
-(defun resolve-impact (run)
-  "Resolve the impact at the run's current positions and velocities (those just before):
+(defun resolve-impact (run &optional reached)
+  "Resolve the impact at the run's current positions and velocities (those just before),
+REACHED the impulsive candidates that end the state (see TOUCHING-CORNERS):
 returns the velocities just after (an alist body -> (VX VY)) and a plist describing the
 impact (:CONTACTS, :IMPULSES, :ENERGY-LOST, :VELOCITIES-BEFORE, :VELOCITIES-AFTER,
 :CHOICES). Signals what the consistency search signals."
-  (let* ((contacts (append (touching-contacts run) (mapcar #'first (touching-corners run))))
+  (let* ((contacts (append (touching-contacts run) (mapcar #'first (touching-corners run reached))))
          (decider (impact-decider run))
          (situation (ames.engine:make-situation (impact-entities run contacts) :data run))
          (model (ames.engine:build-model (ames.engine:make-engine (ames.kb:impact-knowledge-base))

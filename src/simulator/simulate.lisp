@@ -62,7 +62,7 @@ CHECK-INCREMENTAL."
                                (mapcar #'candidate-change (set-difference fired impulsive))
                                :test #'equal))))
     (when impulsive
-      (multiple-value-bind (after impact) (resolve-impact run)
+      (multiple-value-bind (after impact) (resolve-impact run impulsive)
         (setf (run-velocities run) after
               (run-rotations run) (impact-rotations run impact)
               (state-impact state) impact
