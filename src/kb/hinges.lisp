@@ -62,13 +62,10 @@ acts at the pin: its moment about the centre is r x F."
 
 (register-template *impacts* 'hinge-arm-at-impact
                    (lambda (situation hinge axis)
-                     (let* ((entity (entity-named situation hinge))
-                            (body (entity-property entity :body))
-                            (theta (body-entity-property situation body :angle)))
-                       (destructuring-bind (px py) (entity-property entity :at)
-                         (axis-component (list `(- (* (cos ,theta) ,px) (* (sin ,theta) ,py))
-                                               `(+ (* (sin ,theta) ,px) (* (cos ,theta) ,py)))
-                                         axis))))
+                     (let ((entity (entity-named situation hinge)))
+                       (axis-component (impact-turned-arm situation (entity-property entity :body)
+                                                          (entity-property entity :at))
+                                       axis)))
                    :documentation "A component of the vector from a hinged body's centre to its
 pin at the impact (the body's angle then).")
 

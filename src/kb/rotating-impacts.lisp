@@ -11,8 +11,10 @@
 ;;;; impact's equations are unchanged).
 ;;;;
 ;;;; THE VOCABULARY this file adds to the impact's situation (see impacts.lisp's header):
-;;;;   (body NAME ... :rotating T :inertia I [:radius R] :angle THETA :angular-velocity OMEGA)
-;;;;        a rotating free body, its angle and angular velocity just before
+;;;;   (body NAME ... :rotating T :inertia I [:radius R] :angle THETA :turn (C S)
+;;;;         :angular-velocity OMEGA)
+;;;;        a rotating free body, its angle (C, S its cosine and sine, simplified) and
+;;;;        angular velocity just before
 ;;;;   (touching-contact K ... [:observer-arm (RX RY)])
 ;;;;        the offset of the contact point from the observer's centre when the geometry
 ;;;;        gives it (a corner of a rotating polygon or segment); a disc's is -R n, the
@@ -78,6 +80,13 @@ list of terms: NIL for a body that does not rotate."
               (- (expt ,(angular-velocity-before situation body) 2)
                  (expt (angvel-after ,body) 2))))))
 
+(defun impact-turned-arm (situation body point)
+  "The rotating BODY's own point POINT (PX PY) turned by its angle at the impact: the
+offset of that point from its centre, from the body's :TURN (cos, sin of its angle)."
+  (destructuring-bind (px py) point
+    (destructuring-bind (c s) (body-entity-property situation body :turn)
+      (list `(- (* ,c ,px) (* ,s ,py)) `(+ (* ,s ,px) (* ,c ,py))))))
+
 (defun impulse-moment (arm impulse)
   "The moment r x J of the impulse named IMPULSE applied at the offset ARM (RX RY)."
   (destructuring-bind (rx ry) arm
@@ -126,11 +135,7 @@ impulse is modelled (:ROUGH-ROTATING, see the file header)."
          "The moment about a rotating body's centre of an impulse at a contact's point.")
     (reg 'impulse-moment-at-point
          (lambda (situation body point impulse)
-           (destructuring-bind (px py) point
-             (let* ((theta (body-entity-property situation body :angle))
-                    (c `(cos ,theta)) (s `(sin ,theta)))
-               (impulse-moment (list `(- (* ,c ,px) (* ,s ,py)) `(+ (* ,s ,px) (* ,c ,py)))
-                               impulse))))
+           (impulse-moment (impact-turned-arm situation body point) impulse))
          "The moment of an impulse acting at a rotating body's own point, turned by its angle.")
     (reg 'sum-of-angular-impulses
          (lambda (situation impulses)

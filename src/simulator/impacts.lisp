@@ -53,6 +53,10 @@ impact (AMES.KB:IMPACT-ENTITIES-OF: the ropes)."
                          (and (rotating-p run name)
                               (append (rotation-properties body)
                                       (list :angle (body-angle run name)
+                                            ;; cos and sin of the angle in the form the
+                                            ;; geometry's arms take (one radical, not two)
+                                            :turn (list (corner-now run name `(cos (ames.kb:angle ,name)))
+                                                        (corner-now run name `(sin (ames.kb:angle ,name))))
                                             :angular-velocity (body-angular-velocity run name)))))))
              (scenario-bodies scenario))
      (ames.kb:impact-entities-of scenario)
