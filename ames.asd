@@ -129,6 +129,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "springs")
                  (:file "ropes")
                  (:file "wound-ropes")
+                 (:file "wound-rope-impacts")
                  (:file "hinges")
                  (:file "gravitation")
                  (:file "drag")

@@ -23,7 +23,8 @@
 ;;;; with e = 0 (a plastic jerk): an impulse J >= 0 along each segment, the same all along,
 ;;;; with the rope's length not growing just after; it is consistent not to jerk only when the
 ;;;; length does not grow. The impact situation describes the same rope and segment
-;;;; entities, and each body with its :position and :velocity just before.
+;;;; entities, and each body with its :position and :velocity just before (a rope wound on
+;;;; a disc: wound-rope-impacts.lisp).
 
 (in-package #:ames.kb)
 
