@@ -194,6 +194,6 @@ rotating body's corner: rotating-impacts.lisp)."
   "Frictionless impacts: impulses along the contact normals and Newton's law of
 restitution (the restitution clause)."
   (:impulse :impulse :names 2 :words "impulse of ~*~A on ~:*~:*~A")
-  (:impulse :friction-impulse :names 2 :words "friction impulse of ~*~A on ~:*~:*~A, along the tangent")
+  (:impulse :friction-impulse :names 3 :words "friction impulse of ~*~A on ~:*~:*~A, along the tangent")
   (:event :slides :words "~A slides on ~A through the impact")
   (:event :sticks :words "~A stops slipping on ~A in the impact"))

@@ -187,7 +187,8 @@ reversed just after (else it sticks). Which holds is settled by consistency."
   (:arguments (?contact :entity touching-contact
                         :where (:observer ?body1 :obstacle ?body2 :rough-rotating t)))
   (:activation (:believes (impulse (impulse ?contact) :from ?body2 :on ?body1 :contact ?contact)))
-  (:assert (reported :impulses (:friction-impulse ?body1 ?body2 (tangent-impulse ?contact))))
+  ;; the contact named too: the impact event's impulse is the normal one, not summed with it
+  (:assert (reported :impulses (:friction-impulse ?body1 ?body2 ?contact (tangent-impulse ?contact))))
   (:equations (= (slip-after ?contact) (slip-after-at-points ?contact)))
   (:mode :sticking
    (:entry (= (slip-after ?contact) 0))
