@@ -5,8 +5,10 @@
 ;;;; the pulley's angular acceleration a / R (counter-clockwise: m1 hangs on its left), the
 ;;;; tensions T1 = m1 (g - a) and T2 = m2 (g + a), different since the pulley has inertia;
 ;;;; the hinge holds M g + T1 + T2 (the query hinge-holds). m1 reaches the floor after
-;;;; sqrt(2 h / a). One state: the landing's impact, with a rope wound on a turning disc, is
-;;;; not modelled yet (src/kb/ropes.lisp refuses it).
+;;;; sqrt(2 h / a). The landing (the floor plastic: no restitution clause) stops m1 and lets
+;;;; its rope go slack: m2 and the pulley keep their speeds, and the impact dissipates m1's
+;;;; kinetic energy (1/2) m1 v^2 = m1 (m1 - m2) g h R^2 / (I + (m1 + m2) R^2). One state (the
+;;;; next one's event search, the light mass against the pulley's rim, fails in Maxima).
 
 (scenario atwood-massive-pulley
   "An Atwood machine over a disc pulley of inertia I."

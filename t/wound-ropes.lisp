@@ -258,23 +258,3 @@ UNMODELLED-SITUATION rather than a wrong answer."
            (condition (handler-case (progn (simulate-stopping-when-ambiguous scenario bridge) nil)
                         (ames-error (c) c))))
       (is (typep condition 'ames.kb:unmodelled-situation) "~A" condition))))
-
-(test an-impact-with-a-hinge-is-refused
-  "A ball dropped onto a hinged wheel: the impact model has no pin to hold, so the impact is
-refused (UNMODELLED-SITUATION naming the hinge) rather than the wheel recoiling as a free
-body."
-  (with-fixture simulator-bridge ()
-    (let* ((scenario (first (ames:read-scenarios-from-string
-                             "(scenario ball-on-wheel \"A ball falls onto a hinged wheel.\"
-                                (parameters (m :positive (:value 1)) (g :positive (:value 981/100))
-                                            (r :positive (:value 1/5)) (h :positive (> h (* 2 r)) (:value 2)))
-                                (gravity g)
-                                (body wheel :mass m :inertia :uniform :shape (circle r) :position (0 0) :velocity (0 0))
-                                (hinge axle :body wheel :at (0 0))
-                                (body ball :mass m :shape point :position (0 h) :velocity (0 0))
-                                (simulate :states 2))")))
-           (condition (handler-case (progn (ames:run-scenario scenario :bridge bridge :numeric t) nil)
-                        (ames-error (c) c))))
-      (is (typep condition 'ames.kb:unmodelled-situation) "~A" condition)
-      (when condition
-        (is (string= "AXLE" (symbol-name (ames-error-datum condition))))))))

@@ -9,9 +9,12 @@
 ;;;;   a_centre + alpha k x r - omega^2 r = 0,      r = R(theta) (X Y)
 ;;;; (the rigid body's acceleration at the point r from its centre of mass), and the force
 ;;;; acts at the pin, so its moment about the centre is r x F. Reported in :forces as
-;;;; (:hinge NAME B (FX FY)); the query (hinge-force NAME) reads it, a vector. An impact in
-;;;; a scenario with a hinge is refused (UNMODELLED-SITUATION): the impact model
-;;;; (impacts.lisp) has no pin to hold.
+;;;; (:hinge NAME B (FX FY)); the query (hinge-force NAME) reads it, a vector. At an impact
+;;;; (impacts.lisp, rotating-impacts.lisp) the hinge's impulsive reaction J, of unknown
+;;;; components, acts at the pin and keeps it still: the pin's velocity just after,
+;;;; v' + omega' k x r, is zero (r at the body's angle then); its moment r x J enters the
+;;;; body's change of angular momentum. Reported in :impulses as its components
+;;;; (:hinge-impulse-x NAME B JX) and (:hinge-impulse-y NAME B JY).
 ;;;;
 ;;;; The rotating body's quantity terms are the rotation core's (rotation.lisp): its angle,
 ;;;; angular velocity and angular acceleration, and the moment of a force acting at a point.
@@ -27,16 +30,8 @@
           (ames.scenario:scenario-hinges scenario)))
 
 (defun hinge-impact-entities (scenario)
-  "No entities at an impact: signals UNMODELLED-SITUATION when SCENARIO has a hinge (an
-impact's impulses would have to keep the pin at rest and turn the body about it, which
-the impact model does not do: without this the hinged body would recoil as a free one)."
-  (let ((hinge (first (ames.scenario:scenario-hinges scenario))))
-    (when hinge
-      (error 'unmodelled-situation
-             :datum (ames.scenario:scenario-hinge-name hinge)
-             :detail (format nil "An impact in a scenario with the hinge ~(~A~) is not modelled (the impulses would have to hold the pin)."
-                             (ames.scenario:scenario-hinge-name hinge))))
-    '()))
+  "The HINGE entities of SCENARIO at an impact: the same as in a state (HINGE-ENTITIES)."
+  (hinge-entities scenario))
 
 (defun hinge-arm (situation hinge)
   "The world vector from the hinged body's centre to its pin (rotation.lisp's TURNED-ARM)."
@@ -65,10 +60,35 @@ acts at the pin: its moment about the centre is r x F."
               (= (moment-of (hinge-reaction ?hinge))
                  (moment-at-point ?body (?px ?py) (hinge-reaction ?hinge)))))
 
+(register-template *impacts* 'hinge-arm-at-impact
+                   (lambda (situation hinge axis)
+                     (let ((entity (entity-named situation hinge)))
+                       (axis-component (impact-turned-arm situation (entity-property entity :body)
+                                                          (entity-property entity :at))
+                                       axis)))
+                   :documentation "A component of the vector from a hinged body's centre to its
+pin at the impact (the body's angle then).")
+
+(defcomponent hinge-at-impact (:knowledge-base *impacts*)
+  "At an impact the hinge holds its pin still: the frame gives the body at the pin
+whatever impulse keeps the pin's velocity just after, v' + omega' k x r, zero. The
+impulse acts at the pin: its moment about the centre is r x J."
+  (:arguments (?hinge :entity hinge :where (:body ?body :at (?px ?py))))
+  (:assert (impulse (hinge-impulse ?hinge) :from environment :on ?body)
+           (impulse-acts-at (hinge-impulse ?hinge) :on ?body)
+           (reported :impulses (:hinge-impulse-x ?hinge ?body (jx hinge-impulse ?hinge)))
+           (reported :impulses (:hinge-impulse-y ?hinge ?body (jy hinge-impulse ?hinge))))
+  (:equations (= (- (vel-after ?body :x) (* (angvel-after ?body) (hinge-arm-at-impact ?hinge :y))) 0)
+              (= (+ (vel-after ?body :y) (* (angvel-after ?body) (hinge-arm-at-impact ?hinge :x))) 0)
+              (= (angular-impulse-of (hinge-impulse ?hinge))
+                 (impulse-moment-at-point ?body (?px ?py) (hinge-impulse ?hinge)))))
+
 (define-phenomenon hinge
   "A rotating body's point pinned to the fixed frame (the hinge clause): the reaction
 force that holds it, with its moment about the body's centre."
   (:entities #'hinge-entities)
   (:impact-entities #'hinge-impact-entities)
   (:force :hinge :names 2 :words "force of hinge ~A on ~A" :label (:name 0))
+  (:impulse :hinge-impulse-x :names 2 :words "impulse of hinge ~A on ~A, x component")
+  (:impulse :hinge-impulse-y :names 2 :words "impulse of hinge ~A on ~A, y component")
   (:quantity :hinge-force :force :hinge))

@@ -17,7 +17,9 @@
 ;;;;   (energy-lost impact)         the kinetic energy the impact dissipates
 ;;;; A touching contact may push or not; which is chosen by consistency, as for a state:
 ;;;; a pushing contact pulls at once if its impulse is negative, one that does not push is
-;;;; penetrated at once if the bodies still approach through it. Impacts are frictionless.
+;;;; penetrated at once if the bodies still approach through it. Impacts are frictionless
+;;;; but for a rough contact with a rotating body; a rotating body's contact point moves with
+;;;; v + omega k x r, and its impulses have moments: src/kb/rotating-impacts.lisp.
 
 (in-package #:ames.kb)
 
@@ -47,7 +49,9 @@ minus just after."
                                  (- (+ (expt ,(entity-vector situation body :velocity :x) 2)
                                        (expt ,(entity-vector situation body :velocity :y) 2))
                                     (+ (expt (vel-after ,body :x) 2)
-                                       (expt (vel-after ,body :y) 2))))))
+                                       (expt (vel-after ,body :y) 2))))
+                     ;; a rotating body's (1/2) I omega^2 (rotating-impacts.lisp)
+                     append (rotational-energy-drop situation body)))
       0))
 
 (defun register-impact-templates (kb)
@@ -66,7 +70,8 @@ minus just after."
     (register-template kb 'separation-before
                        (lambda (situation contact)
                          (let ((entity (entity-named situation contact)))
-                           (flet ((velocity (body axis) (entity-vector situation body :velocity axis)))
+                           (flet ((velocity (body axis) ; its contact point's (rotating-impacts.lisp)
+                                    (point-velocity-at-impact situation contact body axis :before)))
                              (let ((a (entity-property entity :observer))
                                    (b (entity-property entity :obstacle)))
                                `(+ (* (- ,(velocity a :x) ,(velocity b :x)) ,(entity-vector situation contact :normal :x))
@@ -88,7 +93,12 @@ minus just after."
                        (lambda (situation contact)
                          (declare (ignore situation))
                          (list '< (list 'separation-after contact) 0))
-                       :documentation "The bodies still approach through the contact after the impact.")))
+                       :documentation "The bodies still approach through the contact after the impact.")
+    (register-template kb 'point-velocity-after
+                       (lambda (situation contact body axis)
+                         (point-velocity-at-impact situation contact body axis :after))
+                       :documentation "A component of a body's velocity just after the impact at a
+contact's point (its centre's when it does not rotate: rotating-impacts.lisp).")))
 
 (register-impact-templates *impacts*)
 
@@ -97,8 +107,10 @@ minus just after."
 normal, just after the impact."
   (:arguments (?contact :entity touching-contact :where (:observer ?body1 :obstacle ?body2)))
   (:equations (= (separation-after ?contact)
-                 (+ (* (- (vel-after ?body1 :x) (vel-after ?body2 :x)) (impact-normal ?contact :x))
-                    (* (- (vel-after ?body1 :y) (vel-after ?body2 :y)) (impact-normal ?contact :y))))))
+                 (+ (* (- (point-velocity-after ?contact ?body1 :x) (point-velocity-after ?contact ?body2 :x))
+                       (impact-normal ?contact :x))
+                    (* (- (point-velocity-after ?contact ?body1 :y) (point-velocity-after ?contact ?body2 :y))
+                       (impact-normal ?contact :y))))))
 
 (defcomponent contact-impulse (:knowledge-base *impacts*)
   "A touching contact may push its observer with an impulse along its outward normal (never
@@ -112,8 +124,8 @@ penetrated: the bodies do not approach through it after the impact."
   (:assert (impulse (impulse ?contact) :from ?body2 :on ?body1 :contact ?contact)
            (impulse (counter-impulse ?contact) :from ?body1 :on ?body2 :contact ?contact)
            (reported :impulses (:impulse ?body1 ?body2 (normal-impulse ?contact))))
-  (:equations (= (impulse-x (impulse ?contact)) (* (normal-impulse ?contact) (impact-normal ?contact :x)))
-              (= (impulse-y (impulse ?contact)) (* (normal-impulse ?contact) (impact-normal ?contact :y)))
+  (:equations (= (impulse-x (impulse ?contact)) (impulse-along-contact ?contact :x))
+              (= (impulse-y (impulse ?contact)) (impulse-along-contact ?contact :y))
               (= (separation-after ?contact)
                  (* -1 (restitution ?contact) (separation-before ?contact)))))
 
@@ -157,14 +169,31 @@ for E = 1 (an elastic impact)."
 
 ;;; The clause and the names (see phenomena.lisp)
 
-(defun touching-contact-entity (scenario contact observer obstacle normal)
+(defun touching-contact-entity (scenario contact observer obstacle normal &key arm)
   "The impact situation's entity of the CONTACT touching at the impact between OBSERVER
 and OBSTACLE, with its outward NORMAL there and the restitution SCENARIO's (restitution
-...) clauses give the pair."
-  (list 'touching-contact contact :observer observer :obstacle obstacle :normal normal
-        :restitution (ames.scenario:scenario-restitution scenario observer obstacle)))
+...) clauses give the pair; :ROUGH-ROTATING T and :FRICTION MU when a friction clause
+names the pair and one of them rotates (rotating-impacts.lisp), and the
+contact point's offset ARM from the observer's centre when the geometry gives it (a
+rotating body's corner: rotating-impacts.lisp)."
+  (append (list 'touching-contact contact :observer observer :obstacle obstacle :normal normal
+                :restitution (ames.scenario:scenario-restitution scenario observer obstacle))
+          (let ((friction (ames.scenario:find-scenario-friction observer obstacle scenario)))
+            (and friction
+                 (some (lambda (name)
+                         (let ((body (ames.scenario:find-scenario-body name scenario)))
+                           (and (ames.scenario:scenario-body-rotating-p body)
+                                (not (ames.scenario:scenario-body-fixed-p body)))))
+                       (list observer obstacle))
+                 ;; its friction impulse: rotating-impacts.lisp
+                 (list :rough-rotating t
+                       :friction (ames.scenario:scenario-friction-kinetic friction))))
+          (and arm (list :observer-arm arm))))
 
 (define-phenomenon impact
   "Frictionless impacts: impulses along the contact normals and Newton's law of
 restitution (the restitution clause)."
-  (:impulse :impulse :names 2 :words "impulse of ~*~A on ~:*~:*~A"))
+  (:impulse :impulse :names 2 :words "impulse of ~*~A on ~:*~:*~A")
+  (:impulse :friction-impulse :names 3 :words "friction impulse of ~*~A on ~:*~:*~A, along the tangent")
+  (:event :slides :words "~A slides on ~A through the impact")
+  (:event :sticks :words "~A stops slipping on ~A in the impact"))

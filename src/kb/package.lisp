@@ -39,6 +39,8 @@ syntax in src/scenario/.")
    ;; the impact model's quantities and entities (impacts.lisp)
    #:vel-after #:jx #:jy #:normal-impulse #:separation-after #:energy-lost #:touching-contact
    #:impulse
+   ;; impacts of rotating bodies (rotating-impacts.lisp)
+   #:angvel-after #:angular-impulse #:impulse-acts-at
    ;; the quantity terms the components speak of (heads of terms such as (acc particle :x))
    #:acc #:vel #:pos #:rel-acc #:fx #:fy #:normal-force
    #:path-acc #:path-position #:path-speed #:contact-gap #:friction-force

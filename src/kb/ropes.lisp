@@ -23,7 +23,8 @@
 ;;;; with e = 0 (a plastic jerk): an impulse J >= 0 along each segment, the same all along,
 ;;;; with the rope's length not growing just after; it is consistent not to jerk only when the
 ;;;; length does not grow. The impact situation describes the same rope and segment
-;;;; entities, and each body with its :position and :velocity just before.
+;;;; entities, and each body with its :position and :velocity just before (a rope wound on
+;;;; a disc: wound-rope-impacts.lisp).
 
 (in-package #:ames.kb)
 
@@ -163,13 +164,14 @@ third law gives the pull at its far end."
 (defcomponent rope-kinematics-at-impact (:knowledge-base *impacts*)
   "How fast a rope's length shrinks just after the impact (its separation: negative when
 it would stretch)."
-  (:arguments (?rope :entity rope))
+  (:arguments (?rope :entity rope :where (:wound nil)))
   (:equations (= (separation-after ?rope) (rope-shortening-after ?rope))))
 
 (defcomponent rope-jerk (:knowledge-base *impacts*)
   "A rope at its full length may jerk: an impulse J >= 0 along it that leaves its length
-not changing just after (a plastic impact); without one its length must not grow."
-  (:arguments (?rope :entity rope))
+not changing just after (a plastic impact); without one its length must not grow. (A
+rope wound on a disc: wound-ropes.lisp.)"
+  (:arguments (?rope :entity rope :where (:wound nil)))
   (:activation (rope-at-length ?rope) (approaching-after ?rope)
                (:event (:jerk ?rope)))
   (:deactivation (:when (< (rope-impulse ?rope) 0) :event (:would-push ?rope)))
@@ -225,16 +227,9 @@ segment is a WOUND-ROPE-SEGMENT. The same in a state and at an impact."
                                         (and (eq (first from) (first to)) (list :within-one-body t)))))))
 
 (defun rope-impact-entities (scenario)
-  "The entities of SCENARIO's ropes at an impact (ROPE-ENTITIES); signals
-UNMODELLED-SITUATION when a rope is wound on a disc (an impact that jerks a wound rope,
-or turns its disc, is not modelled)."
-  (let ((wound (find-if #'ames.scenario:scenario-rope-wound-ends (ames.scenario:scenario-ropes scenario))))
-    (when wound
-      (error 'unmodelled-situation
-             :datum (ames.scenario:scenario-rope-name wound)
-             :detail (format nil "An impact in a scenario whose rope ~(~A~) is wound on a turning disc is not modelled."
-                             (ames.scenario:scenario-rope-name wound))))
-    (rope-entities scenario)))
+  "The entities of SCENARIO's ropes at an impact: the same as in a state (ROPE-ENTITIES);
+a rope wound on a disc jerks as wound-ropes.lisp says."
+  (rope-entities scenario))
 
 (defun segment-phrases (scenario)
   "An alist rope segment entity -> its phrase (\"rope, piece 1\") for SCENARIO's ropes."

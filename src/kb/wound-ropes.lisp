@@ -31,7 +31,8 @@
 ;;;; relative to C (T then stays put relative to C, d the value the state starts with);
 ;;;; a piece that swings off that line (the tangent point wandering round the disc) is not
 ;;;; modelled: its state ends with (:turns S) and the next is refused.
-;;;; One wound end per rope (a rope wound on two discs is refused).
+;;;; One wound end per rope (a rope wound on two discs is refused). At an impact:
+;;;; wound-rope-impacts.lisp.
 
 (in-package #:ames.kb)
 

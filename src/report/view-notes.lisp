@@ -96,8 +96,8 @@ STATE has one, and the turning points."
 
 (defun impact-phrases (presenter value)
   "The phrases of a state's :IMPACT note VALUE: each body's velocity just before and
-just after (bodies at rest throughout left out), each non-zero impulse, and the kinetic
-energy lost."
+just after (bodies at rest throughout left out), each rotating body's angular velocity
+likewise, each non-zero impulse, and the kinetic energy lost."
   (append
    (loop for (body after) in (getf value :velocities-after)
          for before = (body-entry (getf value :velocities-before) body)
@@ -107,6 +107,12 @@ energy lost."
                            (present presenter (second before)) ") just before, ("
                            (present presenter (first after)) ", "
                            (present presenter (second after)) ") just after"))
+   (loop for (body after) in (getf value :angular-velocities-after)
+         for before = (body-entry (getf value :angular-velocities-before) body)
+         unless (and (eql before 0) (eql after 0))
+           collect (phrase (format nil "~A: angular velocity " (name-text body))
+                           (present presenter before) " just before, "
+                           (present presenter after) " just after"))
    (loop for entry in (getf value :impulses)
          for (label magnitude) = (multiple-value-list (impulse-entry entry))
          unless (or (null magnitude) (eql magnitude 0))

@@ -135,7 +135,12 @@ contacts among POINTS count when they are penetrated."
                                  (let ((relations (ames.engine:choice-point-relations point)))
                                    (if (rest relations) (cons 'and relations) (first relations)))))
             (unless (eq verdict :false)
-              (push (list key verdict fact (list :penetrates contact)) violations))))))
+              (push (list key verdict fact (list :penetrates contact)) violations))))
+        (when (and (eq (ames.engine:choice-point-kind point) :activation)
+                   (null contact) (instance-active-p run key))
+          (let ((relation (departing-relation run solved point)))
+            (when relation
+              (push (list key :true relation (list :departs key)) violations))))))
     (nreverse violations)))
 
 (defun degeneracies (run solved points)

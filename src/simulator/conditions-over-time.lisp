@@ -173,3 +173,23 @@ of them is active."
     (or (cons 'and (mapcar #'negated-extent (rest relation))))
     (t (error 'unsupported-situation :datum relation
                                      :detail "An extent relation of an unexpected form."))))
+
+(defun departing-relation (run solved point)
+  "The equation (= X Y) among the activation choice POINT's relations, over kinematic
+state quantities only (a rotating body's corner on a face: its gap), whose difference
+X - Y changes at once at the start of the state, its rate there decided non-zero under
+SOLVED; else NIL. An active instance held by such an equation is inconsistent: the
+bodies move apart through it (a corner leaving the floor it bounced on) or into it."
+  (loop for relation in (ames.engine:choice-point-relations point)
+        when (and (consp relation) (eq (first relation) '=)
+                  (every (lambda (term) (or (not (quantity-term-p term)) (state-quantity-p term)))
+                         (expression-variables relation))
+                  (some #'quantity-term-p (expression-variables relation))
+                  (member (one-sign (sign-of run (second (series-coefficients
+                                                          run solved
+                                                          (over-state-terms run solved
+                                                                            `(- ,(relation-lhs relation)
+                                                                                ,(relation-rhs relation)))
+                                                          2))))
+                          '(:positive :negative)))
+          return relation))

@@ -44,14 +44,24 @@ impact (AMES.KB:IMPACT-ENTITIES-OF: the ropes)."
     (append
      (mapcar (lambda (body)
                (let ((name (scenario-body-name body)))
-                 (list 'ames.kb:body name
-                       :fixed (and (scenario-body-fixed-p body) t)
-                       :driven (and (scenario-body-driven-p body) t)
-                       :mass (scenario-body-mass body)
-                       :position (body-position run name)
-                       :velocity (body-velocity run name))))
+                 (append (list 'ames.kb:body name
+                               :fixed (and (scenario-body-fixed-p body) t)
+                               :driven (and (scenario-body-driven-p body) t)
+                               :mass (scenario-body-mass body)
+                               :position (body-position run name)
+                               :velocity (body-velocity run name))
+                         (and (rotating-p run name)
+                              (append (rotation-properties body)
+                                      (list :angle (body-angle run name)
+                                            ;; cos and sin of the angle in the form the
+                                            ;; geometry's arms take (one radical, not two)
+                                            :turn (list (corner-now run name `(cos (ames.kb:angle ,name)))
+                                                        (corner-now run name `(sin (ames.kb:angle ,name))))
+                                            :angular-velocity (body-angular-velocity run name)))))))
              (scenario-bodies scenario))
      (ames.kb:impact-entities-of scenario)
+     (touching-corner-entities run (remove-if-not (lambda (entry) (member (first entry) contacts))
+                                                  (run-corner-contacts run)))
      (mapcar (lambda (contact)
                (let ((geometry (contact-geometry run contact)))
                  (destructuring-bind (observer obstacle) (contact-bodies run contact)
@@ -60,17 +70,76 @@ impact (AMES.KB:IMPACT-ENTITIES-OF: the ropes)."
                     (mapcar (lambda (x) (tidy run x))
                             (ames.geometry:contact-outward-normal
                              geometry (initial-arc-length run contact)))))))
-             contacts))))
+             ;; the corners' are TOUCHING-CORNER-ENTITIES
+             (remove-if (lambda (contact) (assoc contact (run-corner-contacts run))) contacts)))))
+
+(defun corner-now (run body expression)
+  "EXPRESSION, over the rotating BODY's (pos BODY :x), (pos BODY :y) and (angle BODY),
+at the current positions and angle."
+  (let ((position (body-position run body)))
+    (tidy run (substitute-expressions
+               (list (cons `(ames.kb:pos ,body :x) (first position))
+                     (cons `(ames.kb:pos ,body :y) (second position))
+                     (cons `(ames.kb:angle ,body) (body-angle run body)))
+               expression))))
+
+(defun touching-corners (run &optional reached)
+  "The corner contacts of RUN (corners.lisp: a rotating polygon's or segment's corner on
+a fixed face) whose gap is zero now, or whose reaching ends the state (named by the
+instance of one of the REACHED candidates: a state ended numerically leaves the gap at
+its rounding, about 1e-15), as entries (NAME BODY OBSTACLE . GEOMETRY)."
+  (let ((named (loop for candidate in reached
+                     for condition = (candidate-condition candidate)
+                     when condition
+                       append (alexandria:flatten
+                               (ames.engine:termination-condition-instance condition)))))
+    (remove-if-not (lambda (entry)
+                     (destructuring-bind (name body obstacle . geometry) entry
+                       (declare (ignore obstacle))
+                       (or (member name named) (touching-now-p run body geometry))))
+                   (run-corner-contacts run))))
+
+(defun touching-corner-entities (run corners)
+  "The touching contacts of the CORNERS touching now (TOUCHING-CORNERS), each with the
+face's normal and the corner's arm from the body's centre at the current configuration."
+  (loop for (name body obstacle . geometry) in corners
+        collect (ames.kb:touching-contact-entity
+                 (run-scenario run) name body obstacle
+                 (mapcar (lambda (x) (corner-now run body x))
+                         (ames.geometry:rotating-contact-normal geometry))
+                 :arm (mapcar (lambda (x) (corner-now run body x))
+                              (ames.geometry:rotating-contact-arm geometry)))))
+
+(defun impact-contact-descriptions (run contacts)
+  "Each of CONTACTS (shape contacts and corner contacts) as (BODY1 BODY2 :FEATURE F
+:OBSERVER-FEATURE G), as CONTACT-DESCRIPTIONS gives a shape contact's."
+  (loop for contact in contacts
+        for corner = (assoc contact (run-corner-contacts run))
+        collect (if corner
+                    (destructuring-bind (name body obstacle . geometry) corner
+                      (declare (ignore name))
+                      (list body obstacle
+                            :feature (ames.geometry:rotating-contact-other-feature geometry)
+                            :observer-feature (ames.geometry:rotating-contact-feature geometry)))
+                    (first (contact-descriptions run (list contact))))))
+
+(defun rotations-after (run solved)
+  "The rotating bodies' (BODY THETA OMEGA) just after the impact: the angle unchanged,
+the angular velocity (ames.kb:angvel-after BODY) in SOLVED."
+  (loop for (body theta) in (run-rotations run)
+        collect (list body theta (quantity-value solved `(ames.kb:angvel-after ,body)))))
 
 (defun impact-decider (run)
-  "The decider of an impact's model: whether a touching contact pushes is always a
-choice (settled by consistency); everything else goes to Maxima, and what the
+  "The decider of an impact's model: a relation over the impact's unknowns (whether a
+touching contact pushes, whether a rough one sticks) is always a choice (settled by
+consistency); everything else goes to Maxima, and what the
 assumptions leave open to the run's parameter values when it has them (the fact is
 recorded as assumed from the values: ames.algebra:DECIDE-BY-VALUES). An impact is no
 place to branch: its outcome is one, the question only how the algebra shows it."
   (lambda (relation)
-    (if (and (consp relation) (consp (second relation))
-             (eq (first (second relation)) 'ames.kb:separation-after))
+    (if (and (consp relation) (some #'quantity-term-p (expression-variables relation)))
+        ;; over the impact's unknowns (a contact's separation just after, a slip):
+        ;; settled by consistency
         :choice
         (let* ((relation (constant-roots-taken run relation))
                (verdict (decide run relation)))
@@ -85,12 +154,13 @@ state's."
     (unwind-protect (funcall thunk)
       (setf (run-model run) saved (run-decider-override run) nil))))
 
-(defun resolve-impact (run)
-  "Resolve the impact at the run's current positions and velocities (those just before):
+(defun resolve-impact (run &optional reached)
+  "Resolve the impact at the run's current positions and velocities (those just before),
+REACHED the impulsive candidates that end the state (see TOUCHING-CORNERS):
 returns the velocities just after (an alist body -> (VX VY)) and a plist describing the
 impact (:CONTACTS, :IMPULSES, :ENERGY-LOST, :VELOCITIES-BEFORE, :VELOCITIES-AFTER,
 :CHOICES). Signals what the consistency search signals."
-  (let* ((contacts (touching-contacts run))
+  (let* ((contacts (append (touching-contacts run) (mapcar #'first (touching-corners run reached))))
          (decider (impact-decider run))
          (situation (ames.engine:make-situation (impact-entities run contacts) :data run))
          (model (ames.engine:build-model (ames.engine:make-engine (ames.kb:impact-knowledge-base))
@@ -109,14 +179,22 @@ impact (:CONTACTS, :IMPULSES, :ENERGY-LOST, :VELOCITIES-BEFORE, :VELOCITIES-AFTE
               (report (loop for (section entry) in (model-reported model)
                             collect (list section (value-entry solved entry)))))
          (values after
-                 (list :contacts (contact-descriptions run (active-contact-instances run contacts))
+                 (append
+                 (list :contacts (impact-contact-descriptions run (active-contact-instances run contacts))
                        :impulses (loop for (section entry) in report
                                        when (eq section :impulses) collect entry)
                        :energy-lost (loop for (section entry) in report
                                           when (eq section :impact) return (second entry))
                        :velocities-before (run-velocities run)
                        :velocities-after after
-                       :choices (trial-notes trial))))))))
+                       :choices (trial-notes trial))
+                 ;; rotating bodies: their angular velocities just before and after
+                 (and (run-rotations run)
+                      (list :angular-velocities-before
+                            (loop for (body nil omega) in (run-rotations run) collect (list body omega))
+                            :angular-velocities-after
+                            (loop for (body nil omega) in (rotations-after run solved)
+                                  collect (list body omega)))))))))))
 
 (defun active-contact-instances (run contacts)
   "Those of the touching CONTACTS an impulse acts through in the impact's model (an
@@ -194,3 +272,11 @@ LAMBDA D / (1 - LAMBDA). Else NIL."
         (let ((cycle (tidy run `(- ,(getf current :time) ,(getf previous :time)) :full)))
           (list :factor factor :cycle cycle
                 :time (tidy run `(+ ,(getf current :time) (/ (* ,factor ,cycle) (- 1 ,factor))) :full)))))))
+
+(defun impact-rotations (run impact)
+  "RUN's rotations (BODY THETA OMEGA) once the resolved IMPACT has changed the angular
+velocities (its :ANGULAR-VELOCITIES-AFTER; the angles do not jump)."
+  (let ((after (getf impact :angular-velocities-after)))
+    (loop for (body theta omega) in (run-rotations run)
+          collect (list body theta (let ((entry (assoc body after)))
+                                     (if entry (second entry) omega))))))

@@ -155,8 +155,14 @@ terms) set to 0: there they only appear multiplied by the contact's zero curvatu
   "Solve the compact EQUATIONS for UNKNOWNS through Maxima: the alist of the unique
 solution, block by block where the structure allows (see structure.lisp). Signals
 UNSOLVABLE-MODEL when there is none or several."
-  (or (solve-by-blocks run equations unknowns)
-      (solve-whole run equations unknowns)))
+  (handler-case (or (solve-by-blocks run equations unknowns)
+                    (solve-whole run equations unknowns))
+    (ames.maxima:maxima-error (condition)
+      ;; Maxima's solve() can fail on coefficients with radicals (sqrt(l^2 - d^2) beside
+      ;; sqrt(g)...: "quotient by a polynomial of higher degree"); the same system with
+      ;; each radical named apart solves
+      (or (solve-with-radicals-named run equations unknowns)
+          (error condition)))))
 
 (defun solve-whole (run equations unknowns)
   "Solve the compact EQUATIONS for UNKNOWNS in one request: the alist of the unique

@@ -62,8 +62,9 @@ CHECK-INCREMENTAL."
                                (mapcar #'candidate-change (set-difference fired impulsive))
                                :test #'equal))))
     (when impulsive
-      (multiple-value-bind (after impact) (resolve-impact run)
+      (multiple-value-bind (after impact) (resolve-impact run impulsive)
         (setf (run-velocities run) after
+              (run-rotations run) (impact-rotations run impact)
               (state-impact state) impact
               (state-end-event state) (impact-event (state-end-event state) impact))
         (let ((events (state-simultaneous-events state)))

@@ -109,3 +109,48 @@ the whole system). Also returns the number of blocks."
             (unless (and (consp solutions) (null (rest solutions)))
               (return-from solve-by-blocks nil))
             (setf values (append values (first solutions)))))))))
+
+;;; A system Maxima cannot solve for its radicals
+
+(defun radical-kernels (expression)
+  "The distinct subexpressions of EXPRESSION that are radicals, (sqrt X) or (expt X P)
+with P a non-integer rational, outermost first."
+  (let ((found '()))
+    (labels ((walk (x)
+               (cond ((quantity-term-p x))
+                     ((and (consp x)
+                           (or (eq (first x) 'sqrt)
+                               (and (eq (first x) 'expt) (rationalp (third x))
+                                    (not (integerp (third x))))))
+                      (pushnew x found :test #'equal))
+                     ((consp x) (mapc #'walk (rest x))))))
+      (walk expression))
+    (nreverse found)))
+
+(defun replace-subexpressions (bindings expression)
+  "EXPRESSION with each subexpression EQUAL to the CAR of an entry of the alist BINDINGS
+replaced by that entry's CDR (outermost first). Purely syntactic."
+  (let ((entry (assoc expression bindings :test #'equal)))
+    (cond (entry (cdr entry))
+          ((and (consp expression) (not (quantity-term-p expression)))
+           (cons (car expression)
+                 (mapcar (lambda (x) (replace-subexpressions bindings x)) (cdr expression))))
+          (t expression))))
+
+(defun solve-with-radicals-named (run equations unknowns)
+  "The solution of EQUATIONS for UNKNOWNS solved with each radical free of the unknowns
+replaced by a term of its own, (RADICAL-KERNEL K), put back into the values after; NIL
+when there is no such radical to name."
+  (let* ((kernels (remove-if (lambda (kernel)
+                               (some (lambda (term) (member term unknowns :test #'equal))
+                                     (expression-variables kernel)))
+                             (radical-kernels (cons 'and equations))))
+         (names (loop for kernel in kernels for k from 0
+                      collect (cons kernel (list 'radical-kernel k)))))
+    (when names
+      (let ((solution (solve-whole run (mapcar (lambda (equation) (replace-subexpressions names equation))
+                                               equations)
+                                   unknowns))
+            (back (mapcar (lambda (entry) (cons (cdr entry) (car entry))) names)))
+        (mapcar (lambda (entry) (cons (car entry) (substitute-expressions back (cdr entry))))
+                solution)))))
