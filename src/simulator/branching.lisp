@@ -30,11 +30,6 @@
 anew from the start, so a deeper tree costs a run per branch; a fork nested in a fork is
 mostly on a fact the outer one should have decided.")
 
-(defparameter *largest-boundary-fact* 40
-  "The boundary branch (X = 0, a parameter solved for and substituted) is tried only for
-a missing fact of at most this many atoms and operators: solving a long polynomial for
-each parameter costs much, and its boundary is no textbook case.")
-
 (defun branch-room-p ()
   "True when the current tree may still fork."
   (let ((count (getf *branching* :count 0)) (depth (getf *branching* :depth 0)))

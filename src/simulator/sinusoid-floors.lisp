@@ -17,6 +17,13 @@
 
 (in-package #:ames.simulator)
 
+(defparameter *largest-boundary-fact* 40
+  "The boundary branch (X = 0, a parameter solved for and substituted) is tried only for
+a missing fact of at most this many atoms and operators: solving a long polynomial for
+each parameter costs much, and its boundary is no textbook case. Also the
+largest floor fact of an oscillation a run branches on (SINUSOID-FLOOR-FACT); defined
+here, before its first use, for branching.lisp too.")
+
 (defun time-sinusoid (run g)
   "(A B C W) with G = A + B cos(W tau) + C sin(W tau), or NIL."
   (and (trigonometric-in-time-p g)
