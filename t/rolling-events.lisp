@@ -103,3 +103,48 @@ checked, no failure."
            (check (self-check-of history)))
       (is (equal '(0 1) (getf check :checked)) "~S" check)
       (is (null (getf check :failures)) "~S" (getf check :failures)))))
+
+;;; A disc over a corner
+
+(test disc-leaves-a-smooth-table-edge
+  "A disc released at rest at th0 from the top of a smooth edge: nothing turns it (omega =
+0 along the whole arc), N = m g (3 cos theta - 2 cos th0), it leaves the edge
+((:lift-off disc table)) at cos theta = (2/3) cos th0 (its centre at 2 r cos(th0) / 3 above
+the edge) at the speed sqrt(2 g r cos(th0) / 3); the energy m g r cos th0 is conserved.
+(The arc length s is measured from the horizontal: cos theta = sin(s/r).)"
+  (with-fixture simulator-bridge ()
+    (let ((scenario (scenario-named "disc-over-a-table-edge")))
+      (multiple-value-bind (history states) (run-of scenario bridge)
+        (is (eq :complete (ames::history-outcome history)))
+        (let ((state (first states))
+              (s ames.simulator::+arc-length+))
+          (flet ((x (form) (in-scenario-terms scenario form)))
+            (call-with-scenario-facts
+             bridge scenario
+             (lambda ()
+               (is (same-name-p* (first (ames::state-end-event state)) "LIFT-OFF")
+                   "end: ~S" (ames::state-end-event state))
+               (is-same bridge "N" (normal-force-between state "DISC" "TABLE")
+                        (x `(* m g (- (* 3 (sin (/ ,s r))) (* 2 (cos th0))))))
+               (is-same bridge "omega along the arc"
+                        (rotation-entry (ames.simulator:state-angular-velocities state) "DISC") 0)
+               (is-same bridge "centre height at lift-off"
+                        (second (per-body (ames::state-final-positions state) "DISC"))
+                        (x '(* 2/3 r (cos th0))))
+               (is-same bridge "omega at lift-off"
+                        (rotation-entry (ames.simulator:state-final-angular-velocities state) "DISC") 0)
+               (is-same bridge "energy" (ames.simulator::state-total-energy state)
+                        (x '(* m g r (cos th0))))
+               (is-same bridge "speed at lift-off"
+                        (second (assoc "SPEED-AT-LIFT-OFF" (ames::history-answers history)
+                                       :test #'same-name-p*))
+                        (x '(sqrt (* 2/3 g r (cos th0))))))))
+          (is (eq :forever (ames::state-duration (second states)))))))))
+
+(test disc-leaves-a-smooth-table-edge-with-values
+  "Under the scenario's values the run passes its self-check, both states checked."
+  (with-fixture simulator-bridge ()
+    (let* ((history (ames:run-scenario (scenario-named "disc-over-a-table-edge") :numeric t :bridge bridge))
+           (check (self-check-of history)))
+      (is (equal '(0 1) (getf check :checked)) "~S" check)
+      (is (null (getf check :failures)) "~S" (getf check :failures)))))
