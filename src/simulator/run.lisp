@@ -167,11 +167,26 @@ the parameters' declared signs (SIGN-ALGEBRA) answer first; Maxima where they do
 (defun body-position (run body) (second (assoc body (run-positions run))))
 (defun body-velocity (run body) (second (assoc body (run-velocities run))))
 
+(defun inverse-angle-function-p (expression &optional inside)
+  "True when EXPRESSION holds sin, cos or tan of an angle with asin, acos or atan in it
+(of anything, constants too). INSIDE: within such a sin, cos or tan already."
+  (and (consp expression)
+       (or (and inside (member (first expression) '(asin acos atan)))
+           (let ((inside (or inside (member (first expression) '(sin cos tan)))))
+             (some (lambda (x) (inverse-angle-function-p x inside)) (rest expression))))))
+
 (defun relative-initial-state (run contact)
-  "The observer's position and velocity relative to the obstacle at the state's start."
-  (destructuring-bind (observer obstacle) (contact-bodies run contact)
-    (values (ames.geometry:v- (body-position run observer) (body-position run obstacle))
-            (ames.geometry:v- (body-velocity run observer) (body-velocity run obstacle)))))
+  "The observer's position and velocity relative to the obstacle at the state's start.
+A component with sin or cos of an inverse trigonometric angle (a state that ended at a
+root 2 atan(u)) comes with those expanded into algebra (an identity): the geometry
+places such a point on its contact only then."
+  (flet ((algebraic (vector)
+           (mapcar (lambda (x)
+                     (if (inverse-angle-function-p x) (tidy run x :expanded-trigexpand) x))
+                   vector)))
+    (destructuring-bind (observer obstacle) (contact-bodies run contact)
+      (values (algebraic (ames.geometry:v- (body-position run observer) (body-position run obstacle)))
+              (algebraic (ames.geometry:v- (body-velocity run observer) (body-velocity run obstacle)))))))
 
 ;;; Setting a run up
 
