@@ -149,3 +149,53 @@ the edge) at the speed sqrt(2 g r cos(th0) / 3); the energy m g r cos th0 is con
            (check (self-check-of history)))
       (is (equal '(0 1) (getf check :checked)) "~S" check)
       (is (null (getf check :failures)) "~S" (getf check :failures)))))
+
+(test disc-rolls-over-a-rough-table-edge-until-it-slips
+  "A disc released at rest at cos th0 = 4/5 on a rough edge (mu = 1) rolls about it: omega =
+-v / r, v^2 = (4/3) g r (cos th0 - cos theta), N = m g (7 cos theta - 4 cos th0) / 3 (zero at
+the textbook's cos theta = (4/7) cos th0 = 16/35), static friction m g sin(theta) / 3; it
+starts to slip first, where sin theta = mu (7 cos theta - 4 cos th0), with cos theta >
+16/35. (cos theta = sin(s/r), sin theta = cos(s/r) over the arc length s.)"
+  (with-fixture simulator-bridge ()
+    (let ((scenario (scenario-named "disc-over-a-rough-table-edge")))
+      (multiple-value-bind (history states) (run-of scenario bridge)
+        (is (eq :state-limit (ames::history-outcome history)))
+        (let ((state (first states))
+              (s ames.simulator::+arc-length+))
+          (flet ((x (form) (subst s 'tau (in-scenario-terms scenario form))))
+            (call-with-scenario-facts
+             bridge scenario
+             (lambda ()
+               ;; cos theta = sin(tau/r), sin theta = cos(tau/r), tau read as the arc length
+               (is-same bridge "N" (normal-force-between state "DISC" "TABLE")
+                        (x '(/ (* m g (- (* 7 (sin (/ tau r))) (* 4 4/5))) 3)))
+               (is-same bridge "N's root: cos theta = (4/7) cos th0"
+                        (subst '(asin 16/35) (x '(/ tau r)) (normal-force-between state "DISC" "TABLE")
+                               :test #'equal)
+                        0)
+               (check-friction bridge state "DISC" "TABLE" :static (x '(/ (* m g (cos (/ tau r))) 3)))
+               (let ((omega (rotation-entry (ames.simulator:state-angular-velocities state) "DISC")))
+                 ;; rolling clockwise over the edge: omega r = -v
+                 (is-same bridge "omega r = -v, v^2 = (4/3) g r (cos th0 - cos theta)"
+                          `(* ,omega ,(x 'r))
+                          (x '(- (sqrt (* 4/3 g r (- 4/5 (sin (/ tau r)))))))))
+               (is (same-name-p* (first (ames::state-end-event state)) "STARTS-SLIDING")
+                   "end: ~S" (ames::state-end-event state))
+               (let ((cos-theta (ames.maxima:simplify
+                                 bridge `(/ ,(second (per-body (ames::state-final-positions state) "DISC"))
+                                            ,(x 'r)))))
+                 (is (eq :true (ames.algebra:decide
+                                bridge `(= (+ (expt ,cos-theta 2) (expt (- (* 7 ,cos-theta) 16/5) 2)) 1)))
+                     "sin theta = 7 cos theta - 16/5 at the slip: cos theta = ~S" cos-theta)
+                 (is (eq :true (ames.algebra:decide bridge `(> (- (* 7 ,cos-theta) 16/5) 0))))
+                 (is (eq :true (ames.algebra:decide bridge `(> ,cos-theta 16/35)))
+                     "it slips before the rolling lift-off"))))))))))
+
+(test disc-over-a-rough-table-edge-with-values
+  "Under the scenario's values the rolling state passes its self-check."
+  (with-fixture simulator-bridge ()
+    (let* ((history (ames:run-scenario (scenario-named "disc-over-a-rough-table-edge") :numeric t
+                                                                                       :bridge bridge))
+           (check (self-check-of history)))
+      (is (equal '(0) (getf check :checked)) "~S" check)
+      (is (null (getf check :failures)) "~S" (getf check :failures)))))
