@@ -6,14 +6,16 @@
 ;;;; and rolls (mu large enough for the hoop, which needs mu > tan(a)/2).
 ;;;; Expected results (textbook): the disc accelerates at (2/3) g sin a and reaches the foot
 ;;;; after sqrt(3 L / (g sin a)); the hoop at (1/2) g sin a, after sqrt(4 L / (g sin a)),
-;;;; L = h / (2 sin a) the half slope.
+;;;; L = h / (2 sin a) the half slope. The second incline stands d to the right, far enough
+;;;; that the disc starts clear of it (d > h / tan a + 2 r: with d > h / tan a alone the
+;;;; disc may overlap its corner when h is close to r and a steep).
 
 (scenario hoop-and-disc-race
   "A hoop and a disc roll down two identical inclines: the disc arrives first."
   (parameters (m :positive (:value 1)) (g :positive (:value 981/100)) (r :positive (:value 1/5))
               (h :positive (> h r) (:value 2)) (a (> a 0) (< a (/ pi 2)) (:value (deg 30)))
               (mu :positive (> mu (/ (tan a) 2)) (:value 1/2))
-              (d :positive (> d (/ h (tan a))) (:value 10)))
+              (d :positive (> d (+ (/ h (tan a)) (* 2 r))) (:value 10)))
   (gravity g)
   (body incline-1 :fixed t :shape (polygon (0 0) ((/ h (tan a)) 0) (0 h)))
   (body incline-2 :fixed t :position (d 0) :shape (polygon (0 0) ((/ h (tan a)) 0) (0 h)))

@@ -95,3 +95,46 @@ then radcan()ed, is 0."
               (or (eql reduced 0)
                   (eql (simplify bridge reduced :strategy :radcan) 0)))))
     (maxima-condition () nil)))
+
+;;; Constant factors near zero in a relation with variables
+
+(defun near-zero-constants (expression)
+  "The constant subexpressions of EXPRESSION (no variables) with a trigonometric or
+inverse trigonometric function whose double value is 0 to round-off (relative to their
+terms' sizes when a sum), outermost only, each once."
+  (let ((found '()))
+    (labels ((size (x)
+               (let ((v (ignore-errors (expression-value x))))
+                 (and (realp v) (abs v))))
+             (walk (x)
+               (when (consp x)
+                 (if (and (mentions-float-decided-p x) (null (expression-variables x)))
+                     (let ((value (size x))
+                           (scale (if (eq (expression-operator x) '+)
+                                      (reduce #'+ (mapcar (lambda (term) (or (size term) 0))
+                                                          (expression-arguments x)))
+                                      1d0)))
+                       (if (and value (<= value (* *round-off-difference* (max 1d0 scale))))
+                           (pushnew x found :test #'equal)
+                           (mapc #'walk (expression-arguments x))))
+                     (mapc #'walk (expression-arguments x))))))
+      (walk expression))
+    (nreverse found)))
+
+(defun decide-near-zero-constants (bridge relation)
+  "RELATION (= /= < > <= >=) with variables, in which a constant subexpression with a
+trigonometric function is 0 to round-off (NEAR-ZERO-CONSTANTS): Maxima's sign() would
+take its float's sign (cos(2 atan 3 - atan(4/3)) r^2 <= 0 was false). Each such constant
+proven exactly zero (EXACTLY-ZERO-P) is replaced by 0 and the relation decided afresh;
+:UNKNOWN when one is not proven zero (its sign is beyond a float's reach).
+:NOT-APPLICABLE when RELATION has no such constant, or no variables (DECIDE-CONSTANT-
+NEAR-ZERO's case)."
+  (if (or (null (expression-variables relation))
+          (not (mentions-float-decided-p relation)))
+      :not-applicable
+      (let ((constants (near-zero-constants relation)))
+        (cond ((null constants) :not-applicable)
+              ((every (lambda (c) (exactly-zero-p bridge c)) constants)
+               (decide bridge (substitute-subexpressions (mapcar (lambda (c) (cons c 0)) constants)
+                                                         relation)))
+              (t :unknown)))))

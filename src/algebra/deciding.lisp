@@ -83,6 +83,10 @@ whose sides agree to round-off is decided exactly or left :UNKNOWN
   (let ((constant (decide-constant-near-zero bridge relation)))
     (unless (eq constant :not-applicable)
       (return-from decide-relation constant)))
+  ;; the same for a constant factor or term of a relation with variables
+  (let ((constant (decide-near-zero-constants bridge relation)))
+    (unless (eq constant :not-applicable)
+      (return-from decide-relation constant)))
   (when (imaginary-radicands bridge relation)
     (let ((verdict (decide-with-imaginary-radicands bridge relation)))
       (unless (eq verdict :fall-back)

@@ -84,12 +84,11 @@ relation or NIL (see the file header)."
       (let ((first (first-positive-root `(+ (* (- ,a ,b) (expt ,u 2)) (* 2 ,c ,u) (+ ,a ,b))))
             (even (eq (decide bridge `(= ,c 0)) :true)))
         (when first
-          ;; without a sine term, the only root in (0, pi) is acos(-A/B): cos is one-to-one there;
-          ;; without a cosine term, the roots in (0, pi) are asin(-A/C) and pi - asin(-A/C), with
-          ;; -A/C in (0, 1]: the first is asin(-A/C), the textbook's form
+          ;; without a sine term, the only root in (0, pi) is acos(-A/B): cos is one-to-one
+          ;; there; without a cosine term, the earliest is asin(-A/C) (see ODD-ANGLE)
           (return-from earliest-angle
             (values (cond (even `(acos (/ (- ,a) ,b)))
-                          ((eq (decide bridge `(= ,b 0)) :true) `(asin (/ (- ,a) ,c)))
+                          ((odd-angle bridge a b c nil))
                           (t `(* 2 (atan ,first))))
                     :found))))
       (when (settled `(= ,a ,b))
@@ -97,13 +96,27 @@ relation or NIL (see the file header)."
       (let ((second (first-positive-root `(- (+ (* (+ ,a ,b) (expt ,u 2)) (- ,a ,b)) (* 2 ,c ,u)))))
         (when second
           (return-from earliest-angle
-            (values (if (eq (decide bridge `(= ,c 0)) :true)
-                        `(- (* 2 pi) (acos (/ (- ,a) ,b)))
-                        `(+ pi (* 2 (atan ,second))))
+            (values (cond ((eq (decide bridge `(= ,c 0)) :true)
+                           `(- (* 2 pi) (acos (/ (- ,a) ,b))))
+                          ((odd-angle bridge a b c t))
+                          (t `(+ pi (* 2 (atan ,second)))))
                     :found))))
       (if (settled `(= (+ ,a ,b) 0))
           (values '(* 2 pi) :found)
           (values nil :none)))))
+
+(defun odd-angle (bridge a b c past-pi)
+  "The earliest root of A + C sin x in (0, pi) (in (pi, 2 pi) when PAST-PI) written
+asin(-A/C) (pi + asin(A/C)) when B is proven 0, else NIL. Called once the half-angle
+quadratic has proven that root: its u = tan(x/2) is the smaller positive root of
+A u^2 + 2 C u + A, of product 1, so u <= 1 and x <= pi/2 (past pi, likewise for x - pi),
+where asin is the inverse of sin. The same angle as 2 atan(u), but u = (-C - sqrt(C^2 -
+A^2))/A loses its digits where A is small beside C, and sin, cos of asin are algebraic
+(a later state's initial values, the facts about the root stay short)."
+  (when (eq (decide bridge `(= ,b 0)) :true)
+    (if past-pi
+        `(+ pi (asin (/ ,a ,c)))
+        `(asin (/ (- ,a) ,c)))))
 
 (defun root-checked-p (bridge expression variable root coefficients)
   "True when EXPRESSION vanishes at VARIABLE = ROOT: by simplification, else at

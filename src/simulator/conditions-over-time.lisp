@@ -40,7 +40,7 @@ terms (its gap, positive outside; its extent relations)."
 SOLVED's state terms."
   (let* ((geometry (contact-geometry run contact))
          (q0 (relative-initial-state run contact))
-         (s0 (ames.geometry:contact-parameter geometry q0)))
+         (s0 (contact-parameter-of run geometry q0)))
     `(+ ,s0 ,(ames.geometry:dot (ames.geometry:v- (relative-position-terms run solved contact) q0)
                       (ames.geometry:contact-unit-tangent geometry s0)))))
 
@@ -49,7 +49,7 @@ SOLVED's state terms."
 relative to the obstacle along the contact's constant unit tangent -- over SOLVED's
 state terms."
   (let* ((geometry (contact-geometry run contact))
-         (s0 (ames.geometry:contact-parameter geometry (relative-initial-state run contact))))
+         (s0 (contact-parameter-of run geometry (relative-initial-state run contact))))
     (destructuring-bind (observer obstacle) (contact-bodies run contact)
       (ames.geometry:dot (ames.geometry:v- (body-velocity-terms run solved observer)
                      (body-velocity-terms run solved obstacle))

@@ -237,6 +237,10 @@ searched, under parameter values: see numeric.lisp)."
                  (setf (group-kind group) :numeric)))
         ;; a rotating body left one degree of freedom, its angle (rotation-path.lisp)
         (:numeric (or (integrate-equilibrium run solved group)
+                      ;; a disc rolling along its curve: one degree of freedom (rolling-path.lisp)
+                      (and (group-contact group)
+                           (integrate-rolling-path run solved group)
+                           (setf (group-kind group) :path))
                       (integrate-rotation-path run solved group)))))))
 
 (defun integrate-linear (run solved group)

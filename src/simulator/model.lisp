@@ -265,8 +265,8 @@ terms stay)."
 
 (defun initial-arc-length (run contact)
   "The arc length of the observer's position on CONTACT at the start of the state."
-  (tidy run (ames.geometry:contact-parameter (contact-geometry run contact)
-                                             (relative-initial-state run contact))))
+  (tidy run (contact-parameter-of run (contact-geometry run contact)
+                                  (relative-initial-state run contact))))
 
 (defun initial-arc-speed (run contact)
   "The rate of the arc length along CONTACT at the start of the state."

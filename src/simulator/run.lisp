@@ -167,6 +167,26 @@ the parameters' declared signs (SIGN-ALGEBRA) answer first; Maxima where they do
 (defun body-position (run body) (second (assoc body (run-positions run))))
 (defun body-velocity (run body) (second (assoc body (run-velocities run))))
 
+(defun inverse-angle-function-p (expression &optional inside)
+  "True when EXPRESSION holds sin, cos or tan of an angle with asin, acos or atan in it
+(of anything, constants too). INSIDE: within such a sin, cos or tan already."
+  (and (consp expression)
+       (or (and inside (member (first expression) '(asin acos atan)))
+           (let ((inside (or inside (member (first expression) '(sin cos tan)))))
+             (some (lambda (x) (inverse-angle-function-p x inside)) (rest expression))))))
+
+(defun contact-parameter-of (run geometry q)
+  "The arc length at which the relative position Q lies on the contact GEOMETRY
+(AMES.GEOMETRY:CONTACT-PARAMETER). A position with sin or cos of an inverse
+trigonometric angle (a state that ended at a root 2 atan(u)) that the geometry cannot
+place is placed once those are expanded into algebra (an identity, the same point)."
+  (handler-case (ames.geometry:contact-parameter geometry q)
+    (ames.geometry:position-not-on-contact (condition)
+      (if (some #'inverse-angle-function-p q)
+          (ames.geometry:contact-parameter
+           geometry (mapcar (lambda (x) (tidy run x :expanded-trigexpand)) q))
+          (error condition)))))
+
 (defun relative-initial-state (run contact)
   "The observer's position and velocity relative to the obstacle at the state's start."
   (destructuring-bind (observer obstacle) (contact-bodies run contact)
@@ -248,7 +268,7 @@ on its locus): positive when separating, negative when approaching."
   (let ((geometry (contact-geometry run contact)))
     (multiple-value-bind (q v) (relative-initial-state run contact)
       (tidy run (ames.geometry:dot v (ames.geometry:contact-outward-normal
-                            geometry (ames.geometry:contact-parameter geometry q)))))))
+                            geometry (contact-parameter-of run geometry q)))))))
 
 (defun touching-alternatives (run contact)
   "The alternatives of CONTACT (see CORNER-ALTERNATIVES) on whose locus the observer
