@@ -6,8 +6,8 @@
 ;;;; centre at the angle th0 from the vertical through the edge. The edge is smooth: its
 ;;;; force passes through the disc's centre, so nothing turns the disc (it keeps omega = 0,
 ;;;; tied to its path with the factor 0: src/simulator/rolling-path.lisp) and its centre
-;;;; moves on the circle of radius r round the edge like a particle on a sphere. Expected
-;;;; results (textbook): with theta the angle of the centre from the vertical,
+;;;; moves on the circle of radius r round the edge like a particle on a sphere.
+;;;; Expected results (textbook): with theta the angle of the centre from the vertical,
 ;;;; v^2 = 2 g r (cos th0 - cos theta), N = m g (3 cos theta - 2 cos th0); the disc leaves
 ;;;; the edge ((:lift-off disc table)) at cos theta = (2/3) cos th0, moving at
 ;;;; sqrt(2 g r cos(th0) / 3), still not turning; then it falls freely. (On a rough edge it
