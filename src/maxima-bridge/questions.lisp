@@ -61,14 +61,21 @@ an error."
           '$pnz
           (error condition)))))
 
+(defvar *prefetch-signs* t
+  "True when FORM-SIGNS asks all the sign() requests of a form in one round trip (see
+PREFETCH-REQUESTS), before it reads their answers one at a time.")
+
 (defun form-signs (bridge form &key datum (enough (constantly nil)))
   "The signs the real Maxima FORM may have under the current assumptions: what the
 answers to SIGN-REQUESTS allow together. They are asked one at a time, cheapest first
 (each answer cached on its own), and the asking stops once at most one sign is left or
 ENOUGH, a predicate on the signs found so far, is true; further answers could only
 narrow the signs (an empty intersection would mean contradictory answers)."
-  (let ((signs (list :positive :negative :zero)))
-    (dolist (request (sign-requests form) signs)
+  (let ((signs (list :positive :negative :zero))
+        (requests (sign-requests form)))
+    ;; asked together: most forms that sign() does not settle at once need every form
+    (when *prefetch-signs* (prefetch-requests bridge requests))
+    (dolist (request requests signs)
       (setf signs (narrowed-signs signs (imaginary-as-unknown
                                          (lambda () (maxima-request bridge request :datum datum)))))
       (when (or (null (rest signs)) (funcall enough signs))
@@ -118,6 +125,24 @@ does not see that X > 0 fails."
   (maxima-is bridge (list* (cdr (assoc (expression-operator relation) *opposite-relations*))
                            (expression-arguments relation))
              :datum datum))
+
+(defun prefetch-opposite-and-signs (bridge relation &key with-is)
+  "Ask, in one round trip, the questions DECIDE asks of RELATION (= /= < > <= >=) after
+is(): is() of its opposite (MAXIMA-IS-OPPOSITE) and the sign() requests of the
+difference of its sides (MAXIMA-DIFFERENCE-SIGNS), with WITH-IS is() of RELATION itself
+(MAXIMA-IS) too; their answers are cached as theirs (see PREFETCH-REQUESTS). A relation
+that does not translate is left to them."
+  (flet ((is-request (operator)
+           (mcall "$IS" (is-question bridge (list* operator (expression-arguments relation))))))
+    (let ((requests (handler-case
+                        (append (and with-is (list (is-request (expression-operator relation))))
+                                (list (is-request (cdr (assoc (expression-operator relation)
+                                                              *opposite-relations*))))
+                                (sign-requests (mdifference (to-mx bridge (relation-lhs relation))
+                                                            (to-mx bridge (relation-rhs relation)))))
+                      (maxima-condition () nil))))
+      (when (and requests *prefetch-signs*)
+        (prefetch-requests bridge requests)))))
 
 (defun maxima-fact-signs (bridge x &key (datum x))
   "The signs of the prefix X that is() shows from the facts in force (X >= 0, X < 0
