@@ -95,13 +95,14 @@ whose sides agree to round-off is decided exactly or left :UNKNOWN
 (defun decide-relation-in-maxima (bridge relation)
   "The truth of RELATION by Maxima's is(); when it does not know, :UNKNOWN if numeric
 witnesses show that no strategy can decide it, else as DECIDE-RELATION-BY-STRATEGIES
-finds it. The witnesses are looked for first (no Maxima): where there are none, is()
-is asked in one round trip with the questions the strategies ask next (see
-PREFETCH-OPPOSITE-AND-SIGNS), most relations is() does not settle needing them."
+finds it."
   (let* ((operator (expression-operator relation))
          (equation (member operator '(= /=)))
          (lhs (relation-lhs relation))
-         (rhs (relation-rhs relation)))
+         (rhs (relation-rhs relation))
+         (verdict (maxima-is bridge relation)))
+    (unless (eq verdict :unknown)
+      (return-from decide-relation-in-maxima verdict))
     ;; an inequality seen to hold at one admissible point and to fail at another, or an
     ;; equation whose sides cross between two such points, is decided by no strategy
     (multiple-value-bind (holds fails facts)
@@ -109,17 +110,12 @@ PREFETCH-OPPOSITE-AND-SIGNS), most relations is() does not settle needing them."
              (relation-witnesses bridge (if equation
                                             (list '> (relation-lhs relation) (relation-rhs relation))
                                             relation)))
-      (let ((undecidable (and holds
-                              (or (not equation)
-                                  (continuous-and-admissible-between-p
-                                   (list '- (relation-lhs relation) (relation-rhs relation))
-                                   facts holds fails)))))
-        (unless undecidable
-          (prefetch-opposite-and-signs bridge relation :with-is t))
-        (let ((verdict (maxima-is bridge relation)))
-          (cond ((not (eq verdict :unknown)) verdict)
-                (undecidable :unknown)
-                (t (decide-relation-by-strategies bridge relation lhs rhs holds))))))))
+      (when (and holds
+                 (or (not equation)
+                     (continuous-and-admissible-between-p
+                      (list '- (relation-lhs relation) (relation-rhs relation)) facts holds fails)))
+        (return-from decide-relation-in-maxima :unknown))
+      (decide-relation-by-strategies bridge relation lhs rhs holds))))
 
 (defun decide-relation-by-strategies (bridge relation lhs rhs holds)
   "The truth of RELATION, whose sides are LHS and RHS, that is() did not decide: by the

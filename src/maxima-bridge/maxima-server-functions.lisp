@@ -158,5 +158,19 @@ caller's. Returns the TeX string."
   (let (($simp nil))
     (meval (list '($tex) (list '(mquote) (cadr form)) nil))))
 
-(dolist (head '($ames_presentation_candidates $ames_presentation_coefficients $ames_tex_as_is))
+(defmspec $ames_each (form)
+  "The list of the answers to the unevaluated requests of FORM, each evaluated as
+AMES-EVALUATE evaluates a request and given as [answer], or as [] when Maxima fails on
+it (its bindings undone as AMES-EVALUATE undoes a failed request's): the bridge asks
+several requests in one round trip, and one that fails does not lose the others."
+  (cons '(mlist simp)
+        (mapcar #'(lambda (request)
+                    (let ((saved (cons bindlist loclist)))
+                      (handler-case
+                          (list '(mlist simp) (ames-disrep (rat-error-to-merror (meval request))))
+                        (maxima-$error () (errlfun1 saved) (list '(mlist simp))))))
+                (cdr form))))
+
+(dolist (head '($ames_presentation_candidates $ames_presentation_coefficients $ames_tex_as_is
+                $ames_each))
   (pushnew head *ames-allowed-heads*))

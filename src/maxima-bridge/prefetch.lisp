@@ -1,4 +1,4 @@
-;;;; src/maxima-bridge/prefetch.lisp -- many simplifications asked in few round trips, answered later from the cache.
+;;;; src/maxima-bridge/prefetch.lisp -- many requests (simplifications, the sign() questions of DECIDE) asked in few round trips, answered later from the cache.
 ;;;;
 ;;;; A caller that will simplify many independent expressions one at a time (the geometry
 ;;;; tidying every contact of every pair of bodies: N^2 of them in a chain of N blocks) pays
@@ -6,9 +6,11 @@
 ;;;; to be scheduled. PREFETCH-SIMPLIFICATIONS asks the same requests SIMPLIFY :FULL would
 ;;;; send, many in one round trip, and stores each answer in the cache under the key the
 ;;;; single request has: SIMPLIFY then finds it there. The answers are the ones the single
-;;;; requests would get (the same forms, evaluated in turn); a batch that fails in any way
-;;;; (a Maxima error or question, a timeout) is dropped, and its requests are then asked
-;;;; one at a time as without the prefetch, their conditions signalled where they belong.
+;;;; requests would get (the same forms, evaluated in turn, each as a request is: see
+;;;; ames_each in maxima-server-functions.lisp); a request Maxima fails on is left out of
+;;;; the cache, and a batch that fails as a whole (a question, a timeout) is dropped: those
+;;;; requests are then asked one at a time as without the prefetch, their conditions
+;;;; signalled where they belong.
 
 (in-package #:ames.maxima)
 
@@ -50,7 +52,8 @@ MAXIMA-BUDGET-EXCEEDED when the run's time is up."
   (loop while pairs
         do (let* ((batch (subseq pairs 0 (min *prefetch-batch-size* (length pairs))))
                   (answers (handler-case
-                               (mlist-items (maxima-request bridge (mlist (mapcar #'cdr batch))
+                               (mlist-items (maxima-request bridge (apply #'mcall "$AMES_EACH"
+                                                                          (mapcar #'cdr batch))
                                                             :cache nil :datum :prefetch))
                              (maxima-budget-exceeded (condition) (error condition))
                              (maxima-condition () nil)))
@@ -59,9 +62,13 @@ MAXIMA-BUDGET-EXCEEDED when the run's time is up."
              (when (= (length answers) (length batch))
                (when (>= (+ (hash-table-count cache) (length batch)) *cache-limit*)
                  (clrhash cache))
+               ;; each answer comes as [answer], or as [] when Maxima failed on it: that
+               ;; request is asked alone later, and fails where it belongs
                (loop for (key) in batch
                      for answer in answers
-                     do (setf (gethash key cache) answer)))))
+                     for items = (and (mform-p answer +mlist+) (mlist-items answer))
+                     when (and items (null (rest items)))
+                       do (setf (gethash key cache) (first items))))))
   nil)
 
 (defun prefetch-requests (bridge requests)
