@@ -173,35 +173,23 @@ X <= 0."
 
 ;;; One square root cleared
 
-(defun square-root-kernel (form)
-  "Some subform sqrt(A) = ((MEXPT) A 1/2) of the Maxima FORM, or NIL."
-  (cond ((atom form) nil)
-        ((and (mform-p form +mexpt+) (mform-p (third form) +rat+)
-              (eql (second (third form)) 1) (eql (third (third form)) 2))
-         form)
-        (t (some #'square-root-kernel (cdr form)))))
-
 (defun square-root-part-signs (bridge lhs rhs &key datum)
   "LHS - RHS (prefix) written as (a + b sqrt(A)) / c, for one square root sqrt(A) in its
 numerator in which the numerator is linear: the signs (see MAXIMA-SIGNS) of a, b,
 b^2 A - a^2, A and c, as a list of five sign lists. NIL when no square root is there
-or the numerator is not linear in it."
-  (destructuring-bind (numerator denominator)
-      (let ((difference (mdifference (to-mx bridge lhs) (to-mx bridge rhs))))
-        (request-list bridge (list (mcall "$NUM" (mcall "$RATSIMP" difference))
-                                   (mcall "$DENOM" (mcall "$RATSIMP" difference)))
-                      :datum datum))
-    (let ((kernel (square-root-kernel numerator)))
-      (when (and kernel (eql 1 (maxima-request bridge (mcall "$HIPOW" (mcall "$EXPAND" numerator) kernel)
-                                              :datum datum)))
-        (destructuring-bind (a b)
-            (request-list bridge (list (mcall "$RATCOEF" (mcall "$EXPAND" numerator) kernel 0)
-                                       (mcall "$RATCOEF" (mcall "$EXPAND" numerator) kernel 1))
-                          :datum datum)
-          (let* ((radicand (second kernel))
-                 (gap (mdifference (mform +mtimes+ (mform +mexpt+ b 2) radicand)
-                                   (mform +mexpt+ a 2))))
-            (forms-signs bridge (list a b gap radicand denominator) :datum datum)))))))
+or the numerator is not linear in it. Two round trips: the parts (ames_square_root_parts
+in maxima-server-functions.lisp), then their signs."
+  (let ((parts (mlist-items (maxima-request bridge (mcall "$AMES_SQUARE_ROOT_PARTS"
+                                                          (mdifference (to-mx bridge lhs)
+                                                                       (to-mx bridge rhs)))
+                                            :datum datum))))
+    (when (= (length parts) 5)
+      (destructuring-bind (numerator denominator kernel a b) parts
+        (declare (ignore numerator))
+        (let* ((radicand (second kernel))
+               (gap (mdifference (mform +mtimes+ (mform +mexpt+ b 2) radicand)
+                                 (mform +mexpt+ a 2))))
+          (forms-signs bridge (list a b gap radicand denominator) :datum datum))))))
 
 ;;; The cache of verdicts
 
