@@ -62,8 +62,9 @@ an error."
           (error condition)))))
 
 (defvar *prefetch-signs* t
-  "True when FORM-SIGNS asks all the sign() requests of a form in one round trip (see
-PREFETCH-REQUESTS), before it reads their answers one at a time.")
+  "True when DECIDE's questions are asked in batches (see PREFETCH-REQUESTS): FORM-SIGNS
+asks the sign() requests after the first together, PREFETCH-OPPOSITE-AND-SIGNS is() of
+the opposite with the first sign(). NIL asks each alone (the answers are the same).")
 
 (defun form-signs (bridge form &key datum (enough (constantly nil)) also)
   "The signs the real Maxima FORM may have under the current assumptions: what the
