@@ -8,7 +8,20 @@
 ;;;; the figures that do not depend on the load are printed too, for this checkout: the
 ;;;; round trips to Maxima and the CPU seconds Maxima spent, simulation and text report
 ;;;; (measured in this process, the report on a fresh bridge state as bin/ames makes it).
-;;;; Prints numbers; asserts nothing.
+;;;; Prints numbers; asserts nothing. Run alone:
+;;;;   AMES_BASELINE=/path/to/main sbcl --non-interactive --eval '(require :asdf)' \
+;;;;     --eval '(asdf:load-asd (truename "ames.asd"))' --eval '(asdf:load-system "ames")' \
+;;;;     --load bench/bench-issue-24-corner-wedge.lisp
+;;;;
+;;;; Figures of 2026-11-26 (branch speedcorner against main e490684, same hour, a machine
+;;;; at load average 20-29 on 2 cores, so the wall times are 10-20 times the work):
+;;;;                                   main                 speedcorner
+;;;;   corner --numeric, run           4656 trips  9.2 s    2912 trips  8.3 s  (Maxima CPU)
+;;;;   corner --numeric, text report   2048 trips  4.3 s    1031 trips  3.5 s
+;;;;   wedge, run                       376 trips  0.60 s    351 trips  0.57 s
+;;;;   wedge, text report                73 trips  0.15 s     64 trips  0.13 s
+;;;; SBCL's own CPU: the corner 1.8 s, the wedge 0.2 s. A bare Maxima start: 0.07 s CPU,
+;;;; 0.3 s wall when the machine is quiet.
 
 (defpackage #:ames.bench.corner-wedge
   (:use #:cl)
