@@ -287,6 +287,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "bridge-shortcuts")
                (:file "quick-signs")
                (:file "speed-batches")
+               (:file "speed-questions")
                (:file "bridge-integrators")
                (:file "bridge-truth")
                (:file "truth-table")

@@ -129,8 +129,9 @@ seen), what a physicist knows and the order substitution; :UNKNOWN when none dec
   (let* ((operator (expression-operator relation))
          (equation (member operator '(= /=)))
          ;; is() proves X <= 0 from the fact X <= 0 but not that X > 0 fails: ask the
-         ;; opposite relation too
-         (verdict (opposite-truth bridge relation)))
+         ;; opposite relation too (asked with the signs below, in one round trip)
+         (verdict (progn (prefetch-opposite-and-signs bridge relation)
+                         (opposite-truth bridge relation))))
     (unless (eq verdict :unknown)
       (return-from decide-relation-by-strategies verdict))
     ;; the signs are asked for only until they decide the relation

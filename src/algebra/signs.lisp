@@ -229,7 +229,10 @@ outside the reals."
             (t (handler-case (maxima-signs bridge x)
                  (maxima-error () nil))))))
       (t
-        (let ((signs (handler-case (maxima-signs bridge x)
+        (let ((signs (handler-case (maxima-signs bridge x
+                                                 ;; asked with the sign() requests
+                                                 :also (and (not (subject-p x))
+                                                            (fact-sign-requests bridge x)))
                        (maxima-error () nil))))
           (when (and signs (rest signs) (not (subject-p x)))
             (setf signs (intersection signs (handler-case (maxima-fact-signs bridge x)

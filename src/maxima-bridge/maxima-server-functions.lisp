@@ -158,5 +158,56 @@ caller's. Returns the TeX string."
   (let (($simp nil))
     (meval (list '($tex) (list '(mquote) (cadr form)) nil))))
 
-(dolist (head '($ames_presentation_candidates $ames_presentation_coefficients $ames_tex_as_is))
+(defun ames-square-root-kernel (form)
+  "Some subform sqrt(A) = ((MEXPT) A ((RAT) 1 2)) of FORM: the first met depth-first,
+the form itself before its arguments, left to right; NIL when there is none."
+  (cond ((atom form) nil)
+        ((and (consp (car form)) (eq (caar form) 'mexpt)
+              (consp (caddr form)) (consp (car (caddr form))) (eq (caar (caddr form)) 'rat)
+              (eql (cadr (caddr form)) 1) (eql (caddr (caddr form)) 2))
+         form)
+        (t (some #'ames-square-root-kernel (cdr form)))))
+
+(defun ames-apply (function &rest arguments)
+  "FUNCTION(ARGUMENTS...) evaluated as meval evaluates it in a request (the arguments,
+already values, quoted so that they are not evaluated twice)."
+  (meval (cons (list function) (mapcar #'(lambda (a) (list '(mquote) a)) arguments))))
+
+(defun $ames_square_root_parts (difference)
+  "The list [n, d, k, a, b] for DIFFERENCE = n / d (num and denom of its ratsimp), k a
+square root sqrt(A) in n (AMES-SQUARE-ROOT-KERNEL) in which n is linear, n = a + b k
+(ratcoef of expand(n)); [n, d] when n has no square root or is not linear in it: the
+requests the bridge's SQUARE-ROOT-PART-SIGNS asked one after the other, in one. A
+numerator with a root that AMES-VALIDATE refuses (%i) is an error, as the request that
+sent it back was refused."
+  (let* ((simplified (ames-apply '$ratsimp difference))
+         (numerator (ames-apply '$num simplified))
+         (denominator (ames-apply '$denom simplified))
+         (kernel (ames-square-root-kernel numerator))
+         (expanded (and kernel
+                        ;; the numerator went back to the server in a request of its
+                        ;; own when there was a root: refused as that request was
+                        (if (ames-validate numerator)
+                            (merror "AMES server: the numerator is not allowed in a request")
+                            (ames-apply '$expand numerator)))))
+    (if (and kernel (eql 1 (ames-apply '$hipow expanded kernel)))
+        (list '(mlist simp) numerator denominator kernel
+              (ames-apply '$ratcoef expanded kernel 0) (ames-apply '$ratcoef expanded kernel 1))
+        (list '(mlist simp) numerator denominator))))
+
+(defmspec $ames_each (form)
+  "The list of the answers to the unevaluated requests of FORM, each evaluated as
+AMES-EVALUATE evaluates a request and given as [answer], or as [] when Maxima fails on
+it (its bindings undone as AMES-EVALUATE undoes a failed request's): the bridge asks
+several requests in one round trip, and one that fails does not lose the others."
+  (cons '(mlist simp)
+        (mapcar #'(lambda (request)
+                    (let ((saved (cons bindlist loclist)))
+                      (handler-case
+                          (list '(mlist simp) (ames-disrep (rat-error-to-merror (meval request))))
+                        (maxima-$error () (errlfun1 saved) (list '(mlist simp))))))
+                (cdr form))))
+
+(dolist (head '($ames_presentation_candidates $ames_presentation_coefficients $ames_tex_as_is
+                $ames_each $ames_square_root_parts))
   (pushnew head *ames-allowed-heads*))

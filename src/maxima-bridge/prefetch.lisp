@@ -1,4 +1,4 @@
-;;;; src/maxima-bridge/prefetch.lisp -- many simplifications asked in few round trips, answered later from the cache.
+;;;; src/maxima-bridge/prefetch.lisp -- many requests (simplifications, the sign() questions of DECIDE) asked in few round trips, answered later from the cache.
 ;;;;
 ;;;; A caller that will simplify many independent expressions one at a time (the geometry
 ;;;; tidying every contact of every pair of bodies: N^2 of them in a chain of N blocks) pays
@@ -6,9 +6,11 @@
 ;;;; to be scheduled. PREFETCH-SIMPLIFICATIONS asks the same requests SIMPLIFY :FULL would
 ;;;; send, many in one round trip, and stores each answer in the cache under the key the
 ;;;; single request has: SIMPLIFY then finds it there. The answers are the ones the single
-;;;; requests would get (the same forms, evaluated in turn); a batch that fails in any way
-;;;; (a Maxima error or question, a timeout) is dropped, and its requests are then asked
-;;;; one at a time as without the prefetch, their conditions signalled where they belong.
+;;;; requests would get (the same forms, evaluated in turn, each as a request is: see
+;;;; ames_each in maxima-server-functions.lisp); a request Maxima fails on is left out of
+;;;; the cache, and a batch that fails as a whole (a question, a timeout) is dropped: those
+;;;; requests are then asked one at a time as without the prefetch, their conditions
+;;;; signalled where they belong.
 
 (in-package #:ames.maxima)
 
@@ -40,20 +42,53 @@ it has not answered under the facts in force, up to *PREFETCH-BATCH-SIZE* in a r
 trip, and cache each answer as its single request's. Returns nothing useful; a batch
 that fails is dropped (see this file's header). Signals MAXIMA-BUDGET-EXCEEDED when the
 run's time is up."
-  (let ((pairs (uncached-simplification-requests bridge expressions)))
-    (loop while pairs
-          do (let* ((batch (subseq pairs 0 (min *prefetch-batch-size* (length pairs))))
-                    (answers (handler-case
-                                 (mlist-items (maxima-request bridge (mlist (mapcar #'cdr batch))
-                                                              :cache nil :datum :prefetch))
-                               (maxima-budget-exceeded (condition) (error condition))
-                               (maxima-condition () nil)))
-                    (cache (bridge-cache bridge)))
-               (setf pairs (nthcdr (length batch) pairs))
-               (when (= (length answers) (length batch))
-                 (when (>= (+ (hash-table-count cache) (length batch)) *cache-limit*)
-                   (clrhash cache))
-                 (loop for (key) in batch
-                       for answer in answers
-                       do (setf (gethash key cache) answer)))))
+  (prefetch-pairs bridge (uncached-simplification-requests bridge expressions)))
+
+(defun prefetch-pairs (bridge pairs)
+  "Ask BRIDGE's Maxima the requests of PAIRS ((KEY . REQUEST) ..., none cached), up to
+*PREFETCH-BATCH-SIZE* in a round trip, and cache each answer under its KEY. A batch
+that fails is dropped (see this file's header). Returns nothing useful. Signals
+MAXIMA-BUDGET-EXCEEDED when the run's time is up."
+  (loop while pairs
+        do (let* ((batch (subseq pairs 0 (min *prefetch-batch-size* (length pairs))))
+                  (answers (handler-case
+                               (mlist-items (maxima-request bridge (apply #'mcall "$AMES_EACH"
+                                                                          (mapcar #'cdr batch))
+                                                            :cache nil :datum :prefetch))
+                             (maxima-budget-exceeded (condition) (error condition))
+                             (maxima-condition () nil)))
+                  (cache (bridge-cache bridge)))
+             (setf pairs (nthcdr (length batch) pairs))
+             (when (= (length answers) (length batch))
+               (when (>= (+ (hash-table-count cache) (length batch)) *cache-limit*)
+                 (clrhash cache))
+               ;; each answer comes as [answer], or as [] when Maxima failed on it: that
+               ;; request is asked alone later, and fails where it belongs
+               (loop for (key) in batch
+                     for answer in answers
+                     for items = (and (mform-p answer +mlist+) (mlist-items answer))
+                     when (and items (null (rest items)))
+                       do (setf (gethash key cache) (first items))))))
+  nil)
+
+(defun prefetch-requests (bridge requests)
+  "Ask BRIDGE's Maxima, in one round trip, those of the REQUESTS (Maxima forms, as
+MAXIMA-REQUEST takes them) that its cache does not hold under the facts in force, each
+once, and cache each answer as its single request's: a caller that will ask several
+requests one after the other then finds them answered. Nothing is sent when at most one
+request is missing (it would cost the round trip it saves). The answers are the ones the
+single requests would get; a batch that fails is dropped (see this file's header), and
+the single requests are then asked as without the prefetch. Signals
+MAXIMA-BUDGET-EXCEEDED when the run's time is up."
+  (let ((seen (make-hash-table :test #'equal))
+        (cache (bridge-cache bridge))
+        (assumptions (assumption-key bridge))
+        (pairs '()))
+    (dolist (request requests)
+      (let ((key (cons request assumptions)))
+        (unless (or (gethash key seen) (nth-value 1 (gethash key cache)))
+          (setf (gethash key seen) t)
+          (push (cons key request) pairs))))
+    (when (rest pairs)
+      (prefetch-pairs bridge (nreverse pairs)))
     nil))

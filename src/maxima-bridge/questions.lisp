@@ -61,26 +61,39 @@ an error."
           '$pnz
           (error condition)))))
 
-(defun form-signs (bridge form &key datum (enough (constantly nil)))
+(defvar *prefetch-signs* t
+  "True when DECIDE's questions are asked in batches (see PREFETCH-REQUESTS): FORM-SIGNS
+asks the sign() requests after the first together, PREFETCH-OPPOSITE-AND-SIGNS is() of
+the opposite with the first sign(). NIL asks each alone (the answers are the same).")
+
+(defun form-signs (bridge form &key datum (enough (constantly nil)) also)
   "The signs the real Maxima FORM may have under the current assumptions: what the
 answers to SIGN-REQUESTS allow together. They are asked one at a time, cheapest first
 (each answer cached on its own), and the asking stops once at most one sign is left or
 ENOUGH, a predicate on the signs found so far, is true; further answers could only
-narrow the signs (an empty intersection would mean contradictory answers)."
-  (let ((signs (list :positive :negative :zero)))
-    (dolist (request (sign-requests form) signs)
+narrow the signs (an empty intersection would mean contradictory answers). When the
+first answer does not settle it, the other requests missing from the cache are sent in
+one round trip (see PREFETCH-REQUESTS), with the requests ALSO (Maxima forms the caller
+will likely ask next)."
+  (let ((signs (list :positive :negative :zero))
+        (requests (sign-requests form)))
+    (dolist (request requests signs)
       (setf signs (narrowed-signs signs (imaginary-as-unknown
                                          (lambda () (maxima-request bridge request :datum datum)))))
       (when (or (null (rest signs)) (funcall enough signs))
-        (return signs)))))
+        (return signs))
+      ;; the first form did not settle it: the others are asked together (most forms
+      ;; that sign() does not settle at once need every form), with ALSO
+      (when (and *prefetch-signs* (eq request (first requests)))
+        (prefetch-requests bridge (append (rest requests) also))))))
 
-(defun maxima-signs (bridge expression &key (datum expression) (enough (constantly nil)))
+(defun maxima-signs (bridge expression &key (datum expression) (enough (constantly nil)) also)
   "The signs (a list of :POSITIVE :NEGATIVE :ZERO) the real prefix EXPRESSION may have
 under the facts in force, by Maxima's sign() of EXPRESSION in several simplified forms
 (see FORM-SIGNS), asked one at a time until at most one sign is left or ENOUGH (a
 predicate on the signs found so far) is true. DATUM names the question in conditions.
 Signals UNTRANSLATABLE-EXPRESSION, MAXIMA-ERROR, MAXIMA-TIMEOUT."
-  (form-signs bridge (to-mx bridge expression) :datum datum :enough enough))
+  (form-signs bridge (to-mx bridge expression) :datum datum :enough enough :also also))
 
 (defun maxima-difference-signs (bridge lhs rhs &key datum (enough (constantly nil)))
   "The signs of LHS - RHS (prefix) by Maxima's sign(), like MAXIMA-SIGNS; the
@@ -119,52 +132,65 @@ does not see that X > 0 fails."
                            (expression-arguments relation))
              :datum datum))
 
+(defun prefetch-opposite-and-signs (bridge relation)
+  "Ask, in one round trip, the questions DECIDE asks of RELATION (= /= < > <= >=) after
+is(): is() of its opposite (MAXIMA-IS-OPPOSITE) and the first sign() request of the
+difference of its sides (MAXIMA-DIFFERENCE-SIGNS; FORM-SIGNS asks the others together
+when it needs them); their answers are cached as theirs (see PREFETCH-REQUESTS). A
+relation that does not translate is left to them."
+  (let ((requests (handler-case
+                      (list (mcall "$IS" (is-question bridge (list* (cdr (assoc (expression-operator relation)
+                                                                                 *opposite-relations*))
+                                                                    (expression-arguments relation))))
+                            (first (sign-requests (mdifference (to-mx bridge (relation-lhs relation))
+                                                               (to-mx bridge (relation-rhs relation))))))
+                    (maxima-condition () nil))))
+    (when (and requests *prefetch-signs*)
+      (prefetch-requests bridge requests))))
+
+(defparameter *fact-sign-relations*
+  `((,+mgreaterp+ :negative :zero) (,+mlessp+ :positive :zero) (,+mgeqp+ :negative) (,+mleqp+ :positive))
+  "The relations of X with 0 that MAXIMA-FACT-SIGNS asks is() about, each with the signs
+its truth excludes.")
+
+(defun fact-sign-requests (bridge x)
+  "The is() requests MAXIMA-FACT-SIGNS asks about the prefix X: X > 0, X < 0, X >= 0,
+X <= 0."
+  (let ((form (to-mx bridge x)))
+    (loop for (head) in *fact-sign-relations*
+          collect (mcall "$IS" (mform head form 0)))))
+
 (defun maxima-fact-signs (bridge x &key (datum x))
   "The signs of the prefix X that is() shows from the facts in force (X >= 0, X < 0
 ...), in one round trip: is() uses a fact about a compound X that sign() ignores."
-  (let ((form (to-mx bridge x))
+  (let ((requests (fact-sign-requests bridge x))
         (signs (list :positive :zero :negative)))
-    (loop for (head . excluded) in `((,+mgreaterp+ :negative :zero) (,+mlessp+ :positive :zero)
-                                     (,+mgeqp+ :negative) (,+mleqp+ :positive))
-          for answer in (request-list bridge
-                                      (loop for (head) in `((,+mgreaterp+) (,+mlessp+) (,+mgeqp+) (,+mleqp+))
-                                            collect (mcall "$IS" (mform head form 0)))
-                                      :datum datum)
-          when (eq (maxima-truth answer) :true)
+    (prefetch-requests bridge requests)
+    (loop for (nil . excluded) in *fact-sign-relations*
+          for request in requests
+          when (eq (maxima-truth (maxima-request bridge request :datum datum)) :true)
             do (setf signs (set-difference signs excluded)))
     signs))
 
 ;;; One square root cleared
 
-(defun square-root-kernel (form)
-  "Some subform sqrt(A) = ((MEXPT) A 1/2) of the Maxima FORM, or NIL."
-  (cond ((atom form) nil)
-        ((and (mform-p form +mexpt+) (mform-p (third form) +rat+)
-              (eql (second (third form)) 1) (eql (third (third form)) 2))
-         form)
-        (t (some #'square-root-kernel (cdr form)))))
-
 (defun square-root-part-signs (bridge lhs rhs &key datum)
   "LHS - RHS (prefix) written as (a + b sqrt(A)) / c, for one square root sqrt(A) in its
 numerator in which the numerator is linear: the signs (see MAXIMA-SIGNS) of a, b,
 b^2 A - a^2, A and c, as a list of five sign lists. NIL when no square root is there
-or the numerator is not linear in it."
-  (destructuring-bind (numerator denominator)
-      (let ((difference (mdifference (to-mx bridge lhs) (to-mx bridge rhs))))
-        (request-list bridge (list (mcall "$NUM" (mcall "$RATSIMP" difference))
-                                   (mcall "$DENOM" (mcall "$RATSIMP" difference)))
-                      :datum datum))
-    (let ((kernel (square-root-kernel numerator)))
-      (when (and kernel (eql 1 (maxima-request bridge (mcall "$HIPOW" (mcall "$EXPAND" numerator) kernel)
-                                              :datum datum)))
-        (destructuring-bind (a b)
-            (request-list bridge (list (mcall "$RATCOEF" (mcall "$EXPAND" numerator) kernel 0)
-                                       (mcall "$RATCOEF" (mcall "$EXPAND" numerator) kernel 1))
-                          :datum datum)
-          (let* ((radicand (second kernel))
-                 (gap (mdifference (mform +mtimes+ (mform +mexpt+ b 2) radicand)
-                                   (mform +mexpt+ a 2))))
-            (forms-signs bridge (list a b gap radicand denominator) :datum datum)))))))
+or the numerator is not linear in it. Two round trips: the parts (ames_square_root_parts
+in maxima-server-functions.lisp), then their signs."
+  (let ((parts (mlist-items (maxima-request bridge (mcall "$AMES_SQUARE_ROOT_PARTS"
+                                                          (mdifference (to-mx bridge lhs)
+                                                                       (to-mx bridge rhs)))
+                                            :datum datum))))
+    (when (= (length parts) 5)
+      (destructuring-bind (numerator denominator kernel a b) parts
+        (declare (ignore numerator))
+        (let* ((radicand (second kernel))
+               (gap (mdifference (mform +mtimes+ (mform +mexpt+ b 2) radicand)
+                                 (mform +mexpt+ a 2))))
+          (forms-signs bridge (list a b gap radicand denominator) :datum datum))))))
 
 ;;; The cache of verdicts
 
