@@ -158,6 +158,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "reader")
                  (:file "world")
                  (:file "semantics")
+                 (:file "deferred-pairings")
                  (:file "ranges")
                  (:file "values")))
    (:module "simulator" :pathname "src/simulator/" :serial t
@@ -180,6 +181,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "speed-line")
                  (:file "broad-phase")
                  (:file "polynomial-signs")
+                 (:file "deferred-pairs")
                  (:file "termination")
                  (:file "speed-line-roots")
                  (:file "check-model")
