@@ -182,6 +182,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "broad-phase")
                  (:file "polynomial-signs")
                  (:file "deferred-pairs")
+                 (:file "prefetch-values")
                  (:file "termination")
                  (:file "speed-line-roots")
                  (:file "check-model")

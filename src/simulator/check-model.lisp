@@ -67,13 +67,19 @@ wherever the solution is right."
                        when (and rate (quantity-term-p rate-term))
                          collect (cons rate-term rate))
                  (solved-model-values solved))))
-    (loop for equation in (without-idle-path-terms
-                           (mapcar (lambda (e) (with-initial-positions run e))
-                                   (ames.engine:model-equations (run-model run)))
-                           (solved-model-state solved))
-          when (eq (first equation) '=)
-            collect (list (substitute-expressions values (relation-lhs equation))
-                          (substitute-expressions values (relation-rhs equation))))))
+    ;; every side substituted in one walk (the values looked up in one table), then
+    ;; taken two by two
+    (loop for (lhs rhs) on (rest (substitute-expressions
+                                  values
+                                  (cons '+ (loop for equation in (without-idle-path-terms
+                                                                  (mapcar (lambda (e) (with-initial-positions run e))
+                                                                          (ames.engine:model-equations (run-model run)))
+                                                                  (solved-model-state solved))
+                                                 when (eq (first equation) '=)
+                                                   append (list (relation-lhs equation)
+                                                                (relation-rhs equation))))))
+          by #'cddr
+          collect (list lhs rhs))))
 
 (defun check-model (run solved)
   "The plist the self-check reads of the current state's model (see the file header)."

@@ -134,8 +134,13 @@ multiplied by its zero curvature): the model's unknowns."
 
 (defun identity-p (run equation)
   "True when EQUATION holds whatever its unknowns (its sides' difference is 0 in rational
-canonical form): a redundancy of the model, which Maxima's solve() must not see."
-  (eql 0 (tidy run `(- ,(relation-lhs equation) ,(relation-rhs equation)))))
+canonical form): a redundancy of the model, which Maxima's solve() must not see. A
+polynomial difference is settled without Maxima (POLYNOMIAL-IDENTITY-VERDICT)."
+  (let ((difference `(- ,(relation-lhs equation) ,(relation-rhs equation))))
+    (case (polynomial-identity-verdict difference)
+      (:zero t)
+      (:nonzero nil)
+      (t (eql 0 (tidy run difference))))))
 
 (defun without-idle-path-terms (equations state)
   "EQUATIONS with the path coordinates of straight contacts (those that are not STATE
@@ -177,9 +182,22 @@ solution. Signals UNSOLVABLE-MODEL when there is none or several."
 (defun back-substitute (solution definitions)
   "Every unknown's value: SOLUTION (alist) extended by DEFINITIONS (in elimination
 order), each definition's expression with the later ones' values substituted."
-  (let ((values (copy-list solution)))
+  (let ((values (copy-list solution))
+        ;; VALUES as a table, the first entry of a term winning as in ASSOC: each
+        ;; substitution looks up only its expression's own terms (the same result as
+        ;; SUBSTITUTE-EXPRESSIONS over the whole alist, without its N^2 list searches)
+        (table (make-hash-table :test #'equal)))
+    (loop for (term . value) in solution
+          unless (nth-value 1 (gethash term table))
+            do (setf (gethash term table) value))
     (dolist (definition (reverse definitions) values)
-      (push (cons (car definition) (substitute-expressions values (cdr definition))) values))))
+      (let ((value (substitute-expressions
+                    (loop for term in (expression-variables (cdr definition))
+                          for (known found) = (multiple-value-list (gethash term table))
+                          when found collect (cons term known))
+                    (cdr definition))))
+        (setf (gethash (car definition) table) value)
+        (push (cons (car definition) value) values)))))
 
 (defun solve-model (run model)
   "Solve MODEL's equations for every unknown quantity in terms of the parameters and
@@ -208,6 +226,8 @@ in. Signals UNSOLVABLE-MODEL."
                                      :detail "The model does not determine this quantity.")))
         (let ((solved (%make-solved-model :values values :state state :equations compact
                                           :run run)))
+          ;; the rates' simplifications asked together (prefetch-values.lisp)
+          (prefetch-quantity-values run solved (mapcar #'cdr derivatives))
           (setf (solved-model-rates solved)
                 (mapcar (lambda (entry)
                           (cons (car entry) (quantity-value solved (cdr entry))))

@@ -131,3 +131,24 @@ when they are not known)."
                                    :initial-value (ames.algebra:number-signs (cdr term))))
                          monomials))))
           (or signs-of-sum ames.algebra:+all-signs+)))))
+
+(defun polynomial-identity-verdict (expression)
+  "Whether EXPRESSION is identically zero, read from its expansion with each quantity
+term an indeterminate (see EXPANDED-MONOMIALS): :ZERO when it expands to the zero
+polynomial, :NONZERO when to another (a polynomial with rational coefficients in
+independent indeterminates is zero as a rational function only when it is the zero
+polynomial: Maxima's ratsimp() answers the same), NIL when it is no such polynomial."
+  (let* ((variables (expression-variables expression))
+         (names (mapcar (lambda (x) (and (symbolp x) (symbol-name x))) variables))
+         (placeholders
+           (loop for term in variables
+                 for index from 0
+                 when (quantity-term-p term)
+                   collect (cons term (make-symbol (format nil "QUANTITY ~D" index))))))
+    ;; monomials are ordered by name: a placeholder's may not be a variable's
+    (unless (some (lambda (entry) (member (symbol-name (cdr entry)) names :test #'equal))
+                  placeholders)
+      (let ((monomials (expanded-monomials (substitute-expressions placeholders expression))))
+        (cond ((eq monomials :unknown) nil)
+              ((null monomials) :zero)
+              (t :nonzero))))))

@@ -288,7 +288,9 @@ parameter's declaration to them. The run is made in the WORLD the checks built."
 
 (defun simulate-in-world (world bridge parameter-values check-incremental)
   "SIMULATE-WORLD-ONCE of WORLD; when a pair the world left out (deferred-pairs.lisp)
-cannot be proven apart in a state, again from the start in a world with it built."
+cannot be proven apart in a state, again from the start in a world with every pair
+built (its contacts then numbered as they always were, so that the canonical order of
+the model's equations, which their names enter, is the one a full world gives)."
   (loop
     (let ((needed nil))
       (let ((history
@@ -300,7 +302,7 @@ cannot be proven apart in a state, again from the start in a world with it built
                   (let ((*deferred-pairings* (world-deferred-pairings world)))
                     (simulate-world-once world bridge parameter-values check-incremental))))))
         (if needed
-            (setf world (world-with-pairings world bridge needed))
+            (setf world (world-with-pairings world bridge (world-deferred-pairings world)))
             (return history))))))
 
 (defun simulate-world-once (world bridge parameter-values check-incremental)
