@@ -358,6 +358,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "hardening-processes")
                (:file "hardening-fuzz")
                (:file "scale")
+               (:file "deferred-pairs")
                (:file "self-check")
                (:file "line-turning")
                (:file "runner")

@@ -22,6 +22,10 @@
 
 (in-package #:ames.simulator)
 
+(defvar *defer-pairs* t
+  "When true, SIMULATE leaves out of the world the pairs proven apart at the start (see
+this file's header); NIL builds every pair, as before (for comparisons).")
+
 (defvar *deferred-pairings* '()
   "The deferred pairings of the world being simulated (see WORLD-DEFERRED-PAIRINGS):
 each (ORDINAL BODY-NAME OTHER-NAME).")

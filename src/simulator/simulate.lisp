@@ -278,7 +278,7 @@ returns them (keyed by the scenario's symbols), with EXTRA-FACTS (relations) ass
 besides the scenario's own assumptions (a branch's). The scenario's checks (shapes, no
 overlap at the start) see the extra facts too: a boundary branch's scenario has lost a
 parameter's declaration to them. The run is made in the WORLD the checks built."
-  (let* ((*pair-screen* (make-pair-screen))
+  (let* ((*pair-screen* (and *defer-pairs* (make-pair-screen)))
          (world (unless extra-facts
                   ;; first on its own, so that contradictory assumptions are named by parameter
                   (nth-value 1 (check-scenario scenario bridge)))))
