@@ -204,23 +204,10 @@ With ALLOW-TERMS false, quantity terms are rejected; with ALLOW-FLOATS false, fl
 
 (defun substitute-expressions (bindings expression)
   "EXPRESSION with each variable or term that is the CAR of an entry of the alist
-BINDINGS replaced by that entry's CDR. Purely syntactic: nothing is simplified. Many
-BINDINGS are looked up in a table (the first entry of a key winning, as in ASSOC)."
-  (let ((table (when (nthcdr 16 bindings)
-                 (let ((table (make-hash-table :test #'equal)))
-                   (dolist (entry bindings table)
-                     (unless (nth-value 1 (gethash (car entry) table))
-                       (setf (gethash (car entry) table) entry)))))))
-    (substitute-expressions-in bindings table expression)))
-
-(defun substitute-expressions-in (bindings table expression)
-  "SUBSTITUTE-EXPRESSIONS's walk: BINDINGS's entries found in TABLE (key -> entry) when
-it is given, else by ASSOC."
+BINDINGS replaced by that entry's CDR. Purely syntactic: nothing is simplified."
   (labels ((walk (x)
              (let ((entry (and (or (variable-symbol-p x) (quantity-term-p x))
-                               (if table
-                                   (values (gethash x table))
-                                   (assoc x bindings :test #'equal)))))
+                               (assoc x bindings :test #'equal))))
                (cond (entry (cdr entry))
                      ((and (consp x) (not (quantity-term-p x)))
                       (cons (car x) (mapcar #'walk (cdr x))))

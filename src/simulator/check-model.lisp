@@ -67,19 +67,15 @@ wherever the solution is right."
                        when (and rate (quantity-term-p rate-term))
                          collect (cons rate-term rate))
                  (solved-model-values solved))))
-    ;; every side substituted in one walk (the values looked up in one table), then
-    ;; taken two by two
-    (loop for (lhs rhs) on (rest (substitute-expressions
-                                  values
-                                  (cons '+ (loop for equation in (without-idle-path-terms
-                                                                  (mapcar (lambda (e) (with-initial-positions run e))
-                                                                          (ames.engine:model-equations (run-model run)))
-                                                                  (solved-model-state solved))
-                                                 when (eq (first equation) '=)
-                                                   append (list (relation-lhs equation)
-                                                                (relation-rhs equation))))))
-          by #'cddr
-          collect (list lhs rhs))))
+    ;; the values looked up in one table (the same as SUBSTITUTE-EXPRESSIONS over them)
+    (let ((table (bindings-table values)))
+      (loop for equation in (without-idle-path-terms
+                             (mapcar (lambda (e) (with-initial-positions run e))
+                                     (ames.engine:model-equations (run-model run)))
+                             (solved-model-state solved))
+            when (eq (first equation) '=)
+              collect (list (substitute-from-table table (relation-lhs equation))
+                            (substitute-from-table table (relation-rhs equation)))))))
 
 (defun check-model (run solved)
   "The plist the self-check reads of the current state's model (see the file header)."

@@ -24,7 +24,30 @@ SERIES, a memo of local series; EQUATIONS, the compact system Maxima solved."
   (series (make-hash-table :test #'equal))
   (simplified (make-hash-table :test #'equal))
   (run nil)
-  (equations '() :type list))
+  (equations '() :type list)
+  (state-table nil))
+
+(defun state-terms-table (solved)
+  "An EQUAL hash table of SOLVED's state terms, made once; under the key :EVERY-TERM,
+true when each is a quantity term (as it is: positions, velocities, arc lengths...)."
+  (or (solved-model-state-table solved)
+      (let ((table (make-hash-table :test #'equal)))
+        (dolist (state (solved-model-state solved))
+          (setf (gethash state table) t))
+        (setf (gethash :every-term table) (every #'quantity-term-p (solved-model-state solved)))
+        (setf (solved-model-state-table solved) table))))
+
+(defun mentioned-terms (expression)
+  "The quantity terms of EXPRESSION (of its EXPRESSION-VARIABLES): a quantity term occurs
+in EXPRESSION (as FREE-OF-P looks for it) exactly when it is among them."
+  (remove-if-not #'consp (expression-variables expression)))
+
+(defun mentioned-p (term mentioned expression)
+  "True when TERM occurs in EXPRESSION, whose MENTIONED-TERMS are MENTIONED (a quantity
+term is looked up there; anything else is looked for by FREE-OF-P)."
+  (if (quantity-term-p term)
+      (and (member term mentioned :test #'equal) t)
+      (not (free-of-p term expression))))
 
 (defun model-derivatives (model)
   "The ODEs the believed DERIVATIVE assertions of MODEL declare: an alist state term ->
@@ -179,6 +202,24 @@ solution. Signals UNSOLVABLE-MODEL when there is none or several."
                                     :detail "The state's model has several solutions."))
           (t (first solutions)))))
 
+(defun bindings-table (bindings)
+  "The alist BINDINGS as an EQUAL hash table key -> value, the first entry of a key
+winning as in ASSOC."
+  (let ((table (make-hash-table :test #'equal)))
+    (loop for (key . value) in bindings
+          unless (nth-value 1 (gethash key table))
+            do (setf (gethash key table) value))
+    table))
+
+(defun substitute-from-table (table expression)
+  "SUBSTITUTE-EXPRESSIONS of EXPRESSION by the bindings TABLE holds (see BINDINGS-TABLE):
+only EXPRESSION's own variables and terms are looked up (the same result as the whole
+alist, without a list search per node)."
+  (substitute-expressions (loop for term in (expression-variables expression)
+                                for (value found) = (multiple-value-list (gethash term table))
+                                when found collect (cons term value))
+                          expression))
+
 (defun back-substitute (solution definitions)
   "Every unknown's value: SOLUTION (alist) extended by DEFINITIONS (in elimination
 order), each definition's expression with the later ones' values substituted."
@@ -186,16 +227,9 @@ order), each definition's expression with the later ones' values substituted."
         ;; VALUES as a table, the first entry of a term winning as in ASSOC: each
         ;; substitution looks up only its expression's own terms (the same result as
         ;; SUBSTITUTE-EXPRESSIONS over the whole alist, without its N^2 list searches)
-        (table (make-hash-table :test #'equal)))
-    (loop for (term . value) in solution
-          unless (nth-value 1 (gethash term table))
-            do (setf (gethash term table) value))
+        (table (bindings-table solution)))
     (dolist (definition (reverse definitions) values)
-      (let ((value (substitute-expressions
-                    (loop for term in (expression-variables (cdr definition))
-                          for (known found) = (multiple-value-list (gethash term table))
-                          when found collect (cons term known))
-                    (cdr definition))))
+      (let ((value (substitute-from-table table (cdr definition))))
         (setf (gethash (car definition) table) value)
         (push (cons (car definition) value) values)))))
 
@@ -302,10 +336,11 @@ terms stay)."
 (defun time-derivative-in (solved expression)
   "The time derivative of EXPRESSION, a function of the state terms of SOLVED, by the
 chain rule along the state's ODEs."
-  (let ((sum 0))
+  (let ((sum 0)
+        (mentioned (mentioned-terms expression)))
     (dolist (entry (solved-model-rates solved) sum)
       (let ((term (car entry)))
-        (unless (free-of-p term expression)
+        (when (mentioned-p term mentioned expression)
           (let* ((symbol (state-symbol term))
                  (partial (substitute-expressions
                            (list (cons symbol term))
