@@ -172,6 +172,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "attachments")
                  (:file "structure")
                  (:file "model")
+                 (:file "term-lookups")
                  (:file "conditions-over-time")
                  (:file "choice")
                  (:file "integrators")
