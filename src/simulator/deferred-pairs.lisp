@@ -73,21 +73,46 @@ memoized in TABLE."
                 (cons (extreme-extents reach extents :negative)
                       (extreme-extents reach extents :positive)))))))
 
-(defun offsets-strictly-p (reach a-start a-extents b-start b-extents side)
-  "True when every (A-START + a) - (B-START + b), a of A-EXTENTS and b of B-EXTENTS, is
-proven strictly on SIDE."
+(defun placed-polynomial (table key start extent)
+  "The expanded monomials of START + EXTENT (a body's coordinate plus a bound of its
+shape), or :UNKNOWN, memoized in TABLE under KEY."
+  (multiple-value-bind (known found) (gethash key table)
+    (if found
+        known
+        (setf (gethash key table) (expanded-monomials `(+ ,start ,extent))))))
+
+(defun offset-sign (reach table a-name a-start a b-name b-start b index)
+  "The sign set of (A-START + A) - (B-START + B), the bound A of the body A-NAME placed
+at its coordinate A-START along INDEX, B likewise: from the two placed bounds' expanded
+polynomials (memoized in TABLE, each body's once) when both are polynomials, else by
+CHEAP-SIGN. Either way by exact rewriting and the rules of signs: proven, or all signs."
+  (let ((pa (placed-polynomial table (list a-name index a) a-start a))
+        (pb (placed-polynomial table (list b-name index b) b-start b)))
+    (if (or (eq pa :unknown) (eq pb :unknown))
+        (cheap-sign reach `(- (+ ,a-start ,a) (+ ,b-start ,b)))
+        (let ((difference (polynomial-sum pa (polynomial-scaled pb -1))))
+          (if (null difference)
+              (list :zero)
+              (monomials-sign (reach-signs-of-parameters reach) difference))))))
+
+(defun offsets-strictly-p (reach table a-name a-start a-extents b-name b-start b-extents
+                           index side)
+  "True when every (A-START + a) - (B-START + b), a of A-EXTENTS and b of B-EXTENTS (the
+bodies A-NAME and B-NAME along INDEX), is proven strictly on SIDE (see OFFSET-SIGN)."
   (every (lambda (a)
            (every (lambda (b)
-                    (eq (one-sign (cheap-sign reach `(- (+ ,a-start ,a) (+ ,b-start ,b))))
+                    (eq (one-sign (offset-sign reach table a-name a-start a b-name b-start b index))
                         side))
                   b-extents))
          a-extents))
 
-(defun bounds-apart-p (reach bounds-a a-start bounds-b b-start)
-  "True when, along one axis, the shape bounded by BOUNDS-A (see BODY-BOUNDS) placed at
-A-START lies strictly below or strictly above the one of BOUNDS-B at B-START."
-  (or (offsets-strictly-p reach a-start (cdr bounds-a) b-start (car bounds-b) :negative)
-      (offsets-strictly-p reach a-start (car bounds-a) b-start (cdr bounds-b) :positive)))
+(defun bounds-apart-p (reach table a-name bounds-a a-start b-name bounds-b b-start index)
+  "True when, along INDEX, the shape of A-NAME bounded by BOUNDS-A (see BODY-BOUNDS)
+placed at A-START lies strictly below or strictly above the one of B-NAME at B-START."
+  (or (offsets-strictly-p reach table a-name a-start (cdr bounds-a) b-name b-start (car bounds-b)
+                          index :negative)
+      (offsets-strictly-p reach table a-name a-start (car bounds-a) b-name b-start (cdr bounds-b)
+                          index :positive)))
 
 (defun queried-pair-p (scenario body other)
   "True when both BODY's and OTHER's names occur in SCENARIO's queries: such a pair is
@@ -103,24 +128,30 @@ always built."
   "A *PAIR-SCREEN*: a function of a SCENARIO and two of its bodies, true when both are
 screenable (SCREENABLE-BODY-P), no query names both, and their shapes at their starting
 positions are strictly apart along an axis."
-  (let ((reach nil) (scenario nil) (table (make-hash-table :test #'equal)))
+  (let ((reach nil) (scenario nil)
+        (table (make-hash-table :test #'equal)) (polynomials (make-hash-table :test #'equal)))
     (lambda (for-scenario body other)
       (unless (eq for-scenario scenario)
         (setf scenario for-scenario
               reach (%make-reach nil (parameter-signs scenario) nil nil))
-        (clrhash table))
+        (clrhash table)
+        (clrhash polynomials))
       (and (screenable-body-p body) (screenable-body-p other)
            (not (queried-pair-p scenario body other))
            (loop for index from 0 to 1
-                 thereis (bounds-apart-p reach
+                 thereis (bounds-apart-p reach polynomials
+                                         (scenario-body-name body)
                                          (body-bounds reach table body index)
                                          (nth index (scenario-body-position body))
+                                         (scenario-body-name other)
                                          (body-bounds reach table other index)
-                                         (nth index (scenario-body-position other))))))))
+                                         (nth index (scenario-body-position other))
+                                         index))))))
 
-(defun stays-apart-p (reach table entry)
+(defun stays-apart-p (reach table polynomials entry)
   "True when the deferred pairing ENTRY (ORDINAL NAME OTHER-NAME) is proven to stay
-strictly apart over the whole state REACH describes (TABLE memoizes the bounds)."
+strictly apart over the whole state REACH describes (TABLE memoizes the bounds,
+POLYNOMIALS the placed bounds at the state's start)."
   (let* ((run (reach-run reach))
          (body (run-body run (second entry)))
          (other (run-body run (third entry))))
@@ -138,10 +169,14 @@ strictly apart over the whole state REACH describes (TABLE memoizes the bounds).
                             (and (ames.algebra:only-signs-p c1 side :zero)
                                  (ames.algebra:only-signs-p c2 side :zero)
                                  (if (eq side :negative)
-                                     (offsets-strictly-p reach (first a) (cdr bounds-a)
-                                                         (first b) (car bounds-b) side)
-                                     (offsets-strictly-p reach (first a) (car bounds-a)
-                                                         (first b) (cdr bounds-b) side)))))
+                                     (offsets-strictly-p reach polynomials
+                                                         (second entry) (first a) (cdr bounds-a)
+                                                         (third entry) (first b) (car bounds-b)
+                                                         index side)
+                                     (offsets-strictly-p reach polynomials
+                                                         (second entry) (first a) (car bounds-a)
+                                                         (third entry) (first b) (cdr bounds-b)
+                                                         index side)))))
                      (or (side-p :negative) (side-p :positive)))))))))
 
 (defun check-deferred-pairs (reach)
@@ -150,7 +185,8 @@ the state REACH describes; an error when nothing handles it (a deferred pair is 
 silently ignored)."
   (when *deferred-pairings*
     (let* ((table (make-hash-table :test #'equal))
-           (needed (remove-if (lambda (entry) (stays-apart-p reach table entry))
+           (polynomials (make-hash-table :test #'equal))
+           (needed (remove-if (lambda (entry) (stays-apart-p reach table polynomials entry))
                               *deferred-pairings*)))
       (when needed
         (signal 'deferred-pairs-needed :pairings needed)

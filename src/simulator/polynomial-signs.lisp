@@ -120,8 +120,13 @@ when they are not known)."
   (let ((monomials (expanded-monomials expression)))
     (if (eq monomials :unknown)
         ames.algebra:+all-signs+
-        ;; the one sign system's rules (AMES.ALGEBRA sign sets) over the monomials
-        (let ((signs-of-sum
+        (monomials-sign signs monomials))))
+
+(defun monomials-sign (signs monomials)
+  "The sign of the polynomial MONOMIALS (see EXPANDED-MONOMIALS) for every admissible
+value of the parameters, whose signs SIGNS gives: a sign set."
+  ;; the one sign system's rules (AMES.ALGEBRA sign sets) over the monomials
+  (let ((signs-of-sum
                 (ames.algebra:sum-signs
                  (mapcar (lambda (term)
                            (reduce #'ames.algebra:sign-product
@@ -130,7 +135,7 @@ when they are not known)."
                                            (car term))
                                    :initial-value (ames.algebra:number-signs (cdr term))))
                          monomials))))
-          (or signs-of-sum ames.algebra:+all-signs+)))))
+    (or signs-of-sum ames.algebra:+all-signs+)))
 
 (defun polynomial-identity-verdict (expression)
   "Whether EXPRESSION is identically zero, read from its expansion with each quantity
