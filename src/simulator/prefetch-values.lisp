@@ -10,10 +10,15 @@
 
 (in-package #:ames.simulator)
 
+(defparameter *largest-prefetched-value* 40
+  "PREFETCH-QUANTITY-VALUES asks together only values of at most this EXPRESSION-SIZE:
+a large one (a corner's closed forms) may take long alone, and a batch that runs into
+the request's timeout is asked again one by one.")
+
 (defun prefetch-quantity-values (run solved terms)
   "Ask RUN's bridge together the full simplifications QUANTITY-VALUE will ask of SOLVED
 for the quantity TERMS (those it has not kept, which SOLVED solves, state terms left
-out). Returns nothing useful."
+out, small ones only: see *LARGEST-PREFETCHED-VALUE*). Returns nothing useful."
   (let ((values (make-hash-table :test #'equal))
         (seen (make-hash-table :test #'equal))
         (expressions '()))
@@ -25,17 +30,24 @@ out). Returns nothing useful."
         (when (and found
                    (not (gethash term seen))
                    (not (nth-value 1 (gethash term (solved-model-simplified solved))))
-                   (not (member term (solved-model-state solved) :test #'equal)))
+                   (not (member term (solved-model-state solved) :test #'equal))
+                   (<= (ames.maxima:expression-size value) *largest-prefetched-value*))
           (setf (gethash term seen) t)
           (push value expressions))))
     (when expressions
       (ames.maxima:prefetch-simplifications (run-bridge run) (nreverse expressions)))))
 
 (defun reported-quantity-terms (run)
-  "The quantity terms of every entry RUN's model reports, each once."
+  "The quantity terms of every entry RUN's model reports, each once, that
+OVER-STATE-TERMS reads with QUANTITY-VALUE (not arc lengths, their rates, gaps or the
+state's constants, which it writes otherwise)."
   (let ((terms '()))
     (labels ((walk (form)
-               (cond ((quantity-term-p form) (push form terms))
+               (cond ((quantity-term-p form)
+                      (unless (or (member (first form) '(ames.kb:path-position ames.kb:path-speed
+                                                         ames.kb:contact-gap))
+                                  (state-constant-term-p form))
+                        (push form terms)))
                      ((consp form) (mapc #'walk form)))))
       (loop for (nil entry) in (model-reported (run-model run))
             do (walk entry)))
