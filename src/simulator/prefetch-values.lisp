@@ -10,15 +10,22 @@
 
 (in-package #:ames.simulator)
 
-(defparameter *largest-prefetched-value* 40
-  "PREFETCH-QUANTITY-VALUES asks together only values of at most this EXPRESSION-SIZE:
-a large one (a corner's closed forms) may take long alone, and a batch that runs into
-the request's timeout is asked again one by one.")
+(defun rational-expression-p (expression)
+  "True when EXPRESSION is built of numbers, variables and quantity terms with + - * /
+and integer powers only: its full simplification is ratsimp's and factor's, quick. A
+closed form with roots or angles (a corner's) may take long alone, and a batch that runs
+into the request's timeout is asked again one by one: such values are not prefetched."
+  (cond ((or (atom expression) (quantity-term-p expression)) t)
+        ((member (first expression) '(+ - * /))
+         (every #'rational-expression-p (rest expression)))
+        ((eq (first expression) 'expt)
+         (and (integerp (third expression)) (rational-expression-p (second expression))))
+        (t nil)))
 
 (defun prefetch-quantity-values (run solved terms)
   "Ask RUN's bridge together the full simplifications QUANTITY-VALUE will ask of SOLVED
 for the quantity TERMS (those it has not kept, which SOLVED solves, state terms left
-out, small ones only: see *LARGEST-PREFETCHED-VALUE*). Returns nothing useful."
+out, rational ones only: see RATIONAL-EXPRESSION-P). Returns nothing useful."
   (let ((values (make-hash-table :test #'equal))
         (seen (make-hash-table :test #'equal))
         (expressions '()))
@@ -31,7 +38,7 @@ out, small ones only: see *LARGEST-PREFETCHED-VALUE*). Returns nothing useful."
                    (not (gethash term seen))
                    (not (nth-value 1 (gethash term (solved-model-simplified solved))))
                    (not (member term (solved-model-state solved) :test #'equal))
-                   (<= (ames.maxima:expression-size value) *largest-prefetched-value*))
+                   (rational-expression-p value))
           (setf (gethash term seen) t)
           (push value expressions))))
     (when expressions
