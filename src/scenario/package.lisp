@@ -91,7 +91,8 @@ and Maxima (assumptions, overlaps).")
    #:missing-assumption-error #:missing-assumption-fact
    ;; the world the checks built and the run receives (world.lisp)
    #:world #:make-world #:world-scenario #:world-shapes #:world-pairs #:world-shape
-   #:world-simple-contacts
+   #:world-simple-contacts #:world-deferred-pairings #:world-pair-ordinals
+   #:*pair-screen* #:world-with-pairings
    ;; the numbers of a run (values.lisp)
    #:parameter-value-error #:parameter-value-error-parameter #:parameter-value-error-assumption
    #:check-parameter-values #:run-parameter-values #:admissible-parameter-values))

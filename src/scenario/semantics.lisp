@@ -323,22 +323,34 @@ contact pairs). Call under the scenario's assumptions."
                                                  (corner-shaped-rotating-p body)
                                                  (corner-shaped-rotating-p other))
                                         collect (list body shape other other-shape))))
+         (deferred (screened-pairings scenario pairings))
+         (ordinals (and deferred (pairing-ordinals pairings deferred)))
+         (built (if deferred
+                    (loop for pairing in pairings for ordinal from 0
+                          unless (gethash ordinal deferred) collect pairing)
+                    pairings))
          (pairs
            ;; the pairs' simplifications asked first, many in a round trip, and the
            ;; obstacles' boundaries computed once (no result changes)
            (ames.geometry:call-with-prefetched-contact-pairs
-            (loop for (body shape other other-shape) in pairings
+            (loop for (body shape other other-shape) in built
                   collect (list (scenario-body-name body) shape
                                 (scenario-body-name other) other-shape))
             (lambda ()
-              (loop for (body shape other other-shape) in pairings
+              (loop for (body shape other other-shape) in built
                     collect (scenario-pair scenario bridge body shape other other-shape)))
             :bridge bridge
             :fixed (mapcar #'scenario-body-name (scenario-fixed-bodies scenario)))))
     (make-world scenario
                 (mapcar (lambda (body shape) (cons (scenario-body-name body) shape))
                         (scenario-bodies scenario) shapes)
-                pairs)))
+                pairs
+                :ordinals ordinals
+                :deferred (loop for ordinal from 0
+                                for (body nil other) in pairings
+                                when (and deferred (gethash ordinal deferred))
+                                  collect (list ordinal (scenario-body-name body)
+                                                (scenario-body-name other))))))
 
 (defun check-scenario-geometry (scenario bridge)
   "Check SCENARIO's shapes with the geometry layer (ames.geometry:parse-shape) and that

@@ -9,6 +9,13 @@
 
 (in-package #:ames.scenario)
 
+(defvar *pair-screen* nil
+  "NIL, or a function of a SCENARIO and two of its scenario bodies that returns true
+only when it proves the two apart at the start (their shapes' bounds along an axis
+strictly apart): SCENARIO-GEOMETRY then leaves their contact pair out of the world, as a
+deferred pairing (see WORLD-DEFERRED-PAIRINGS), which the run proves apart in each
+state or builds (the simulator's deferred-pairs.lisp binds it).")
+
 (defclass world ()
   ((scenario :initarg :scenario :reader world-scenario
              :documentation "The validated SCENARIO this world is the geometry of.")
@@ -18,7 +25,14 @@ shape form, in the scenario's order of bodies.")
    (pairs :initarg :pairs :reader world-pairs
           :documentation "The AMES.GEOMETRY contact pairs of every two bodies that are not
 both fixed, in the scenario's order: the first body with each later one, then the
-second with each later one, and so on."))
+second with each later one, and so on; less the DEFERRED ones.")
+   (ordinals :initarg :ordinals :initform nil :reader world-pair-ordinals
+             :documentation "For each of PAIRS, its place in the order of every pairing
+(NIL: the pairs are every pairing, in order).")
+   (deferred :initarg :deferred :initform '() :reader world-deferred-pairings
+             :documentation "The pairings left out of PAIRS because *PAIR-SCREEN* proved
+them apart at the start, each (ORDINAL BODY-NAME OTHER-NAME): the run must prove them
+apart in each state, or build them (WORLD-WITH-PAIRINGS)."))
   (:documentation "What checking a scenario built of its geometry, handed to the run: the
 parsed shapes and the contact pairs. Valid under the assumptions it was built under (the
 scenario's, and a branch's extra facts)."))
@@ -28,10 +42,12 @@ scenario's, and a branch's extra facts)."))
     (format stream "~A, ~D bod~:@P, ~D pair~:P" (scenario-name (world-scenario world))
             (length (world-shapes world)) (length (world-pairs world)))))
 
-(defun make-world (scenario shapes pairs)
+(defun make-world (scenario shapes pairs &key ordinals deferred)
   "The WORLD of SCENARIO with SHAPES (alist body name -> geometry shape) and PAIRS (its
-contact pairs in order, see the slot's documentation)."
-  (make-instance 'world :scenario scenario :shapes shapes :pairs pairs))
+contact pairs in order, see the slot's documentation), ORDINALS their places among every
+pairing and DEFERRED the pairings left out (see the slots)."
+  (make-instance 'world :scenario scenario :shapes shapes :pairs pairs
+                        :ordinals ordinals :deferred deferred))
 
 (defun world-shape (world body-name)
   "The geometry shape of the body called BODY-NAME in WORLD, or NIL."

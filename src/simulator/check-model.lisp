@@ -67,13 +67,15 @@ wherever the solution is right."
                        when (and rate (quantity-term-p rate-term))
                          collect (cons rate-term rate))
                  (solved-model-values solved))))
-    (loop for equation in (without-idle-path-terms
-                           (mapcar (lambda (e) (with-initial-positions run e))
-                                   (ames.engine:model-equations (run-model run)))
-                           (solved-model-state solved))
-          when (eq (first equation) '=)
-            collect (list (substitute-expressions values (relation-lhs equation))
-                          (substitute-expressions values (relation-rhs equation))))))
+    ;; the values looked up in one table (the same as SUBSTITUTE-EXPRESSIONS over them)
+    (let ((table (bindings-table values)))
+      (loop for equation in (without-idle-path-terms
+                             (mapcar (lambda (e) (with-initial-positions run e))
+                                     (ames.engine:model-equations (run-model run)))
+                             (solved-model-state solved))
+            when (eq (first equation) '=)
+              collect (list (substitute-from-table table (relation-lhs equation))
+                            (substitute-from-table table (relation-rhs equation)))))))
 
 (defun check-model (run solved)
   "The plist the self-check reads of the current state's model (see the file header)."

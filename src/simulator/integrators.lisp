@@ -53,12 +53,13 @@ pulls each end from the pulley, yet its tension depends on both ends' motion)."
   (let ((free (free-body-names run)) (edges '()))
     (dolist (a free edges)
       (dolist (axis '(:x :y))
-        (let ((rate (cdr (assoc `(ames.kb:vel ,a ,axis) (solved-model-rates solved) :test #'equal))))
+        (let* ((rate (cdr (assoc `(ames.kb:vel ,a ,axis) (solved-model-rates solved) :test #'equal)))
+               (mentioned (mentioned-terms rate)))
           (dolist (term (solved-model-state solved))
             (when (and (member (first term) '(ames.kb:pos ames.kb:vel))
                        (not (eq (second term) a))
                        (member (second term) free)
-                       (not (free-of-p term rate)))
+                       (mentioned-p term mentioned rate))
               (pushnew (list a (second term)) edges :test #'equal))))))))
 
 (defun body-groups (run &optional solved)
@@ -93,7 +94,12 @@ SOLVED model, whose accelerations depend on one another's motion), in body order
 
 (defun mentions-state-p (solved expression)
   "True when EXPRESSION mentions a state term of SOLVED."
-  (some (lambda (term) (not (free-of-p term expression))) (solved-model-state solved)))
+  (let ((table (state-terms-table solved)))
+    (if (gethash :every-term table)
+        ;; a quantity term occurs where EXPRESSION-VARIABLES finds it (see MENTIONED-TERMS)
+        (some (lambda (term) (and (consp term) (gethash term table)))
+              (expression-variables expression))
+        (some (lambda (term) (not (free-of-p term expression))) (solved-model-state solved)))))
 
 (defun classify-group (run solved group)
   "GROUP's KIND, set on it and returned (and its state TERMS)."

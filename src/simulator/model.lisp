@@ -24,7 +24,8 @@ SERIES, a memo of local series; EQUATIONS, the compact system Maxima solved."
   (series (make-hash-table :test #'equal))
   (simplified (make-hash-table :test #'equal))
   (run nil)
-  (equations '() :type list))
+  (equations '() :type list)
+  (state-table nil))
 
 (defun model-derivatives (model)
   "The ODEs the believed DERIVATIVE assertions of MODEL declare: an alist state term ->
@@ -134,8 +135,13 @@ multiplied by its zero curvature): the model's unknowns."
 
 (defun identity-p (run equation)
   "True when EQUATION holds whatever its unknowns (its sides' difference is 0 in rational
-canonical form): a redundancy of the model, which Maxima's solve() must not see."
-  (eql 0 (tidy run `(- ,(relation-lhs equation) ,(relation-rhs equation)))))
+canonical form): a redundancy of the model, which Maxima's solve() must not see. A
+polynomial difference is settled without Maxima (POLYNOMIAL-IDENTITY-VERDICT)."
+  (let ((difference `(- ,(relation-lhs equation) ,(relation-rhs equation))))
+    (case (polynomial-identity-verdict difference)
+      (:zero t)
+      (:nonzero nil)
+      (t (eql 0 (tidy run difference))))))
 
 (defun without-idle-path-terms (equations state)
   "EQUATIONS with the path coordinates of straight contacts (those that are not STATE
@@ -183,9 +189,15 @@ solution. Signals UNSOLVABLE-MODEL when there is none or several."
 (defun back-substitute (solution definitions)
   "Every unknown's value: SOLUTION (alist) extended by DEFINITIONS (in elimination
 order), each definition's expression with the later ones' values substituted."
-  (let ((values (copy-list solution)))
+  (let ((values (copy-list solution))
+        ;; VALUES as a table, the first entry of a term winning as in ASSOC: each
+        ;; substitution looks up only its expression's own terms (the same result as
+        ;; SUBSTITUTE-EXPRESSIONS over the whole alist, without its N^2 list searches)
+        (table (bindings-table solution)))
     (dolist (definition (reverse definitions) values)
-      (push (cons (car definition) (substitute-expressions values (cdr definition))) values))))
+      (let ((value (substitute-from-table table (cdr definition))))
+        (setf (gethash (car definition) table) value)
+        (push (cons (car definition) value) values)))))
 
 (defun solve-model (run model)
   "Solve MODEL's equations for every unknown quantity in terms of the parameters and
@@ -214,6 +226,8 @@ in. Signals UNSOLVABLE-MODEL."
                                      :detail "The model does not determine this quantity.")))
         (let ((solved (%make-solved-model :values values :state state :equations compact
                                           :run run)))
+          ;; the rates' simplifications asked together (prefetch-values.lisp)
+          (prefetch-quantity-values run solved (mapcar #'cdr derivatives))
           (setf (solved-model-rates solved)
                 (mapcar (lambda (entry)
                           (cons (car entry) (quantity-value solved (cdr entry))))
@@ -288,10 +302,11 @@ terms stay)."
 (defun time-derivative-in (solved expression)
   "The time derivative of EXPRESSION, a function of the state terms of SOLVED, by the
 chain rule along the state's ODEs."
-  (let ((sum 0))
+  (let ((sum 0)
+        (mentioned (mentioned-terms expression)))
     (dolist (entry (solved-model-rates solved) sum)
       (let ((term (car entry)))
-        (unless (free-of-p term expression)
+        (when (mentioned-p term mentioned expression)
           (let* ((symbol (state-symbol term))
                  (partial (substitute-expressions
                            (list (cons symbol term))

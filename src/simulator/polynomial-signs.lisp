@@ -120,8 +120,13 @@ when they are not known)."
   (let ((monomials (expanded-monomials expression)))
     (if (eq monomials :unknown)
         ames.algebra:+all-signs+
-        ;; the one sign system's rules (AMES.ALGEBRA sign sets) over the monomials
-        (let ((signs-of-sum
+        (monomials-sign signs monomials))))
+
+(defun monomials-sign (signs monomials)
+  "The sign of the polynomial MONOMIALS (see EXPANDED-MONOMIALS) for every admissible
+value of the parameters, whose signs SIGNS gives: a sign set."
+  ;; the one sign system's rules (AMES.ALGEBRA sign sets) over the monomials
+  (let ((signs-of-sum
                 (ames.algebra:sum-signs
                  (mapcar (lambda (term)
                            (reduce #'ames.algebra:sign-product
@@ -130,4 +135,25 @@ when they are not known)."
                                            (car term))
                                    :initial-value (ames.algebra:number-signs (cdr term))))
                          monomials))))
-          (or signs-of-sum ames.algebra:+all-signs+)))))
+    (or signs-of-sum ames.algebra:+all-signs+)))
+
+(defun polynomial-identity-verdict (expression)
+  "Whether EXPRESSION is identically zero, read from its expansion with each quantity
+term an indeterminate (see EXPANDED-MONOMIALS): :ZERO when it expands to the zero
+polynomial, :NONZERO when to another (a polynomial with rational coefficients in
+independent indeterminates is zero as a rational function only when it is the zero
+polynomial: Maxima's ratsimp() answers the same), NIL when it is no such polynomial."
+  (let* ((variables (expression-variables expression))
+         (names (mapcar (lambda (x) (and (symbolp x) (symbol-name x))) variables))
+         (placeholders
+           (loop for term in variables
+                 for index from 0
+                 when (quantity-term-p term)
+                   collect (cons term (make-symbol (format nil "QUANTITY ~D" index))))))
+    ;; monomials are ordered by name: a placeholder's may not be a variable's
+    (unless (some (lambda (entry) (member (symbol-name (cdr entry)) names :test #'equal))
+                  placeholders)
+      (let ((monomials (expanded-monomials (substitute-expressions placeholders expression))))
+        (cond ((eq monomials :unknown) nil)
+              ((null monomials) :zero)
+              (t :nonzero))))))

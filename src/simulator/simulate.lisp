@@ -279,14 +279,34 @@ returns them (keyed by the scenario's symbols), with EXTRA-FACTS (relations) ass
 besides the scenario's own assumptions (a branch's). The scenario's checks (shapes, no
 overlap at the start) see the extra facts too: a boundary branch's scenario has lost a
 parameter's declaration to them. The run is made in the WORLD the checks built."
-  (let ((world (unless extra-facts
-                 ;; first on its own, so that contradictory assumptions are named by parameter
-                 (nth-value 1 (check-scenario scenario bridge)))))
+  (let* ((*pair-screen* (and *defer-pairs* (make-pair-screen)))
+         (world (unless extra-facts
+                  ;; first on its own, so that contradictory assumptions are named by parameter
+                  (nth-value 1 (check-scenario scenario bridge)))))
     (ames.maxima:with-assumptions (bridge (append (scenario-assumption-relations scenario) extra-facts))
       (simulate-in-world (or world (nth-value 1 (check-scenario scenario bridge)))
                          bridge parameter-values check-incremental))))
 
 (defun simulate-in-world (world bridge parameter-values check-incremental)
+  "SIMULATE-WORLD-ONCE of WORLD; when a pair the world left out (deferred-pairs.lisp)
+cannot be proven apart in a state, again from the start in a world with every pair
+built (its contacts then numbered as they always were, so that the canonical order of
+the model's equations, which their names enter, is the one a full world gives)."
+  (loop
+    (let ((needed nil))
+      (let ((history
+              (block attempt
+                (handler-bind ((deferred-pairs-needed
+                                 (lambda (condition)
+                                   (setf needed (deferred-pairs-needed-pairings condition))
+                                   (return-from attempt nil))))
+                  (let ((*deferred-pairings* (world-deferred-pairings world)))
+                    (simulate-world-once world bridge parameter-values check-incremental))))))
+        (if needed
+            (setf world (world-with-pairings world bridge (world-deferred-pairings world)))
+            (return history))))))
+
+(defun simulate-world-once (world bridge parameter-values check-incremental)
   "The SIMULATION-HISTORY of WORLD's scenario run in WORLD under the assumptions in force
 (see SIMULATE-CHECKED): the states, then the numbers under PARAMETER-VALUES and the
 answers to the queries. The restart STOP-SIMULATION returns the history so far."

@@ -259,6 +259,8 @@ RUN; (0 0) for a fixed body."
   "The QUALITATIVE-STATE numbered INDEX that starts now, from the settled TRIAL, its
 SOLVED model and the integrated GROUPS, its duration and end still :UNDECIDED."
   (let ((contacts (active-contacts run)))
+    ;; the reported quantities' simplifications asked together (prefetch-values.lisp)
+    (prefetch-quantity-values run solved (reported-quantity-terms run))
     (make-instance
      'qualitative-state
      :index index :start (run-time run) :duration :undecided

@@ -93,22 +93,28 @@ the whole system). Also returns the number of blocks."
       (let ((blocks (equation-blocks occurrences owner))
             (unknown-vector (coerce unknowns 'vector))
             (equation-vector (coerce equations 'vector))
-            (values '()))
+            ;; the values found so far, the first of a term winning (as ASSOC over them
+            ;; in order would find it): no list search per node of each block's equations
+            (table (make-hash-table :test #'equal)))
         (dolist (block blocks (values (loop for unknown in unknowns
-                                            collect (assoc unknown values :test #'equal))
+                                            collect (multiple-value-bind (value found)
+                                                        (gethash unknown table)
+                                                      (and found (cons unknown value))))
                                       (length blocks)))
           (let* ((block-unknowns (loop for u from 0 below (length owner)
                                        when (member (aref owner u) block)
                                          collect (aref unknown-vector u)))
                  (block-equations (mapcar (lambda (e)
-                                            (substitute-expressions values (aref equation-vector e)))
+                                            (substitute-from-table table (aref equation-vector e)))
                                           block))
                  (solutions (handler-case (ames.maxima:solve-equations (run-bridge run)
                                                                        block-equations block-unknowns)
                               (ames.maxima:solve-failed () :failed))))
             (unless (and (consp solutions) (null (rest solutions)))
               (return-from solve-by-blocks nil))
-            (setf values (append values (first solutions)))))))))
+            (loop for (term . value) in (first solutions)
+                  unless (nth-value 1 (gethash term table))
+                    do (setf (gethash term table) value))))))))
 
 ;;; A system Maxima cannot solve for its radicals
 

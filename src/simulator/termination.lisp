@@ -315,6 +315,8 @@ the earliest of the others. A contact the broad phase proves out of reach (see
 broad-phase.lisp) never fires."
   (let ((candidates '()) (unknown '()) (numeric '()) (never '()) (rooted '())
         (reach (make-reach run solved groups)))
+    ;; the pairs left out of the world must stay apart (deferred-pairs.lisp)
+    (check-deferred-pairs reach)
     (dolist (condition (ames.engine:model-termination-conditions (run-model run)))
       (let* ((relation (ames.engine:termination-condition-relation condition))
              (contact (gap-relation-contact relation))
