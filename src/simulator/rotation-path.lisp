@@ -42,26 +42,47 @@ else NIL."
                (or (< (length coefficients) 2) (eql 0 (tidy run (second coefficients)))))
       (list (first coefficients) (or (third coefficients) 0)))))
 
+(defun identically-zero-p (run expression)
+  "True when EXPRESSION is proven 0: its rational form is 0, or Maxima shows it equal to 0
+with the trigonometric identities (sin^2 + cos^2 = 1: the omega^2 coefficient of a body
+turning about a pinned corner vanishes only with them)."
+  (or (eql 0 (tidy run expression))
+      (ames.maxima:equivalent-p (run-bridge run) expression 0)))
+
+(defun antiderivative-from (run expression theta theta0)
+  "The integral of EXPRESSION over THETA from THETA0 (in the name THETA), checked by
+differentiation; NIL when Maxima finds none."
+  (let* ((bridge (run-bridge run))
+         (antiderivative (ames.maxima:call-or-nil
+                          (lambda () (ames.maxima:maxima-antiderivative bridge expression theta)))))
+    (when (and antiderivative
+               (ames.maxima:equivalent-p bridge (ames.maxima:maxima-derivative bridge antiderivative theta)
+                                         expression))
+      (tidy run `(- ,antiderivative ,(substitute-expressions (list (cons theta theta0)) antiderivative))
+            :full))))
+
 (defun centre-along-angle (run theta acceleration omega driving theta0 x0)
   "The centre's coordinate X(theta) (in the name THETA) whose acceleration over the angle
-and OMEGA is ACCELERATION, when the angular acceleration is DRIVING (over THETA): X' is
-the omega-free part over DRIVING and its derivative must be the omega^2 part. (values X
-X') or NIL."
+and OMEGA is ACCELERATION, when the angular acceleration is DRIVING (over THETA):
+ACCELERATION = X' DRIVING + X'' OMEGA^2. X'' is the omega^2 part C2, so X' is its
+integral from the slope at the start, C0/DRIVING at THETA0 (C0 the omega-free part), and
+must then satisfy X' DRIVING = C0 everywhere (proven; the quotient C0/DRIVING itself
+often cancels only with sin^2 + cos^2 = 1, which rational simplification does not see,
+and its integral is needlessly hard); X is X' integrated from X0. (values X X') or NIL."
   (let ((parts (omega-coefficients run acceleration omega)))
-    (when (and parts (not (eql 0 (tidy run driving))))
-      (let* ((slope (tidy run `(/ ,(first parts) ,driving) :full))
-             (bridge (run-bridge run)))
-        (when (and (eql 0 (tidy run `(- ,(ames.maxima:maxima-derivative bridge slope theta) ,(second parts))))
-                   (free-of-p omega slope))
-          (let ((antiderivative (ames.maxima:call-or-nil
-                                 (lambda () (ames.maxima:maxima-antiderivative bridge slope theta)))))
-            (when (and antiderivative
-                       (ames.maxima:equivalent-p bridge (ames.maxima:maxima-derivative bridge antiderivative theta)
-                                                 slope))
-              (values (tidy run `(+ ,x0 (- ,antiderivative ,(substitute-expressions
-                                                               (list (cons theta theta0)) antiderivative)))
-                            :full)
-                      slope))))))))
+    (when (and parts (not (identically-zero-p run driving)) (free-of-p omega (second parts)))
+      (destructuring-bind (free squared) parts
+        (let* ((start-driving (tidy run (substitute-expressions (list (cons theta theta0)) driving)))
+               (start-slope (and (not (eql 0 start-driving))
+                                 (tidy run `(/ ,(substitute-expressions (list (cons theta theta0)) free)
+                                               ,start-driving)
+                                       :full)))
+               (turned (and start-slope (antiderivative-from run squared theta theta0)))
+               (slope (and turned (tidy run `(+ ,start-slope ,turned) :full))))
+          (when (and slope (identically-zero-p run `(- (* ,slope ,driving) ,free)))
+            (let ((moved (antiderivative-from run slope theta theta0)))
+              (when moved
+                (values (tidy run `(+ ,x0 ,moved) :full) slope)))))))))
 
 (defun integrate-rotation-path (run solved group)
   "Fill GROUP's motion along its body's angle (see the file header) and make it a
@@ -75,7 +96,7 @@ not the one the angle gives, or the direction of motion is not decided."
              (driving-parts (omega-coefficients run (funcall over-angle alpha) omega-term))
              (theta0 (body-angle run body)) (omega0 (body-angular-velocity run body))
              (p0 (body-position run body)) (v0 (body-velocity run body)))
-        (when (and driving-parts (eql 0 (tidy run (second driving-parts))))
+        (when (and driving-parts (identically-zero-p run (second driving-parts)))
           (let ((driving (first driving-parts)))
             (multiple-value-bind (x x-slope)
                 (centre-along-angle run s (funcall over-angle ax) omega-term driving theta0 (first p0))
