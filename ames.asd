@@ -325,6 +325,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "rotation-rolling")
                (:file "rotation-corners")
                (:file "hinged-swing")
+               (:file "tipping")
                (:file "witness-curved")
                (:file "witness-crosscheck")
                (:file "leftward-arcs")
