@@ -191,6 +191,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "numeric")
                  (:file "earliest")
                  (:file "numeric-roots")
+                 (:file "numeric-angle-roots")
                  (:file "states")
                  (:file "impacts")
                  (:file "simulate")

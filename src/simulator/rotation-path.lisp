@@ -150,6 +150,10 @@ GROUP, or NIL when the ODE has no energy integral or the direction is not decide
         (handler-case (ames.algebra:coordinate-root-ahead (run-bridge run) function +arc-length+
                                                          (group-s0 group) (group-direction group))
           (ames.maxima:maxima-error () (values :unknown nil)))
+      (when (eq root :unknown)
+        ;; no proven root: under parameter values, searched with numbers
+        (let ((found (numeric-angle-root run group function)))
+          (when found (setf root found))))
       (case root
         (:none (values :never))
         (:unknown (values :unknown (or status `(:roots-of (= ,function 0)))))
@@ -182,7 +186,10 @@ GROUP, or NIL when the ODE has no energy integral or the direction is not decide
         (ames.maxima:maxima-error () (values :unknown nil)))
     (case turn
       (:none :true)
-      (:unknown (values :unknown (or status `(>= ,(at-arc (group-speed-squared group) s) 0))))
+      (:unknown (if (numeric-reached-p run group s)
+                    ;; under parameter values: no turning point before S (numbers)
+                    :true
+                    (values :unknown (or status `(>= ,(at-arc (group-speed-squared group) s) 0)))))
       (t (let ((before `(< (* ,(group-direction group) (- ,s ,turn)) 0)))
            (case (ames.algebra:decided-or-by-values (run-bridge run) before)
              (:true :true)
@@ -221,14 +228,25 @@ is reported unsupported otherwise."
 
 (defun angle-candidate (run group condition relation over-angle s with-rate)
   "The CANDIDATE of CONDITION (its RELATION) firing at the angle S of GROUP; its rate in
-time there WITH-RATE (none at a turning point, where the speed's slope is infinite)."
+time there WITH-RATE (none at a turning point, where the speed's slope is infinite). At
+an angle found with numbers (a rational S under parameter values, numeric-angle-roots.lisp)
+the rate's sign is the numbers' and the time the numeric travel time."
   (let* ((f (funcall over-angle (violation-function relation)))
+         (numeric (and (rationalp s) (run-numbers-known-p run)))
          (rate (and with-rate (not (eq (first relation) 'or))
                     (tidy run `(* ,(at-arc (ames.geometry:differentiate f +arc-length+) s)
-                                  ,(at-arc (group-speed group) s))))))
+                                  ,(at-arc (group-speed group) s)))))
+         (approaching (and rate
+                           (if numeric
+                               (let ((r (numeric-or-nil (run-bridge run) rate (run-values run))))
+                                 (and r (< r (- (* 1d-9 (max 1d0 (abs r)))))))
+                               (holds run `(< ,rate 0))))))
     (make-candidate condition
-                    (condition-event condition (and rate (holds run `(< ,rate 0)) rate))
-                    (arc-travel-time run group s)
+                    (condition-event condition (and approaching rate))
+                    (if numeric
+                        (list :no-closed-form :from-arc-length (group-s0 group) :to-arc-length s
+                                              :speed-squared (group-speed-squared group))
+                        (arc-travel-time run group s))
                     :at-arc s :group group :rate rate)))
 
 (defun check-rotation-paths-forever (run groups)
