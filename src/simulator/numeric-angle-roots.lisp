@@ -62,3 +62,16 @@ number) before its energy integral turns negative."
           (target (expression-value s (numeric-bindings run))))
       (and reach (realp start) (realp target)
            (< (* (group-direction group) (- target start)) reach)))))
+
+(defun numeric-angle-order (run group a b)
+  "Whether the angle A comes before B along GROUP's rotation path, by the run's numbers,
+when one of them was found with numbers (a rational; NUMERIC-ANGLE-ROOT): :TRUE or
+:FALSE; NIL otherwise (for any other group, or numbers too close to tell), the proof is
+then the algebra's."
+  (when (and (eq (group-kind group) :rotation-path) (run-numbers-known-p run)
+             (or (rationalp a) (rationalp b)))
+    (let ((bindings (numeric-bindings run)))
+      (let ((na (expression-value a bindings)) (nb (expression-value b bindings)))
+        (when (and (realp na) (realp nb)
+                   (> (abs (- na nb)) (* 1d-9 (max 1d0 (abs na)))))
+          (if (< (* (group-direction group) (- na nb)) 0) :true :false))))))

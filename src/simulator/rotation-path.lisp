@@ -140,6 +140,16 @@ GROUP, or NIL when the ODE has no energy integral or the direction is not decide
 
 ;;; Where a condition fires along the angle
 
+(defun decided-or-by-values-first (run relation)
+  "RELATION's truth (:TRUE, :FALSE or :UNKNOWN) as AMES.ALGEBRA:DECIDED-OR-BY-VALUES gives
+it, but, while the run's values decide first (AMES.ALGEBRA:VALUES-FIRST-P), after only a
+cheap proof: the values settle the order of two angles along the path, as they settle
+the order of two event times (recorded as assumed from them)."
+  (let ((truth (ames.algebra:decide-first-cheaply (run-bridge run) relation)))
+    (if (eq truth :unknown)
+        (or (ames.algebra:decide-by-values relation) :unknown)
+        truth)))
+
 (defun angle-root-ahead (run group function)
   "Where FUNCTION (of the angle) first reaches zero going negative ahead of GROUP's start:
 (values :AT S), (values :NEVER) or (values :UNKNOWN FACT)."
@@ -159,7 +169,7 @@ GROUP, or NIL when the ODE has no energy integral or the direction is not decide
         (:unknown (values :unknown (or status `(:roots-of (= ,function 0)))))
         (t (let ((slope (tidy run `(* ,(group-direction group)
                                       ,(at-arc (ames.geometry:differentiate function +arc-length+) root)))))
-             (case (ames.algebra:decided-or-by-values (run-bridge run) `(<= ,slope 0))
+             (case (decided-or-by-values-first run `(<= ,slope 0))
                (:true (values :at root))
                (t (values :unknown `(< ,slope 0))))))))))
 
@@ -191,7 +201,7 @@ GROUP, or NIL when the ODE has no energy integral or the direction is not decide
                     :true
                     (values :unknown (or status `(>= ,(at-arc (group-speed-squared group) s) 0)))))
       (t (let ((before `(< (* ,(group-direction group) (- ,s ,turn)) 0)))
-           (case (ames.algebra:decided-or-by-values (run-bridge run) before)
+           (case (decided-or-by-values-first run before)
              (:true :true)
              (:false :false)
              (t (values :unknown before))))))))
