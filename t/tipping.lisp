@@ -75,3 +75,41 @@ d/dtheta of that, whatever the order in which the solver wrote the accelerations
       (is (ames.simulator::identically-zero-p
            run '(* (/ (* w k) (+ (expt w 2) (expt k 2))) (- (+ (expt (sin x) 2) (expt (cos x) 2)) 1))))
       (is (not (ames.simulator::identically-zero-p run '(- (expt (sin x) 2) (expt (cos x) 2))))))))
+
+;;; Roots along the angle found with numbers (src/simulator/numeric-angle-roots.lisp)
+
+(defun swinging-group (direction)
+  "A :ROTATION-PATH group from the angle 0 in DIRECTION whose energy integral
+E = 2 g (cos theta - 1) / l + g / l turns negative at theta = +-pi/3 (a pendulum's)."
+  (let ((group (ames.simulator::make-group '(bob)))
+        (s 'ames.simulator::arc-length))
+    (setf (ames.simulator::group-kind group) :rotation-path
+          (ames.simulator::group-variable group) s
+          (ames.simulator::group-s0 group) 0
+          (ames.simulator::group-direction group) direction
+          (ames.simulator::group-speed-squared group) `(+ (/ (* 2 g (- (cos ,s) 1)) l) (/ g l)))
+    group))
+
+(test numeric-roots-along-the-angle
+  "Under values, where a condition of the angle first crosses zero ahead, before the
+turning point at pi/3: cos theta - cos(pi/4) at pi/4 (either way), none for cos theta -
+cos(pi/2) (beyond the turning point), none without values; the order of two angles by
+the numbers."
+  (with-fixture simulator-bridge ()
+    (let ((run (make-instance 'ames.simulator::run :bridge bridge :values '((g . 981/100) (l . 2))))
+          (s 'ames.simulator::arc-length))
+      (dolist (direction '(1 -1))
+        (let* ((group (swinging-group direction))
+               (root (ames.simulator::numeric-angle-root run group `(- (cos ,s) (cos (/ pi 4))))))
+          (is (rationalp root))
+          (is (and root (< (abs (- root (* direction (/ pi 4)))) 1d-9)) "root ~A, expected ~A" root (* direction (/ pi 4)))
+          (is (null (ames.simulator::numeric-angle-root run group `(cos ,s))) "beyond the turning point")
+          (is (ames.simulator::numeric-reached-p run group (* direction 1)))
+          (is (not (ames.simulator::numeric-reached-p run group (* direction 11/10))))
+          (is (eq (if (= direction 1) :true :false)
+                  (ames.simulator::numeric-angle-order run group 1/2 '(/ pi 4))))))
+      (let ((without (make-instance 'ames.simulator::run :bridge bridge :values '()
+                                    :scenario (ames:parse-scenario
+                                               '(scenario s "x" (parameters (g :positive)) (gravity g)
+                                                 (body b :mass 1 :shape (circle 1) :position (0 0) :velocity (0 0)))))))
+        (is (null (ames.simulator::numeric-angle-root without (swinging-group 1) `(- (cos ,s) 1/2))))))))
