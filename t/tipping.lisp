@@ -31,13 +31,19 @@
   "(values A AX AY) for a uniform w x k block of mass m pinned at the corner whose arm to
 the centre is RHO, at the angle THETA turning at OMEGA (names): the textbook's angular
 acceleration under gravity g about the edge, -m g r_x / I_edge, and the centre's
-acceleration A k x r - OMEGA^2 r, each in Maxima's rational canonical form, as the solver
-gives them."
+acceleration A k x r - OMEGA^2 r, each in Maxima's rational canonical form with sin^2
+written 1 - cos^2, as the solver gives them (the quotient of the centre's omega-free part
+by A then cancels only with sin^2 + cos^2 = 1)."
   (destructuring-bind (rx ry) (rotated-arm rho theta)
     (let ((driving `(/ (* -1 m g ,rx) (/ (* m (+ (expt w 2) (expt k 2))) 3))))
-      (values (ames.simulator::tidy run driving)
-              (ames.simulator::tidy run `(- (* -1 ,driving ,ry) (* (expt ,omega 2) ,rx)))
-              (ames.simulator::tidy run `(- (* ,driving ,rx) (* (expt ,omega 2) ,ry)))))))
+      (flet ((solver-form (expression)
+               ;; rational form with sin^2 written 1 - cos^2, as the solver leaves it
+               (ames.simulator::tidy
+                run (subst `(- 1 (expt (cos ,theta) 2)) `(expt (sin ,theta) 2)
+                           (ames.simulator::tidy run expression) :test #'equal))))
+        (values (solver-form driving)
+                (solver-form `(- (* -1 ,driving ,ry) (* (expt ,omega 2) ,rx)))
+                (solver-form `(- (* ,driving ,rx) (* (expt ,omega 2) ,ry))))))))
 
 (test centre-of-a-block-tipping-about-its-edge
   "A block tipping about its downhill edge P = (p, q) from the angle -a (on an incline of
