@@ -61,6 +61,17 @@ differentiation; NIL when Maxima finds none."
       (tidy run `(- ,antiderivative ,(substitute-expressions (list (cons theta theta0)) antiderivative))
             :full))))
 
+(defun slope-from-start (run theta free squared driving theta0)
+  "X'(theta) as the integral of the omega^2 part SQUARED from the slope at the start,
+FREE/DRIVING at THETA0 (see CENTRE-ALONG-ANGLE); NIL when DRIVING is 0 there or the
+integral is not found."
+  (let* ((at-start (lambda (x) (substitute-expressions (list (cons theta theta0)) x)))
+         (start-driving (tidy run (funcall at-start driving)))
+         (start-slope (and (not (eql 0 start-driving))
+                           (tidy run `(/ ,(funcall at-start free) ,start-driving) :full)))
+         (turned (and start-slope (antiderivative-from run squared theta theta0))))
+    (and turned (tidy run `(+ ,start-slope ,turned) :full))))
+
 (defun centre-along-angle (run theta acceleration omega driving theta0 x0)
   "The centre's coordinate X(theta) (in the name THETA) whose acceleration over the angle
 and OMEGA is ACCELERATION, when the angular acceleration is DRIVING (over THETA):
@@ -68,18 +79,19 @@ ACCELERATION = X' DRIVING + X'' OMEGA^2. X'' is the omega^2 part C2, so X' is it
 integral from the slope at the start, C0/DRIVING at THETA0 (C0 the omega-free part), and
 must then satisfy X' DRIVING = C0 everywhere (proven; the quotient C0/DRIVING itself
 often cancels only with sin^2 + cos^2 = 1, which rational simplification does not see,
-and its integral is needlessly hard); X is X' integrated from X0. (values X X') or NIL."
+and its integral is needlessly hard). Where DRIVING is 0 at the start (a hinged body set
+turning from its equilibrium), X' is that quotient, its derivative proven to be C2. X is
+X' integrated from X0. (values X X') or NIL."
   (let ((parts (omega-coefficients run acceleration omega)))
     (when (and parts (not (identically-zero-p run driving)) (free-of-p omega (second parts)))
       (destructuring-bind (free squared) parts
-        (let* ((start-driving (tidy run (substitute-expressions (list (cons theta theta0)) driving)))
-               (start-slope (and (not (eql 0 start-driving))
-                                 (tidy run `(/ ,(substitute-expressions (list (cons theta theta0)) free)
-                                               ,start-driving)
-                                       :full)))
-               (turned (and start-slope (antiderivative-from run squared theta theta0)))
-               (slope (and turned (tidy run `(+ ,start-slope ,turned) :full))))
-          (when (and slope (identically-zero-p run `(- (* ,slope ,driving) ,free)))
+        (let ((slope (or (let ((slope (slope-from-start run theta free squared driving theta0)))
+                           (and slope (identically-zero-p run `(- (* ,slope ,driving) ,free)) slope))
+                         (let ((quotient (tidy run `(/ ,free ,driving) :full)))
+                           (and (eql 0 (tidy run `(- ,(ames.maxima:maxima-derivative (run-bridge run) quotient theta)
+                                                     ,squared)))
+                                quotient)))))
+          (when slope
             (let ((moved (antiderivative-from run slope theta theta0)))
               (when moved
                 (values (tidy run `(+ ,x0 ,moved) :full) slope)))))))))
