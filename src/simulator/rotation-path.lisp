@@ -6,8 +6,9 @@
 ;;;; velocity omega alone. When the angular acceleration is a function A(theta) of the angle
 ;;;; alone (a constant generalized inertia: the ladder's m l^2/3, a pivot's I + m d^2) and the
 ;;;; centre's accelerations are those of a point X(theta), a = X'(theta) alpha + X''(theta)
-;;;; omega^2 (checked: X' is the omega-free part over A, and its derivative must be the
-;;;; omega^2 part), the motion is one degree of freedom along theta:
+;;;; omega^2 (checked: X' is the integral of the omega^2 part from the start's slope, and
+;;;; X' A must be the omega-free part, proven with the trigonometric identities), the
+;;;; motion is one degree of freedom along theta:
 ;;;;   X(theta) = X0 + integral of X' from theta0 to theta,   omega^2 = E(theta) from
 ;;;;   theta'' = A(theta) (the bridge's autonomous ODE solver, as for a curved contact),
 ;;;; the velocities X'(theta) omega with omega = direction sqrt(E). The group's variable is
@@ -15,7 +16,8 @@
 ;;;; COORDINATE-ROOT-AHEAD (each factor's earliest zero ahead, every turn considered: the
 ;;;; conditions are periodic in theta), and their times by the travel-time integral (an
 ;;;; elliptic form for the ladder). A root beyond the next turning point of E is not
-;;;; reached. Nothing here knows which force or contact holds the body.
+;;;; reached; under parameter values a root with no closed form is searched with numbers
+;;;; (numeric-angle-roots.lisp). Nothing here knows which force or contact holds the body.
 
 (in-package #:ames.simulator)
 
