@@ -13,7 +13,9 @@
   "A tall block on a rough incline tips over its downhill edge rather than sliding."
   (parameters (m :positive (:value 1)) (g :positive (:value 981/100))
               (h :positive (:value 3)) (a (> a 0) (< a (/ pi 2)) (:value (deg 30)))
-              (w :positive (:value 1/5)) (k :positive (> k (/ w (tan a))) (< k h) (:value 1))
+              ;; (< w h): the block must fit on the slope (w <= h / sin a) for its two
+              ;; bottom corners to be proven on it at the start
+              (w :positive (< w h) (:value 1/5)) (k :positive (> k (/ w (tan a))) (< k h) (:value 1))
               (mu :positive (> mu (tan a)) (:value 1)))
   (gravity g)
   (body incline :fixed t :shape (polygon (0 0) ((/ h (tan a)) 0) (0 h)))

@@ -32,7 +32,8 @@ sign()."
 
 (defun nearer-p (run group a b)
   "Whether the arc length A comes before B in GROUP's direction: :TRUE, :FALSE or :UNKNOWN."
-  (let ((answer (decide run `(< (* ,(group-direction group) (- ,a ,b)) 0))))
+  (let ((answer (or (numeric-angle-order run group a b)
+                    (decide run `(< (* ,(group-direction group) (- ,a ,b)) 0)))))
     (if (and (eq answer :unknown) (group-radius run group))
         (ahead-p run (let ((copy (copy-group group))) (setf (group-s0 copy) a) copy) b)
         answer)))

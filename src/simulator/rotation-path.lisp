@@ -6,8 +6,9 @@
 ;;;; velocity omega alone. When the angular acceleration is a function A(theta) of the angle
 ;;;; alone (a constant generalized inertia: the ladder's m l^2/3, a pivot's I + m d^2) and the
 ;;;; centre's accelerations are those of a point X(theta), a = X'(theta) alpha + X''(theta)
-;;;; omega^2 (checked: X' is the omega-free part over A, and its derivative must be the
-;;;; omega^2 part), the motion is one degree of freedom along theta:
+;;;; omega^2 (checked: X' is the integral of the omega^2 part from the start's slope, and
+;;;; X' A must be the omega-free part, proven with the trigonometric identities), the
+;;;; motion is one degree of freedom along theta:
 ;;;;   X(theta) = X0 + integral of X' from theta0 to theta,   omega^2 = E(theta) from
 ;;;;   theta'' = A(theta) (the bridge's autonomous ODE solver, as for a curved contact),
 ;;;; the velocities X'(theta) omega with omega = direction sqrt(E). The group's variable is
@@ -15,7 +16,8 @@
 ;;;; COORDINATE-ROOT-AHEAD (each factor's earliest zero ahead, every turn considered: the
 ;;;; conditions are periodic in theta), and their times by the travel-time integral (an
 ;;;; elliptic form for the ladder). A root beyond the next turning point of E is not
-;;;; reached. Nothing here knows which force or contact holds the body.
+;;;; reached; under parameter values a root with no closed form is searched with numbers
+;;;; (numeric-angle-roots.lisp). Nothing here knows which force or contact holds the body.
 
 (in-package #:ames.simulator)
 
@@ -42,26 +44,59 @@ else NIL."
                (or (< (length coefficients) 2) (eql 0 (tidy run (second coefficients)))))
       (list (first coefficients) (or (third coefficients) 0)))))
 
+(defun identically-zero-p (run expression)
+  "True when EXPRESSION is proven 0: its rational form is 0, or Maxima shows it equal to 0
+with the trigonometric identities (sin^2 + cos^2 = 1: the omega^2 coefficient of a body
+turning about a pinned corner vanishes only with them)."
+  (or (eql 0 (tidy run expression))
+      (ames.maxima:equivalent-p (run-bridge run) expression 0)))
+
+(defun antiderivative-from (run expression theta theta0)
+  "The integral of EXPRESSION over THETA from THETA0 (in the name THETA), checked by
+differentiation; NIL when Maxima finds none."
+  (let* ((bridge (run-bridge run))
+         (antiderivative (ames.maxima:call-or-nil
+                          (lambda () (ames.maxima:maxima-antiderivative bridge expression theta)))))
+    (when (and antiderivative
+               (ames.maxima:equivalent-p bridge (ames.maxima:maxima-derivative bridge antiderivative theta)
+                                         expression))
+      (tidy run `(- ,antiderivative ,(substitute-expressions (list (cons theta theta0)) antiderivative))
+            :full))))
+
+(defun slope-from-start (run theta free squared driving theta0)
+  "X'(theta) as the integral of the omega^2 part SQUARED from the slope at the start,
+FREE/DRIVING at THETA0 (see CENTRE-ALONG-ANGLE); NIL when DRIVING is 0 there or the
+integral is not found."
+  (let* ((at-start (lambda (x) (substitute-expressions (list (cons theta theta0)) x)))
+         (start-driving (tidy run (funcall at-start driving)))
+         (start-slope (and (not (eql 0 start-driving))
+                           (tidy run `(/ ,(funcall at-start free) ,start-driving) :full)))
+         (turned (and start-slope (antiderivative-from run squared theta theta0))))
+    (and turned (tidy run `(+ ,start-slope ,turned) :full))))
+
 (defun centre-along-angle (run theta acceleration omega driving theta0 x0)
   "The centre's coordinate X(theta) (in the name THETA) whose acceleration over the angle
-and OMEGA is ACCELERATION, when the angular acceleration is DRIVING (over THETA): X' is
-the omega-free part over DRIVING and its derivative must be the omega^2 part. (values X
-X') or NIL."
+and OMEGA is ACCELERATION, when the angular acceleration is DRIVING (over THETA):
+ACCELERATION = X' DRIVING + X'' OMEGA^2. X'' is the omega^2 part C2, so X' is its
+integral from the slope at the start, C0/DRIVING at THETA0 (C0 the omega-free part), and
+must then satisfy X' DRIVING = C0 everywhere (proven; the quotient C0/DRIVING itself
+often cancels only with sin^2 + cos^2 = 1, which rational simplification does not see,
+and its integral is needlessly hard). Where DRIVING is 0 at the start (a hinged body set
+turning from its equilibrium), X' is that quotient, its derivative proven to be C2. X is
+X' integrated from X0. (values X X') or NIL."
   (let ((parts (omega-coefficients run acceleration omega)))
-    (when (and parts (not (eql 0 (tidy run driving))))
-      (let* ((slope (tidy run `(/ ,(first parts) ,driving) :full))
-             (bridge (run-bridge run)))
-        (when (and (eql 0 (tidy run `(- ,(ames.maxima:maxima-derivative bridge slope theta) ,(second parts))))
-                   (free-of-p omega slope))
-          (let ((antiderivative (ames.maxima:call-or-nil
-                                 (lambda () (ames.maxima:maxima-antiderivative bridge slope theta)))))
-            (when (and antiderivative
-                       (ames.maxima:equivalent-p bridge (ames.maxima:maxima-derivative bridge antiderivative theta)
-                                                 slope))
-              (values (tidy run `(+ ,x0 (- ,antiderivative ,(substitute-expressions
-                                                               (list (cons theta theta0)) antiderivative)))
-                            :full)
-                      slope))))))))
+    (when (and parts (not (identically-zero-p run driving)) (free-of-p omega (second parts)))
+      (destructuring-bind (free squared) parts
+        (let ((slope (or (let ((slope (slope-from-start run theta free squared driving theta0)))
+                           (and slope (identically-zero-p run `(- (* ,slope ,driving) ,free)) slope))
+                         (let ((quotient (tidy run `(/ ,free ,driving) :full)))
+                           (and (eql 0 (tidy run `(- ,(ames.maxima:maxima-derivative (run-bridge run) quotient theta)
+                                                     ,squared)))
+                                quotient)))))
+          (when slope
+            (let ((moved (antiderivative-from run slope theta theta0)))
+              (when moved
+                (values (tidy run `(+ ,x0 ,moved) :full) slope)))))))))
 
 (defun integrate-rotation-path (run solved group)
   "Fill GROUP's motion along its body's angle (see the file header) and make it a
@@ -75,7 +110,7 @@ not the one the angle gives, or the direction of motion is not decided."
              (driving-parts (omega-coefficients run (funcall over-angle alpha) omega-term))
              (theta0 (body-angle run body)) (omega0 (body-angular-velocity run body))
              (p0 (body-position run body)) (v0 (body-velocity run body)))
-        (when (and driving-parts (eql 0 (tidy run (second driving-parts))))
+        (when (and driving-parts (identically-zero-p run (second driving-parts)))
           (let ((driving (first driving-parts)))
             (multiple-value-bind (x x-slope)
                 (centre-along-angle run s (funcall over-angle ax) omega-term driving theta0 (first p0))
@@ -119,6 +154,16 @@ GROUP, or NIL when the ODE has no energy integral or the direction is not decide
 
 ;;; Where a condition fires along the angle
 
+(defun decided-or-by-values-first (run relation)
+  "RELATION's truth (:TRUE, :FALSE or :UNKNOWN) as AMES.ALGEBRA:DECIDED-OR-BY-VALUES gives
+it, but, while the run's values decide first (AMES.ALGEBRA:VALUES-FIRST-P), after only a
+cheap proof: the values settle the order of two angles along the path, as they settle
+the order of two event times (recorded as assumed from them)."
+  (let ((truth (ames.algebra:decide-first-cheaply (run-bridge run) relation)))
+    (if (eq truth :unknown)
+        (or (ames.algebra:decide-by-values relation) :unknown)
+        truth)))
+
 (defun angle-root-ahead (run group function)
   "Where FUNCTION (of the angle) first reaches zero going negative ahead of GROUP's start:
 (values :AT S), (values :NEVER) or (values :UNKNOWN FACT)."
@@ -129,12 +174,16 @@ GROUP, or NIL when the ODE has no energy integral or the direction is not decide
         (handler-case (ames.algebra:coordinate-root-ahead (run-bridge run) function +arc-length+
                                                          (group-s0 group) (group-direction group))
           (ames.maxima:maxima-error () (values :unknown nil)))
+      (when (eq root :unknown)
+        ;; no proven root: under parameter values, searched with numbers
+        (let ((found (numeric-angle-root run group function)))
+          (when found (setf root found))))
       (case root
         (:none (values :never))
         (:unknown (values :unknown (or status `(:roots-of (= ,function 0)))))
         (t (let ((slope (tidy run `(* ,(group-direction group)
                                       ,(at-arc (ames.geometry:differentiate function +arc-length+) root)))))
-             (case (ames.algebra:decided-or-by-values (run-bridge run) `(<= ,slope 0))
+             (case (decided-or-by-values-first run `(<= ,slope 0))
                (:true (values :at root))
                (t (values :unknown `(< ,slope 0))))))))))
 
@@ -161,9 +210,12 @@ GROUP, or NIL when the ODE has no energy integral or the direction is not decide
         (ames.maxima:maxima-error () (values :unknown nil)))
     (case turn
       (:none :true)
-      (:unknown (values :unknown (or status `(>= ,(at-arc (group-speed-squared group) s) 0))))
+      (:unknown (if (numeric-reached-p run group s)
+                    ;; under parameter values: no turning point before S (numbers)
+                    :true
+                    (values :unknown (or status `(>= ,(at-arc (group-speed-squared group) s) 0)))))
       (t (let ((before `(< (* ,(group-direction group) (- ,s ,turn)) 0)))
-           (case (ames.algebra:decided-or-by-values (run-bridge run) before)
+           (case (decided-or-by-values-first run before)
              (:true :true)
              (:false :false)
              (t (values :unknown before))))))))
@@ -200,14 +252,25 @@ is reported unsupported otherwise."
 
 (defun angle-candidate (run group condition relation over-angle s with-rate)
   "The CANDIDATE of CONDITION (its RELATION) firing at the angle S of GROUP; its rate in
-time there WITH-RATE (none at a turning point, where the speed's slope is infinite)."
+time there WITH-RATE (none at a turning point, where the speed's slope is infinite). At
+an angle found with numbers (a rational S under parameter values, numeric-angle-roots.lisp)
+the rate's sign is the numbers' and the time the numeric travel time."
   (let* ((f (funcall over-angle (violation-function relation)))
+         (numeric (and (rationalp s) (run-numbers-known-p run)))
          (rate (and with-rate (not (eq (first relation) 'or))
                     (tidy run `(* ,(at-arc (ames.geometry:differentiate f +arc-length+) s)
-                                  ,(at-arc (group-speed group) s))))))
+                                  ,(at-arc (group-speed group) s)))))
+         (approaching (and rate
+                           (if numeric
+                               (let ((r (numeric-or-nil (run-bridge run) rate (run-values run))))
+                                 (and r (< r (- (* 1d-9 (max 1d0 (abs r)))))))
+                               (holds run `(< ,rate 0))))))
     (make-candidate condition
-                    (condition-event condition (and rate (holds run `(< ,rate 0)) rate))
-                    (arc-travel-time run group s)
+                    (condition-event condition (and approaching rate))
+                    (if numeric
+                        (list :no-closed-form :from-arc-length (group-s0 group) :to-arc-length s
+                                              :speed-squared (group-speed-squared group))
+                        (arc-travel-time run group s))
                     :at-arc s :group group :rate rate)))
 
 (defun check-rotation-paths-forever (run groups)
