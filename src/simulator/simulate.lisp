@@ -19,6 +19,14 @@
   "NIL, or a function of a SIMULATION-HISTORY and the QUALITATIVE-STATE just appended to
 it, called as each state's analysis is done (the command line's progress report).")
 
+(defvar *states-reported-before* -1
+  "The last state index of the run in hand that an abandoned attempt already gave to
+*STATE-HOOK* (SIMULATE-IN-WORLD): those states are not given to it again.")
+
+(defvar *attempt-history* nil
+  "A cons whose CAR SIMULATE-WORLD-ONCE sets to the history it makes (so that an
+abandoned attempt's states can be counted).")
+
 (defparameter *default-state-limit* 12
   "How many states a scenario runs when its (simulate ...) clause sets no :states.")
 
@@ -160,7 +168,8 @@ noted in the history) for the rest of the run."
                        (ames.maxima:with-assumptions ((run-bridge run) (list fact))
                          (run-states run history index limit check-incremental))))))
              (setf (history-states history) (append (history-states history) (list state)))
-             (when *state-hook* (funcall *state-hook* history state))
+             (when (and *state-hook* (> index *states-reported-before*))
+               (funcall *state-hook* history state))
              (cond ((null fired)
                     (setf (history-outcome history) :complete)
                     (return))
@@ -291,20 +300,27 @@ parameter's declaration to them. The run is made in the WORLD the checks built."
   "SIMULATE-WORLD-ONCE of WORLD; when a pair the world left out (deferred-pairs.lisp)
 cannot be proven apart in a state, again from the start in a world with every pair
 built (its contacts then numbered as they always were, so that the canonical order of
-the model's equations, which their names enter, is the one a full world gives)."
-  (loop
-    (let ((needed nil))
-      (let ((history
-              (block attempt
-                (handler-bind ((deferred-pairs-needed
-                                 (lambda (condition)
-                                   (setf needed (deferred-pairs-needed-pairings condition))
-                                   (return-from attempt nil))))
-                  (let ((*deferred-pairings* (world-deferred-pairings world)))
-                    (simulate-world-once world bridge parameter-values check-incremental))))))
-        (if needed
-            (setf world (world-with-pairings world bridge (world-deferred-pairings world)))
-            (return history))))))
+the model's equations, which their names enter, is the one a full world gives). The
+states an abandoned attempt gave *STATE-HOOK* are not given to it again."
+  (let ((reported -1))
+    (loop
+      (let ((needed nil) (attempt-history (list nil)))
+        (let ((history
+                (block attempt
+                  (handler-bind ((deferred-pairs-needed
+                                   (lambda (condition)
+                                     (setf needed (deferred-pairs-needed-pairings condition))
+                                     (return-from attempt nil))))
+                    (let ((*deferred-pairings* (world-deferred-pairings world))
+                          (*states-reported-before* reported)
+                          (*attempt-history* attempt-history))
+                      (simulate-world-once world bridge parameter-values check-incremental))))))
+          (cond (needed
+                 (when (first attempt-history)
+                   (setf reported (max reported
+                                       (1- (length (history-states (first attempt-history)))))))
+                 (setf world (world-with-pairings world bridge (world-deferred-pairings world))))
+                (t (return history))))))))
 
 (defun simulate-world-once (world bridge parameter-values check-incremental)
   "The SIMULATION-HISTORY of WORLD's scenario run in WORLD under the assumptions in force
@@ -316,6 +332,7 @@ answers to the queries. The restart STOP-SIMULATION returns the history so far."
                                  :parameter-values parameter-values))
          (limit (or (scenario-states scenario) *default-state-limit*))
          (run nil))
+    (when *attempt-history* (setf (car *attempt-history*) history))
     (restart-case
         (handler-bind ((ames.engine:undecided-relation
                          (lambda (condition) (undecided-to-ambiguity condition run))))
