@@ -248,6 +248,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "compare-curved")
                  (:file "compare-angles")
                  (:file "compare-first-order")
+                 (:file "compare-time-limit")
                  (:file "generate")
                  (:file "generate-curved")
                  (:file "generate-drag")
