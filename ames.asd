@@ -252,7 +252,8 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "generate")
                  (:file "generate-curved")
                  (:file "generate-drag")
-                 (:file "generate-rotation")))
+                 (:file "generate-rotation")
+                 (:file "generate-hinged")))
    (:module "interface" :pathname "src/interface/" :serial t
     :depends-on ("report" "check" "witness")
     :components ((:file "package")
