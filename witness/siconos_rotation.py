@@ -249,12 +249,12 @@ class RotationDriver(Events):
                 inter.y(1)[:] = C.dot(v)
 
     def project(self, q, lams):
-        """Q moved back onto the relations that hold (the hinges, the contacts that pressed
-        in the step): Moreau-Jean keeps them at the velocity level only, and the gaps of
+        """Q moved back onto the relations that hold (the hinges, the contacts and ropes that
+        pressed in the step): Moreau-Jean keeps them at the velocity level only, and the gaps of
         turning bodies drift by O(STEP) over a run. A mass-weighted (Gauss-Newton)
         projection, twice; the velocities are left alone."""
         held = [r for r, lam in zip(self.relations, lams)
-                if isinstance(r, Hinge) or (isinstance(r, Contact) and lam[0] > 0)]
+                if isinstance(r, Hinge) or (isinstance(r, (Contact, Rope)) and lam[0] > 0)]
         if not held:
             return q
         inverse = 1.0 / np.diag(self.mass)
