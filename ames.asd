@@ -329,6 +329,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "hinged-swing")
                (:file "witness-curved")
                (:file "witness-crosscheck")
+               (:file "witness-hinged")
                (:file "leftward-arcs")
                (:file "trust-fresh")
                (:file "trust-fresh-impacts")
