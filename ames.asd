@@ -180,6 +180,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "speed-line")
                  (:file "broad-phase")
                  (:file "polynomial-signs")
+                 (:file "abs-signs")
                  (:file "termination")
                  (:file "speed-line-roots")
                  (:file "check-model")

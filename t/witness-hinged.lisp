@@ -104,3 +104,20 @@ beside the witness's at that time; AMES's final speed made 10 % faster is AMES w
       (is (eq :agree (getf result :verdict)) "~A~%~A" text (getf result :reason))
       (is (= 1 (rows-named rows "end event")))
       (is (= 1 (rows-named rows "final angular velocity pulley"))))))
+
+(test quadratic-drag-slide-never-turns
+  "A block sliding alone under quadratic drag -c |v| v (witness/disagreements/
+refused-drag-slide-quadratic.lisp, once refused: abs(9 + 2 tau) > 0 undecided) slides
+forever at v = v0 / (1 + c v0 tau / m) (m dv/dt = -c v^2), here 9 / (9 + 2 tau)."
+  (let* ((scenario (first (ames:read-scenario-file
+                           (asdf:system-relative-pathname
+                            "ames" "witness/disagreements/refused-drag-slide-quadratic.lisp"))))
+         (answer (ames::ames-answer scenario))
+         (state (first (getf answer :states)))
+         (velocity (second (find "block" (getf state :velocities)
+                                 :key (lambda (e) (symbol-name (first e))) :test #'string-equal))))
+    (is (eq :none (getf state :end-event)))
+    (dolist (time '(0 1/3 1 7/2 20))
+      (is (< (abs (- (ames.base:expression-value (first velocity) (list (cons 'ames.base:tau time)))
+                     (/ 9 (+ 9 (* 2 time)))))
+             1d-12)))))
