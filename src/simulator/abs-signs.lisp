@@ -6,7 +6,9 @@
 ;;;; (81 + 18 tau + 9 |9 + 2 tau|) / ((9 + 2 tau) |9 + 2 tau|), which the root search
 ;;;; cannot take (abs is no polynomial) although 9 + 2 tau > 0 for every tau >= 0. A
 ;;;; linear U = U(AFTER) + U' (TAU - AFTER) keeps the sign of U(AFTER) for TAU >= AFTER
-;;;; when U' has that sign too: abs(U) is U there, or -U.
+;;;; when U' has that sign too: abs(U) is U there, or -U. So does a U whose derivative has
+;;;; a sign for every TAU (a sliding block's speed under drag and a push,
+;;;; c1 exp(k tau) - c0 with c1 > 0).
 
 (in-package #:ames.simulator)
 
@@ -15,15 +17,15 @@
   (and (consp g) (or (eq (first g) 'abs) (some #'mentions-abs-p (rest g)))))
 
 (defun abs-of-known-sign (run u after)
-  "U or (- U) when the linear function U of TAU is proven >= 0, or <= 0, for every
-TAU >= AFTER; NIL when U is not linear in TAU or its sign is not proven."
-  (let ((slope (tidy run (time-derivative u))))
-    (when (free-of-p 'tau slope)
-      (let ((start (tidy run (at-time u after))))
-        (flet ((proven (operator) (and (eq (decide run (list operator start 0)) :true)
-                                       (eq (decide run (list operator slope 0)) :true))))
-          (cond ((proven '>=) u)
-                ((proven '<=) `(- ,u))))))))
+  "U or (- U) when the function U of TAU is proven >= 0, or <= 0, for every TAU >= AFTER:
+U(AFTER) has that sign and so has dU/dTAU (proven for every TAU: a constant, or such as
+c exp(k TAU) with c of known sign); NIL when not proven."
+  (let ((slope (tidy run (time-derivative u)))
+        (start (tidy run (at-time u after))))
+    (flet ((proven (operator) (and (eq (decide run (list operator start 0)) :true)
+                                   (eq (decide run (list operator slope 0)) :true))))
+      (cond ((proven '>=) u)
+            ((proven '<=) `(- ,u))))))
 
 (defun without-abs-of-known-sign (run g after)
   "G with each abs(U), U linear in TAU of a sign proven over TAU >= AFTER, written U or
@@ -35,11 +37,23 @@ TAU >= AFTER; NIL when U is not linear in TAU or its sign is not proven."
                  (abs-of-known-sign run (second g) after))
             g))))
 
+(defun keeps-sign-p (run u after)
+  "True when U, a function of TAU, is proven nonzero for every TAU >= AFTER: U(AFTER) > 0
+and dU/dTAU >= 0 (for every TAU), or U(AFTER) < 0 and dU/dTAU <= 0."
+  (let ((slope (tidy run (time-derivative u)))
+        (start (tidy run (at-time u after))))
+    (flet ((proven (strict loose) (and (eq (decide run (list strict start 0)) :true)
+                                       (eq (decide run (list loose slope 0)) :true))))
+      (or (proven '> '>=) (proven '< '<=)))))
+
 (defun numerator-without-root-p (run g after)
-  "True when G is a quotient N / D whose numerator N (a polynomial in TAU, or a constant)
-is proven to have no root after AFTER: then G has none either (the root search takes no
-quotient)."
-  (and (consp g) (eq (first g) '/) (= (length g) 3)
-       (not (mentions-abs-p (second g)))
-       (eq :none (ames.algebra:earliest-root (run-bridge run) (second g) 'tau
-                                             :after after :strictly t :candidates nil))))
+  "True when G, or its numerator N when G is a quotient N / D, is proven to have no root
+after AFTER (by the root search, or KEEPS-SIGN-P: a sum of exponentials in TAU): then G
+has none either (the root search takes no quotient and no exponential)."
+  (let ((n (if (and (consp g) (eq (first g) '/) (= (length g) 3)) (second g) g)))
+    (and (not (mentions-abs-p n))
+         (not (free-of-p 'tau n))
+         (or (keeps-sign-p run n after)
+             (and (not (eq n g))
+                  (eq :none (ames.algebra:earliest-root (run-bridge run) n 'tau
+                                                        :after after :strictly t :candidates nil)))))))
