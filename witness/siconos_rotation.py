@@ -215,7 +215,7 @@ class RotationDriver(Events):
             self.sim.nextStep()
             if t >= self.t_end - 1e-12:
                 break
-        self.flush_pending(state)
+        self.flush_pending(state, qp, vp)
         return tp, qp, vp
 
     def apply_forces(self, q):

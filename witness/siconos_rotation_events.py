@@ -99,12 +99,15 @@ class Events:
                 self.record(tp + f * (t - tp), [(":reaches", b.name, "angle")],
                             qp + f * (q - qp), vp + f * (v - vp), hinges)
 
-    def flush_pending(self, state):
+    def flush_pending(self, state, q, v):
         """The lift-offs still pending when the run reaches its horizon (quiet since, but
-        for fewer than QUIET steps): recorded, as at the last step."""
-        for s in state.values():
+        for fewer than QUIET steps) whose contact is opening at the end (Q, V: its normal
+        speed positive): recorded. One whose bodies still approach is no lift-off (a
+        contact that did not press in the last step only)."""
+        for k, s in state.items():
             if s.get("pending") is not None:
-                self.record(*s["pending"][1:])
+                if self.relations[k].normal_speed(q, v) > SPEED_TOL:
+                    self.record(*s["pending"][1:])
                 s["pending"] = None
 
     def observe(self, tp, qp, vp, t, q, v):
