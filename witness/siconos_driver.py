@@ -379,8 +379,31 @@ class Driver:
                 self.excluded = set()
         return t, qs, vs
 
+    def corner_held(self, c, active, qs, vs):
+        """Whether the face of C, not active, holds its body all the same: the body sits
+        at the very end of C's face, touching it and approaching it, while touching and
+        approaching another face (ACTIVE) that will stop its motion along that face's
+        normal (a particle landing exactly in the corner of a floor and a step): its
+        look-ahead is taken with the velocity those faces leave it."""
+        if not hasattr(c, "other") or not c.covers(qs) or abs(c.gap(qs)) > 1e-7 \
+                or c.rate(vs) >= -1e-9:
+            return False
+        v = vs[c.other].copy()
+        stoppers = [d for d in active if getattr(d, "other", None) == c.other
+                    and getattr(d, "owner", None) is None and abs(d.gap(qs)) <= 1e-7
+                    and d.rate(vs) < -1e-9]
+        if not stoppers:
+            return False
+        for d in stoppers:
+            v = v - min(0.0, float(np.dot(v, d.n))) * d.n
+        ahead = list(qs)
+        ahead[c.other] = qs[c.other] + LOOK_AHEAD * v
+        return c.covers(ahead)
+
     def segment(self, t0, qs, vs):
         active = [c for c in self.contacts if c.active(qs, vs) and c not in self.excluded]
+        active += [c for c in self.contacts if c not in active and c not in self.excluded
+                   and self.corner_held(c, active, qs, vs)]
         self.last_left = []
         inactive = [c for c in self.contacts if c not in active]
         # a body touching a face and at its very end, moving off it, leaves it now
