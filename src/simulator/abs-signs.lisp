@@ -52,8 +52,9 @@ after AFTER (by the root search, or KEEPS-SIGN-P: a sum of exponentials in TAU):
 has none either (the root search takes no quotient and no exponential)."
   (let ((n (if (and (consp g) (eq (first g) '/) (= (length g) 3)) (second g) g)))
     (and (not (mentions-abs-p n))
-         (not (free-of-p 'tau n))
-         (or (keeps-sign-p run n after)
-             (and (not (eq n g))
-                  (eq :none (ames.algebra:earliest-root (run-bridge run) n 'tau
-                                                        :after after :strictly t :candidates nil)))))))
+         (if (free-of-p 'tau n)
+             (eq :true (decide run `(/= ,n 0)))
+             (or (keeps-sign-p run n after)
+                 (and (not (eq n g))
+                      (eq :none (ames.algebra:earliest-root (run-bridge run) n 'tau
+                                                            :after after :strictly t :candidates nil))))))))
