@@ -121,3 +121,32 @@ forever at v = v0 / (1 + c v0 tau / m) (m dv/dt = -c v^2), here 9 / (9 + 2 tau).
       (is (< (abs (- (ames.base:expression-value (first velocity) (list (cons 'ames.base:tau time)))
                      (/ 9 (+ 9 (* 2 time)))))
              1d-12)))))
+
+(defparameter *spring-pulls-apart*
+  "(scenario spring-pull \"\" (gravity 9) (restitution 0)
+     (body floor :fixed t :shape (half-plane (1 0) (0 0)))
+     (body first :mass 1 :position (0 0) :velocity (0 0) :shape (polygon (0 0) (1/2 0) (1/2 1/2) (0 1/2)))
+     (body second :mass 1 :position (2 0) :velocity (3 0) :shape (polygon (0 0) (1/2 0) (1/2 1/2) (0 1/2)))
+     (body third :mass 1 :position (27/10 0) :velocity (0 0) :shape (polygon (0 0) (1/2 0) (1/2 1/2) (0 1/2)))
+     (spring coupling :from (first (1/2 1/4)) :to (second (0 1/4)) :stiffness 4 :rest-length 1/2)
+     (simulate :states 3))"
+  "Second, held back by a stretched spring, hits third plastically; the spring pulls it
+off third at once.")
+
+(test witness-plastic-collision-a-spring-pulls-apart
+  "A plastic collision that a spring pulls apart at once: the witness goes on (it stopped
+with 'a contact opened without a nonsmooth event'), with the collision and no lift-off
+(the contact never held), third then sliding at half second's speed before the impact."
+  (with-siconos
+    (let* ((scenario (witness-scenario *spring-pulls-apart*))
+           (answer (ames.witness:run-witness
+                    (ames.witness:scenario-model scenario (ames.scenario:run-parameter-values scenario :numeric t) 1/5)))
+           (kinds (loop for event in (ames.witness:witness-events answer)
+                        append (mapcar #'first (getf event :pairs))))
+           (collision (first (ames.witness:witness-events answer))))
+      (is (eq :ok (ames.witness:witness-status answer)) "~S" answer)
+      (is (equal '(:collision) (remove-duplicates kinds)) "events ~S" kinds)
+      (when collision
+        (is (< (abs (- (/ (first (state-entry collision :velocities "second")) 2)
+                       (first (state-entry (ames.witness:witness-end answer) :velocities "third"))))
+               1d-9))))))

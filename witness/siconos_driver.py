@@ -339,6 +339,7 @@ class Driver:
         self.events = []
         self.in_contact = set()
         self.smooth_event = None
+        self.impacted, self.impact_time = set(), None   # the contacts the last impact closed
         self.truncated = None
         self.excluded, self.last_left = set(), []
 
@@ -445,18 +446,20 @@ class Driver:
             q2, v2 = seg.state()
             pairs = []
             if ns:
-                pairs, speed = [], 0.0
+                pairs, speed, closed = [], 0.0, set()
                 for c in active:
                     if abs(c.gap(q1)) <= 1e-7:
                         before, after = c.rate(v1), c.rate(v2)
                         if before < -1e-9 and after > before + 1e-12:
                             pairs.append((c.kinds["close"],) + pair_names(c, self.bodies))
                             speed = max(speed, -before)
+                            closed.add(c)
                         elif c not in self.in_contact and abs(before) <= 1e-9 and \
                                 tp > 0 and abs(after) <= 1e-9:
                             pass
                 if pairs:
                     self.record(t1, pairs, q1, v1, v2, speed)
+                    self.impacted, self.impact_time = closed, t1
                 else:
                     self.smooth_event = (t1, q1, v1)
             touching = {c for c in active if self.touching(c, q2, v2)}
@@ -477,6 +480,13 @@ class Driver:
         last one, at or after TP); without one, at TP."""
         if not opened or tp <= 0.0:   # at the start: the initial modes, not an event
             return
+        # a contact an impact closed and the forces open at once, with no nonsmooth event
+        # since (a plastic collision that a spring pulls apart): it never held, no lift-off
+        if self.impact_time is not None and (self.smooth_event is None
+                                             or self.smooth_event[0] < self.impact_time):
+            opened = [c for c in opened if c not in self.impacted]
+            if not opened:
+                return
         t, q, v = self.smooth_event if self.smooth_event and self.smooth_event[0] >= tp - 1e-12 \
             else (tp, None, None)
         if q is None:
