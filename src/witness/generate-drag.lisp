@@ -55,13 +55,8 @@ most m v / b, and the wall is put well short of or well beyond that distance."
   (multiple-value-bind (drag coefficient value) (drag-law-text "oil" "block")
     (let* ((m (random-ratio 1/2 3)) (v (random-ratio 1/2 4))
            (reach (if (eq coefficient 'b) (/ (* m v) value) 10))
-           (distance (* reach (pick 1/2 3/2)))
-           ;; at most 15 away, and never at the coast's asymptote m v / b itself (a wall
-           ;; there: witness/disagreements/refused-drag-slide-wall-at-asymptote.lisp)
            (wall (and (zerop (random 2 *random*))
-                      (+ 1 (if (and (> distance 15) (< (* 4/5 reach) 15 (* 6/5 reach)))
-                               (/ reach 2)
-                               (min distance 15))))))
+                      (+ 1 (* (min reach 10) (pick 1/2 3/2))))))
       (scenario-text name "A block slides through a medium with drag on a frictionless floor."
                      (parameters-text 'g (random-ratio 5 15) 'm m 'v v coefficient value)
                      (list (format nil "(restitution ~A)" (restitution-choice)) (floor-text)
