@@ -253,7 +253,11 @@ function of tau of proven sign, monotone, is written without it before the root 
 state gave its candidates no rate), so no impact, and the next state fell through the
 floor. Fixed: a numeric state's contact reached at a clear speed is an impact, its
 position put exactly on the contact; the sliding state after it is decided by the
-monotone abs() above."))
+monotone abs() above.")
+    ("ames-wrong-drag-elastic-quadratic-bounces.lisp"
+     "An elastic ball under quadratic drag: AMES summed its impacts as a geometric series
+(its flight's accelerations, written over the velocity, were free of tau and taken for
+constant). Fixed: a Zeno sequence needs accelerations free of every state quantity."))
   "Disagreements the witness found and AMES has since fixed: each must now agree, with
 its file under witness/disagreements/ kept as the regression case.")
 
