@@ -234,7 +234,30 @@ AMES integrated the state numerically from its start rounded to doubles (sin(pi)
 1.2e-16) and ended it with a turning point after 8.7e-22 s; the witness has no event
 (make crosscheck SEED=101 #718). Fixed: a group whose every rate is exactly zero at its
 start stays there (simulator/equilibrium.lisp), and the self-check measures an event's
-noise on its quantity's scale (an equilibrium's round-off is no event)."))
+noise on its quantity's scale (an equilibrium's round-off is no event).")
+    ("witness-wrong-step-corner.lisp"
+     "A particle landing exactly in the corner of the floor and a step: the witness took
+the floor's impact only (the step's face holds a body only within its extent, and the
+particle, falling, was leaving it at its very end) and slid the particle through the step.
+Fixed in the witness: a face whose end the body sits on, approaching it, holds it when
+another face it hits stops the motion that would take it off (siconos_driver.py's
+CORNER-HELD).")
+    ("refused-drag-slide-quadratic.lisp"
+     "A block sliding alone under quadratic drag was refused: the earliest root of a
+'turns' function with abs(9 + 2 tau), positive for tau >= 0, undecided. Fixed: abs() of a
+function of tau of proven sign, monotone, is written without it before the root search
+(simulator/abs-signs.lisp).")
+    ("refused-drag-projectile-reversing-push.lisp"
+     "A ball under quadratic drag and a push, numerically integrated, was refused after
+200,000 steps: its landing was taken for a contact reached at no speed (the numeric
+state gave its candidates no rate), so no impact, and the next state fell through the
+floor. Fixed: a numeric state's contact reached at a clear speed is an impact, its
+position put exactly on the contact; the sliding state after it is decided by the
+monotone abs() above.")
+    ("ames-wrong-drag-elastic-quadratic-bounces.lisp"
+     "An elastic ball under quadratic drag: AMES summed its impacts as a geometric series
+(its flight's accelerations, written over the velocity, were free of tau and taken for
+constant). Fixed: a Zeno sequence needs accelerations free of every state quantity."))
   "Disagreements the witness found and AMES has since fixed: each must now agree, with
 its file under witness/disagreements/ kept as the regression case.")
 

@@ -339,6 +339,7 @@ class Driver:
         self.events = []
         self.in_contact = set()
         self.smooth_event = None
+        self.impacted, self.impact_time = set(), None   # the contacts the last impact closed
         self.truncated = None
         self.excluded, self.last_left = set(), []
 
@@ -379,8 +380,31 @@ class Driver:
                 self.excluded = set()
         return t, qs, vs
 
+    def corner_held(self, c, active, qs, vs):
+        """Whether the face of C, not active, holds its body all the same: the body sits
+        at the very end of C's face, touching it and approaching it, while touching and
+        approaching another face (ACTIVE) that will stop its motion along that face's
+        normal (a particle landing exactly in the corner of a floor and a step): its
+        look-ahead is taken with the velocity those faces leave it."""
+        if not hasattr(c, "other") or not c.covers(qs) or abs(c.gap(qs)) > 1e-7 \
+                or c.rate(vs) >= -1e-9:
+            return False
+        v = vs[c.other].copy()
+        stoppers = [d for d in active if getattr(d, "other", None) == c.other
+                    and getattr(d, "owner", None) is None and abs(d.gap(qs)) <= 1e-7
+                    and d.rate(vs) < -1e-9]
+        if not stoppers:
+            return False
+        for d in stoppers:
+            v = v - min(0.0, float(np.dot(v, d.n))) * d.n
+        ahead = list(qs)
+        ahead[c.other] = qs[c.other] + LOOK_AHEAD * v
+        return c.covers(ahead)
+
     def segment(self, t0, qs, vs):
         active = [c for c in self.contacts if c.active(qs, vs) and c not in self.excluded]
+        active += [c for c in self.contacts if c not in active and c not in self.excluded
+                   and self.corner_held(c, active, qs, vs)]
         self.last_left = []
         inactive = [c for c in self.contacts if c not in active]
         # a body touching a face and at its very end, moving off it, leaves it now
@@ -422,18 +446,20 @@ class Driver:
             q2, v2 = seg.state()
             pairs = []
             if ns:
-                pairs, speed = [], 0.0
+                pairs, speed, closed = [], 0.0, set()
                 for c in active:
                     if abs(c.gap(q1)) <= 1e-7:
                         before, after = c.rate(v1), c.rate(v2)
                         if before < -1e-9 and after > before + 1e-12:
                             pairs.append((c.kinds["close"],) + pair_names(c, self.bodies))
                             speed = max(speed, -before)
+                            closed.add(c)
                         elif c not in self.in_contact and abs(before) <= 1e-9 and \
                                 tp > 0 and abs(after) <= 1e-9:
                             pass
                 if pairs:
                     self.record(t1, pairs, q1, v1, v2, speed)
+                    self.impacted, self.impact_time = closed, t1
                 else:
                     self.smooth_event = (t1, q1, v1)
             touching = {c for c in active if self.touching(c, q2, v2)}
@@ -454,6 +480,13 @@ class Driver:
         last one, at or after TP); without one, at TP."""
         if not opened or tp <= 0.0:   # at the start: the initial modes, not an event
             return
+        # a contact an impact closed and the forces open at once, with no nonsmooth event
+        # since (a plastic collision that a spring pulls apart): it never held, no lift-off
+        if self.impact_time is not None and (self.smooth_event is None
+                                             or self.smooth_event[0] < self.impact_time):
+            opened = [c for c in opened if c not in self.impacted]
+            if not opened:
+                return
         t, q, v = self.smooth_event if self.smooth_event and self.smooth_event[0] >= tp - 1e-12 \
             else (tp, None, None)
         if q is None:

@@ -110,6 +110,8 @@ class RotationDriver(Events):
                        for p in model.get("probes", [])]
         self.events = []
         self.truncated = None
+        self.sample_times = sorted(float(t) for t in model.get("samples", []))
+        self.samples = []
 
     def body_named(self, name):
         for b in self.bodies:
@@ -206,12 +208,14 @@ class RotationDriver(Events):
             if self.truncated:   # an impact whose law is not AMES's (siconos_rotation_events.py)
                 return t, q, v
             self.probe_events(tp, qp, vp, t, q, v, lams)
+            self.observe(tp, qp, vp, t, q, v)
             self.last_hinges = self.hinge_forces(lams)
             qp, vp, tp = q, v, t
             self.refresh(q, v, lams)
             self.sim.nextStep()
             if t >= self.t_end - 1e-12:
                 break
+        self.flush_pending(state, qp, vp)
         return tp, qp, vp
 
     def apply_forces(self, q):
@@ -245,12 +249,12 @@ class RotationDriver(Events):
                 inter.y(1)[:] = C.dot(v)
 
     def project(self, q, lams):
-        """Q moved back onto the relations that hold (the hinges, the contacts that pressed
-        in the step): Moreau-Jean keeps them at the velocity level only, and the gaps of
+        """Q moved back onto the relations that hold (the hinges, the contacts and ropes that
+        pressed in the step): Moreau-Jean keeps them at the velocity level only, and the gaps of
         turning bodies drift by O(STEP) over a run. A mass-weighted (Gauss-Newton)
         projection, twice; the velocities are left alone."""
         held = [r for r, lam in zip(self.relations, lams)
-                if isinstance(r, Hinge) or (isinstance(r, Contact) and lam[0] > 0)]
+                if isinstance(r, Hinge) or (isinstance(r, (Contact, Rope)) and lam[0] > 0)]
         if not held:
             return q
         inverse = 1.0 / np.diag(self.mass)
@@ -319,6 +323,10 @@ def main_rotation(model):
     out.append(" )")
     if driver.truncated:
         out.append(" :truncated %s" % sx_string(driver.truncated))
+    if driver.samples:
+        out.append(" :samples (%s)" % " ".join(
+            "(:time %s %s)" % (sx_number(s["time"]), sx_state(driver, s["q"], s["v"]))
+            for s in driver.samples))
     out.append(" :end (:time %s %s :hinges %s))" % (sx_number(t), sx_state(driver, q, v),
                                                     sx_hinges(getattr(driver, "last_hinges", []))))
     print("\n".join(out))

@@ -98,3 +98,31 @@ class Events:
                 hinges = [(name, fv) for name, fv in self.hinge_forces(lams)]
                 self.record(tp + f * (t - tp), [(":reaches", b.name, "angle")],
                             qp + f * (q - qp), vp + f * (v - vp), hinges)
+
+    def flush_pending(self, state, q, v):
+        """The lift-offs still pending when the run reaches its horizon (quiet since, but
+        for fewer than QUIET steps) whose contact is opening at the end (Q, V: its normal
+        speed positive): recorded. One whose bodies still approach is no lift-off (a
+        contact that did not press in the last step only)."""
+        for k, s in state.items():
+            if s.get("pending") is not None:
+                if self.relations[k].normal_speed(q, v) > SPEED_TOL:
+                    self.record(*s["pending"][1:])
+                s["pending"] = None
+
+    def observe(self, tp, qp, vp, t, q, v):
+        """The samples the model asks for in (TP, T] (linear interpolation inside the step),
+        and the turning points of the rotating bodies: where a body's angular velocity
+        changes sign (interpolated), (:turns BODY BODY)."""
+        while self.sample_times and self.sample_times[0] <= t:
+            ts = self.sample_times.pop(0)
+            if ts >= tp:
+                f = (ts - tp) / (t - tp)
+                self.samples.append({"time": ts, "q": qp + f * (q - qp), "v": vp + f * (v - vp)})
+        for b in self.bodies:
+            i = 3 * b.index + 2
+            w0, w1 = vp[i], v[i]
+            if b.rotating and w0 * w1 < 0.0 and abs(w0 - w1) > 1e-9:   # not round-off about rest
+                f = w0 / (w0 - w1)
+                self.record(tp + f * (t - tp), [(":turns", b.name, b.name)],
+                            qp + f * (q - qp), vp + f * (v - vp))

@@ -77,11 +77,19 @@ or no real value), which the other strategies decide."
 
 (defun exactly-zero-p (bridge difference)
   "True when the constant DIFFERENCE is proven zero (REDUCES-TO-ZERO-P) as it is, or with
-acos and atan written with asin (INVERSES-AS-ASIN). NIL when not proven."
+acos and atan written with asin (INVERSES-AS-ASIN), or with the sines and cosines of
+rational multiples of pi brought to the first octant (FIRST-OCTANT-TRIGONOMETRY). NIL
+when not proven."
   (or (reduces-to-zero-p bridge difference)
       (let ((rewritten (inverses-as-asin difference)))
         (and (not (equal rewritten difference))
-             (reduces-to-zero-p bridge rewritten)))))
+             (reduces-to-zero-p bridge rewritten)))
+      (let ((octant (first-octant-trigonometry difference)))
+        (and (not (equal octant difference))
+             (or (reduces-to-zero-p bridge octant)
+                 (let ((rewritten (inverses-as-asin octant)))
+                   (and (not (equal rewritten octant))
+                        (reduces-to-zero-p bridge rewritten))))))))
 
 (defun reduces-to-zero-p (bridge difference)
   "True when the constant DIFFERENCE, expanded and trigexpand()ed, then ratsimp()ed with
@@ -138,3 +146,32 @@ NEAR-ZERO's case)."
                (decide bridge (substitute-subexpressions (mapcar (lambda (c) (cons c 0)) constants)
                                                          relation)))
               (t :unknown)))))
+(defun octant-sine-or-cosine (function q)
+  "FUNCTION (SIN or COS) of the angle Q pi (Q rational) written as a sign and the sine or
+cosine of an angle R pi with R in [0, 1/4] (sin(pi - x) = sin x, cos(pi - x) = -cos x,
+sin(pi/2 - x) = cos x, and the period 2 pi): an expression."
+  (let ((r (mod q 2)) (sign 1))
+    (ecase function
+      (sin (when (>= r 1) (setf r (- r 1) sign (- sign)))
+           (when (> r 1/2) (setf r (- 1 r))))
+      (cos (when (> r 1) (setf r (- 2 r)))
+           (when (> r 1/2) (setf r (- 1 r) sign (- sign)))))
+    (let ((other (if (eq function 'sin) 'cos 'sin)))
+      (when (> r 1/4) (setf r (- 1/2 r) function other))
+      (let ((value (if (zerop r) (if (eq function 'sin) 0 1) `(,function (* ,r pi)))))
+        (if (= sign 1) value `(- ,value))))))
+
+(defun first-octant-trigonometry (expression)
+  "EXPRESSION with each sin, cos and tan of a rational multiple of pi written with the
+sine or cosine of an angle in [0, pi/4] (OCTANT-SINE-OR-COSINE): Maxima leaves
+cos(43 pi/60) as it is, so that cos(43 pi/60) + cos(17 pi/60) is not seen to be 0 (a
+ladder's end exactly on the floor, at an angle of 51 degrees)."
+  (if (atom expression)
+      expression
+      (let* ((x (cons (first expression) (mapcar #'first-octant-trigonometry (rest expression))))
+             (angle (and (= (length x) 2) (member (first x) '(sin cos tan))
+                         (pi-linear-value (second x)))))
+        (cond ((not (and angle (zerop (car angle)))) x)
+              ((eq (first x) 'tan) `(/ ,(octant-sine-or-cosine 'sin (cdr angle))
+                                      ,(octant-sine-or-cosine 'cos (cdr angle))))
+              (t (octant-sine-or-cosine (first x) (cdr angle)))))))

@@ -42,9 +42,11 @@ while into a last state that lasts forever."
         (end (ames.witness:ames-end-time answer values)))
     (when end
       (let ((last-event (getf (car (last states)) :end-event)))
-        (if (eq last-event :none)
-            (+ end 1/2 (ames.witness:witness-horizon-extra answer values))
-            (+ end (max (* 1d-6 (+ 1 end)) 1/50)))))))
+        (cond ((eq last-event :none)
+               (+ end 1/2 (ames.witness:witness-horizon-extra answer values)))
+              ((and (consp last-event) (eq (first last-event) :time-limit))
+               end)                     ; the scenario's own end: nothing to find past it
+              (t (+ end (max (* 1d-6 (+ 1 end)) 1/50))))))))
 
 (defun witness-check (scenario &key settings numeric (limits *limits*))
   "Run SCENARIO through AMES and the witness; a plist (:VERDICT V :REASON TEXT

@@ -257,5 +257,22 @@ records each numeric group's end state and samples."
                                      samples))))
       (let ((condition (nth index owners)))
         (if condition
-            (list (make-candidate condition (condition-event condition nil) time))
+            (let ((rate (numeric-approach-rate (nth index events) rates state time condition)))
+              (list (make-candidate condition (condition-event condition rate) time :rate rate)))
             '())))))
+
+(defun numeric-approach-rate (event rates state time condition)
+  "The rate (exact, from the double) at which the contact of CONDITION, whose event
+function EVENT (of the state vector and time) fired at TIME in STATE, is reached, when
+the bodies clearly approach (a central difference along the motion, RATES, below -1e-6):
+an impact; NIL for another condition, or a meeting at no clear speed (a contact)."
+  (when (gap-relation-contact (ames.engine:termination-condition-relation condition))
+    (let* ((epsilon 1d-7)
+           (velocity (funcall rates state))
+           (ahead (map 'simple-vector (lambda (y d) (+ y (* epsilon d))) state velocity))
+           (behind (map 'simple-vector (lambda (y d) (- y (* epsilon d))) state velocity))
+           (g1 (funcall event ahead (+ time epsilon)))
+           (g0 (funcall event behind (- time epsilon))))
+      (when (and g0 g1)
+        (let ((rate (/ (- g1 g0) (* 2 epsilon))))
+          (and (< rate -1d-6) (rational-of rate)))))))

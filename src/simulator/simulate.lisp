@@ -98,6 +98,12 @@ CHECK-INCREMENTAL."
     (when check-incremental
       (ames.engine:check-incremental (run-model run)))))
 
+(defun depends-on-motion-p (x)
+  "True when the expression (or list of expressions) X has TAU or a state quantity (a
+position, a velocity...) in it."
+  (or (eq x 'tau)
+      (and (consp x) (or (state-quantity-p x) (some #'depends-on-motion-p x)))))
+
 (defun sum-zeno-sequence (run state)
   "Record the impact that ended STATE; when it repeats the previous one scaled (see
 ZENO-ACCUMULATION), jump to the accumulation point: the run goes on from there with the
@@ -107,8 +113,10 @@ velocities' limit, zero, and STATE says so (STATE-ACCUMULATION)."
                        :after (run-velocities run)
                        :contacts (mapcar (lambda (c) (subseq c 0 2)) (getf impact :contacts))
                        ;; a flight that scales with its start speed: constant accelerations
-                       :uniform (every (lambda (entry) (free-of-p 'tau (second entry)))
-                                       (state-accelerations state))))
+                       ;; (free of tau, and of the velocities and positions: a drag's
+                       ;; acceleration written over the velocity is no constant)
+                       :uniform (notany (lambda (entry) (depends-on-motion-p (second entry)))
+                                        (state-accelerations state))))
          (accumulation (zeno-accumulation run (first (run-impacts run)) record)))
     (push record (run-impacts run))
     (when accumulation

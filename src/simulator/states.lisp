@@ -80,7 +80,17 @@ then has no closed form)."
       (progn run groups (candidate-time (first fired)))))
 
 (defun final-values (run groups fired what)
-  "Every body's position (WHAT :POS) or velocity (:VEL) when the state ends at FIRED."
+  "Every body's position (WHAT :POS) or velocity (:VEL) when the state ends at FIRED. A
+numerically integrated body's end position is put exactly on the contacts FIRED reaches
+(SNAP-ONTO-CONTACTS: the event's bisection leaves it a round-off, 1e-18, through the
+face, and the next state would not find the contact)."
+  (let ((values (unsnapped-final-values run groups fired what)))
+    (if (and (eq what :pos) (some (lambda (group) (eq (group-kind group) :numeric)) groups))
+        (snap-onto-contacts run values fired) ; numeric-roots.lisp
+        values)))
+
+(defun unsnapped-final-values (run groups fired what)
+  "FINAL-VALUES before the positions are put on the contacts reached."
   (mapcar (lambda (body)
             (list body
                   (cond

@@ -38,7 +38,13 @@ condition is reached (an impact when not zero)."
 (defun earliest-root-after (run g after)
   "The earliest root of G (a function of TAU) strictly after AFTER, through the bridge:
 what ames.algebra:EARLIEST-ROOT returns, without the candidates of an undecided answer;
-for a trigonometric function of TAU, ames.algebra:EARLIEST-TRIGONOMETRIC-ROOT's."
+for a trigonometric function of TAU, ames.algebra:EARLIEST-TRIGONOMETRIC-ROOT's. An
+abs() of a linear function of a known sign over the search is written without it first
+(abs-signs.lisp)."
+  (when (mentions-abs-p g)
+    (setf g (tidy run (without-abs-of-known-sign run g after)))
+    (when (numerator-without-root-p run g after)   ; abs-signs.lisp
+      (return-from earliest-root-after (values :none nil))))
   (if (trigonometric-in-time-p g)
       (multiple-value-bind (root status)
           (ames.algebra:earliest-trigonometric-root (run-bridge run) g 'tau :after after :strictly t)

@@ -115,6 +115,23 @@ SPEED (or, without START-S, about 0 within POINT's distance from the origin besi
                          (if start-s 0 (* 2 (sqrt (+ (expt (first point) 2) (expt (second point) 2))))))))
           (list (- (or start-s 0) reach) (+ (or start-s 0) reach))))))
 
+(defun peak-sample-speed (walk)
+  "The largest speed of a body among the witness's samples (the motion's speed scale)."
+  (loop for sample in (getf (walk-witness walk) :samples)
+        maximize (loop for (nil (vx vy)) in (getf sample :velocities)
+                       maximize (sqrt (+ (* vx vx) (* vy vy))))))
+
+(defun sample-velocity-tolerance (walk a w)
+  "The tolerance of a sample's velocity component (AMES's A, the witness's W): the walk's,
+and for a first-order witness that tolerance of the motion's speed scale (its peak
+speed): the scheme's error in a velocity is a fraction of the speeds the motion reaches,
+not of the local speed, which vanishes at a turning point (where v goes as the square
+root of the energy left, so that an error in the energy weighs most)."
+  (let ((tolerance *value-tolerance*))
+    (if (and (witness-step (walk-witness walk)) (realp a) (realp w))
+        (/ (* tolerance (max 1d0 (peak-sample-speed walk))) (max 1d0 (abs a) (abs w)))
+        tolerance)))
+
 (defun compare-sample (walk state start sample)
   "Set the witness's SAMPLE beside AMES's STATE (started at START) at the sample's time."
   (let* ((time (getf sample :time)) (elapsed (- time start))
@@ -142,8 +159,10 @@ SPEED (or, without START-S, about 0 within POINT's distance from the origin besi
                            (sign (if back -1 1)))
                       (compare-number walk (format nil "path x ~A" what) (first p) wx)
                       (compare-number walk (format nil "path y ~A" what) (second p) wy)
-                      (compare-number walk (format nil "velocity x ~A" what) (and v (* sign (first v))) wvx)
-                      (compare-number walk (format nil "velocity y ~A" what) (and v (* sign (second v))) wvy)))
+                      (compare-number walk (format nil "velocity x ~A" what) (and v (* sign (first v))) wvx
+                                      (sample-velocity-tolerance walk (and v (* sign (first v))) wvx))
+                      (compare-number walk (format nil "velocity y ~A" what) (and v (* sign (second v))) wvy
+                                      (sample-velocity-tolerance walk (and v (* sign (second v))) wvy))))
                    (t (let ((bindings (acons 'tau elapsed values)))
                         (compare-vectors walk (format nil "at ~,4F s" time)
                                          (evaluate-vectors (list entry ventry) bindings)

@@ -310,7 +310,7 @@ witness's horizon T-END. Returns a COMPARISON."
                               (:curved *curved-tolerance*) ; compare-curved.lisp
                               (t *value-tolerance*))))
     (catch 'comparison
-      (let ((walk (make-walk witness values t-end (witness-events witness))))
+      (let ((walk (make-walk witness values t-end (motion-events (witness-events witness))))) ; compare-time-limit.lisp
         (dolist (state (ames-path (getf ames :states)))
           (let* ((numeric (state-numbers state values))
                  (start (getf numeric :start))
@@ -324,6 +324,8 @@ witness's horizon T-END. Returns a COMPARISON."
                   (compare-path-state walk state start)
                   (compare-last-state walk state start))
               (return))
+            (when (time-limit-event-p event)  ; compare-time-limit.lisp
+              (compare-time-limit-state walk state numeric (and (realp duration) (+ start duration))))
             (compare-event-state walk state numeric event (and (realp duration) (+ start duration)))))
         (finish walk :agree)))))
 

@@ -48,10 +48,10 @@ then rolls or slides along the floor."
                              (:down-sliding (wheel-text "disc" inertia r centre
                                                         (mapcar (lambda (d) (* v d)) down) 0)))
                            (friction-text "disc" "incline")
-                           ;; the floor rough one time in two: an impact on a rough
+                           ;; the floor rough one time in four: an impact on a rough
                            ;; contact ends what the witness can say (its impacts have
-                           ;; Coulomb friction, AMES's none)
-                           (friction-text "disc" "floor" 1/2))
+                           ;; Coulomb friction, AMES's none: reported unsupported)
+                           (friction-text "disc" "floor" 3/4))
                      3))))
 
 (defun family-disc-floor (name)

@@ -1,4 +1,5 @@
-;;;; refused-drag-projectile-reversing-push.lisp -- a refusal make crosscheck found (drag-projectile,
+;;;; refused-drag-projectile-reversing-push.lisp -- FIXED (now agrees; see *WITNESSED-FIXES* in
+;;;; t/witness.lisp: the landing of a numeric state was no impact). Was: a refusal make crosscheck found (drag-projectile,
 ;;;; seed 5, #17): a ball launched slightly toward -x, pushed toward +x, under quadratic drag.
 ;;;; AMES: "No event within 200000 steps of the numeric integration" (20 s). The witness
 ;;;; (Lsodar) lands it on the floor. The horizontal velocity passes through zero during the

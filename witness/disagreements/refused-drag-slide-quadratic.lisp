@@ -1,4 +1,6 @@
-;;;; refused-drag-slide-quadratic.lisp -- a refusal make crosscheck found (drag-slide, seed 5,
+;;;; refused-drag-slide-quadratic.lisp -- FIXED (now agrees: abs() of a linear function of
+;;;; known sign written without it before the root search, src/simulator/abs-signs.lisp;
+;;;; test QUADRATIC-DRAG-SLIDE-NEVER-TURNS). Was: a refusal make crosscheck found (drag-slide, seed 5,
 ;;;; #38; 5 of 10 drag-slide scenarios of that run are refused alike): a block sliding alone
 ;;;; on a frictionless floor under quadratic drag. Its velocity 9 / (9 + 2 tau) never
 ;;;; vanishes, but AMES cannot decide that the "turns" candidate has no root: the earliest

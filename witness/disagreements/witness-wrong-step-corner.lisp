@@ -1,4 +1,5 @@
-;;;; witness-wrong-step-corner.lisp -- make crosscheck SEED=303 #903, counted "AMES wrong", a defect of
+;;;; witness-wrong-step-corner.lisp -- FIXED in the witness (CORNER-HELD in witness/siconos_driver.py;
+;;;; listed in t/witness.lisp *WITNESSED-FIXES*). Was: make crosscheck SEED=303 #903, counted "AMES wrong", a defect of
 ;;;; the witness: the particle lands exactly in the concave corner of the floor and the step (x = 11/4
 ;;;; at t = 1). AMES: it hits the floor and the step's face at once, a plastic impact on both, and
 ;;;; rests in the corner. The witness sees the floor's impact only (the step's left face holds a body

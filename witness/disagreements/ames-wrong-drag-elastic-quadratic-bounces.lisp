@@ -1,0 +1,413 @@
+;;;; ames-wrong-drag-elastic-quadratic-bounces.lisp -- FIXED (make crosscheck SEED=2611 #744, the one
+;;;; AMES wrong of that 1000-scenario run): an elastic ball under quadratic drag; AMES summed its
+;;;; impacts as a geometric series (a flight's accelerations, written over the velocity, are free
+;;;; of tau and passed for constant). Fixed: a Zeno sequence needs accelerations free of tau and of
+;;;; every state quantity (DEPENDS-ON-MOTION-P in src/simulator/simulate.lisp).
+;;;; verdict: ames-wrong
+;;;; reason: state 2: start: AMES 14.414831266975936d0, witness 0.9622583594761821d0
+;;;; Run: bin/ames check /work/wt/witness/t/../witness/disagreements/ames-wrong-drag-fall-2611-744.lisp --numeric
+
+(scenario drag-fall-744 "A ball falls through a medium with drag onto the floor." (gravity 10)
+ (restitution 1) (body floor :fixed t :shape (half-plane (1 0) (0 0)))
+ (body ball :mass 3 :position (0 1/2) :velocity (0 (- 3)) :shape point)
+ (drag air :on ball :quadratic 21/100) (simulate :states 4))
+
+
+;; AMES's answer:
+;;   (:SCENARIO AMES-SCENARIO::DRAG-FALL-744 :STATES
+;;    ((:INDEX 0 :START 0 :DURATION 0.13768344899837995d0 :CONTACTS NIL :ACCELERATIONS
+;;      ((AMES-SCENARIO::FLOOR (0 0))
+;;       (AMES-SCENARIO::BALL
+;;        (0
+;;         (-
+;;          (/ (* 37480 (EXP (/ (* (SQRT 14) AMES.BASE:TAU) (SQRT 5))))
+;;             (-
+;;              (+ 1063 (* 1874 (EXP (/ (* (SQRT 14) AMES.BASE:TAU) (SQRT 5))))
+;;                 (* (+ 1063 (* 12 (EXPT 5 3/2) (SQRT 14)))
+;;                    (EXP (/ (* 2 (SQRT 14) AMES.BASE:TAU) (SQRT 5)))))
+;;              (* 12 (EXPT 5 3/2) (SQRT 14))))))))
+;;      :FORCES
+;;      ((:DRAG AMES-SCENARIO::AIR AMES-SCENARIO::BALL
+;;        (0
+;;         (/
+;;          (-
+;;           (+ 31890
+;;              (* (+ 31890 (* 72 (EXPT 5 5/2) (SQRT 14)))
+;;                 (EXP (/ (* 2 (SQRT 14) AMES.BASE:TAU) (SQRT 5)))))
+;;           (* 72 (EXPT 5 5/2) (SQRT 14)) (* 56220 (EXP (/ (* (SQRT 14) AMES.BASE:TAU) (SQRT 5)))))
+;;          (-
+;;           (+ 1063 (* 1874 (EXP (/ (* (SQRT 14) AMES.BASE:TAU) (SQRT 5))))
+;;              (* (+ 1063 (* 12 (EXPT 5 3/2) (SQRT 14)))
+;;                 (EXP (/ (* 2 (SQRT 14) AMES.BASE:TAU) (SQRT 5)))))
+;;           (* 12 (EXPT 5 3/2) (SQRT 14))))))
+;;       (:GRAVITY AMES-SCENARIO::BALL (0 -30)))
+;;      :POSITIONS
+;;      ((AMES-SCENARIO::FLOOR (0 0))
+;;       (AMES-SCENARIO::BALL
+;;        (0
+;;         (-
+;;          (/
+;;           (-
+;;            (* 200
+;;               (LOG
+;;                (/
+;;                 (-
+;;                  (+ (* 2 (EXPT 5 3/2) (SQRT 14))
+;;                     (* (+ 21 (* 2 (EXPT 5 3/2) (SQRT 14)))
+;;                        (EXP (/ (* (SQRT 14) AMES.BASE:TAU) (SQRT 5)))))
+;;                  21)
+;;                 (* (EXPT 5 3/2) (SQRT 14) 4))))
+;;            7 (* 4 (EXPT 5 3/2) (SQRT 14) AMES.BASE:TAU))
+;;           14)))))
+;;      :VELOCITIES
+;;      ((AMES-SCENARIO::FLOOR (0 0))
+;;       (AMES-SCENARIO::BALL
+;;        (0
+;;         (-
+;;          (/
+;;           (-
+;;            (+ (* 6 (EXPT 5 3/2) (SQRT 14))
+;;               (* (+ 1000 (* 6 (EXPT 5 3/2) (SQRT 14)))
+;;                  (EXP (/ (* (SQRT 14) AMES.BASE:TAU) (SQRT 5)))))
+;;            1000)
+;;           (-
+;;            (+ (* 2 (EXPT 5 3/2) (SQRT 14))
+;;               (* (+ 21 (* 2 (EXPT 5 3/2) (SQRT 14))) (EXP (/ (* (SQRT 14) AMES.BASE:TAU) (SQRT 5)))))
+;;            21))))))
+;;      :INITIAL-VELOCITIES ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 (- 3)))) :END-EVENT
+;;      (:COLLISION AMES-SCENARIO::BALL AMES-SCENARIO::FLOOR :IMPULSE 630550632/24736331 :ENERGY-LOST 0)
+;;      :FINAL-POSITIONS ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 0))) :FINAL-VELOCITIES
+;;      ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 -105091772/24736331))) :IMPACT
+;;      (:CONTACTS
+;;       ((AMES-SCENARIO::BALL AMES-SCENARIO::FLOOR :FEATURE (:EDGE 0 :OF AMES-SCENARIO::FLOOR)
+;;         :OBSERVER-FEATURE (:POINT :OF AMES-SCENARIO::BALL)))
+;;       :IMPULSES ((:IMPULSE AMES-SCENARIO::BALL AMES-SCENARIO::FLOOR 630550632/24736331)) :ENERGY-LOST
+;;       0 :VELOCITIES-BEFORE
+;;       ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 -105091772/24736331))) :VELOCITIES-AFTER
+;;       ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 105091772/24736331))))
+;;      :ENERGY
+;;      ((:KINETIC AMES-SCENARIO::BALL
+;;        (/
+;;         (-
+;;          (+ 1594500
+;;             (* (+ 1594500 (* 144 (EXPT 5 9/2) (SQRT 14)))
+;;                (EXP (/ (* 2 (SQRT 14) AMES.BASE:TAU) (SQRT 5)))))
+;;          (* 144 (EXPT 5 9/2) (SQRT 14)) (* 2811000 (EXP (/ (* (SQRT 14) AMES.BASE:TAU) (SQRT 5)))))
+;;         (-
+;;          (+ 7441 (* 13118 (EXP (/ (* (SQRT 14) AMES.BASE:TAU) (SQRT 5))))
+;;             (* (+ 7441 (* 6 (EXPT 5 3/2) (EXPT 14 3/2)))
+;;                (EXP (/ (* 2 (SQRT 14) AMES.BASE:TAU) (SQRT 5)))))
+;;          (* 6 (EXPT 5 3/2) (EXPT 14 3/2)))))
+;;       (:POTENTIAL (:GRAVITY AMES-SCENARIO::BALL)
+;;        (-
+;;         (/
+;;          (-
+;;           (* 3000
+;;              (LOG
+;;               (/
+;;                (-
+;;                 (+ (* 2 (EXPT 5 3/2) (SQRT 14))
+;;                    (* (+ 21 (* 2 (EXPT 5 3/2) (SQRT 14)))
+;;                       (EXP (/ (* (SQRT 14) AMES.BASE:TAU) (SQRT 5)))))
+;;                 21)
+;;                (* (EXPT 5 3/2) (SQRT 14) 4))))
+;;           105 (* 12 (EXPT 5 5/2) (SQRT 14) AMES.BASE:TAU))
+;;          7))))
+;;      :MOMENTUM
+;;      ((:MOMENTUM AMES-SCENARIO::BALL
+;;        (0
+;;         (-
+;;          (/
+;;           (-
+;;            (+ (* 18 (EXPT 5 3/2) (SQRT 14))
+;;               (* (+ 3000 (* 18 (EXPT 5 3/2) (SQRT 14)))
+;;                  (EXP (/ (* (SQRT 14) AMES.BASE:TAU) (SQRT 5)))))
+;;            3000)
+;;           (-
+;;            (+ (* 2 (EXPT 5 3/2) (SQRT 14))
+;;               (* (+ 21 (* 2 (EXPT 5 3/2) (SQRT 14))) (EXP (/ (* (SQRT 14) AMES.BASE:TAU) (SQRT 5)))))
+;;            21)))))))
+;;     (:INDEX 1 :START 8757901/63608960 :DURATION 0.824574909875459d0 :CONTACTS NIL :ACCELERATIONS
+;;      ((AMES-SCENARIO::FLOOR (0 0))
+;;       (AMES-SCENARIO::BALL
+;;        ((-
+;;          (/
+;;           (* 7 (AMES-SCENARIO::VEL AMES-SCENARIO::BALL :X)
+;;              (SQRT
+;;               (+ (EXPT (AMES-SCENARIO::VEL AMES-SCENARIO::BALL :X) 2)
+;;                  (EXPT (AMES-SCENARIO::VEL AMES-SCENARIO::BALL :Y) 2))))
+;;           100))
+;;         (-
+;;          (/
+;;           (+ 1000
+;;              (* 7 (AMES-SCENARIO::VEL AMES-SCENARIO::BALL :Y)
+;;                 (SQRT
+;;                  (+ (EXPT (AMES-SCENARIO::VEL AMES-SCENARIO::BALL :X) 2)
+;;                     (EXPT (AMES-SCENARIO::VEL AMES-SCENARIO::BALL :Y) 2)))))
+;;           100)))))
+;;      :FORCES
+;;      ((:DRAG AMES-SCENARIO::AIR AMES-SCENARIO::BALL
+;;        ((-
+;;          (/
+;;           (* 21 (AMES-SCENARIO::VEL AMES-SCENARIO::BALL :X)
+;;              (SQRT
+;;               (+ (EXPT (AMES-SCENARIO::VEL AMES-SCENARIO::BALL :X) 2)
+;;                  (EXPT (AMES-SCENARIO::VEL AMES-SCENARIO::BALL :Y) 2))))
+;;           100))
+;;         (-
+;;          (/
+;;           (* 21 (AMES-SCENARIO::VEL AMES-SCENARIO::BALL :Y)
+;;              (SQRT
+;;               (+ (EXPT (AMES-SCENARIO::VEL AMES-SCENARIO::BALL :X) 2)
+;;                  (EXPT (AMES-SCENARIO::VEL AMES-SCENARIO::BALL :Y) 2))))
+;;           100))))
+;;       (:GRAVITY AMES-SCENARIO::BALL (0 -30)))
+;;      :POSITIONS ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (:NO-CLOSED-FORM))) :VELOCITIES
+;;      ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (:NO-CLOSED-FORM))) :INITIAL-VELOCITIES
+;;      ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 105091772/24736331))) :END-EVENT
+;;      (:COLLISION AMES-SCENARIO::BALL AMES-SCENARIO::FLOOR :IMPULSE 4052403468/168719041 :ENERGY-LOST
+;;       0)
+;;      :FINAL-POSITIONS ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 0))) :FINAL-VELOCITIES
+;;      ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 -675400578/168719041))) :ACCUMULATION
+;;      (:FACTOR 8353466127499659/8865491494415326 :CYCLE 945706552070071/1146901925760640 :TIME
+;;       769546092601749130347893928759/53385716304897888186337086080)
+;;      :IMPACT
+;;      (:CONTACTS
+;;       ((AMES-SCENARIO::BALL AMES-SCENARIO::FLOOR :FEATURE (:EDGE 0 :OF AMES-SCENARIO::FLOOR)
+;;         :OBSERVER-FEATURE (:POINT :OF AMES-SCENARIO::BALL)))
+;;       :IMPULSES ((:IMPULSE AMES-SCENARIO::BALL AMES-SCENARIO::FLOOR 4052403468/168719041))
+;;       :ENERGY-LOST 0 :VELOCITIES-BEFORE
+;;       ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 -675400578/168719041))) :VELOCITIES-AFTER
+;;       ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 675400578/168719041))))
+;;      :NUMERIC-TRAJECTORY
+;;      ((:TERMS
+;;        ((AMES-SCENARIO::POS AMES-SCENARIO::BALL :X) (AMES-SCENARIO::POS AMES-SCENARIO::BALL :Y)
+;;         (AMES-SCENARIO::VEL AMES-SCENARIO::BALL :X) (AMES-SCENARIO::VEL AMES-SCENARIO::BALL :Y))
+;;        :END-TIME 0.824574909875459d0 :SAMPLES
+;;        ((0.0d0 0.0d0 0.0d0 0.0d0 4.2484785637773035d0)
+;;         (0.001d0 0.0d0 0.004242847944478765d0 0.0d0 4.237218439930095d0)
+;;         (0.006d0 0.0d0 0.02528836893008719d0 0.0d0 4.181017552456373d0)
+;;         (0.031d0 0.0d0 0.12632317529453943d0 0.0d0 3.9024237442071903d0)
+;;         (0.05686192969209289d0 0.0d0 0.223563739528277d0 0.0d0 3.6181986207701167d0)
+;;         (0.08388291068970033d0 0.0d0 0.317363557001097d0 0.0d0 3.3251823083307057d0)
+;;         (0.11210479016541294d0 0.0d0 0.4069341551167435d0 0.0d0 3.023048945406066d0)
+;;         (0.14158727836560092d0 0.0d0 0.4914557266047495d0 0.0d0 2.71124565738772d0)
+;;         (0.172407934201735d0 0.0d0 0.5700429792180426d0 0.0d0 2.38899357244937d0)
+;;         (0.2046697485505558d0 0.0d0 0.6417229485550788d0 0.0d0 2.0552062594701077d0)
+;;         (0.23851478579583352d0 0.0d0 0.7054029941706421d0 0.0d0 1.7083450746010207d0)
+;;         (0.2741504874900641d0 0.0d0 0.7598192336258599d0 0.0d0 1.346144180586484d0)
+;;         (0.3119054446452498d0 0.0d0 0.8034411382421819d0 0.0d0 0.965034584528336d0)
+;;         (0.35236673686268283d0 0.0d0 0.8342621564095986d0 0.0d0 0.5587392695017573d0)
+;;         (0.39311053446556854d0 0.0d0 0.8487161113383859d0 0.0d0 0.15090283426087142d0)
+;;         (0.40200491809707056d0 0.0d0 0.849662706811931d0 0.0d0 0.06195153544529891d0)
+;;         (0.4074932074435757d0 0.0d0 0.8498521059784214d0 0.0d0 0.00706808801750429d0)
+;;         (0.41939567894922675d0 0.0d0 0.8492278986387234d0 0.0d0 -0.11195335955871596d0)
+;;         (0.4302812757367696d0 0.0d0 0.8474168322807721d0 0.0d0 -0.22078748344642152d0)
+;;         (0.468709652675592d0 0.0d0 0.8315553377587404d0 0.0d0 -0.6045799482443428d0)
+;;         (0.5091401893327188d0 0.0d0 0.7989704537403418d0 0.0d0 -1.0070087980321647d0)
+;;         (0.5515744171766526d0 0.0d0 0.7473190592083522d0 0.0d0 -1.4269064853650413d0)
+;;         (0.5924071946527163d0 0.0d0 0.6808606058923619d0 0.0d0 -1.8276243763627198d0)
+;;         (0.631104948824969d0 0.0d0 0.6028484496829455d0 0.0d0 -2.2035612925014627d0)
+;;         (0.6683740293442808d0 0.0d0 0.5140415592069915d0 0.0d0 -2.5614112675244645d0)
+;;         (0.7046344197217326d0 0.0d0 0.41491963248218133d0 0.0d0 -2.905022916991016d0)
+;;         (0.7401598580759939d0 0.0d0 0.3058092160941938d0 0.0d0 -3.2367964865049146d0)
+;;         (0.775152042947359d0 0.0d0 0.18690397392756686d0 0.0d0 -3.5584139917933246d0)
+;;         (0.8097769048045966d0 0.0d0 0.058263260132289774d0 0.0d0 -3.8711874007091924d0)
+;;         (0.824574909875459d0 0.0d0 -4.336808689942018d-18 0.0d0 -4.003108208752798d0))))
+;;      :ENERGY
+;;      ((:KINETIC AMES-SCENARIO::BALL
+;;        (/
+;;         (* 3
+;;            (+ (EXPT (AMES-SCENARIO::VEL AMES-SCENARIO::BALL :X) 2)
+;;               (EXPT (AMES-SCENARIO::VEL AMES-SCENARIO::BALL :Y) 2)))
+;;         2))
+;;       (:POTENTIAL (:GRAVITY AMES-SCENARIO::BALL) (* 30 (AMES-SCENARIO::POS AMES-SCENARIO::BALL :Y))))
+;;      :MOMENTUM
+;;      ((:MOMENTUM AMES-SCENARIO::BALL
+;;        ((* 3 (AMES-SCENARIO::VEL AMES-SCENARIO::BALL :X))
+;;         (* 3 (AMES-SCENARIO::VEL AMES-SCENARIO::BALL :Y))))))
+;;     (:INDEX 2 :START 769546092601749130347893928759/53385716304897888186337086080 :DURATION :FOREVER
+;;      :CONTACTS
+;;      ((AMES-SCENARIO::BALL AMES-SCENARIO::FLOOR :FEATURE (:EDGE 0 :OF AMES-SCENARIO::FLOOR)
+;;        :OBSERVER-FEATURE (:POINT :OF AMES-SCENARIO::BALL)))
+;;      :ACCELERATIONS ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 0))) :FORCES
+;;      ((:DRAG AMES-SCENARIO::AIR AMES-SCENARIO::BALL (0 0)) (:GRAVITY AMES-SCENARIO::BALL (0 -30))
+;;       (:NORMAL AMES-SCENARIO::BALL AMES-SCENARIO::FLOOR 30))
+;;      :POSITIONS ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 0))) :VELOCITIES
+;;      ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 0))) :INITIAL-VELOCITIES
+;;      ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BALL (0 0))) :END-EVENT :NONE :FINAL-POSITIONS NIL
+;;      :FINAL-VELOCITIES NIL :ENERGY
+;;      ((:KINETIC AMES-SCENARIO::BALL 0) (:POTENTIAL (:GRAVITY AMES-SCENARIO::BALL) 0)) :MOMENTUM
+;;      ((:MOMENTUM AMES-SCENARIO::BALL (0 0)))))
+;;    :OUTCOME :COMPLETE :ANSWERS NIL :SELF-CHECK
+;;    (:CHECKED (0 2) :UNCHECKED NIL :NUMBERS (0 0) :EQUATIONS (47 47) :FAILURES
+;;     ((:STATE 1 :CLAIM "final position ball_y" :DISCREPANCY 2.837172862218611d-6 :DETAIL
+;;       "claimed 0.000000000, integration 2.4111783939e-9 at tau = 0.8245749099"))))
+
+;; witness's answer:
+;;   (:STATUS :OK :SCHEME :EVENT-DRIVEN :EVENTS
+;;    ((:TIME 0.13768344899838092d0 :SPEED 4.248478563777434d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -7.546047120499111d-17))) :VELOCITIES
+;;      (("ball" (0.0d0 -4.248478563777434d0))) :AFTER (("ball" (0.0d0 4.248478563777434d0))))
+;;     (:TIME 0.5458834650964062d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.8498546038840009d0))) :VELOCITIES (("ball" (0.0d0 -3.14261928925554d-14)))
+;;      :AFTER (("ball" (0.0d0 -3.14261928925554d-14))))
+;;     (:TIME 0.9622583594761821d0 :SPEED 4.003108208831332d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -1.457167719820518d-16))) :VELOCITIES
+;;      (("ball" (0.0d0 -4.003108208831332d0))) :AFTER (("ball" (0.0d0 4.003108208831332d0))))
+;;     (:TIME 1.3485341657067393d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.7594055206232286d0))) :VELOCITIES (("ball" (0.0d0 -8.818036497390886d-14)))
+;;      :AFTER (("ball" (0.0d0 -8.818036497390886d-14))))
+;;     (:TIME 1.7417152394050446d0 :SPEED 3.7958665516412444d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -5.759281940243d-16))) :VELOCITIES
+;;      (("ball" (0.0d0 -3.7958665516412444d0))) :AFTER (("ball" (0.0d0 3.7958665516412453d0))))
+;;     (:TIME 2.1092608484870357d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.6863706607218645d0))) :VELOCITIES (("ball" (0.0d0 2.0010729862406978d-14)))
+;;      :AFTER (("ball" (0.0d0 2.0010729862406978d-14))))
+;;     (:TIME 2.4827399714193996d0 :SPEED 3.61780243333088d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -1.1032841307212493d-15))) :VELOCITIES
+;;      (("ball" (0.0d0 -3.61780243333088d0))) :AFTER (("ball" (0.0d0 3.61780243333088d0))))
+;;     (:TIME 2.834041764625369d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.6261595554844386d0))) :VELOCITIES (("ball" (0.0d0 2.7870560338221753d-15)))
+;;      :AFTER (("ball" (0.0d0 2.7870560338221753d-15))))
+;;     (:TIME 3.190513722937462d0 :SPEED 3.4626549104778874d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -1.1934897514720433d-15))) :VELOCITIES
+;;      (("ball" (0.0d0 -3.4626549104778874d0))) :AFTER (("ball" (0.0d0 3.4626549104778874d0))))
+;;     (:TIME 3.527552251852303d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.5756656418330558d0))) :VELOCITIES (("ball" (0.0d0 -2.0268227878372257d-14)))
+;;      :AFTER (("ball" (0.0d0 -2.0268227878372257d-14))))
+;;     (:TIME 3.869148364547739d0 :SPEED 3.3258956793238323d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -9.069893273927487d-16))) :VELOCITIES
+;;      (("ball" (0.0d0 -3.3258956793238323d0))) :AFTER (("ball" (0.0d0 3.3258956793238323d0))))
+;;     (:TIME 4.193531681323225d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.5327112354094437d0))) :VELOCITIES (("ball" (0.0d0 -6.3129365558869954d-15)))
+;;      :AFTER (("ball" (0.0d0 -6.3129365558869954d-15))))
+;;     (:TIME 4.521972126956305d0 :SPEED 3.204157638716167d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -1.3739009929736312d-15))) :VELOCITIES
+;;      (("ball" (0.0d0 -3.204157638716167d0))) :AFTER (("ball" (0.0d0 3.204157638716167d0))))
+;;     (:TIME 4.83502706567217d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.49572437398493663d0))) :VELOCITIES (("ball" (0.0d0 5.6149814073493754d-15)))
+;;      :AFTER (("ball" (0.0d0 5.6149814073493754d-15))))
+;;     (:TIME 5.151724028879281d0 :SPEED 3.0948781097817206d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -2.237793284010081d-15))) :VELOCITIES
+;;      (("ball" (0.0d0 -3.0948781097817206d0))) :AFTER (("ball" (0.0d0 3.0948781097817215d0))))
+;;     (:TIME 5.454560592907742d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.46354183954346245d0))) :VELOCITIES (("ball" (0.0d0 1.7009692130281552d-14)))
+;;      :AFTER (("ball" (0.0d0 1.7009692130281552d-14))))
+;;     (:TIME 5.760690348828756d0 :SPEED 2.996067494623879d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -2.1614654510671016d-15))) :VELOCITIES
+;;      (("ball" (0.0d0 -2.996067494623879d0))) :AFTER (("ball" (0.0d0 2.996067494623879d0))))
+;;     (:TIME 6.054248299060015d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.43528437595747244d0))) :VELOCITIES (("ball" (0.0d0 -3.3882588439596625d-14)))
+;;      :AFTER (("ball" (0.0d0 -3.3882588439596625d-14))))
+;;     (:TIME 6.350802955888472d0 :SPEED 2.906154377160546d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -1.457167719820518d-16))) :VELOCITIES
+;;      (("ball" (0.0d0 -2.906154377160546d0))) :AFTER (("ball" (0.0d0 2.906154377160546d0))))
+;;     (:TIME 6.635886267880707d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.4102750005640683d0))) :VELOCITIES (("ball" (0.0d0 -2.5479598086359414d-14)))
+;;      :AFTER (("ball" (0.0d0 -2.5479598086359414d-14))))
+;;     (:TIME 6.923711772625077d0 :SPEED 2.82387890286657d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -1.824495415858607d-15))) :VELOCITIES
+;;      (("ball" (0.0d0 -2.82387890286657d0))) :AFTER (("ball" (0.0d0 2.82387890286657d0))))
+;;     (:TIME 7.201014613413427d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.3879839876306092d0))) :VELOCITIES (("ball" (0.0d0 3.0173854680043267d-14)))
+;;      :AFTER (("ball" (0.0d0 3.0173854680043267d-14))))
+;;     (:TIME 7.4808392318074475d0 :SPEED 2.748217605687081d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -1.010042743887496d-15))) :VELOCITIES
+;;      (("ball" (0.0d0 -2.748217605687081d0))) :AFTER (("ball" (0.0d0 2.7482176056870817d0))))
+;;     (:TIME 7.750965876596764d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.36799088593542373d0))) :VELOCITIES (("ball" (0.0d0 3.729062550285812d-14)))
+;;      :AFTER (("ball" (0.0d0 3.729062550285812d-14))))
+;;     (:TIME 8.02342191161261d0 :SPEED 2.678329277320305d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -3.0340313594834356d-15))) :VELOCITIES
+;;      (("ball" (0.0d0 -2.678329277320305d0))) :AFTER (("ball" (0.0d0 2.678329277320305d0))))
+;;     (:TIME 8.286902243029285d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.3499577181647432d0))) :VELOCITIES (("ball" (0.0d0 -2.4369243771638133d-14)))
+;;      :AFTER (("ball" (0.0d0 -2.4369243771638133d-14))))
+;;     (:TIME 8.5525428568182d0 :SPEED 2.613515254255783d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -1.949829186997931d-15))) :VELOCITIES
+;;      (("ball" (0.0d0 -2.613515254255783d0))) :AFTER (("ball" (0.0d0 2.613515254255783d0))))
+;;     (:TIME 8.80984458876125d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.3336097005702445d0))) :VELOCITIES (("ball" (0.0d0 5.362062663257515d-15)))
+;;      :AFTER (("ball" (0.0d0 5.362062663257515d-15))))
+;;     (:TIME 9.069157012848324d0 :SPEED 2.5531897934236434d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -1.3201245652183502d-15))) :VELOCITIES
+;;      (("ball" (0.0d0 -2.5531897934236434d0))) :AFTER (("ball" (0.0d0 2.5531897934236434d0))))
+;;     (:TIME 9.320695446798576d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.3187211306117909d0))) :VELOCITIES (("ball" (0.0d0 -2.3551751098397954d-14)))
+;;      :AFTER (("ball" (0.0d0 -2.3551751098397954d-14))))
+;;     (:TIME 9.574111485795537d0 :SPEED 2.49685764107143d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -9.124645483638005d-16))) :VELOCITIES
+;;      (("ball" (0.0d0 -2.49685764107143d0))) :AFTER (("ball" (0.0d0 2.49685764107143d0))))
+;;     (:TIME 9.820257382881513d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.30510489533219587d0))) :VELOCITIES (("ball" (0.0d0 -2.302659067112092d-15)))
+;;      :AFTER (("ball" (0.0d0 -2.302659067112092d-15))))
+;;     (:TIME 10.068161859586597d0 :SPEED 2.444096817810246d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -4.090477956353311d-15))) :VELOCITIES
+;;      (("ball" (0.0d0 -2.444096817810246d0))) :AFTER (("ball" (0.0d0 2.444096817810246d0))))
+;;     (:TIME 10.30924785445084d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.2926045609898664d0))) :VELOCITIES (("ball" (0.0d0 3.2271108257459474d-14)))
+;;      :AFTER (("ball" (0.0d0 3.2271108257459474d-14))))
+;;     (:TIME 10.551985469504892d0 :SPEED 2.394545244369851d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -6.661338147750939d-16))) :VELOCITIES
+;;      (("ball" (0.0d0 -2.394545244369851d0))) :AFTER (("ball" (0.0d0 2.394545244369851d0))))
+;;     (:TIME 10.788311343442547d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.28108833212486894d0))) :VELOCITIES (("ball" (0.0d0 -1.321032584538539d-14)))
+;;      :AFTER (("ball" (0.0d0 -1.321032584538539d-14))))
+;;     (:TIME 11.026192298511862d0 :SPEED 2.347890234809125d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -1.4155343563970746d-15))) :VELOCITIES
+;;      (("ball" (0.0d0 -2.347890234809125d0))) :AFTER (("ball" (0.0d0 2.347890234809125d0))))
+;;     (:TIME 11.2580293506105d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.2704443841080538d0))) :VELOCITIES (("ball" (0.0d0 -2.90701707497837d-15)))
+;;      :AFTER (("ball" (0.0d0 -2.90701707497837d-15))))
+;;     (:TIME 11.491333996916442d0 :SPEED 2.303860157835839d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -3.5908775952719907d-16))) :VELOCITIES
+;;      (("ball" (0.0d0 -2.303860157835839d0))) :AFTER (("ball" (0.0d0 2.303860157835839d0))))
+;;     (:TIME 11.718928694318766d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.2605772181027418d0))) :VELOCITIES (("ball" (0.0d0 -1.296023936770842d-14)))
+;;      :AFTER (("ball" (0.0d0 -1.296023936770842d-14))))
+;;     (:TIME 11.947911405949371d0 :SPEED 2.262217756587502d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -7.7021722333370235d-16))) :VELOCITIES
+;;      (("ball" (0.0d0 -2.262217756587502d0))) :AFTER (("ball" (0.0d0 2.262217756587502d0))))
+;;     (:TIME 12.171488454140682d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.25140478633551216d0))) :VELOCITIES (("ball" (0.0d0 3.0503774012985305d-14)))
+;;      :AFTER (("ball" (0.0d0 3.0503774012985305d-14))))
+;;     (:TIME 12.396380877822047d0 :SPEED 2.222754750639783d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -8.968520370800093d-16))) :VELOCITIES
+;;      (("ball" (0.0d0 -2.222754750639783d0))) :AFTER (("ball" (0.0d0 2.222754750639783d0))))
+;;     (:TIME 12.616145819197396d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.24285620419415316d0))) :VELOCITIES (("ball" (0.0d0 2.279852705005232d-14)))
+;;      :AFTER (("ball" (0.0d0 2.279852705005232d-14))))
+;;     (:TIME 12.837159619538829d0 :SPEED 2.185287439170907d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -3.660266534311063d-15))) :VELOCITIES
+;;      (("ball" (0.0d0 -2.185287439170907d0))) :AFTER (("ball" (0.0d0 2.185287439170907d0))))
+;;     (:TIME 13.053301046224377d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.23486991398468127d0))) :VELOCITIES (("ball" (0.0d0 2.3450107144727475d-15)))
+;;      :AFTER (("ball" (0.0d0 2.3450107144727475d-15))))
+;;     (:TIME 13.270630238686822d0 :SPEED 2.14965309299266d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -2.615963001773025d-15))) :VELOCITIES
+;;      (("ball" (0.0d0 -2.14965309299266d0))) :AFTER (("ball" (0.0d0 2.14965309299266d0))))
+;;     (:TIME 13.483321687213634d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.22739219962829452d0))) :VELOCITIES (("ball" (0.0d0 -1.9493616248103958d-14)))
+;;      :AFTER (("ball" (0.0d0 -1.9493616248103958d-14))))
+;;     (:TIME 13.697144632203532d0 :SPEED 2.1157069734503504d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -2.912600716165059d-15))) :VELOCITIES
+;;      (("ball" (0.0d0 -2.1157069734503504d0))) :AFTER (("ball" (0.0d0 2.1157069734503504d0))))
+;;     (:TIME 13.906546214352591d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.220375976459879d0))) :VELOCITIES (("ball" (0.0d0 -2.0049587498857814d-14)))
+;;      :AFTER (("ball" (0.0d0 -2.0049587498857814d-14))))
+;;     (:TIME 14.117027330593288d0 :SPEED 2.0833198534145665d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -5.967448757360216d-16))) :VELOCITIES
+;;      (("ball" (0.0d0 -2.0833198534145665d0))) :AFTER (("ball" (0.0d0 2.0833198534145665d0))))
+;;     (:TIME 14.323287143883801d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.21377979845400952d0))) :VELOCITIES (("ball" (0.0d0 -1.6775487520365817d-14)))
+;;      :AFTER (("ball" (0.0d0 -1.6775487520365817d-14))))
+;;     (:TIME 14.530578387991929d0 :SPEED 2.0523759433875437d0 :PAIRS ((:COLLISION "ball" "floor"))
+;;      :POSITIONS (("ball" (0.0d0 -1.3183898417423734d-15))) :VELOCITIES
+;;      (("ball" (0.0d0 -2.0523759433875437d0))) :AFTER (("ball" (0.0d0 2.0523759433875437d0))))
+;;     (:TIME 14.733833741185702d0 :SPEED 0.0d0 :PAIRS ((:TURNS "ball" "ball")) :POSITIONS
+;;      (("ball" (0.0d0 0.2075670386361006d0))) :VELOCITIES (("ball" (0.0d0 1.493837893689026d-14)))
+;;      :AFTER (("ball" (0.0d0 1.493837893689026d-14)))))
+;;    :END
+;;    (:TIME 14.91657838799193d0 :POSITIONS (("ball" (0.0d0 0.04123555415516704d0))) :VELOCITIES
+;;     (("ball" (0.0d0 -1.8133383488977803d0)))))
