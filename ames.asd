@@ -205,6 +205,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "states")
                  (:file "impacts")
                  (:file "simulate")
+                 (:file "state-numbers")
                  (:file "branching")
                  (:file "quantities")
                  (:file "simplest-conditions")

@@ -1,5 +1,6 @@
 ;;;; src/simulator/simulate.lisp -- the qualitative-state loop (thesis sections 2.5.8 and 3.2.3):
-;;;; SIMULATE, the transitions between states, and the numbers beside the formulas.
+;;;; SIMULATE and the transitions between states (the numbers beside the formulas:
+;;;; state-numbers.lisp).
 ;;;;
 ;;;; For each state: choose the contacts and modes by consistency, solve and integrate its
 ;;;; model, prove which termination condition fires first, then carry the positions and
@@ -378,51 +379,3 @@ scenario's assumptions. Returns HISTORY."
   (when (and (scenario-queries (history-scenario history)) (null *branching*))
     (setf (history-answers history) (answer-queries history bridge)))
   history)
-
-;;; Numbers beside the formulas
-
-(defun numeric-duration (bridge state values)
-  "STATE's duration as a number under VALUES, or NIL."
-  (let ((duration (state-duration state)))
-    (cond ((keywordp duration) nil)
-          ((closed-form-time-p duration) (numeric-or-nil bridge duration values))
-          ((eq (first duration) :no-closed-form)
-           (numeric-travel-time bridge (getf (rest duration) :speed-squared)
-                                (getf (rest duration) :from-arc-length)
-                                (getf (rest duration) :to-arc-length) values)))))
-
-(defun numeric-start (bridge state values clock)
-  "STATE's start time as a number under VALUES: the value of its start formula when it
-has one (a state after an accumulation of impacts starts where the series sums, not
-after the durations of the states printed before it), else CLOCK, the numbers of the
-durations before it summed (after a state whose end has no closed form)."
-  (let ((start (state-start state)))
-    (cond ((realp start) start)
-          ((and start (not (keywordp start)) (closed-form-time-p start))
-           (or (numeric-or-nil bridge start values) clock))
-          (t clock))))
-
-(defun add-numeric-values (history bridge &optional (clock 0))
-  "When HISTORY has parameter values, record in each state (STATE-NUMBERS, a plist) the
-numeric start, duration and final positions and velocities, each the value of the
-formula it is printed beside. CLOCK is the number at which its first state starts (a
-branch continued from a fork starts later), or NIL."
-  (let ((values (history-parameter-values history)))
-    (when values
-      (dolist (state (history-states history))
-        (flet ((numbers-of (alist)
-                 (mapcar (lambda (entry)
-                           (list (first entry)
-                                 (mapcar (lambda (x) (numeric-or-nil bridge x values)) (second entry))))
-                         alist)))
-          (let ((duration (numeric-duration bridge state values)))
-            (setf clock (numeric-start bridge state values clock))
-            (setf (state-numbers state)
-                  (list :start clock
-                        :duration (or duration (state-duration state))
-                        :final-positions (numbers-of (state-final-positions state))
-                        :final-velocities (numbers-of (state-final-velocities state))
-                        :period (let ((periodic (state-periodic state)))
-                                  (and periodic (numeric-or-nil bridge (getf periodic :period) values)))))
-            (add-rotation-numbers bridge state values)
-            (setf clock (and clock (realp duration) (+ clock duration)))))))))
