@@ -94,19 +94,10 @@ its points, a wound piece's straight length less the rope its disc has paid out.
 
 (register-wound-rope-impact-templates *impacts*)
 
-(defcomponent rope-winding-at-impact (:knowledge-base *impacts*)
-  "At an impact as in a state (ROPE-WINDING): the sense in which turning the disc pays the
-rope out, from the sign of p0 x w0."
-  (:arguments (?rope :entity rope :where (:wound t)))
-  (:mode :pays-out-counter-clockwise
-   (:entry (> (winding-indicator ?rope) 0))
-   (:assert (rope-winding ?rope :sense 1)))
-  (:mode :pays-out-clockwise
-   (:entry (< (winding-indicator ?rope) 0))
-   (:assert (rope-winding ?rope :sense -1)))
-  (:mode :side-not-told
-   (:entry (= (winding-indicator ?rope) 0))
-   (:equations (= (winding-undecided ?rope) 0))))
+;; At an impact as in a state: the sense in which turning the disc pays the rope out is
+;; the state's component ROPE-WINDING itself (wound-ropes.lisp), registered here too.
+(ames.engine:register-component *impacts*
+                                (ames.engine:find-component *mechanics* 'rope-winding))
 
 (defcomponent wound-rope-kinematics-at-impact (:knowledge-base *impacts*)
   "How fast a wound rope's length shrinks just after the impact (its separation: negative

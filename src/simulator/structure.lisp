@@ -133,16 +133,6 @@ with P a non-integer rational, outermost first."
       (walk expression))
     (nreverse found)))
 
-(defun replace-subexpressions (bindings expression)
-  "EXPRESSION with each subexpression EQUAL to the CAR of an entry of the alist BINDINGS
-replaced by that entry's CDR (outermost first). Purely syntactic."
-  (let ((entry (assoc expression bindings :test #'equal)))
-    (cond (entry (cdr entry))
-          ((and (consp expression) (not (quantity-term-p expression)))
-           (cons (car expression)
-                 (mapcar (lambda (x) (replace-subexpressions bindings x)) (cdr expression))))
-          (t expression))))
-
 (defun solve-with-radicals-named (run equations unknowns)
   "The solution of EQUATIONS for UNKNOWNS solved with each radical free of the unknowns
 replaced by a term of its own, (RADICAL-KERNEL K), put back into the values after; NIL
@@ -154,7 +144,9 @@ when there is no such radical to name."
          (names (loop for kernel in kernels for k from 0
                       collect (cons kernel (list 'radical-kernel k)))))
     (when names
-      (let ((solution (solve-whole run (mapcar (lambda (equation) (replace-subexpressions names equation))
+      (let ((solution (solve-whole run (mapcar (lambda (equation)
+                                                 (ames.algebra:substitute-subexpressions
+                                                  names equation))
                                                equations)
                                    unknowns))
             (back (mapcar (lambda (entry) (cons (cdr entry) (car entry))) names)))
