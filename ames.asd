@@ -97,7 +97,8 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "obstacle")
                  (:file "prefetch")
                  (:file "touching")
-                 (:file "rotating-contacts")))
+                 (:file "rotating-contacts")
+                 (:file "fixed-corners")))
    (:module "engine" :pathname "src/engine/" :serial t
     :depends-on ("base" "tms")
     :components ((:file "package")
@@ -177,6 +178,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "model")
                  (:file "term-lookups")
                  (:file "conditions-over-time")
+                 (:file "guarded-meetings")
                  (:file "choice")
                  (:file "integrators")
                  (:file "equilibrium")

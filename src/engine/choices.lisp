@@ -30,6 +30,15 @@ RELATIONS the conditions the decider answered :CHOICE."
                                 templates))
              (answers (make-hash-table :test #'equal))
              (verdict (conjunction-answer model relations answers decider)))
+        (when (and (eq verdict :unknown)
+                   (some (lambda (r) (eq (gethash r answers) :choice)) relations))
+          ;; the activation would be a choice but for a condition the decider leaves
+          ;; open (a corner touching its face's line, its place within the face not
+          ;; decided): resolved as DECIDE-ACTIVATION resolves it, never guessed
+          (dolist (relation relations)
+            (when (eq (gethash relation answers) :unknown)
+              (setf (gethash relation answers) (resolve-unknown instance relation))))
+          (setf verdict (conjunction-answer model relations answers decider)))
         (when (eq verdict :choice)
           (make-choice-point (instance-key instance) :activation '(:true :false)
                              (if (instance-active-p instance) :true :false)

@@ -58,7 +58,7 @@ and call inside ames.maxima:with-assumptions for symbolic shapes):
    ;; path coordinates
    #:path-velocity #:path-acceleration #:differentiate
    ;; meeting and leaving contacts
-   #:contact-meeting #:meeting #:meeting-contact #:meeting-gap #:meeting-rate
+   #:contact-meeting #:meeting #:make-meeting #:meeting-contact #:meeting-gap #:meeting-rate
    #:meeting-extent #:meeting-conditions
    #:contact-leavings #:leaving #:leaving-contact #:leaving-endpoint #:leaving-point
    #:leaving-equation #:leaving-direction #:leaving-neighbour
@@ -72,4 +72,6 @@ and call inside ames.maxima:with-assumptions for symbolic shapes):
    #:vertex-on-face #:face-on-vertex
    #:contact-point-velocity #:contact-gap-rate #:contact-slip-velocity #:contact-slip-acceleration
    #:contact-gap-acceleration #:contact-torque
-   #:shape-corners #:shape-faces #:corner-contacts #:corner-touching-p #:resting-face-contacts))
+   #:shape-corners #:shape-faces #:corner-contacts #:corner-touching-p #:resting-face-contacts
+   ;; every contact of a rotating body with a fixed one, within the faces (fixed-corners.lisp)
+   #:contact-extent-relations #:fixed-corners #:fixed-corner-contacts #:rotating-body-contacts))

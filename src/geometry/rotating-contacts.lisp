@@ -116,15 +116,22 @@ of mass moves with VELOCITY (a vector) and it turns at OMEGA: v + omega k x arm.
 point, along the contact's tangent (0 when it rolls or rests)."
   (dot (contact-point-velocity contact velocity omega) (rotating-contact-tangent contact)))
 
-(defun contact-slip-acceleration (contact omega acceleration alpha)
-  "The rate of CONTACT's slip velocity for a corner on a fixed face (its tangent fixed):
-(a + alpha k x r - omega^2 r) . t. Signals an error for a fixed corner on the body's face
-(whose tangent turns)."
-  (let ((arm (rotating-contact-arm contact)))
+(defun contact-slip-acceleration (contact omega acceleration alpha &optional velocity)
+  "The rate of CONTACT's slip velocity. A corner on a fixed face (its tangent fixed):
+(a + alpha k x r - omega^2 r) . t. A fixed corner on the body's face (VELOCITY, the
+centre's, needed): the derivative of u . t with u = v + omega k x (P - c), P fixed, and
+t turning at omega: (a + alpha k x r - omega k x v) . t + u . (omega k x t)."
+  (let ((arm (rotating-contact-arm contact))
+        (tangent (rotating-contact-tangent contact)))
     (ecase (rotating-contact-kind contact)
       (:vertex-on-face
        (dot (v+ acceleration (vscale alpha (rot-ccw arm)) (vscale (e- (e* omega omega)) arm))
-            (rotating-contact-tangent contact))))))
+            tangent))
+      (:face-on-vertex
+       (let ((u (contact-point-velocity contact velocity omega)))
+         (e+ (dot (v+ acceleration (vscale alpha (rot-ccw arm)) (vscale (e- omega) (rot-ccw velocity)))
+                  tangent)
+             (dot u (vscale omega (rot-ccw tangent)))))))))
 
 (defun contact-gap-acceleration (contact velocity omega acceleration alpha)
   "The second time derivative of CONTACT's gap, for the centre's VELOCITY and

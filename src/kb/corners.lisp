@@ -1,15 +1,18 @@
-;;;; src/kb/corners.lisp -- a corner of a rotating polygon or segment touching a fixed
-;;;; straight face: a ladder's ends on its wall and floor, a block resting on an incline by
-;;;; its two bottom corners, a block tipping about one.
+;;;; src/kb/corners.lisp -- a corner touching a straight face, one of the two bodies rotating
+;;;; and the other fixed: a ladder's ends on its wall and floor, a block resting on an
+;;;; incline by its two bottom corners, a block tipping about one; and a fixed corner on a
+;;;; rotating body's face (a rod landing across a ledge's edge, then resting on it).
 ;;;;
 ;;;; The simulator describes each such pair as an entity (it finds the corners and faces;
-;;;; ames.geometry's rotating-contacts.lisp gives their geometry as functions of the
-;;;; rotating body's configuration):
+;;;; ames.geometry's rotating-contacts.lisp and fixed-corners.lisp give their geometry as
+;;;; functions of the rotating body's configuration, whichever body has the corner):
 ;;;;   (corner-contact K :observer A :obstacle B :geometry C :mates (K ...))
 ;;;;       A the rotating body, B the fixed one, C an AMES.GEOMETRY:ROTATING-CONTACT whose
 ;;;;       expressions are over (pos A :x), (pos A :y) and (angle A); MATES the corners of A
 ;;;;       on the same face touching at the state's start (friction.lisp needs them).
-;;;; The corner touches while its gap is 0; it pushes A along the face's normal with the
+;;;; The corner touches while its gap is 0 and it lies within the face (0 <= place <=
+;;;; extent: a corner on the face's line past its end touches nothing, and reaching the
+;;;; line there is no collision); it pushes A along the face's normal with the
 ;;;; magnitude (normal-force K), at the corner (a moment about A's centre: rotation.lisp's
 ;;;; moment of a contact force, whose arm the geometry gives); the restriction keeps the
 ;;;; gap's second derivative zero. The contact ends when the normal force would turn
@@ -38,6 +41,14 @@ consistency search's choice (a block's uphill corner rises at once when it tips)
 is reached as the gap closes."
   (list '= (ames.geometry:rotating-contact-gap (corner-geometry situation contact)) 0))
 
+(defun corner-within-face (situation contact end)
+  "Template CORNER-WITHIN-FACE: the corner is not past the face's END (:START or :END):
+(>= PLACE 0) or (<= PLACE EXTENT); (>= 1 0), true, on a half-plane's unbounded line."
+  (let ((relations (ames.geometry:contact-extent-relations (corner-geometry situation contact))))
+    (if relations
+        (ecase end (:start (first relations)) (:end (second relations)))
+        '(>= 1 0))))
+
 (defun corner-past-an-end (situation contact)
   "Template CORNER-PAST-AN-END: the corner has slid past an end of a bounded face; never
 (an empty disjunction) on a half-plane's line."
@@ -62,8 +73,8 @@ is reached as the gap closes."
 (defun corner-slip-acc (situation contact)
   "Template CORNER-SLIP-ACC: the rate of CORNER-SLIP-SPEED."
   (multiple-value-bind (velocity omega acceleration alpha) (corner-rates situation contact)
-    (declare (ignore velocity))
-    (ames.geometry:contact-slip-acceleration (corner-geometry situation contact) omega acceleration alpha)))
+    (ames.geometry:contact-slip-acceleration (corner-geometry situation contact) omega acceleration alpha
+                                             velocity)))
 
 (defun register-corner-templates (kb)
   "Register in KB the template functions of corner contacts."
@@ -73,6 +84,8 @@ is reached as the gap closes."
                      :documentation "The rate of a corner's velocity along the face.")
   (register-template kb 'corner-touching #'corner-touching
                      :documentation "A rotating body's corner is on or behind a face's line.")
+  (register-template kb 'corner-within-face #'corner-within-face
+                     :documentation "The corner is not past one end of the face.")
   (register-template kb 'corner-past-an-end #'corner-past-an-end
                      :documentation "The corner has slid past an end of the face.")
   (register-template kb 'corner-gap-acceleration #'corner-gap-acceleration
@@ -93,12 +106,15 @@ is reached as the gap closes."
 (register-corner-templates *mechanics*)
 
 (defcomponent corner-contact (:knowledge-base *mechanics*)
-  "A rotating body's corner touches a fixed face while its gap is zero. The contact ends
+  "A rotating body's corner touches a fixed face, or a fixed corner the rotating body's
+face, while its gap is zero and it lies within the face (a corner reaching the face's
+line past its end meets nothing). The contact ends
 when keeping it would need an attractive normal force (the corner lifts off: a ladder
 leaves its wall, a block tips about its other corner) or when the corner slides past an
 end of the face."
   (:arguments (?contact :entity corner-contact :where (:observer ?body1 :obstacle ?body2)))
   (:activation (corner-touching ?contact)
+               (corner-within-face ?contact :start) (corner-within-face ?contact :end)
                (:event (:contact ?body1 ?body2) :impact (:collision ?body1 ?body2)))
   (:deactivation (:when (< (normal-force ?contact) 0) :event (:lift-off ?body1 ?body2))
                  (:when (corner-past-an-end ?contact) :event (:leaves ?body1 ?body2 :endpoint)))

@@ -28,20 +28,19 @@
   "The self-check's plist for the termination CONDITION (see the file header), or NIL
 when its relation is none the check can search numerically."
   (let* ((relation (ames.engine:termination-condition-relation condition))
-         (contact (gap-relation-contact relation))
          (names (list :event (ames.engine:termination-condition-event condition)
                       :impact (ames.engine:termination-condition-impact condition)
                       :change (ames.engine:termination-condition-change condition))))
     (handler-case
-        (if contact
-            (let ((meeting (contact-meeting-terms run solved contact)))
+        (let ((meeting (relation-meeting run solved relation)))   ; guarded-meetings.lisp
+          (if meeting
               (append names
                       (list :gap (ames.geometry:meeting-gap meeting)
                             :margins (loop for r in (ames.geometry:meeting-extent meeting)
-                                           unless (eq (first r) 'or) collect (extent-margin r)))))
-            (append names
-                    (list :parts (loop for part in (if (eq (first relation) 'or) (rest relation) (list relation))
-                                       collect (over-state-terms run solved (violation-function part))))))
+                                           unless (eq (first r) 'or) collect (extent-margin r))))
+              (append names
+                      (list :parts (loop for part in (if (eq (first relation) 'or) (rest relation) (list relation))
+                                         collect (over-state-terms run solved (violation-function part)))))))
       ;; an equality or a relation the check cannot search: named, not searched
       (error () (append names (list :unsearchable relation))))))
 

@@ -358,7 +358,12 @@ UNSUPPORTED-SITUATION beyond *SUBSET-LIMIT* points."
   "Choose by consistency the contacts and modes that hold at the start of the current
 state, leave the model in that assignment and return its TRIAL, with the others tried
 as its notes. Signals AMBIGUOUS-TRANSITION or UNSOLVABLE-MODEL (see CHOOSE-TRIAL)."
-  (let ((points (ames.engine:model-choice-points (run-model run) :decider (run-decider run))))
+  (let ((points (handler-bind ((ames.engine:undecided-relation
+                                  ;; a choice held up by an undecided condition (a corner's
+                                  ;; place within its face): an ambiguity the state's
+                                  ;; caller branches on, or settles by the values
+                                  (lambda (condition) (undecided-to-ambiguity condition run))))
+                  (ames.engine:model-choice-points (run-model run) :decider (run-decider run)))))
     (multiple-value-bind (lone groups modes) (point-groups run points)
       (let* ((option-lists (append (mapcar #'group-options groups) (mapcar #'mode-options modes)))
              (combos (combinations option-lists))

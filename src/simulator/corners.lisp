@@ -8,7 +8,11 @@
 ;;;; half-plane's line), ames.geometry's VERTEX-ON-FACE gives the contact's gap, normal,
 ;;;; place along the face and arm as expressions of the body's (pos B :x), (pos B :y) and
 ;;;; (angle B); the situation gets one (corner-contact K :observer B :obstacle F :geometry
-;;;; C) entity per pair (src/kb/corners.lisp says what it means). Only the faces the corner
+;;;; C) entity per pair (src/kb/corners.lisp says what it means); so does each corner of a
+;;;; fixed polygon or segment with each straight face of the rotating body (the geometry's
+;;;; ROTATING-BODY-CONTACTS gives both; which kind it is, only the geometry knows). A corner
+;;;; touches only within its face (gap 0, place between the face's ends: CORNER-TOUCHING-NOW,
+;;;; the knowledge base's activation). Only the faces the corner
 ;;;; is in front of or on at the scenario's start (gap >= 0 decided) are described: a face
 ;;;; whose line the corner is behind (the underside of an incline under a block on its
 ;;;; slope) cannot be reached before another face of that convex body. The corners of one
@@ -63,7 +67,7 @@ file header), found at the first call."
   (let ((scenario (run-scenario run)) (index 0) (contacts '()))
     (dolist (body (remove-if-not #'corner-body-p (scenario-bodies scenario)))
       (dolist (fixed (remove-if-not #'faced-body-p (scenario-bodies scenario)))
-        (dolist (contact (ames.geometry:corner-contacts
+        (dolist (contact (ames.geometry:rotating-body-contacts
                           (run-bridge run) (run-shape run (scenario-body-name body))
                           (corner-configuration body) (run-shape run (scenario-body-name fixed))
                           :fixed-position (scenario-body-position fixed)))
@@ -79,15 +83,30 @@ file header), found at the first call."
   (cdr (assoc name (run-shapes run))))
 
 (defun touching-now-p (run body geometry)
-  "True when the corner contact GEOMETRY of the rotating BODY (a name) has its gap 0 at
-the start of the current state (decided)."
-  (let ((position (body-position run body)))
-    (holds run `(= ,(substitute-expressions
-                     (list (cons `(ames.kb:pos ,body :x) (first position))
-                           (cons `(ames.kb:pos ,body :y) (second position))
-                           (cons `(ames.kb:angle ,body) (body-angle run body)))
-                     (ames.geometry:rotating-contact-gap geometry))
-                   0))))
+  "True when the corner contact GEOMETRY of the rotating BODY (a name) touches at the start
+of the current state, decided (CORNER-TOUCHING-NOW)."
+  (eq (corner-touching-now run body geometry) :true))
+
+(defun corner-touching-now (run body geometry)
+  "Whether the corner contact GEOMETRY of the rotating BODY (a name) touches at the start
+of the current state: its gap 0 and its point within the face (see the file header).
+:TRUE, :FALSE, or (values :UNKNOWN RELATION) when the gap is 0 and the algebra does not
+decide whether the point is within the face (RELATION, over the parameters, that would)."
+  (let* ((position (body-position run body))
+         (now (lambda (x)
+                (substitute-expressions
+                 (list (cons `(ames.kb:pos ,body :x) (first position))
+                       (cons `(ames.kb:pos ,body :y) (second position))
+                       (cons `(ames.kb:angle ,body) (body-angle run body)))
+                 x))))
+    (if (not (holds run `(= ,(funcall now (ames.geometry:rotating-contact-gap geometry)) 0)))
+        :false
+        (dolist (relation (ames.geometry:contact-extent-relations geometry) :true)
+          (let ((relation (funcall now relation)))
+            (case (decide run relation)
+              (:true)
+              (:false (return :false))
+              (t (return (values :unknown relation)))))))))
 
 (defun face-mates (run)
   "Alist corner contact name -> the names of the corner contacts of the same rotating

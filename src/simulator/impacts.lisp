@@ -96,8 +96,25 @@ its rounding, about 1e-15), as entries (NAME BODY OBSTACLE . GEOMETRY)."
     (remove-if-not (lambda (entry)
                      (destructuring-bind (name body obstacle . geometry) entry
                        (declare (ignore obstacle))
-                       (or (member name named) (touching-now-p run body geometry))))
+                       (or (member name named) (corner-touches-at-impact-p run body geometry))))
                    (run-corner-contacts run))))
+
+(defun corner-touches-at-impact-p (run body geometry)
+  "True when the corner contact GEOMETRY of BODY touches now (CORNER-TOUCHING-NOW), an
+undecided place within the face settled by the run's parameter values (recorded as
+assumed from them). An impact is no place to branch: with no values that settle it,
+signals UNSUPPORTED-SITUATION naming the relation, never guessed."
+  (multiple-value-bind (verdict relation) (corner-touching-now run body geometry)
+    (case verdict
+      (:true t)
+      (:false nil)
+      (t (case (ames.algebra:decide-by-values relation)
+           (:true t)
+           (:false nil)
+           (t (error 'unsupported-situation
+                     :datum relation
+                     :detail (format nil "Whether a corner of ~A touches within the face at the impact is not decided: ~S."
+                                     body relation))))))))
 
 (defun touching-corner-entities (run corners)
   "The touching contacts of the CORNERS touching now (TOUCHING-CORNERS), each with the

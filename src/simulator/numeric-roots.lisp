@@ -40,11 +40,11 @@ W, ln cosh = c), and the run's numbers are known."
   "CONDITION's violation function over the closed-form motion of GROUPS, a function of
 TAU (its gap for a contact)."
   (let* ((relation (ames.engine:termination-condition-relation condition))
-         (contact (gap-relation-contact relation)))
+         (meeting (relation-meeting run solved relation)))
     (motion-value groups (over-state-terms
                           run solved
-                          (if contact
-                              (ames.geometry:meeting-gap (contact-meeting-terms run solved contact))
+                          (if meeting
+                              (ames.geometry:meeting-gap meeting)
                               (if (eq (first relation) 'or) 0 (violation-function relation)))))))
 
 (defun sampling-step (run solved groups conditions)

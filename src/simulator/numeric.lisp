@@ -181,15 +181,14 @@ the parameters by their values, TERMS by their symbols."
   "The event functions (see INTEGRATE-UNTIL) of the termination CONDITION over the
 numeric TERMS: one per part of an OR."
   (let* ((relation (ames.engine:termination-condition-relation condition))
-         (contact (gap-relation-contact relation))
+         (meeting (relation-meeting run solved relation))   ; guarded-meetings.lisp
          (symbols (append (mapcar #'state-symbol terms) (list 'tau))))
     (flet ((compiled (expression)
              (numeric-function (numeric-expression run groups (over-state-terms run solved expression) terms)
                                symbols))
            (vector-of (state time) (concatenate 'simple-vector state (vector time))))
-      (if contact
-          (let* ((meeting (contact-meeting-terms run solved contact))
-                 (gap (compiled (ames.geometry:meeting-gap meeting)))
+      (if meeting
+          (let* ((gap (compiled (ames.geometry:meeting-gap meeting)))
                  (margins (loop for r in (ames.geometry:meeting-extent meeting)
                                 unless (eq (first r) 'or) collect (compiled (extent-margin r)))))
             (list (lambda (state time)

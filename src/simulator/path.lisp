@@ -135,11 +135,11 @@ curved contact the body must reach that arc length with its speed squared >= 0: 
 that is open the answer is :UNKNOWN with it; when it is proven negative (the body turns
 back first, at a point not found) UNSUPPORTED-SITUATION is signalled naming the body."
   (let* ((relation (ames.engine:termination-condition-relation condition))
-         (contact (gap-relation-contact relation))
+         (meeting (relation-meeting run solved relation))   ; guarded-meetings.lisp
          (over-arc (lambda (x) (motion-value (list group) (over-state-terms run solved x)))))
     (multiple-value-bind (status s rate)
-        (cond (contact
-               (meeting-arc run group (contact-meeting-terms run solved contact) over-arc))
+        (cond (meeting
+               (meeting-arc run group meeting over-arc))
               ((speed-function-p run group (speed-condition-function relation over-arc))
                ;; the speed along the path changes sign: a turning point (turns.lisp)
                (turning-crossing run solved group (speed-condition-function relation over-arc)))

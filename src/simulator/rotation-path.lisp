@@ -188,7 +188,10 @@ the order of two event times (recorded as assumed from them)."
                (t (values :unknown `(< ,slope 0))))))))))
 
 (defun angle-relation-root (run group relation over-angle)
-  "Where RELATION (an inequality or an OR of them) first holds ahead along GROUP's angle."
+  "Where RELATION (an inequality or an OR of them, or a guarded conjunction:
+guarded-meetings.lisp) first holds ahead along GROUP's angle."
+  (when (guarded-relation-parts relation)
+    (return-from angle-relation-root (guarded-angle-root run group relation over-angle)))
   (if (eq (first relation) 'or)
       (let ((best nil) (unknown nil))
         (dolist (part (rest relation))
@@ -255,7 +258,7 @@ is reported unsupported otherwise."
 time there WITH-RATE (none at a turning point, where the speed's slope is infinite). At
 an angle found with numbers (a rational S under parameter values, numeric-angle-roots.lisp)
 the rate's sign is the numbers' and the time the numeric travel time."
-  (let* ((f (funcall over-angle (violation-function relation)))
+  (let* ((f (funcall over-angle (guarded-violation-function relation)))
          (numeric (and (rationalp s) (run-numbers-known-p run)))
          (rate (and with-rate (not (eq (first relation) 'or))
                     (tidy run `(* ,(at-arc (ames.geometry:differentiate f +arc-length+) s)

@@ -198,8 +198,9 @@ division (DIVIDED-BY-TAU), as long as the quotient is defined at the start."
   "When the relative motion first meets CONTACT from its exterior, strictly after the
 start: (values :AT TIME RATE), (values :NEVER) or (values :UNKNOWN FACT NOT-BEFORE),
 NOT-BEFORE (or NIL) a time before which it is proven not to meet. MEETING is
-the geometry's meeting over state terms; OVER-TIME makes functions of TAU of them.
-RATE is the gap's rate then (negative: an impact)."
+the geometry's meeting over state terms, or a guarded conjunction's (guarded-meetings.lisp,
+CONTACT then NIL); OVER-TIME makes functions of TAU of them. RATE is the gap's rate then
+(negative: an impact)."
   (let* ((gap (tidy run (funcall over-time (ames.geometry:meeting-gap meeting))))
          (rate-of (lambda (time) (tidy run (at-time (time-derivative gap) time))))
          (extent (mapcar (lambda (r) (funcall over-time r)) (ames.geometry:meeting-extent meeting))))
@@ -234,7 +235,9 @@ RATE is the gap's rate then (negative: an impact)."
                                    (values :unknown (nth (position :unknown answers) checks)
                                            root)))
                                 (t (setf after root))))))))
-      (values :unknown `(:meets ,@(contact-bodies run contact))))))
+      (values :unknown (if contact
+                           `(:meets ,@(contact-bodies run contact))
+                           `(:meets-beyond-the-first-roots (= ,gap 0)))))))
 
 ;;; The candidates
 
@@ -266,9 +269,12 @@ is reached at a non-zero RATE), or its model change when the component names non
          (contact (gap-relation-contact relation))
          (over-time (lambda (x) (motion-value groups (over-state-terms run solved x)))))
     (multiple-value-bind (status time rate-or-not-before)
-        (if contact
-            (meeting-time run (contact-meeting-terms run solved contact) over-time contact)
-            (relation-time-and-rate run condition relation over-time))
+        (cond (contact
+               (meeting-time run (contact-meeting-terms run solved contact) over-time contact))
+              ((guarded-relation-parts relation)
+               ;; a corner's touching within its face (guarded-meetings.lisp)
+               (guarded-relation-time-and-rate run condition relation over-time))
+              (t (relation-time-and-rate run condition relation over-time)))
       (case status
         (:at (let ((rate rate-or-not-before))
                (multiple-value-bind (approach fact) (if rate (approach-kind run rate) :none)
