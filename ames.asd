@@ -345,6 +345,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "hinged-swing")
                (:file "rotating-impacts")
                (:file "tipping")
+               (:file "ledge-impacts")
                (:file "witness-curved")
                (:file "witness-crosscheck")
                (:file "witness-hinged")
