@@ -140,3 +140,37 @@ the ledge's top."
           ;; the far end at x = 1.9 (the rod's centre at 0.9) is past the ledge's edge
           (is (eq :false (ames.algebra:decide
                           bridge (ames.base:substitute-expressions '((x . 9/10) (y . 0)) (first relations))))))))))
+
+(test rod-slides-off-a-ledges-edge
+  "After the impact the rod pivots and slides on the ledge's smooth edge (no closed form:
+integrated under the scenario's values) until the edge reaches the rod's left end, where
+the contact ends past its end: the rod's left end is then at the edge, (x, y) - (l/2)
+(cos theta, sin theta) = (0, 0), and the smooth edge has done no work (K + U as just after
+the impact)."
+  (with-fixture simulator-bridge ()
+    (let* ((form (let ((form (copy-tree (ames:scenario-form (scenario-named "rod-lands-across-a-ledge")))))
+                   (setf (cdr (assoc 'ames-scenario::simulate (cdddr form))) '(:states 2))
+                   form))
+           (scenario (ames:parse-scenario form))
+           (values (ames.scenario:run-parameter-values scenario :numeric t)))
+      (multiple-value-bind (history states) (run-of scenario bridge :parameter-values values)
+        (declare (ignore history))
+        (is (= 2 (length states)))
+        (when (= 2 (length states))
+          (let* ((state (second states))
+                 (event (ames::state-end-event state))
+                 (number (lambda (x) (ames.maxima:numeric-value bridge x values)))
+                 (position (mapcar number (per-body (ames::state-final-positions state) "ROD")))
+                 (velocity (mapcar number (per-body (ames::state-final-velocities state) "ROD")))
+                 (theta (funcall number (per-body (ames::state-final-angles state) "ROD")))
+                 (omega (funcall number (per-body (ames::state-final-angular-velocities state) "ROD")))
+                 (start (mapcar number (per-body (ames::state-initial-velocities state) "ROD")))
+                 (omega0 (funcall number (impact-entry (ames::state-impact (first states)) :angular-velocities-after "ROD"))))
+            (is (and (eq :leaves (first event)) (member :endpoint event)) "the end event ~S" event)
+            ;; l = 2: the left end at the edge
+            (is (< (abs (- (first position) (cos theta))) 1d-6) "x ~S theta ~S" (first position) theta)
+            (is (< (abs (- (second position) (sin theta))) 1d-6) "y ~S theta ~S" (second position) theta)
+            ;; energy: m = 1, g = 10, I = 1/3; just after the impact the centre is at y = 0
+            (flet ((energy (v w y) (+ (* 1/2 (+ (expt (first v) 2) (expt (second v) 2)))
+                                      (* 1/2 1/3 w w) (* 10 y))))
+              (is (< (abs (- (energy velocity omega (second position)) (energy start omega0 0))) 1d-6)))))))))
