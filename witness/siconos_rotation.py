@@ -66,6 +66,7 @@ import numpy as np
 import siconos.kernel as sk
 import siconos.numerics as sn
 
+from siconos_ledges import corner_contacts
 from siconos_rotation_events import Events
 from siconos_rotation_relations import (MARGIN, STEP, Body, Contact, Face, Hinge, Rope,
                                         RopeTurned, Unsupported, friction_coefficient,
@@ -94,6 +95,9 @@ class RotationDriver(Events):
                     vertices = b.vertices if b.kind in ("polygon", "segment") else [None]
                     for p in vertices:
                         self.contacts.append(Contact(b, face, p, self.n, mu, e, self.q0))
+        # the fixed corners on the turning bodies' faces (siconos_ledges.py)
+        self.contacts += corner_contacts(model, self.bodies, self.n, self.q0,
+                                         friction_coefficient, restitution)
         self.hinges = [Hinge(h, self.bodies, self.n) for h in model.get("hinges", [])]
         self.ropes = [Rope(r, self.bodies, self.q0) for r in model.get("ropes", [])]
         self.has_friction = any(c.friction for c in self.contacts)
