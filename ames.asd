@@ -267,7 +267,8 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "generate-curved")
                  (:file "generate-drag")
                  (:file "generate-rotation")
-                 (:file "generate-hinged")))
+                 (:file "generate-hinged")
+                 (:file "generate-ledges")))
    (:module "interface" :pathname "src/interface/" :serial t
     :depends-on ("report" "check" "witness")
     :components ((:file "package")
