@@ -72,6 +72,16 @@ bisection to double precision."
              (if (and value (< value 0)) (setf high middle) (setf low middle))))
   high)
 
+(defun jump-below-zero-p (function time before)
+  "True when FUNCTION, found crossing below zero at TIME (BISECT-CROSSING's answer, BEFORE
+its value at the start of the step), jumps there rather than crossing: its value just past
+TIME is far from zero (more than 1e-6 of the larger of 1 and |BEFORE|). A function gated
+by an extent (a contact's gap counted only while its point is within the face: a corner
+entering a face's extent behind its line, see guarded-meetings.lisp) jumps; a continuous
+one does not."
+  (let ((value (funcall function time)))
+    (and value (> (abs value) (* 1d-6 (max 1d0 (abs before)))))))
+
 (defun dip-crossing (function rate low high)
   "Within [LOW, HIGH], where FUNCTION is >= 0 at both ends and RATE goes from negative to
 positive: the point where FUNCTION is least, when FUNCTION < 0 there (a dip below zero
@@ -92,7 +102,9 @@ of TAU crosses below zero, or NIL."
           for next = (if horizon (min (+ time step) horizon) (+ time step))
           for after = (funcall function next)
           for rate-after = (funcall rate next)
-          do (cond ((and before after (>= before 0) (< after 0))
+          do (cond ((and before after (>= before 0) (< after 0)
+                         ;; a jump below zero is no crossing (guarded-meetings.lisp)
+                         (not (jump-below-zero-p function (bisect-crossing function time next) before)))
                     (return-from first-numeric-crossing (bisect-crossing function time next)))
                    ((and before after (>= before 0) (>= after 0) rate-before rate-after
                          (< rate-before 0) (> rate-after 0))
@@ -119,7 +131,8 @@ event search; the search ends where FUNCTION has no value."
       (loop for time = first then (min (* time ratio) last)
             for value = (funcall function time)
             do (cond ((null value) (return nil))
-                     ((and before (>= before 0) (< value 0))
+                     ((and before (>= before 0) (< value 0)
+                           (not (jump-below-zero-p function (bisect-crossing function previous time) before)))
                       (return (bisect-crossing function previous time))))
                (when (>= time last) (return nil))
                (setf previous time before value)))))

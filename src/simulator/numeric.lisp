@@ -121,10 +121,16 @@ event: the steps grow without bound)."
                    (let* ((after (mapcar (lambda (event) (funcall event next (+ time h))) events))
                           (fired (loop for b in before for a in after for i from 0
                                        when (and b a (>= b 0) (< a 0)) collect i)))
-                     (when fired
-                       (multiple-value-bind (at state index) (locate-event rates y time h events fired)
-                         (return-from integrate-until
-                           (values at state index (nreverse (cons (cons at state) samples))))))
+                     (loop while fired
+                           do (multiple-value-bind (at state index) (locate-event rates y time h events fired)
+                                (let ((value (funcall (nth index events) state at))
+                                      (start (nth index before)))
+                                  ;; a jump below zero is no event (a gap gated by its
+                                  ;; face's extent: numeric-roots.lisp, JUMP-BELOW-ZERO-P)
+                                  (if (and value (> (abs value) (* 1d-6 (max 1d0 (abs start)))))
+                                      (setf fired (remove index fired))
+                                      (return-from integrate-until
+                                        (values at state index (nreverse (cons (cons at state) samples))))))))
                      (setf y next time (+ time h) before after)
                      (push (cons time y) samples)
                      (setf h (* h (min 5d0 (* 0.9d0 (expt (max err 1d-10) -1/5)))))))))
