@@ -62,6 +62,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "values")
                  (:file "values-first")
                  (:file "roots")
+                 (:file "repeated-roots")
                  (:file "integrator-support")
                  (:file "quadrature")
                  (:file "integrals")
