@@ -332,6 +332,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "springs-ropes-gravitation")
                (:file "drag")
                (:file "wound-ropes")
+               (:file "wound-rope-slack")
                (:file "failure-classes")
                (:file "rest-in-contact")
                (:file "refusals")
