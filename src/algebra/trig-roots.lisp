@@ -76,7 +76,8 @@ relation or NIL (see the file header)."
                  (:found root)
                  (t (if (eq root :none)
                         nil
-                        (return-from earliest-angle (values nil :unknown))))))))
+                        (return-from earliest-angle
+                          (values (undecided-quadratic-fact bridge polynomial u) :unknown))))))))
       (unless (settled amplitude)
         (return-from earliest-angle (values nil :none)))
       (when (and (not strictly) (settled `(= (+ ,a ,b) 0)))
@@ -104,6 +105,22 @@ relation or NIL (see the file header)."
       (if (settled `(= (+ ,a ,b) 0))
           (values '(* 2 pi) :found)
           (values nil :none)))))
+
+(defun undecided-quadratic-fact (bridge polynomial u)
+  "For the half-angle POLYNOMIAL in U (degree at most 2) whose earliest positive root is
+not decided: the relation X > 0 on the first of its coefficients (highest degree
+first) or its discriminant whose sign the assumptions leave open, the readable fact
+that would settle it (the rod swinging back below its hinge or past it: the sign of A -
+B); NIL when each sign is decided."
+  (let ((coefficients (call-or-nil (lambda () (polynomial-coefficients-in bridge polynomial u)))))
+    (when (and coefficients (<= (length coefficients) 3))
+      (destructuring-bind (&optional (c0 0) (c1 0) (c2 0)) coefficients
+        (find-if (lambda (fact)
+                   (and (not (realp (second fact)))
+                        (eq (decide bridge fact) :unknown)
+                        (eq (decide bridge (list '< (second fact) 0)) :unknown)))
+                 (mapcar (lambda (c) (list '> (simplified bridge c) 0))
+                         (list c2 c1 c0 `(- (expt ,c1 2) (* 4 ,c2 ,c0)))))))))
 
 (defun odd-angle (bridge a b c past-pi)
   "The earliest root of A + C sin x in (0, pi) (in (pi, 2 pi) when PAST-PI) written
