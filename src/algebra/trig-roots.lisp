@@ -136,10 +136,12 @@ A^2))/A loses its digits where A is small beside C, and sin, cos of asin are alg
         `(asin (/ (- ,a) ,c)))))
 
 (defun root-checked-p (bridge expression variable root coefficients)
-  "True when EXPRESSION vanishes at VARIABLE = ROOT: by simplification, else at
+  "True when EXPRESSION vanishes at VARIABLE = ROOT: by simplification (the sines of
+sums expanded: a phase asin(q) plus the root), else at
 admissible points within 1e-9 of the size of COEFFICIENTS (A, B and C)."
   (let ((value (substitute-expressions (list (cons variable root)) expression)))
     (or (call-or-nil (lambda () (zero-expression-p bridge value)))
+        (call-or-nil (lambda () (trigonometric-identity-p bridge value 0)))
         (let ((size `(+ ,@(mapcar (lambda (c) `(sqrt (expt ,c 2))) coefficients)))
               (checked 0) (failed nil))
           (call-with-admissible-points
