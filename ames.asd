@@ -333,6 +333,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "drag")
                (:file "wound-ropes")
                (:file "wound-rope-slack")
+               (:file "sinusoid-phases")
                (:file "failure-classes")
                (:file "rest-in-contact")
                (:file "refusals")
