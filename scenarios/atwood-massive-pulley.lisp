@@ -7,8 +7,16 @@
 ;;;; the hinge holds M g + T1 + T2 (the query hinge-holds). m1 reaches the floor after
 ;;;; sqrt(2 h / a). The landing (the floor plastic: no restitution clause) stops m1 and lets
 ;;;; its rope go slack: m2 and the pulley keep their speeds, and the impact dissipates m1's
-;;;; kinetic energy (1/2) m1 v^2 = m1 (m1 - m2) g h R^2 / (I + (m1 + m2) R^2). One state (the
-;;;; next one's event search, the light mass against the pulley's rim, fails in Maxima).
+;;;; kinetic energy (1/2) m1 v^2 = m1 (m1 - m2) g h R^2 / (I + (m1 + m2) R^2).
+;;;; After the landing m2 and the pulley turn on together on the taut right rope (not m2 in
+;;;; free flight: the pulley would wind the rope in faster than m2 rises), slowed by m2's
+;;;; weight alone: m2's acceleration -m2 g / (m2 + I/R^2), the tension m2 I g / (I + m2 R^2).
+;;;; Whether m2 climbs to the pulley is a fact over the parameters, the run's branch: its
+;;;; highest point, 3 h / 2 + (m1 - m2) h (I + m2 R^2) / (m2 (I + (m1 + m2) R^2)), below
+;;;; top or not. Below it (the values), m2 stops after v / a, falls back, and the slack
+;;;; rope is taut again when the pulley is back at its angle of the landing: a plastic jerk
+;;;; lifts m1, the angular momentum about the axle kept, at v (I + m2 R^2) / (I + (m1 + m2) R^2).
+;;;; (m2 climbing to the pulley, its rope wound in to nothing, is not modelled.)
 
 (scenario atwood-massive-pulley
   "An Atwood machine over a disc pulley of inertia I."
@@ -25,4 +33,4 @@
   (rope left :length (- top h) :through ((heavy (0 0)) (pulley ((- big-r) 0) :wound)))
   (rope right :length (- top (/ h 2)) :through ((light (0 0)) (pulley (big-r 0) :wound)))
   (query hinge-holds (value (y (hinge-force axle)) :at (start 0)))
-  (simulate :states 1))
+  (simulate :states 3))

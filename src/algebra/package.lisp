@@ -21,7 +21,7 @@ It asks Maxima only through the bridge.")
    #:call-with-values-first #:values-first-p #:decide-first-cheaply
    #:undecided-witnesses #:explain-undecided
    ;; roots (roots.lisp, trig-roots.lisp)
-   #:earliest-root #:earliest-trigonometric-root
+   #:earliest-root #:square-free-part #:earliest-trigonometric-root
    ;; integrators (integrals.lisp, elliptic.lisp, periods.lisp, quadrature.lisp, linear-ode.lisp)
    #:travel-time #:numeric-travel-time #:libration-period #:sinusoid-coefficients
    #:position-over-time #:solve-linear-odes #:linear-ode-failed

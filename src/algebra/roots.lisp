@@ -124,11 +124,7 @@ depending on VARIABLE), MAXIMA-ERROR, MAXIMA-TIMEOUT."
                                       :candidates candidates)))
         (if (eq coefficients :not-polynomial)
             (solved-earliest-root search form offset-variable nil)
-            (case (1- (length coefficients))
-              (0 (constant-earliest-root search (first coefficients)))
-              (1 (linear-earliest-root search coefficients))
-              (2 (quadratic-earliest-root search coefficients form offset-variable))
-              (t (solved-earliest-root search form offset-variable coefficients))))))))
+            (polynomial-earliest-root search form offset-variable coefficients))))))
 
 (defun constant-earliest-root (search constant)
   "EXPRESSION does not depend on the variable: no root, or (identically zero) every value.

@@ -76,7 +76,8 @@ relation or NIL (see the file header)."
                  (:found root)
                  (t (if (eq root :none)
                         nil
-                        (return-from earliest-angle (values nil :unknown))))))))
+                        (return-from earliest-angle
+                          (values (undecided-quadratic-fact bridge polynomial u) :unknown))))))))
       (unless (settled amplitude)
         (return-from earliest-angle (values nil :none)))
       (when (and (not strictly) (settled `(= (+ ,a ,b) 0)))
@@ -105,6 +106,22 @@ relation or NIL (see the file header)."
           (values '(* 2 pi) :found)
           (values nil :none)))))
 
+(defun undecided-quadratic-fact (bridge polynomial u)
+  "For the half-angle POLYNOMIAL in U (degree at most 2) whose earliest positive root is
+not decided: the relation X > 0 on the first of its coefficients (highest degree
+first) or its discriminant whose sign the assumptions leave open, the readable fact
+that would settle it (the rod swinging back below its hinge or past it: the sign of A -
+B); NIL when each sign is decided."
+  (let ((coefficients (call-or-nil (lambda () (polynomial-coefficients-in bridge polynomial u)))))
+    (when (and coefficients (<= (length coefficients) 3))
+      (destructuring-bind (&optional (c0 0) (c1 0) (c2 0)) coefficients
+        (find-if (lambda (fact)
+                   (and (not (realp (second fact)))
+                        (eq (decide bridge fact) :unknown)
+                        (eq (decide bridge (list '< (second fact) 0)) :unknown)))
+                 (mapcar (lambda (c) (list '> (simplified bridge c) 0))
+                         (list c2 c1 c0 `(- (expt ,c1 2) (* 4 ,c2 ,c0)))))))))
+
 (defun odd-angle (bridge a b c past-pi)
   "The earliest root of A + C sin x in (0, pi) (in (pi, 2 pi) when PAST-PI) written
 asin(-A/C) (pi + asin(A/C)) when B is proven 0, else NIL. Called once the half-angle
@@ -119,10 +136,12 @@ A^2))/A loses its digits where A is small beside C, and sin, cos of asin are alg
         `(asin (/ (- ,a) ,c)))))
 
 (defun root-checked-p (bridge expression variable root coefficients)
-  "True when EXPRESSION vanishes at VARIABLE = ROOT: by simplification, else at
+  "True when EXPRESSION vanishes at VARIABLE = ROOT: by simplification (the sines of
+sums expanded: a phase asin(q) plus the root), else at
 admissible points within 1e-9 of the size of COEFFICIENTS (A, B and C)."
   (let ((value (substitute-expressions (list (cons variable root)) expression)))
     (or (call-or-nil (lambda () (zero-expression-p bridge value)))
+        (call-or-nil (lambda () (trigonometric-identity-p bridge value 0)))
         (let ((size `(+ ,@(mapcar (lambda (c) `(sqrt (expt ,c 2))) coefficients)))
               (checked 0) (failed nil))
           (call-with-admissible-points

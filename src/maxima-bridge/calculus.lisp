@@ -70,12 +70,18 @@ VARIABLE counts as a polynomial."
 (defun zero-after-trigexpand-p (bridge x y)
   "True when X - Y, with the arguments of its sines and cosines expanded into sums
 (sin((pi + 2 w t)/2) into sin(pi/2 + w t), which trigexpand then takes apart), ratsimps
-to 0, with or without trigsimp."
-  (let ((difference (mdifference (to-mx bridge x) (to-mx bridge y))))
+to 0, with or without trigsimp, or (trigexpand twice) with radcan where radicals remain (a phase asin(q)
+expands into cos(asin q) = sqrt(1 - q^2), which ratsimp keeps apart from the same root
+written sqrt(l) w sqrt(6 g - l w^2))."
+  (let* ((difference (mdifference (to-mx bridge x) (to-mx bridge y)))
+         (expanded (mcall "$TRIGEXPAND" (mcall "$EXPAND" difference))))
     (flet ((zero-p (form) (eql 0 (maxima-request bridge form :datum (list '- x y)))))
-      (or (zero-p (mcall "$RATSIMP" (mcall "$TRIGEXPAND" (mcall "$EXPAND" difference))))
-          (zero-p (mcall "$RATSIMP" (mcall "$AMES_TRIGSIMP"
-                                           (mcall "$TRIGEXPAND" (mcall "$EXPAND" difference)))))))))
+      (or (zero-p (mcall "$RATSIMP" expanded))
+          (zero-p (mcall "$RATSIMP" (mcall "$AMES_TRIGSIMP" expanded)))
+          (and (radical-form-p difference)
+               ;; trigexpand again: sin(pi + 2 atan z) comes out of the first as
+               ;; -sin(2 atan z), a multiple angle the second takes apart
+               (zero-p (mcall "$RATSIMP" (mcall "$RADCAN" (mcall "$TRIGEXPAND" expanded)))))))))
 
 (defun taylor-coefficients (bridge expression variable at degree)
   "The Taylor coefficients (c0 c1 ... c_DEGREE) of EXPRESSION in VARIABLE at AT (c_k the

@@ -38,6 +38,45 @@ coefficients free of VAR and its denominator is free of VAR; false otherwise."
               (cons '(mlist simp) coefficients)
               nil)))))
 
+(defun ames-monic-square-root (numerator var)
+  "The polynomial q, monic in VAR, with NUMERATOR = c q^2 (c NUMERATOR's leading
+coefficient in VAR), when NUMERATOR is of even degree 4 or more and such a square (a
+point moving along a tangent of a circle: its gap is a square); NIL otherwise. The
+coefficients of q follow from NUMERATOR's highest ones; the rest is checked by
+ratsimp, then radcan (radicals that ratsimp keeps apart)."
+  (let ((degree ($hipow numerator var)))
+    (when (and (integerp degree) (>= degree 4) (evenp degree))
+      (let* ((n (floor degree 2))
+             (lead ($ratcoef numerator var degree))
+             (q (make-array (1+ n) :initial-element 0)))
+        (setf (aref q n) 1)
+        (loop for j from 1 to n
+              do (setf (aref q (- n j))
+                       ($ratsimp
+                        (div (sub (div ($ratcoef numerator var (- degree j)) lead)
+                                  (addn (loop for i from 1 below j
+                                              collect (mul (aref q (- n i)) (aref q (+ (- n j) i))))
+                                        nil))
+                             2))))
+        (let* ((root (addn (loop for k from 0 to n collect (mul (aref q k) (power var k))) nil))
+               (rest (sub numerator (mul lead (power root 2)))))
+          (when (or (eql 0 ($ratsimp ($expand rest)))
+                    (eql 0 ($ratsimp ($radcan rest))))
+            ($ratsimp root)))))))
+
+(defun $ames_square_free_part (expr var)
+  "The numerator of EXPR, a polynomial in VAR, with each factor it repeats (a factor of
+its gcd with its derivative in VAR, the part free of VAR left out) taken once, or with
+its square root when it is a constant times a square (AMES-MONIC-SQUARE-ROOT: radicals
+in its coefficients hide such a square from gcd()): the same roots in VAR at every
+value of the other variables, fewer of them repeated."
+  (let* ((numerator ($expand ($num ($ratsimp expr))))
+         (common ($gcd numerator ($diff numerator var))))
+    (cond ((not ($freeof var common))
+           ($ratsimp (div numerator (third ($content common var)))))
+          ((ames-monic-square-root numerator var))
+          (t numerator))))
+
 (defun $ames_expression_size (expr)
   "The number of atoms and operators in EXPR (to pick the simplest of several forms)."
   (if (atom expr) 1 (1+ (reduce #'+ (mapcar #'$ames_expression_size (cdr expr))))))

@@ -64,7 +64,7 @@
     $realroots $nroots $rhs $lhs $realpart $imagpart
     $ilt
     ;; helpers defined in this file
-    $ames_pop_context $ames_polynomial_coefficients $ames_expression_size
+    $ames_pop_context $ames_polynomial_coefficients $ames_expression_size $ames_square_free_part
     $ames_simplification_candidates $ames_trigsimp)
   "The only heads (operators and functions) a request may contain.")
 

@@ -26,6 +26,20 @@ AFTER, and COEFFICIENTS the root forms (c0 c1 ... cd) of its coefficients, or
     (values form offset-variable after-form
             (if (eq coefficients +false+) :not-polynomial (mlist-items coefficients)))))
 
+(defun square-free-polynomial (bridge form offset-variable &key datum)
+  "The root form FORM, a polynomial in OFFSET-VARIABLE of degree 3 or more, with each
+factor it repeats taken once ((s - r)^2 q(s) as (s - r) q(s): the same roots, none
+repeated, so that a touching gap's double root is found as a simple one):
+  (values REDUCED COEFFICIENTS) when that lowers its degree, else NIL. Two requests
+(ames_square_free_part, ames_polynomial_coefficients), with DATUM for errors."
+  (let* ((reduced (maxima-request bridge (mcall "$AMES_SQUARE_FREE_PART" form offset-variable)
+                                  :datum datum))
+         (coefficients (maxima-request bridge (mcall "$AMES_POLYNOMIAL_COEFFICIENTS"
+                                                     reduced offset-variable)
+                                       :datum datum)))
+    (and (not (eq coefficients +false+))
+         (values reduced (mlist-items coefficients)))))
+
 (defun numeric-root-form-p (form)
   "True when the root form FORM is a plain number (integer, float or rational)."
   (or (realp form) (mform-p form +rat+)))

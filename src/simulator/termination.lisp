@@ -54,8 +54,13 @@ abs() of a linear function of a known sign over the search is written without it
 (defun undecided-sign-fact (run g after)
   "The relation whose truth would settle where the polynomial G in TAU first vanishes:
 the sign of a coefficient (from the highest degree down) or of the discriminant that the
-assumptions do not decide; else (:EARLIEST-ROOT-OF (= G 0) :CANDIDATES ...)."
-  (let* ((d1 (tidy run (time-derivative g)))
+assumptions do not decide; else (:EARLIEST-ROOT-OF (= G 0) :CANDIDATES ...). A
+polynomial G of higher degree with a repeated factor (a gap closed along a tangent: a
+square) has the roots of its square-free part, whose facts are read instead."
+  (let* ((g (or (and (not (trigonometric-in-time-p g))
+                     (ames.algebra:square-free-part (run-bridge run) g 'tau))
+                g))
+         (d1 (tidy run (time-derivative g)))
          (d2 (tidy run (time-derivative d1)))
          (c0 (tidy run (at-time g 0)))
          (c1 (tidy run (at-time d1 0)))
