@@ -257,7 +257,12 @@ monotone abs() above.")
     ("ames-wrong-drag-elastic-quadratic-bounces.lisp"
      "An elastic ball under quadratic drag: AMES summed its impacts as a geometric series
 (its flight's accelerations, written over the velocity, were free of tau and taken for
-constant). Fixed: a Zeno sequence needs accelerations free of every state quantity."))
+constant). Fixed: a Zeno sequence needs accelerations free of every state quantity.")
+    ("witness-wrong-wound-atwood-4242-985.lisp"
+     "An Atwood machine over a ring pulley, ropes wound: the right mass lands at
+9 sqrt(22)/44 = 0.9594 (a = 27/44 by hand, AMES's answer); the witness said 0.9795. Fixed
+in the witness: a taut rope's gap is seen MARGIN closer, as a contact's, so that round-off
+no longer lets it out of Moreau-Jean's index set for a step (the velocities chattered)."))
   "Disagreements the witness found and AMES has since fixed: each must now agree, with
 its file under witness/disagreements/ kept as the regression case.")
 
