@@ -35,7 +35,8 @@ about 1e-11).")
 (defstruct (comparison (:constructor make-comparison (verdict reason rows)))
   "The result of COMPARE-RESULTS: VERDICT is :AGREE or :AMES-WRONG (a disagreement; the
 witness has been checked on textbook cases, so it is taken as the reference), or
-:UNSUPPORTED (an event the witness does not model); REASON the first disagreement, ROWS
+:UNSUPPORTED (an event the witness does not model), or :UNCHECKED (AMES gives a state
+no number to compare: neither agreement nor disagreement); REASON the first disagreement, ROWS
 the values set side by side: (STATE WHAT AMES WITNESS DIFFERENCE OK)."
   verdict reason rows)
 
@@ -167,12 +168,16 @@ when it is a keyword (:FOREVER), NIL when it has none."
 (defun state-numbers (state bindings &key closed-form)
   "The numbers AMES gives for STATE: its :NUMERIC plist (:START :DURATION
 :FINAL-POSITIONS :FINAL-VELOCITIES) when it printed one (a run with parameter values),
-else (or when CLOSED-FORM) its exact closed forms evaluated."
-  (or (and (not closed-form) (getf state :numeric))
-      (list :start (number-of (getf state :start) bindings)
-            :duration (number-of (getf state :duration) bindings)
-            :final-positions (evaluate-vectors (getf state :final-positions) bindings)
-            :final-velocities (evaluate-vectors (getf state :final-velocities) bindings))))
+else (or when CLOSED-FORM) its exact closed forms evaluated; a :NUMERIC plist with a
+duration only (the number of a travel-time integral in a scenario without parameters)
+gives that duration beside the closed forms of the rest."
+  (let ((printed (and (not closed-form) (getf state :numeric))))
+    (if (and printed (get-properties printed '(:start)))
+        printed
+        (list :start (number-of (getf state :start) bindings)
+              :duration (or (getf printed :duration) (number-of (getf state :duration) bindings))
+              :final-positions (evaluate-vectors (getf state :final-positions) bindings)
+              :final-velocities (evaluate-vectors (getf state :final-velocities) bindings)))))
 
 (defun ames-end-time (ames &optional bindings)
   "The time where AMES's run (its s-expression ANSWER) ends along its selected branch:
@@ -254,6 +259,18 @@ kind it does not model, a run it cut short, or a contact reached with no approac
       (finish walk :unsupported "it ends with ~S, a contact reached with no approach speed (a double root the witness cannot locate)"
               (event-head event)))))
 
+(defun check-numbered (walk start duration event)
+  "End the comparison as :UNCHECKED when AMES gives the state no number to compare: no
+START (a state after one whose duration has none), or no DURATION where an EVENT ends
+it (a travel-time integral the quadrature gave no number). Neither agrees nor
+disagrees: nothing was witnessed."
+  (cond ((not (realp start))
+         (finish walk :unchecked "AMES gives its start no number"))
+        ((and (not (realp duration)) (not (eq event :none)) (not (eq duration :forever)))
+         (finish walk :unchecked "AMES gives its duration no number: ~S"
+                 (let ((*print-pretty* nil) (*print-length* 4) (*print-level* 3))
+                   (prin1-to-string duration))))))
+
 (defun turns-only-p (event)
   "True when the witness's EVENT is only turning points (compare-curved.lisp)."
   (every (lambda (pair) (eq (first pair) :turns)) (getf event :pairs)))
@@ -317,6 +334,7 @@ witness's horizon T-END. Returns a COMPARISON."
                  (duration (getf numeric :duration))
                  (event (getf state :end-event)))
             (setf (walk-index walk) (getf state :index))
+            (check-numbered walk start duration event)
             (compare-number walk "start" start (walk-time walk) (walk-time-tolerance walk))
             (setf (walk-time-tolerance walk) *value-tolerance*)
             (when (eq event :none)
