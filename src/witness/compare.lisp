@@ -93,35 +93,17 @@ event names the rope once, the witness twice)."
                    (every (lambda (w) (some (lambda (name) (name= name w)) names)) (list x y)))))
           (getf witness-event :pairs))))
 
-(defconstant +precise-digits+ 160
-  "The decimal digits kept by PRECISE-VALUE's roots: AMES's exact closed forms can be
-nested radicals whose terms, near 1e75, cancel down to order 1.")
-
-(defun integer-nth-root (n q)
-  "The largest integer r >= 0 with r^q <= n (n >= 0), by Newton's method."
-  (if (< n 2)
-      n
-      (let ((x (ash 1 (ceiling (integer-length n) q))))
-        (loop (let ((y (floor (+ (* (1- q) x) (floor n (expt x (1- q)))) q)))
-                (when (>= y x) (return x))
-                (setf x y))))))
-
-(defun precise-root (x q)
-  "The Q-th root of the rational X >= 0 to +PRECISE-DIGITS+ digits, as a rational."
-  (let ((scale (expt 10 +precise-digits+)))
-    (/ (integer-nth-root (floor (* x (expt scale q))) q) scale)))
-
 (defun precise-value (expression bindings)
-  "EXPRESSION's value under BINDINGS computed in rational arithmetic, roots to
-+PRECISE-DIGITS+ digits (other functions in double precision on precise arguments), or
-NIL when it has none."
+  "EXPRESSION's value under BINDINGS computed in rational arithmetic, roots, pi, sines,
+cosines and inverse tangents and sines to +PRECISE-DIGITS+ digits (precise-functions.lisp;
+other functions in double precision on precise arguments), or NIL when it has none."
   (labels ((value (x)
              (cond ((rationalp x) x)
                    ((floatp x) (rational x))
                    ((symbolp x)
                     (let ((entry (assoc x bindings)))
                       (cond (entry (rational (cdr entry)))
-                            ((string-equal (symbol-name x) "PI") (rational pi))
+                            ((string-equal (symbol-name x) "PI") (precise-pi))
                             (t (return-from precise-value nil)))))
                    ((not (consp x)) (return-from precise-value nil))
                    (t (let ((arguments (mapcar #'value (rest x))))
@@ -134,13 +116,19 @@ NIL when it has none."
                                  (apply #'/ arguments)))
                           (sqrt (power (first arguments) 1/2))
                           (expt (power (first arguments) (second arguments)))
+                          ((sin cos tan atan asin acos)
+                           (or (and (= 1 (length arguments)) (precise-function (first x) (first arguments)))
+                               (return-from precise-value nil)))
                           (t (let ((double (expression-value (cons (first x) (mapcar (lambda (a) (coerce a 'double-float)) arguments)))))
                                (if double (rational double) (return-from precise-value nil)))))))))
            (power (base exponent)
              (cond ((integerp exponent)
                     (if (and (zerop base) (minusp exponent)) (return-from precise-value nil) (expt base exponent)))
-                   ((and (rationalp exponent) (>= base 0) (< (denominator exponent) 100))
-                    (let ((root (precise-root (expt base (abs (numerator exponent))) (denominator exponent))))
+                   ((and (rationalp exponent) (>= base (- (precise-zero))) (< (denominator exponent) 100))
+                    ;; a radicand that is 0 to the digits kept (a speed at a turning point,
+                    ;; exactly 0, computed to 1e-150) is 0, whatever the sign of its residue
+                    (let ((root (precise-root (expt (max base 0) (abs (numerator exponent)))
+                                              (denominator exponent))))
                       (cond ((plusp exponent) root)
                             ((zerop root) (return-from precise-value nil))
                             (t (/ root)))))
