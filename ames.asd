@@ -259,6 +259,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "driver")
                  (:file "server")
                  (:file "complex-values")
+                 (:file "precise-functions")
                  (:file "compare")
                  (:file "compare-curved")
                  (:file "compare-angles")

@@ -269,7 +269,7 @@ class RotationDriver(Events):
                 k = 2 if isinstance(r, Hinge) else 1
                 for i in range(k):
                     rows.append(C[i])
-                    gaps.append(float(C[i].dot(q) + e[i]) + (MARGIN if i == 0 and isinstance(r, Contact) else 0.0))
+                    gaps.append(float(C[i].dot(q) + e[i]) + (MARGIN if i == 0 and isinstance(r, (Contact, Rope)) else 0.0))
             C, g = np.array(rows), np.array(gaps)
             A = (C * inverse).dot(C.T)
             q = q - inverse * C.T.dot(np.linalg.lstsq(A, g, rcond=None)[0])

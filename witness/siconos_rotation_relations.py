@@ -268,7 +268,9 @@ class Rope(Relation):
             if j in self.turn:
                 C[0, 3 * p["body"] + 2] += self.turn[j]
                 const -= self.turn[j] * self.theta0[j]
-        return C, np.array([const])
+        # seen MARGIN closer, as a contact's gap: a taut rope stays in the index set (at
+        # exactly 0 round-off lets it go slack for a step, then catch its bodies again)
+        return C, np.array([const - MARGIN])
 
     kinds = {"close": ":tightens", "open": ":slackens"}
 

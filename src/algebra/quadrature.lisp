@@ -117,6 +117,17 @@ clearly not 0 under them)."
         unless value return nil
         collect (float value 1d0)))
 
+(defun rounded-zero-end (series span)
+  "SERIES (double-float Taylor coefficients at an end of a travel of length SPAN) with a
+constant term c0 that is a rounding residue of 0 put to 0: negative and under 1e-12 of
+c1 SPAN (a turning point whose exact zero Maxima could not prove, written with 40-digit
+radicals, evaluates to -1e-14): left as it is, E would be negative at the quadrature's
+nodes nearest the end."
+  (if (and series (rest series) (minusp (first series))
+           (<= (abs (first series)) (* 1d-12 (abs (second series)) (abs span))))
+      (cons 0d0 (rest series))
+      series))
+
 (defun polynomial-value (coefficients x)
   "c0 + c1 X + c2 X^2 + ... (Horner)."
   (reduce (lambda (c sum) (+ c (* x sum))) coefficients :from-end t :initial-value 0d0))
@@ -130,8 +141,8 @@ computed without cancellation, and near either end E comes from its Taylor polyn
   (let* ((span (- end start))
          (factor (* (abs span) (/ pi 2)))
          (reach (* *series-reach* (abs span)))
-         (from-series (series-values (energy-profile-from-series profile) values))
-         (to-series (series-values (energy-profile-to-series profile) values))
+         (from-series (rounded-zero-end (series-values (energy-profile-from-series profile) values) span))
+         (to-series (rounded-zero-end (series-values (energy-profile-to-series profile) values) span))
          (expression (energy-profile-expression profile))
          (bindings (acons (energy-profile-position profile) 0d0 values)))
     (flet ((integrand (u)

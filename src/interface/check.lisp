@@ -6,7 +6,8 @@
 ;;;; a scenario error, a budget, an undecided run), :CRASH (a defect of AMES: a Lisp error
 ;;;; that is no AMES-ERROR), :UNSUPPORTED (the witness cannot model the scenario, or AMES
 ;;;; does not simulate it yet: SCENARIO-AWAITING, a rotating body) or
-;;;; :WITNESS-FAILED (the driver did not answer). CROSSCHECK (crosscheck.lisp) runs random
+;;;; :WITNESS-FAILED (the driver did not answer), or :UNCHECKED (AMES gives a state no
+;;;; number to compare, e.g. a duration without one: counted apart, neither agree nor wrong). CROSSCHECK (crosscheck.lisp) runs random
 ;;;; scenarios.
 
 (in-package #:ames)

@@ -32,6 +32,8 @@ numeric start, duration and final positions and velocities, each the value of th
 formula it is printed beside. CLOCK is the number at which its first state starts (a
 branch continued from a fork starts later), or NIL."
   (let ((values (history-parameter-values history)))
+    (unless values
+      (add-travel-time-numbers history bridge))
     (when values
       (dolist (state (history-states history))
         (flet ((numbers-of (alist)
@@ -50,3 +52,17 @@ branch continued from a fork starts later), or NIL."
                                   (and periodic (numeric-or-nil bridge (getf periodic :period) values)))))
             (add-rotation-numbers bridge state values)
             (setf clock (and clock (realp duration) (+ clock duration)))))))))
+
+(defun add-travel-time-numbers (history bridge)
+  "In a HISTORY whose scenario has no parameters (its values are written in it, so no
+other number is recorded: the formulas are the numbers), record as each state's
+STATE-NUMBERS (:DURATION N) the number of a duration with no closed form (a travel-time
+integral), which no formula gives: the self-check, the reports and the witness need it."
+  (when (null (scenario-parameters (history-scenario history)))
+    (dolist (state (history-states history))
+      (let ((duration (state-duration state)))
+        (when (and (consp duration) (eq (first duration) :no-closed-form)
+                   (null (state-numbers state)))
+          (let ((number (numeric-duration bridge state '())))
+            (when number
+              (setf (state-numbers state) (list :duration number)))))))))

@@ -35,7 +35,8 @@ about 1e-11).")
 (defstruct (comparison (:constructor make-comparison (verdict reason rows)))
   "The result of COMPARE-RESULTS: VERDICT is :AGREE or :AMES-WRONG (a disagreement; the
 witness has been checked on textbook cases, so it is taken as the reference), or
-:UNSUPPORTED (an event the witness does not model); REASON the first disagreement, ROWS
+:UNSUPPORTED (an event the witness does not model), or :UNCHECKED (AMES gives a state
+no number to compare: neither agreement nor disagreement); REASON the first disagreement, ROWS
 the values set side by side: (STATE WHAT AMES WITNESS DIFFERENCE OK)."
   verdict reason rows)
 
@@ -92,35 +93,17 @@ event names the rope once, the witness twice)."
                    (every (lambda (w) (some (lambda (name) (name= name w)) names)) (list x y)))))
           (getf witness-event :pairs))))
 
-(defconstant +precise-digits+ 160
-  "The decimal digits kept by PRECISE-VALUE's roots: AMES's exact closed forms can be
-nested radicals whose terms, near 1e75, cancel down to order 1.")
-
-(defun integer-nth-root (n q)
-  "The largest integer r >= 0 with r^q <= n (n >= 0), by Newton's method."
-  (if (< n 2)
-      n
-      (let ((x (ash 1 (ceiling (integer-length n) q))))
-        (loop (let ((y (floor (+ (* (1- q) x) (floor n (expt x (1- q)))) q)))
-                (when (>= y x) (return x))
-                (setf x y))))))
-
-(defun precise-root (x q)
-  "The Q-th root of the rational X >= 0 to +PRECISE-DIGITS+ digits, as a rational."
-  (let ((scale (expt 10 +precise-digits+)))
-    (/ (integer-nth-root (floor (* x (expt scale q))) q) scale)))
-
 (defun precise-value (expression bindings)
-  "EXPRESSION's value under BINDINGS computed in rational arithmetic, roots to
-+PRECISE-DIGITS+ digits (other functions in double precision on precise arguments), or
-NIL when it has none."
+  "EXPRESSION's value under BINDINGS computed in rational arithmetic, roots, pi, sines,
+cosines and inverse tangents and sines to +PRECISE-DIGITS+ digits (precise-functions.lisp;
+other functions in double precision on precise arguments), or NIL when it has none."
   (labels ((value (x)
              (cond ((rationalp x) x)
                    ((floatp x) (rational x))
                    ((symbolp x)
                     (let ((entry (assoc x bindings)))
                       (cond (entry (rational (cdr entry)))
-                            ((string-equal (symbol-name x) "PI") (rational pi))
+                            ((string-equal (symbol-name x) "PI") (precise-pi))
                             (t (return-from precise-value nil)))))
                    ((not (consp x)) (return-from precise-value nil))
                    (t (let ((arguments (mapcar #'value (rest x))))
@@ -133,13 +116,19 @@ NIL when it has none."
                                  (apply #'/ arguments)))
                           (sqrt (power (first arguments) 1/2))
                           (expt (power (first arguments) (second arguments)))
+                          ((sin cos tan atan asin acos)
+                           (or (and (= 1 (length arguments)) (precise-function (first x) (first arguments)))
+                               (return-from precise-value nil)))
                           (t (let ((double (expression-value (cons (first x) (mapcar (lambda (a) (coerce a 'double-float)) arguments)))))
                                (if double (rational double) (return-from precise-value nil)))))))))
            (power (base exponent)
              (cond ((integerp exponent)
                     (if (and (zerop base) (minusp exponent)) (return-from precise-value nil) (expt base exponent)))
-                   ((and (rationalp exponent) (>= base 0) (< (denominator exponent) 100))
-                    (let ((root (precise-root (expt base (abs (numerator exponent))) (denominator exponent))))
+                   ((and (rationalp exponent) (>= base (- (precise-zero))) (< (denominator exponent) 100))
+                    ;; a radicand that is 0 to the digits kept (a speed at a turning point,
+                    ;; exactly 0, computed to 1e-150) is 0, whatever the sign of its residue
+                    (let ((root (precise-root (expt (max base 0) (abs (numerator exponent)))
+                                              (denominator exponent))))
                       (cond ((plusp exponent) root)
                             ((zerop root) (return-from precise-value nil))
                             (t (/ root)))))
@@ -167,12 +156,16 @@ when it is a keyword (:FOREVER), NIL when it has none."
 (defun state-numbers (state bindings &key closed-form)
   "The numbers AMES gives for STATE: its :NUMERIC plist (:START :DURATION
 :FINAL-POSITIONS :FINAL-VELOCITIES) when it printed one (a run with parameter values),
-else (or when CLOSED-FORM) its exact closed forms evaluated."
-  (or (and (not closed-form) (getf state :numeric))
-      (list :start (number-of (getf state :start) bindings)
-            :duration (number-of (getf state :duration) bindings)
-            :final-positions (evaluate-vectors (getf state :final-positions) bindings)
-            :final-velocities (evaluate-vectors (getf state :final-velocities) bindings))))
+else (or when CLOSED-FORM) its exact closed forms evaluated; a :NUMERIC plist with a
+duration only (the number of a travel-time integral in a scenario without parameters)
+gives that duration beside the closed forms of the rest."
+  (let ((printed (and (not closed-form) (getf state :numeric))))
+    (if (and printed (get-properties printed '(:start)))
+        printed
+        (list :start (number-of (getf state :start) bindings)
+              :duration (or (getf printed :duration) (number-of (getf state :duration) bindings))
+              :final-positions (evaluate-vectors (getf state :final-positions) bindings)
+              :final-velocities (evaluate-vectors (getf state :final-velocities) bindings)))))
 
 (defun ames-end-time (ames &optional bindings)
   "The time where AMES's run (its s-expression ANSWER) ends along its selected branch:
@@ -254,6 +247,18 @@ kind it does not model, a run it cut short, or a contact reached with no approac
       (finish walk :unsupported "it ends with ~S, a contact reached with no approach speed (a double root the witness cannot locate)"
               (event-head event)))))
 
+(defun check-numbered (walk start duration event)
+  "End the comparison as :UNCHECKED when AMES gives the state no number to compare: no
+START (a state after one whose duration has none), or no DURATION where an EVENT ends
+it (a travel-time integral the quadrature gave no number). Neither agrees nor
+disagrees: nothing was witnessed."
+  (cond ((not (realp start))
+         (finish walk :unchecked "AMES gives its start no number"))
+        ((and (not (realp duration)) (not (eq event :none)) (not (eq duration :forever)))
+         (finish walk :unchecked "AMES gives its duration no number: ~S"
+                 (let ((*print-pretty* nil) (*print-length* 4) (*print-level* 3))
+                   (prin1-to-string duration))))))
+
 (defun turns-only-p (event)
   "True when the witness's EVENT is only turning points (compare-curved.lisp)."
   (every (lambda (pair) (eq (first pair) :turns)) (getf event :pairs)))
@@ -317,6 +322,7 @@ witness's horizon T-END. Returns a COMPARISON."
                  (duration (getf numeric :duration))
                  (event (getf state :end-event)))
             (setf (walk-index walk) (getf state :index))
+            (check-numbered walk start duration event)
             (compare-number walk "start" start (walk-time walk) (walk-time-tolerance walk))
             (setf (walk-time-tolerance walk) *value-tolerance*)
             (when (eq event :none)

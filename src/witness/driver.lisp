@@ -25,11 +25,12 @@
 
 (defun read-driver-output (text)
   "The s-expression the driver printed in TEXT, read as data (*READ-EVAL* nil, symbols
-only keywords; names are strings)."
+only keywords; names are strings). What Siconos itself printed before it (a message of
+its integrator) is passed over."
   (with-standard-io-syntax
     (let ((*read-eval* nil) (*package* (find-package :keyword))
           (*read-default-float-format* 'double-float))
-      (handler-case (read-from-string text)
+      (handler-case (read-from-string text t nil :start (or (search "(:status" text :test #'char-equal) 0))
         (error () (list :status :error :message (format nil "unreadable driver output: ~A"
                                                          (subseq text 0 (min 300 (length text))))))))))
 

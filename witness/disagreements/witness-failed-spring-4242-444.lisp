@@ -1,5 +1,11 @@
 ;;;; witness-failed-spring-4242-444 -- a disagreement found by the witness (make crosscheck).
-;;;; verdict: witness-failed
+;;;; verdict: witness-failed; fixed in the witness: after the second block catches the third a
+;;;; second time, plastically, the spring pushes them together. Siconos's event-driven scheme
+;;;; fails there twice: processEvents after solving the impact (the impact is now applied by
+;;;; Newton's law, siconos_impacts.py), then Lsodar, which crawls and stops (Istate = -1) on
+;;;; two free bodies held together by a varying force. The witness now cuts its run there
+;;;; with the reason: states 0 and 1 (the two impacts) agree, state 2 (the blocks together
+;;;; until the third lifts off) is unsupported by the witness.
 ;;;; reason: Exception: std::exception
 ;;;; Run: bin/ames check /work/main/t/../witness/disagreements/witness-failed-spring-4242-444.lisp --numeric
 

@@ -1,8 +1,11 @@
 ;;;; witness-wrong-wound-atwood-4242-985 -- a disagreement found by the witness (make crosscheck).
 ;;;; verdict: ames-wrong (the comparator's); examined by hand, a witness defect: with I = M R^2
 ;;;; (a ring) a = (m2 - m1) g / (m1 + m2 + I / R^2) = 27/44, the right mass lands after
-;;;; sqrt(22)/3 at 9 sqrt(22)/44 = 0.9594, AMES's answer; the witness's 0.9795 is 2 % off
-;;;; (its wound-rope projection or the pulley's inertia). Left for issue 21.
+;;;; sqrt(22)/3 at 9 sqrt(22)/44 = 0.9594, AMES's answer; the witness's 0.9795 was 2 % off.
+;;;; Fixed in the witness: its ropes' gaps were held at exactly 0, so round-off let a taut
+;;;; rope out of Moreau-Jean's index set for a step (the bodies fell freely, then the rope
+;;;; caught them): the velocities chattered about the right ones. A rope's gap is now seen
+;;;; MARGIN closer, as a contact's (siconos_rotation_relations.py). Now agrees.
 ;;;; reason: state 0: final velocity y right: AMES -0.959403223600247d0, witness -0.979547727272731d0
 ;;;; Run: bin/ames check /work/main/t/../witness/disagreements/witness-wrong-wound-atwood-4242-985.lisp --numeric
 
