@@ -175,6 +175,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "attachments")
                  (:file "structure")
                  (:file "model")
+                 (:file "one-sided-series")
                  (:file "term-lookups")
                  (:file "conditions-over-time")
                  (:file "choice")
