@@ -197,12 +197,22 @@ starts. Returns the change, or NIL."
   (loop for note in (trial-notes trial)
         when (and (consp note) (eq (first note) :leaves-mode)) collect (second note)))
 
+(defun mode-change-applies-p (run change)
+  "True when the mode CHANGE (:MODE KEY :FROM A :TO B) fits the current model: its
+instance is active and in mode A. A forced exit of an instance that pivoting then
+deactivated (a contact found pulling) no longer does: its mode went with it."
+  (destructuring-bind (key &key from &allow-other-keys) (rest change)
+    (let ((instance (ames.engine:find-instance (run-model run) key)))
+      (and instance (ames.engine:instance-active-p instance)
+           (eq (ames.engine:instance-mode instance) from)))))
+
 (defun undo-forced-changes (run trial)
-  "Put back the modes that TRIAL's forced exits changed."
+  "Put back the modes that TRIAL's forced exits changed (of the instances still active)."
   (let ((undo (loop for (nil key nil from nil to) in (reverse (forced-changes trial))
                     collect (list :mode key :from to :to from))))
     (dolist (change undo)
-      (ames.engine:apply-transition (run-model run) (list change) :decider (run-decider run)))))
+      (when (mode-change-applies-p run change)
+        (ames.engine:apply-transition (run-model run) (list change) :decider (run-decider run))))))
 
 (defun pivot (run points lone)
   "From the current model, flip the LONE activation points by Murty's least-index rule
@@ -385,7 +395,8 @@ as its notes. Signals AMBIGUOUS-TRANSITION or UNSOLVABLE-MODEL (see CHOOSE-TRIAL
         (let ((chosen (choose-trial run trials points)))
           (apply-assignment run points (trial-assignment chosen))
           (dolist (change (forced-changes chosen))
-            (ames.engine:apply-transition (run-model run) (list change) :decider (run-decider run)))
+            (when (mode-change-applies-p run change)
+              (ames.engine:apply-transition (run-model run) (list change) :decider (run-decider run))))
           (setf (trial-notes chosen)
                 (list :points (mapcar #'ames.engine:choice-point-instance points)
                       :chosen (trial-assignment chosen)
