@@ -364,6 +364,15 @@ UNSUPPORTED-SITUATION beyond *SUBSET-LIMIT* points."
                                 (list (cons (ames.engine:choice-point-instance point) :false))))
                         lone)))
 
+(defun subset-trials (run points combo lone)
+  "The trials of COMBO (an assignment of the alternatives and modes) with each subset of
+the LONE activation points (LONE-SUBSETS), checked as they stand (no pivoting)."
+  (loop for subset in (lone-subsets lone)
+        collect (progn (apply-assignment run points (append combo subset))
+                       (let ((trial (pivot run points '())))
+                         (undo-forced-changes run trial)
+                         trial))))
+
 (defun settle-choices (run)
   "Choose by consistency the contacts and modes that hold at the start of the current
 state, leave the model in that assignment and return its TRIAL, with the others tried
@@ -385,13 +394,15 @@ as its notes. Signals AMBIGUOUS-TRANSITION or UNSOLVABLE-MODEL (see CHOOSE-TRIAL
             (undo-forced-changes run trial)
             (if (eq (trial-verdict trial) :singular)
                 ;; pivoting cannot go through a singular assignment: try every subset
-                (dolist (subset (lone-subsets lone))
-                  (apply-assignment run points (append combo subset))
-                  (let ((trial (pivot run points '())))
-                    (undo-forced-changes run trial)
-                    (push trial trials)))
+                (setf trials (revappend (subset-trials run points combo lone) trials))
                 (push trial trials))))
         (setf trials (nreverse trials))
+        (when (and lone (every (lambda (trial) (member (trial-verdict trial) '(:inconsistent :singular)))
+                               trials))
+          ;; pivoting stops where a mode's exit fires beside a contact's violation (a
+          ;; friction impulse that would slip on a contact that would pull): before
+          ;; refusing, every subset of the lone contacts with every combination
+          (setf trials (loop for combo in combos append (subset-trials run points combo lone))))
         (let ((chosen (choose-trial run trials points)))
           (apply-assignment run points (trial-assignment chosen))
           (dolist (change (forced-changes chosen))
