@@ -347,6 +347,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "witness-curved")
                (:file "witness-crosscheck")
                (:file "witness-hinged")
+               (:file "witness-refusals")
                (:file "leftward-arcs")
                (:file "trust-fresh")
                (:file "trust-fresh-impacts")
