@@ -179,6 +179,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "term-lookups")
                  (:file "conditions-over-time")
                  (:file "choice")
+                 (:file "choice-subsets")
                  (:file "integrators")
                  (:file "equilibrium")
                  (:file "open-questions")

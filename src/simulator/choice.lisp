@@ -197,15 +197,6 @@ starts. Returns the change, or NIL."
   (loop for note in (trial-notes trial)
         when (and (consp note) (eq (first note) :leaves-mode)) collect (second note)))
 
-(defun mode-change-applies-p (run change)
-  "True when the mode CHANGE (:MODE KEY :FROM A :TO B) fits the current model: its
-instance is active and in mode A. A forced exit of an instance that pivoting then
-deactivated (a contact found pulling) no longer does: its mode went with it."
-  (destructuring-bind (key &key from &allow-other-keys) (rest change)
-    (let ((instance (ames.engine:find-instance (run-model run) key)))
-      (and instance (ames.engine:instance-active-p instance)
-           (eq (ames.engine:instance-mode instance) from)))))
-
 (defun undo-forced-changes (run trial)
   "Put back the modes that TRIAL's forced exits changed (of the instances still active)."
   (let ((undo (loop for (nil key nil from nil to) in (reverse (forced-changes trial))
@@ -363,15 +354,6 @@ UNSUPPORTED-SITUATION beyond *SUBSET-LIMIT* points."
                           (list (list (cons (ames.engine:choice-point-instance point) :true))
                                 (list (cons (ames.engine:choice-point-instance point) :false))))
                         lone)))
-
-(defun subset-trials (run points combo lone)
-  "The trials of COMBO (an assignment of the alternatives and modes) with each subset of
-the LONE activation points (LONE-SUBSETS), checked as they stand (no pivoting)."
-  (loop for subset in (lone-subsets lone)
-        collect (progn (apply-assignment run points (append combo subset))
-                       (let ((trial (pivot run points '())))
-                         (undo-forced-changes run trial)
-                         trial))))
 
 (defun settle-choices (run)
   "Choose by consistency the contacts and modes that hold at the start of the current
