@@ -99,6 +99,25 @@ k-th derivative at AT over k!), ratsimped, in one round trip."
                                                           factorial)))
                           :datum expression))))
 
+(defun one-sided-taylor-coefficients (bridge expression variable degree)
+  "The coefficients (c0 c1 ... c_DEGREE) of Maxima's truncated Taylor series of
+EXPRESSION in VARIABLE about 0, VARIABLE > 0 (a one-sided expansion: the square root of
+VARIABLE^2 is VARIABLE), simplified; NIL when the truncated series is no polynomial in
+VARIABLE (a pole, a fractional power, an abs() left) or Maxima cannot expand it. For a
+function that is smooth on VARIABLE > 0 but whose derivatives cannot be evaluated at 0
+\(|v| v at v = 0)."
+  (call-or-nil
+   (lambda ()
+     (let* ((s (to-mx bridge variable))
+            (series (maxima-request bridge (mcall "$RATDISREP"
+                                                  (mcall "$TAYLOR" (to-mx bridge expression) s 0 degree))
+                                    :datum expression))
+            (coefficients (polynomial-coefficients-in bridge (from-mx bridge series) variable)))
+       (and coefficients
+            (<= (length coefficients) (1+ degree))
+            (append coefficients (make-list (- (1+ degree) (length coefficients))
+                                            :initial-element 0)))))))
+
 (defun maxima-antiderivative (bridge integrand variable)
   "Maxima's antiderivative of INTEGRAND in VARIABLE, or NIL when integrate() leaves an
 integral in it. Signals what MAXIMA-REQUEST signals (a question, a timeout) and

@@ -62,7 +62,7 @@
     $solve $is $sign $assume $supcontext $killcontext $float $tex
     $ode2 $ic2 $integrate $diff $substitute $ratsubst $hipow $ratcoef $freeof $num $denom
     $realroots $nroots $rhs $lhs $realpart $imagpart
-    $ilt
+    $ilt $taylor $ratdisrep
     ;; helpers defined in this file
     $ames_pop_context $ames_polynomial_coefficients $ames_expression_size $ames_square_free_part
     $ames_simplification_candidates $ames_trigsimp)

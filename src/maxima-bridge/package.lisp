@@ -26,7 +26,7 @@ layer above, AMES.ALGEBRA: it asks through the exported operations only.")
    #:solve-script
    ;; the calculus the integrators ask (calculus.lisp)
    #:call-or-nil #:auxiliary-variable #:keyed-auxiliary-variable #:maxima-derivative #:polynomial-coefficients-in
-   #:zero-after-trigexpand-p #:taylor-coefficients #:maxima-antiderivative
+   #:zero-after-trigexpand-p #:taylor-coefficients #:one-sided-taylor-coefficients #:maxima-antiderivative
    #:inverse-laplace-transform #:maxima-root-count
    ;; the questions the deciding algebra asks (questions.lisp)
    #:maxima-is #:maxima-is-opposite #:maxima-signs #:maxima-difference-signs

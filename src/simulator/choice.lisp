@@ -198,11 +198,12 @@ starts. Returns the change, or NIL."
         when (and (consp note) (eq (first note) :leaves-mode)) collect (second note)))
 
 (defun undo-forced-changes (run trial)
-  "Put back the modes that TRIAL's forced exits changed."
+  "Put back the modes that TRIAL's forced exits changed (of the instances still active)."
   (let ((undo (loop for (nil key nil from nil to) in (reverse (forced-changes trial))
                     collect (list :mode key :from to :to from))))
     (dolist (change undo)
-      (ames.engine:apply-transition (run-model run) (list change) :decider (run-decider run)))))
+      (when (mode-change-applies-p run change)
+        (ames.engine:apply-transition (run-model run) (list change) :decider (run-decider run))))))
 
 (defun pivot (run points lone)
   "From the current model, flip the LONE activation points by Murty's least-index rule
@@ -380,17 +381,20 @@ as its notes. Signals AMBIGUOUS-TRANSITION or UNSOLVABLE-MODEL (see CHOOSE-TRIAL
             (undo-forced-changes run trial)
             (if (eq (trial-verdict trial) :singular)
                 ;; pivoting cannot go through a singular assignment: try every subset
-                (dolist (subset (lone-subsets lone))
-                  (apply-assignment run points (append combo subset))
-                  (let ((trial (pivot run points '())))
-                    (undo-forced-changes run trial)
-                    (push trial trials)))
+                (setf trials (revappend (subset-trials run points combo lone) trials))
                 (push trial trials))))
         (setf trials (nreverse trials))
+        (when (and lone (every (lambda (trial) (member (trial-verdict trial) '(:inconsistent :singular)))
+                               trials))
+          ;; pivoting stops where a mode's exit fires beside a contact's violation (a
+          ;; friction impulse that would slip on a contact that would pull): before
+          ;; refusing, every subset of the lone contacts with every combination
+          (setf trials (loop for combo in combos append (subset-trials run points combo lone))))
         (let ((chosen (choose-trial run trials points)))
           (apply-assignment run points (trial-assignment chosen))
           (dolist (change (forced-changes chosen))
-            (ames.engine:apply-transition (run-model run) (list change) :decider (run-decider run)))
+            (when (mode-change-applies-p run change)
+              (ames.engine:apply-transition (run-model run) (list change) :decider (run-decider run))))
           (setf (trial-notes chosen)
                 (list :points (mapcar #'ames.engine:choice-point-instance points)
                       :chosen (trial-assignment chosen)

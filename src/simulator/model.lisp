@@ -319,24 +319,40 @@ chain rule along the state's ODEs."
   "The first COUNT Taylor coefficients (C0 C1 ...) of EXPRESSION (a function of the
 parameters and SOLVED's state terms, or of TAU) at the start of the state: the k-th is
 the k-th time derivative there divided by k!, simplified. Computed as far as asked, one
-derivative at a time, and memoized."
+derivative at a time, and memoized. Where a derivative cannot be evaluated at the start
+\(0/0: |v| v at rest), the one-sided series for TAU > 0 (ONE-SIDED-SERIES) is taken."
   (let ((entry (or (gethash expression (solved-model-series solved))
                    (setf (gethash expression (solved-model-series solved))
                          (list '() expression 1)))))
-    (loop while (< (length (first entry)) count)
-          do (destructuring-bind (coefficients derivative factorial) entry
-               (let* ((k (length coefficients))
-                      (factorial (if (> k 0) (* factorial k) factorial))
-                      (c (tidy run (at-time (substitute-expressions (solved-model-initial solved)
-                                                                    `(/ ,derivative ,factorial))
-                                            0))))
-                 (setf (first entry) (append coefficients (list c))
-                       (third entry) factorial
-                       (second entry) (if (< k *series-order*)
-                                          `(+ ,(ames.geometry:differentiate derivative 'tau)
-                                              ,(time-derivative-in solved derivative))
-                                          derivative)))))
+    (flet ((one-sided (condition)
+             ;; no derivative at the start: the series for tau > 0, or CONDITION again
+             (setf (first entry) (or (one-sided-series run solved expression count)
+                                     (error condition))
+                   (second entry) :one-sided)))
+      (cond ((>= (length (first entry)) count))
+            ((eq (second entry) :one-sided)
+             (one-sided (make-condition 'ames.maxima:maxima-error
+                                        :datum expression :message "no one-sided series")))
+            (t (handler-case (extend-series run solved entry count)
+                 (ames.maxima:maxima-error (condition) (one-sided condition))))))
     (subseq (first entry) 0 count)))
+
+(defun extend-series (run solved entry count)
+  "Extend the memoized series ENTRY (COEFFICIENTS DERIVATIVE FACTORIAL) of
+SERIES-COEFFICIENTS to COUNT coefficients, one derivative at a time."
+  (loop while (< (length (first entry)) count)
+        do (destructuring-bind (coefficients derivative factorial) entry
+             (let* ((k (length coefficients))
+                    (factorial (if (> k 0) (* factorial k) factorial))
+                    (c (tidy run (at-time (substitute-expressions (solved-model-initial solved)
+                                                                  `(/ ,derivative ,factorial))
+                                          0))))
+               (setf (first entry) (append coefficients (list c))
+                     (third entry) factorial
+                     (second entry) (if (< k *series-order*)
+                                        `(+ ,(ames.geometry:differentiate derivative 'tau)
+                                            ,(time-derivative-in solved derivative))
+                                        derivative))))))
 
 (defun local-series (run solved expression)
   "The Taylor coefficients (C0 C1 ... Cn), n = *SERIES-ORDER*, of EXPRESSION at the start

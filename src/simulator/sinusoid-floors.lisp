@@ -109,5 +109,12 @@ than *LARGEST-BOUNDARY-FACT*. NIL for any other G."
 (defun positive-after-start-p (run g)
   "True when G > 0 is proven for every TAU > 0 under the assumptions (Maxima's signs):
 G has no root after the start. Asked only where the root search did not decide."
-  (ames.maxima:with-assumptions ((run-bridge run) '((> tau 0)))
+  (positive-after-p run g 0))
+
+(defun positive-after-p (run g after)
+  "True when G > 0 is proven for every TAU > AFTER under the assumptions (Maxima's signs,
+which know exp() > 0 and log(X) > 0 for X > 1): G has no root after AFTER. Asked only
+where the root search did not decide (a gap closing as exp(-k tau) under linear drag, or
+opening as log(1 + k tau) under quadratic drag, never vanishes)."
+  (ames.maxima:with-assumptions ((run-bridge run) `((> tau ,after)))
     (holds run `(> ,g 0))))

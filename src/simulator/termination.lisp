@@ -222,7 +222,10 @@ CONTACT then NIL); OVER-TIME makes functions of TAU of them. RATE is the gap's r
                  (cond ((eq root :none) (return-from meeting-time (values :never)))
                        ((eq root :unknown)
                         (return-from meeting-time
-                          (if (roots-outside-extent-p run gap after extent)
+                          (if (or (roots-outside-extent-p run gap after extent)
+                                  ;; a gap of one sign has no root (sinusoid-floors.lisp)
+                                  (positive-after-p run gap after)
+                                  (positive-after-p run `(- ,gap) after))
                               (values :never)
                               ;; the roots up to AFTER were no meeting: not before it
                               (values :unknown (undecided-sign-fact run gap after)

@@ -1,10 +1,15 @@
-;;;; refused-drag-slide-wall-start.lisp -- refusals make crosscheck finds in the drag-slide
-;;;; family (seed 4242 #21; seed 2611 #21 alike): a block at rest on a frictionless floor,
-;;;; coasting under drag toward a wall. AMES: "No set of contacts and modes is consistent at
-;;;; the start of the state" before its first state (same on main). Without the wall both
-;;;; complete; the first (linear drag, b = 1/2, wall at 16) completes with the wall at 6, the
-;;;; second (quadratic drag, wall at 6) does not, nor with a lower wall. Cause not found (no
-;;;; time left): for the lead. The witness has it slide and hit the wall (or coast on).
+;;;; refused-drag-slide-wall-start.lisp -- FIXED (both agree; t/witness-refusals.lisp). Was:
+;;;; refusals make crosscheck found in the drag-slide family (seed 4242 #21; seed 2611 #21
+;;;; alike): a block on a frictionless floor, coasting under drag toward a wall. AMES: "No set
+;;;; of contacts and modes is consistent at the start of the state". Two causes:
+;;;;  - linear drag, the wall at 16 exactly where the block's coasting ends (x0 + m v / b):
+;;;;    the gap 45 exp(-tau/5) has no root, but the root search could not say so, and the
+;;;;    numeric root search took the round-off at tau = 184 for a collision; the next state
+;;;;    (at rest against the wall, as if it had arrived) was inconsistent. Fixed: a gap proven
+;;;;    of one sign after the start (Maxima's signs under tau > 0) never meets.
+;;;;  - quadratic drag, the block stopped against the wall by its plastic impact: the wall's
+;;;;    normal force is zero at the start and its series has derivatives of |v| = 0/0 at
+;;;;    v = 0. Fixed: the one-sided series for tau > 0 (src/simulator/one-sided-series.lisp).
 ;;;; Run: bin/ames check witness/disagreements/refused-drag-slide-wall-start.lisp --numeric
 
 (scenario drag-slide-21 "A block slides through a medium with drag on a frictionless floor."
