@@ -41,6 +41,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "questions")
                  (:file "root-forms")
                  (:file "prefetch")
+                 (:file "weaker-assumptions")
                  (:static-file "maxima-server.lisp")
                  (:static-file "maxima-server-functions.lisp")))
    (:module "algebra" :pathname "src/algebra/" :serial t

@@ -183,6 +183,10 @@ Signals UNTRANSLATABLE-EXPRESSION, MAXIMA-ERROR, MAXIMA-TIMEOUT."
   (check-translatable relation :condition)
   (let ((key (verdict-key bridge relation)))
     (multiple-value-bind (verdict found) (cached-answer bridge key)
+      (unless found
+        ;; proven under facts that the facts in force include: proven now
+        (setf verdict (inherited-verdict bridge relation)
+              found (and verdict (cache-answer bridge key verdict) t)))
       (cond (found verdict)
             ((member key *deciding* :test #'equal)
              (push key *cut-short*)
@@ -201,6 +205,16 @@ Signals UNTRANSLATABLE-EXPRESSION, MAXIMA-ERROR, MAXIMA-TIMEOUT."
                    (cache-answer bridge key verdict))
                  (setf *cut-short* (append cuts *cut-short*))
                  verdict))))))
+
+(defun inherited-verdict (bridge relation)
+  "DECIDE's verdict :TRUE or :FALSE on RELATION cached under facts that are a strict part
+of the facts in force (see WEAKER-ASSUMPTION-KEYS), or NIL. Sound: more facts keep what
+fewer proved. An :UNKNOWN is not taken over (more facts may decide it)."
+  (dolist (id (weaker-assumption-keys bridge) nil)
+    (let ((verdict (cached-answer bridge (list* :decide *substituting-orders* relation id)
+                                  :count nil)))
+      (when (member verdict '(:true :false))
+        (return verdict)))))
 
 (defun verdict-key (bridge relation)
   "The key of DECIDE's verdict on RELATION in BRIDGE's cache, under the facts in force."
