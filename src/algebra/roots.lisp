@@ -201,11 +201,26 @@ and the reduced discriminant S^2/4 - P: the roots are S/2 -+ sqrt(S^2/4 - P)."
 (defun non-real-p (search offset)
   "True when OFFSET, a root solve() gave, is decidedly not a real number: the imaginary
 part is decidedly not zero (sqrt(h - top) under h < top). Such a root of
-a polynomial in time is no time at which anything happens."
+a polynomial in time is no time at which anything happens.
+The imaginary part's signs are SIGN-PATTERN-OF's, and only whether they leave out
+:ZERO counts: so of DECIDE's narrowing (DECIDED-SIGNS) only the proofs of > 0 and < 0
+are asked, and none when Maxima's signs leave out :ZERO already (>= 0 and <= 0, which
+DECIDED-SIGNS tries next, can only give signs with :ZERO: the same answer, the failing
+proofs not paid for)."
   (let ((imaginary (root-form-imaginary-part (search-bridge search) offset
                                              :datum (search-expression search))))
     (and (not (eql imaginary 0))
-         (equal (set-difference (sign-pattern-of search imaginary) '(:positive :negative)) '()))))
+         (not (mixed-signs-p search imaginary))
+         (let ((signs (signs-of search imaginary)))
+           (cond ((not (member :zero signs)) t) ; as SIGN-PATTERN-OF's, none included
+                 ((null (rest signs)) nil)
+                 (t (let ((expression (handler-case (root-form-expression (search-bridge search)
+                                                                          imaginary)
+                                        (untranslatable-result () nil))))
+                      (and expression
+                           (let ((bridge (search-bridge search)))
+                             (or (eq (decide bridge (list '> expression 0)) :true)
+                                 (eq (decide bridge (list '< expression 0)) :true)))))))))))
 
 (defun solved-earliest-root (search form offset-variable coefficients)
   "The general case: the roots solve() finds, compared pairwise. COEFFICIENTS is the

@@ -59,6 +59,8 @@ signals.lisp)."
                               (run-jobs jobs options)
                               (let ((*package* (find-package '#:ames-scenario))
                                     (*latex-standalone* (getf options :standalone)))
+                                ;; Maxima loads while the scenarios are read and checked
+                                (ames.maxima:prestart-bridge (current-bridge))
                                 (call-with-progress
                                  (lambda ()
                                   (run-files (getf options :files)

@@ -57,6 +57,9 @@ context is not yet set up in Maxima (see OPEN-PENDING-FRAMES)."
                     :documentation "Seconds an interrupted request may take to stop
 before the process is killed and replaced.")
    (process :initform nil :accessor bridge-process)
+   (greeted :initform nil :accessor bridge-greeted
+            :documentation "True once the process has answered the greeting and its
+assumption frames are replayed (a process started ahead, see PRESTART-BRIDGE, is not).")
    (nonce :initform nil :accessor bridge-nonce)
    (frame-begin :initform nil :accessor bridge-frame-begin)
    (frame-end :initform nil :accessor bridge-frame-end)
@@ -174,6 +177,7 @@ RESTART is false."
   "Forget BRIDGE's process, ending it with SIGKILL when it still runs, and reap it."
   (let ((process (bridge-process bridge)))
     (setf (bridge-process bridge) nil
+          (bridge-greeted bridge) nil
           (fill-pointer (bridge-buffer bridge)) 0
           (bridge-scanned bridge) 0)
     (when process
@@ -203,6 +207,12 @@ starts a new process and replays the active assumptions. Returns BRIDGE."
 (defun start-process (bridge)
   "Start a Maxima process for BRIDGE, greet it, and replay the assumption frames.
 Signals MAXIMA-PROCESS-DIED when Maxima cannot be started."
+  (spawn-process bridge)
+  (greet-process bridge))
+
+(defun spawn-process (bridge)
+  "Start a Maxima process for BRIDGE, without waiting for it (see GREET-PROCESS).
+Signals MAXIMA-PROCESS-DIED when Maxima cannot be started."
   (let ((process
           (handler-case
               (sb-ext:run-program (bridge-program bridge)
@@ -223,7 +233,14 @@ Signals MAXIMA-PROCESS-DIED when Maxima cannot be started."
           (bridge-scanned bridge) 0
           (bridge-nonce bridge) (random (expt 2 60) (make-random-state t)))
     (setf (bridge-frame-begin bridge) (format nil "@AMES~D@BEGIN" (bridge-nonce bridge))
-          (bridge-frame-end bridge) (format nil "@AMES~D@END" (bridge-nonce bridge)))
+          (bridge-frame-end bridge) (format nil "@AMES~D@END" (bridge-nonce bridge))
+          (bridge-greeted bridge) nil)
+    process))
+
+(defun greet-process (bridge)
+  "Greet BRIDGE's freshly started process (it answers once Maxima has loaded the server)
+and replay the assumption frames. Signals MAXIMA-PROCESS-DIED when it does not greet."
+  (let ((process (bridge-process bridge)))
     (multiple-value-bind (status data)
         (round-trip bridge (list :hello (bridge-nonce bridge)))
       (unless (eq status :ok)
@@ -231,13 +248,28 @@ Signals MAXIMA-PROCESS-DIED when Maxima cannot be started."
         (error 'maxima-process-died :datum (bridge-program bridge)
                                     :detail (format nil "Maxima did not greet: ~S ~S" status data))))
     (replay-assumptions bridge)
+    (setf (bridge-greeted bridge) t)
     process))
 
 (defun ensure-process (bridge)
-  "Make sure BRIDGE has a live Maxima process (starting one, replaying its set-up)."
+  "Make sure BRIDGE has a live, greeted Maxima process (starting one, replaying its
+set-up; a process started ahead by PRESTART-BRIDGE is greeted now)."
   (unless (bridge-alive-p bridge)
     (when (bridge-process bridge) (discard-process bridge))
-    (start-process bridge)))
+    (spawn-process bridge))
+  (unless (bridge-greeted bridge)
+    (greet-process bridge)))
+
+(defun prestart-bridge (bridge)
+  "Start BRIDGE's Maxima process now, without waiting for it, when none runs: Maxima
+then loads while the caller reads and checks its scenarios, and the first request
+finds it ready (a cold command-line run starts Maxima this way). Failing to start it is
+not signalled here: the first request starts it again and says why. Returns BRIDGE."
+  (unless (bridge-alive-p bridge)
+    (handler-case (progn (when (bridge-process bridge) (discard-process bridge))
+                         (spawn-process bridge))
+      (error () (ignore-errors (discard-process bridge)))))
+  bridge)
 
 ;;; Requests
 

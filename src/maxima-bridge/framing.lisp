@@ -139,6 +139,12 @@ the budget is what limits it."
         (values (max 0 left) t)
         (values configured nil))))
 
+(defvar *request-log* nil
+  "When a function of four arguments, each round trip is reported to it after its reply:
+the BRIDGE, the REQUEST (KIND . ARGUMENTS) sent, the seconds Maxima spent on it (NIL after a timeout)
+and the wall seconds of the round trip. For profiling which requests cost the time
+(bench/profile-requests.lisp); NIL, the default, costs nothing.")
+
 (defun round-trip (bridge request &optional (timeout (request-timeout bridge)))
   "Send REQUEST (KIND . ARGUMENTS) and return the reply's STATUS, DATA and SECONDS as
 values; after TIMEOUT seconds, interrupt Maxima and return :TIMEOUT (killing the process
@@ -158,6 +164,8 @@ MAXIMA-OUTPUT-OVERFLOW for a reply longer than *REPLY-LIMIT*."
           (when (member late '(:timeout :gone)) (discard-process bridge))
           (setf reply (if (and (consp late) (eq (second late) :ok)) late :timeout))))
       (incf (statistics-round-trip-seconds record) (- (now) start))
+      (when *request-log*
+        (funcall *request-log* bridge request (and (consp reply) (third reply)) (- (now) start)))
       (if (eq reply :timeout)
           (values :timeout nil (- (now) start))
           (destructuring-bind (reply-id status seconds &rest data) reply

@@ -12,7 +12,7 @@ layer above, AMES.ALGEBRA: it asks through the exported operations only.")
    ;; the bridge object
    #:bridge #:make-bridge #:close-bridge #:bridge-timeout #:bridge-alive-p #:bridge-process-id
    #:bridge-statistics #:reset-bridge-statistics #:clear-bridge-cache #:reset-bridge
-   #:bridge-in-scope-p
+   #:bridge-in-scope-p #:prestart-bridge
    #:*reply-limit*
    ;; operations
    #:simplify #:prefetch-simplifications #:expression-size #:solve-equations #:equivalent-p
