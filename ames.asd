@@ -54,6 +54,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "deciding")
                  (:file "orders")
                  (:file "square-orders")
+                 (:file "combined-bounds")
                  (:file "signs")
                  (:file "quick-signs")
                  (:file "sturm")
