@@ -13,7 +13,8 @@
 (scenario pushed-block-slides
   "A block pushed near its base slides along the rough floor."
   (parameters (m :positive (:value 1)) (g :positive (:value 981/100)) (w :positive (:value 1))
-              (k :positive (:value 2)) (mu :positive (:value 1/2)) (p :positive (:value 6)))
+              (k :positive (:value 2)) (mu :positive (< mu (/ (+ (* 4 w w) (* k k)) (* 3 w k))) (:value 1/2))
+              (p :positive (> p (* mu m g)) (:value 6)))
   (gravity g)
   (body floor :fixed t :shape (half-plane (1 0) (0 0)))
   (body block :mass m :inertia :uniform :position (0 (/ k 2)) :velocity (0 0)
@@ -26,7 +27,8 @@
 (scenario pushed-block-tips
   "A block pushed near its top tips over its front edge."
   (parameters (m :positive (:value 1)) (g :positive (:value 981/100)) (w :positive (:value 1))
-              (k :positive (:value 2)) (mu :positive (:value 1/2)) (p :positive (:value 6)))
+              (k :positive (:value 2)) (mu :positive (< mu (/ (+ (* 4 w w) (* k k)) (* 3 w k))) (:value 1/2))
+              (p :positive (> p (* mu m g)) (:value 6)))
   (gravity g)
   (body floor :fixed t :shape (half-plane (1 0) (0 0)))
   (body block :mass m :inertia :uniform :position (0 (/ k 2)) :velocity (0 0)
