@@ -9,6 +9,14 @@
 ;;;; corner lifts off, (:lift-off block floor)) when y P + (k/2) mu m g > (w/2) m g.
 ;;;; With the values below (P = 6, mu m g = 4.905, w/2 m g = 4.905): pushed at y = -9/10 it
 ;;;; slides; at y = 9/10 it tips.
+;;;; Assumed, as the textbook does: P > mu m g (the push beats friction), and
+;;;; 3 mu w k < 4 w^2 + k^2 (tipping while the front edge slides has a positive effective
+;;;; inertia, m (4 w^2 + k^2 - 3 mu w k) / 12: no Painleve paradox). Symbolically the run
+;;;; branches first on the textbook's criterion (the flat block's back normal force,
+;;;; ((w/2) m g - y P - (k/2) mu m g) / w); where it holds, the front edge cannot stick
+;;;; while tipping (DECIDE combines the criterion with P > mu m g). Pushed low and hard
+;;;; (-y P > (w/2 + (k/2) mu) m g, y < 0) the block would rock back onto its back edge
+;;;; instead: the flat block's front normal force is the run's second branch fact.
 
 (scenario pushed-block-slides
   "A block pushed near its base slides along the rough floor."
