@@ -76,26 +76,33 @@ VARIABLE, GOAL's own (C0 C1) in GOAL) with a, b proven >= 0, and GOAL > 0 when S
                 (let ((pb (part b strict2)))
                   (and pb (or (not strict) (eq pa :strict) (eq pb :strict))))))))))))
 
+(defun bound-fact-p (fact)
+  "True when FACT (a relation) can bound a variable against others: an inequality that
+is not a variable against a number (a sign or a range, which the other strategies use)."
+  (and (consp fact)
+       (member (expression-operator fact) '(> >= < <=))
+       (not (and (or (variable-symbol-p (relation-lhs fact)) (variable-symbol-p (relation-rhs fact)))
+                 (or (numberp (relation-lhs fact)) (numberp (relation-rhs fact)))))))
+
 (defun goal-proven-by-pairs-p (bridge goal strict)
   "True when GOAL > 0 (STRICT) or GOAL >= 0 follows from two facts in force linear in one
-of its variables (see the file header)."
-  (let ((facts (loop for fact in (flatten-facts (current-assumptions bridge))
-                     when (and (consp fact) (member (expression-operator fact) '(> >= < <=)))
-                       collect fact)))
+of its variables (see the file header). Maxima is asked for the coefficients only where
+two such facts mention the variable."
+  (let ((facts (remove-if-not #'bound-fact-p (flatten-facts (current-assumptions bridge)))))
     (dolist (variable (remove-if-not #'variable-symbol-p (expression-variables goal)) nil)
-      (let ((own (linear-coefficients bridge goal variable)))
-        (when own
-          (let ((linear (loop for fact in facts
-                              for (slack fact-strict) = (multiple-value-list (slack-of fact))
-                              for coefficients = (and slack (not (free-of-p variable slack))
-                                                      (linear-coefficients bridge slack variable))
-                              when coefficients
-                                collect (append coefficients (list fact-strict)))))
-            (when (<= 2 (length linear) *most-combined-facts*)
-              (loop for (first . others) on linear
-                    do (dolist (second others)
-                         (when (combination-proves-p bridge own strict variable first second)
-                           (return-from goal-proven-by-pairs-p t)))))))))))
+      (let ((mentioning (remove-if (lambda (fact) (free-of-p variable fact)) facts)))
+        (when (<= 2 (length mentioning) *most-combined-facts*)
+          (let ((own (linear-coefficients bridge goal variable)))
+            (when own
+              (let ((linear (loop for fact in mentioning
+                                  for (slack fact-strict) = (multiple-value-list (slack-of fact))
+                                  for coefficients = (linear-coefficients bridge slack variable)
+                                  when coefficients
+                                    collect (append coefficients (list fact-strict)))))
+                (loop for (first . others) on linear
+                      do (dolist (second others)
+                           (when (combination-proves-p bridge own strict variable first second)
+                             (return-from goal-proven-by-pairs-p t))))))))))))
 
 (defun decide-by-combined-bounds (bridge relation)
   "RELATION (< > <= >=) decided by two facts in force that bound one of its variables,
