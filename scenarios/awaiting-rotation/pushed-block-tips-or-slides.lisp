@@ -9,11 +9,20 @@
 ;;;; corner lifts off, (:lift-off block floor)) when y P + (k/2) mu m g > (w/2) m g.
 ;;;; With the values below (P = 6, mu m g = 4.905, w/2 m g = 4.905): pushed at y = -9/10 it
 ;;;; slides; at y = 9/10 it tips.
+;;;; Assumed, as the textbook does: P > mu m g (the push beats friction), and
+;;;; 3 mu w k < 4 w^2 + k^2 (tipping while the front edge slides has a positive effective
+;;;; inertia, m (4 w^2 + k^2 - 3 mu w k) / 12: no Painleve paradox). Symbolically the run
+;;;; branches first on the textbook's criterion (the flat block's back normal force,
+;;;; ((w/2) m g - y P - (k/2) mu m g) / w); where it holds, the front edge cannot stick
+;;;; while tipping (DECIDE combines the criterion with P > mu m g). Pushed low and hard
+;;;; (-y P > (w/2 + (k/2) mu) m g, y < 0) the block would rock back onto its back edge
+;;;; instead: the flat block's front normal force is the run's second branch fact.
 
 (scenario pushed-block-slides
   "A block pushed near its base slides along the rough floor."
   (parameters (m :positive (:value 1)) (g :positive (:value 981/100)) (w :positive (:value 1))
-              (k :positive (:value 2)) (mu :positive (:value 1/2)) (p :positive (:value 6)))
+              (k :positive (:value 2)) (mu :positive (< mu (/ (+ (* 4 w w) (* k k)) (* 3 w k))) (:value 1/2))
+              (p :positive (> p (* mu m g)) (:value 6)))
   (gravity g)
   (body floor :fixed t :shape (half-plane (1 0) (0 0)))
   (body block :mass m :inertia :uniform :position (0 (/ k 2)) :velocity (0 0)
@@ -26,7 +35,8 @@
 (scenario pushed-block-tips
   "A block pushed near its top tips over its front edge."
   (parameters (m :positive (:value 1)) (g :positive (:value 981/100)) (w :positive (:value 1))
-              (k :positive (:value 2)) (mu :positive (:value 1/2)) (p :positive (:value 6)))
+              (k :positive (:value 2)) (mu :positive (< mu (/ (+ (* 4 w w) (* k k)) (* 3 w k))) (:value 1/2))
+              (p :positive (> p (* mu m g)) (:value 6)))
   (gravity g)
   (body floor :fixed t :shape (half-plane (1 0) (0 0)))
   (body block :mass m :inertia :uniform :position (0 (/ k 2)) :velocity (0 0)

@@ -232,13 +232,15 @@ parts against 0 is taken as the comparison of the parts."
 
 (defun angle-kernels (expression)
   "The subexpressions (SIN X), (COS X), (TAN X) of EXPRESSION whose X is not a plain
-variable, each once."
+variable, each once. Not those of a rational X (an angle found with numbers): their
+values are known to sign() as they are, and a variable in their place only adds work."
   (let ((found '()))
     (labels ((walk (x)
                (when (and (consp x) (not (quantity-term-p x)))
                  (mapc #'walk (expression-arguments x))
                  (when (and (member (expression-operator x) '(sin cos tan))
-                            (not (subject-p (second x))))
+                            (not (subject-p (second x)))
+                            (not (rationalp (second x))))
                    (pushnew x found :test #'equal)))))
       (walk expression))
     (nreverse found)))

@@ -18,7 +18,9 @@
 ;;;; inactive one grazed all along); several that differ physically are an ambiguity.
 ;;;; Modes are a component's: it lists them in its order of preference, and of consistent
 ;;;; assignments that differ in their modes, one whose modes another's are preferred to
-;;;; is dropped (a rough contact that can stick does not start sliding).
+;;;; is dropped (a rough contact that can stick does not start sliding). Where the
+;;;; algebra leaves assignments undecided, the run branches on a fact of the one with
+;;;; the most contacts holding.
 
 (in-package #:ames.simulator)
 
@@ -296,6 +298,10 @@ both have a mode, A's comes no later than B's, and at one at least earlier."
                      ((< rank-a rank-b) (setf earlier t))))
     earlier))
 
+(defun holding-count (trial)
+  "How many activation choices TRIAL makes active."
+  (count :true (trial-assignment trial) :key #'cdr))
+
 (defun choose-trial (run trials &optional points)
   "The trial to take among TRIALS, the assignments of the choice POINTS tried (see
 the file header). Among consistent assignments whose modes differ, those whose modes
@@ -330,7 +336,11 @@ AMBIGUOUS-TRANSITION or UNSOLVABLE-MODEL."
                   :candidates (mapcar #'trial-assignment preferred)
                   :detail "start of a state (several consistent contact and mode sets)"))
           (undecided
-           (let ((fact (first (trial-facts (first undecided)))))
+           ;; the fork's fact is asked of the assignment with the most contacts holding:
+           ;; the textbook's first hypothesis (the block stays flat on the floor, its
+           ;; normal forces decide), so that the run branches on its criterion first
+           (let ((fact (first (trial-facts (first (stable-sort (copy-list undecided) #'>
+                                                               :key #'holding-count))))))
              (error 'ambiguous-transition
                     :datum fact :missing-fact fact
                     :candidates (mapcar #'trial-assignment undecided)

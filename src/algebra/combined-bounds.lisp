@@ -1,0 +1,123 @@
+;;;; src/algebra/combined-bounds.lisp -- a strategy of DECIDE: two facts that bound one variable, combined.
+;;;;
+;;;; The order substitution (orders.lisp) writes a variable V as its bound plus an excess,
+;;;; one fact at a time. A relation that follows from two facts together, each linear in
+;;;; V, is not found that way: under P > mu m g and T: (k/2)(P - mu m g) - tau >= 0 (tau
+;;;; linear in P), Q = 2 D (P - mu m g) - 3 (k + mu w) tau > 0 holds because
+;;;; Q = 3 (k + mu w) T + (4 w^2 + k^2 - 3 mu w k)/2 (P - mu m g), a sum of facts with
+;;;; nonnegative multipliers (Farkas's lemma in the one variable P). DECIDE-BY-COMBINED-BOUNDS
+;;;; looks for that: a relation f > 0 (or >= 0) whose f is of degree 1 in a variable V,
+;;;; and two facts s1 >= 0, s2 >= 0 (or > 0) of degree 1 in V, with f = a s1 + b s2 exactly
+;;;; (a and b free of V, solved from the coefficients of V^0 and V^1); when a >= 0 and b >= 0
+;;;; are proven (and f's strictness follows), f > 0 holds wherever the facts do. Sound:
+;;;; every step is an identity or a proven sign. Costly, so tried last, on small relations,
+;;;; and the multipliers are first evaluated at admissible points (witnesses.lisp): a pair
+;;;; whose multiplier is negative at one is not asked of Maxima.
+
+(in-package #:ames.algebra)
+
+(defvar *combining-bounds* nil
+  "True while DECIDE-BY-COMBINED-BOUNDS decides the signs of multipliers, so that it does
+not recurse.")
+
+(defparameter *largest-relation-for-combined-bounds* 400
+  "The largest relation (EXPRESSION-SIZE) DECIDE-BY-COMBINED-BOUNDS works on.")
+
+(defparameter *most-combined-facts* 8
+  "The most facts linear in one variable whose pairs DECIDE-BY-COMBINED-BOUNDS tries.")
+
+(defun slack-of (relation)
+  "RELATION (> >= < <=) as (values S STRICT): RELATION says S > 0 (STRICT) or S >= 0.
+NIL for another operator."
+  (let ((lhs (relation-lhs relation)) (rhs (relation-rhs relation)))
+    (case (expression-operator relation)
+      (> (values `(- ,lhs ,rhs) t))
+      (>= (values `(- ,lhs ,rhs) nil))
+      (< (values `(- ,rhs ,lhs) t))
+      (<= (values `(- ,rhs ,lhs) nil)))))
+
+(defun linear-coefficients (bridge expression variable)
+  "(C0 C1) with EXPRESSION = C0 + C1 VARIABLE, C1 not zero and both free of VARIABLE, or NIL."
+  (let ((coefficients (handler-case (polynomial-coefficients-in bridge expression variable)
+                        (maxima-condition () nil))))
+    (and (= 2 (length coefficients))
+         (not (eql 0 (second coefficients)))
+         coefficients)))
+
+(defun multiplier-refuted-p (bridge x)
+  "True when X is surely negative at an admissible point (X >= 0 cannot be proven)."
+  (relation-refuted-p bridge (list '>= x 0)))
+
+(defun proven-nonnegative-p (bridge x strict)
+  "True when X > 0 (STRICT) or X >= 0 is proven under the facts in force (DECIDE, without
+this strategy)."
+  (let ((*combining-bounds* t))
+    (eq :true (decide bridge (list (if strict '> '>=) x 0)))))
+
+(defun combination-proves-p (bridge goal strict variable first second)
+  "True when GOAL = a FIRST + b SECOND (entries (C0 C1 STRICT) of facts linear in
+VARIABLE, GOAL's own (C0 C1) in GOAL) with a, b proven >= 0, and GOAL > 0 when STRICT."
+  (destructuring-bind ((e c) (r1 b1 strict1) (r2 b2 strict2)) (list goal first second)
+    (let* ((det `(- (* ,b1 ,r2) (* ,b2 ,r1)))
+           (det (simplified bridge det :ratsimp)))
+      (unless (eql det 0)
+        (let ((a (simplified bridge `(/ (- (* ,c ,r2) (* ,e ,b2)) ,det) :ratsimp))
+              (b (simplified bridge `(/ (- (* ,e ,b1) (* ,c ,r1)) ,det) :ratsimp)))
+          (declare (ignorable variable))
+          (flet ((part (multiplier fact-strict)
+                   ;; :STRICT when the part a s is proven > 0, :WEAK when >= 0, else NIL
+                   (cond ((eql multiplier 0) :weak)
+                         ((and fact-strict strict (proven-nonnegative-p bridge multiplier t)) :strict)
+                         ((proven-nonnegative-p bridge multiplier nil) :weak))))
+            (let ((pa (and (not (multiplier-refuted-p bridge a))
+                           (not (multiplier-refuted-p bridge b))
+                           (part a strict1))))
+              (when pa
+                (let ((pb (part b strict2)))
+                  (and pb (or (not strict) (eq pa :strict) (eq pb :strict))))))))))))
+
+(defun bound-fact-p (fact)
+  "True when FACT (a relation) can bound a variable against others: an inequality that
+is not a variable against a number (a sign or a range, which the other strategies use)."
+  (and (consp fact)
+       (member (expression-operator fact) '(> >= < <=))
+       (not (and (or (variable-symbol-p (relation-lhs fact)) (variable-symbol-p (relation-rhs fact)))
+                 (or (numberp (relation-lhs fact)) (numberp (relation-rhs fact)))))))
+
+(defun goal-proven-by-pairs-p (bridge goal strict)
+  "True when GOAL > 0 (STRICT) or GOAL >= 0 follows from two facts in force linear in one
+of its variables (see the file header). Maxima is asked for the coefficients only where
+two such facts mention the variable."
+  (let ((facts (remove-if-not #'bound-fact-p (flatten-facts (current-assumptions bridge)))))
+    (dolist (variable (remove-if-not #'variable-symbol-p (expression-variables goal)) nil)
+      (let ((mentioning (remove-if (lambda (fact) (free-of-p variable fact)) facts)))
+        (when (<= 2 (length mentioning) *most-combined-facts*)
+          (let ((own (linear-coefficients bridge goal variable)))
+            (when own
+              (let ((linear (loop for fact in mentioning
+                                  for (slack fact-strict) = (multiple-value-list (slack-of fact))
+                                  for coefficients = (linear-coefficients bridge slack variable)
+                                  when coefficients
+                                    collect (append coefficients (list fact-strict)))))
+                (loop for (first . others) on linear
+                      do (dolist (second others)
+                           (when (combination-proves-p bridge own strict variable first second)
+                             (return-from goal-proven-by-pairs-p t))))))))))))
+
+(defun decide-by-combined-bounds (bridge relation)
+  "RELATION (< > <= >=) decided by two facts in force that bound one of its variables,
+combined (see the file header): :TRUE, :FALSE (its negation so proven) or :UNKNOWN."
+  (if (or *combining-bounds* *substituting-orders*
+          ;; only for the relation asked, not for the rewritten ones its reasoning asks
+          (rest *deciding*)
+          (not (member (expression-operator relation) '(> >= < <=)))
+          (> (expression-size relation) *largest-relation-for-combined-bounds*))
+      :unknown
+      (flet ((proven (relation)
+               ;; a relation that fails at an admissible point cannot be proven
+               (and (not (relation-refuted-p bridge relation))
+                    (multiple-value-bind (slack strict) (slack-of relation)
+                      (goal-proven-by-pairs-p bridge (simplified bridge slack :ratsimp) strict)))))
+        (cond ((proven relation) :true)
+              ((proven (negate-condition relation)) :false)
+              (t :unknown)))))
