@@ -261,6 +261,13 @@ state gave its candidates no rate), so no impact, and the next state fell throug
 floor. Fixed: a numeric state's contact reached at a clear speed is an impact, its
 position put exactly on the contact; the sliding state after it is decided by the
 monotone abs() above.")
+    ("ames-wrong-rod-on-ledge.lisp"
+     "A rod landing flat across a ledge's edge was stopped dead by two equal impulses at its
+ends, the far end past the edge taken for touching the ledge's top (a corner touched a
+face by its gap alone), and the ledge's edge, a fixed corner under the rod's face, was not
+modelled. Fixed: a corner touches only within the face's ends (src/kb/corners.lisp), a
+fixed corner on a rotating body's face is a corner contact (src/geometry/fixed-corners.lisp;
+the witness's siconos_ledges.py): J = 0.583 m at the edge, omega' = -1.574.")
     ("ames-wrong-drag-elastic-quadratic-bounces.lisp"
      "An elastic ball under quadratic drag: AMES summed its impacts as a geometric series
 (its flight's accelerations, written over the velocity, were free of tau and taken for
