@@ -123,8 +123,8 @@ in closed form (a body held at rest in its angle)."
   (with-fixture simulator-bridge ()
     (let* ((scenario (with-push-facts
                          (first (ames:read-scenario-file (pushed-block-file)))
-                       '((> (* 9 k p) (* 10 m g (- (* k mu) w)))
-                         (< (* 9 k p) (* 10 m g (+ w (* k mu))))))))
+                       '((> p (/ (* 10 m g (- (* k mu) w)) (* 9 k)))
+                         (< p (/ (* 10 m g (+ w (* k mu))) (* 9 k)))))))
       (multiple-value-bind (history states) (run-of scenario bridge)
         (is (member (ames::history-outcome history) '(:complete :time-limit :state-limit)))
         (is (= 1 (length states)))
