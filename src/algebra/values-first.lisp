@@ -88,3 +88,14 @@ Signals what DECIDE signals."
            (facts-hold-at-values-p bridge))
       (cheap-proof bridge relation)
       (decide bridge relation)))
+
+(defun signs-refuted-by-values (bridge x)
+  "The signs (:POSITIVE :NEGATIVE :ZERO) that no sound proof can give X, an expression
+over the parameters: where the run has values, the facts in force hold at them and X's
+sign there is clear, the other two signs (a relation false at an admissible point is
+never proven). NIL otherwise. Asks Maxima nothing."
+  (when (and (current-parameter-values) (facts-hold-at-values-p bridge))
+    (case (value-truth (list '> x 0))
+      (:true (list :negative :zero))
+      (:false (when (eq :true (value-truth (list '< x 0)))
+                (list :positive :zero))))))

@@ -109,16 +109,22 @@ allows several (or none)."
   "The sign set of X under the assumptions: one sign, (:POSITIVE), (:NEGATIVE) or
 (:ZERO), when it is decided, else all three (AMES.ALGEBRA:+ALL-SIGNS+). Sign sets,
 AMES.ALGEBRA's, are the simulator's one way of writing signs. The rules of signs over
-the parameters' declared signs (SIGN-ALGEBRA) answer first; Maxima where they do not."
-  (cond ((realp x) (ames.algebra:number-signs x))
-        ((one-sign (sign-algebra (run-parameter-signs run) x))
-         (sign-algebra (run-parameter-signs run) x))
-        ((holds run `(> ,x 0)) (list :positive))
-        ((holds run `(< ,x 0)) (list :negative))
-        ((and (not (ames.algebra:sign-varies-p (run-bridge run) x))
-              (holds run `(= ,x 0)))
-         (list :zero))
-        (t ames.algebra:+all-signs+)))
+the parameters' declared signs (SIGN-ALGEBRA) answer first; Maxima where they do not,
+for the signs the run's values do not refute (SIGNS-REFUTED-BY-VALUES)."
+  (let ((refuted '()))
+    (cond ((realp x) (ames.algebra:number-signs x))
+          ((one-sign (sign-algebra (run-parameter-signs run) x))
+           (sign-algebra (run-parameter-signs run) x))
+          ;; under values, a sign that fails at them is not tried (no proof exists)
+          ((progn (setf refuted (ames.algebra:signs-refuted-by-values (run-bridge run) x))
+                  nil))
+          ((and (not (member :positive refuted)) (holds run `(> ,x 0))) (list :positive))
+          ((and (not (member :negative refuted)) (holds run `(< ,x 0))) (list :negative))
+          ((and (not (member :zero refuted))
+                (not (ames.algebra:sign-varies-p (run-bridge run) x))
+                (holds run `(= ,x 0)))
+           (list :zero))
+          (t ames.algebra:+all-signs+))))
 
 (defun sign-is (run x &rest signs)
   "True when X's sign is decided (SIGN-OF gives one sign) and it is among SIGNS."
