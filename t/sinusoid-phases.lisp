@@ -5,8 +5,8 @@
 ;;;; Expected results:
 ;;;;   3 g - l w^2 - 3 g sin(x - asin q), q = (l w^2 - 3 g)/(3 g), is A + B cos x + C sin x with
 ;;;;     A = 3 g - l w^2, B = 3 g q = l w^2 - 3 g, C = -3 g sqrt(1 - q^2) (sin of a sum);
-;;;;   its first root after 0 going on is x = pi + 2 asin q (sin(x - asin q) = q again, past pi
-;;;;     when q > 0) -- written 2 pi - (pi - 2 asin q);
+;;;;   its first root after 0 is x = pi + 2 asin q (sin(x - asin q) = q again): past pi when
+;;;;     q > 0, before it when q < 0 (the sign of l w^2 - 3 g, a readable fact);
 ;;;;   a uniform rod of length l hanging from a hinge, launched at w: omega^2 = w^2 - (3 g / l)
 ;;;;     (1 + sin s) (s its angle, -pi/2 hanging), so it goes over the top exactly when
 ;;;;     l w^2 > 6 g, and otherwise turns back where sin s = (l w^2 - 3 g)/(3 g);
@@ -38,13 +38,25 @@ a sum), and its first root ahead makes it vanish."
             (is (ames.maxima:equivalent-p bridge c `(- (* 3 g (sqrt (- 1 (expt ,q 2))))))
                 "the sine's coefficient: ~S" c)
             (is-same bridge "the frequency" k 1)))
-        (multiple-value-bind (root status)
+        ;; before pi or past it by the sign of q: the readable fact on l w^2 - 3 g
+        (multiple-value-bind (root fact)
             (ames.algebra:earliest-trigonometric-root bridge expression 'x)
-          (is (eq :found status) "the root: ~S ~S" root status)
-          (when (eq status :found)
-            (is (ames.maxima:zero-after-trigexpand-p
-                 bridge (substitute-expressions (list (cons 'x root)) expression) 0)
-                "the root makes it vanish: ~S" root)))))))
+          (is (eq :unknown root))
+          (is (and (consp fact) (member (first fact) '(< > <= >=))
+                   (realp (ames.maxima:simplify
+                           bridge `(/ (- ,(second fact) ,(third fact)) (- (* l (expt w 2)) (* 3 g)))
+                           :strategy :ratsimp)))
+              "the fact is on l w^2 - 3 g: ~S" fact))
+        (ames.maxima:with-assumptions (bridge '((> (* l (expt w 2)) (* 3 g))))
+          (multiple-value-bind (root status)
+              (ames.algebra:earliest-trigonometric-root bridge expression 'x)
+            (is (eq :found status) "the root: ~S ~S" root status)
+            (when (eq status :found)
+              (is (ames.maxima:zero-after-trigexpand-p
+                   bridge (substitute-expressions (list (cons 'x root)) expression) 0)
+                  "the root makes it vanish: ~S" root)
+              (is (eq :true (ames.algebra:decide bridge `(> ,root pi))) "past pi: ~S" root)
+              (is (eq :true (ames.algebra:decide bridge `(< ,root (* 2 pi)))) "before 2 pi: ~S" root))))))))
 
 (test sinusoid-with-an-acos-phase-is-read
   "a + b cos(x + acos p) + c sin(x + asin p): each phase taken apart."
