@@ -101,12 +101,31 @@ gcd()): its square-free part is a s^2 + b s + c up to a factor free of s."
      (simulate :states 3))"
   "A hinged rod launched from hanging at a symbolic angular speed w.")
 
+(defparameter *launched-horizontal-rod*
+  "(scenario rod-hinged-launched
+     \"A uniform rod hinged at one end, launched upward from the horizontal.\"
+     (parameters (m :positive (:value 1)) (g :positive (:value 981/100)) (l :positive (:value 1))
+                 (w :positive (:value 2)))
+     (gravity g)
+     (body rod :mass m :inertia :uniform :shape (segment ((- (/ l 2)) 0) ((/ l 2) 0))
+               :position ((/ l 2) 0) :velocity (0 (/ (* w l) 2)) :angular-velocity w)
+     (hinge pin :body rod :at ((- (/ l 2)) 0))
+     (simulate :states 1))"
+  "A hinged rod launched upward from the horizontal at a symbolic angular speed w.")
+
 (test launched-hinged-rod-branches-on-going-over-the-top
   "The rod launched from hanging at w: the run branches on l w^2 - 6 g (over the top or
 not, the boundary its own branch), and every branch ends without an ambiguity (the
-speed after the turning point, a sinusoid with an asin phase, is read)."
+speed after the turning point, a sinusoid with an asin phase, is read). Launched from
+the horizontal, on l w^2 - 3 g (omega^2 = w^2 - 3 g sin(theta) / l)."
+  (check-launched-rod *launched-hanging-rod* '(- (* l (expt w 2)) (* 6 g)))
+  (check-launched-rod *launched-horizontal-rod* '(- (* l (expt w 2)) (* 3 g))))
+
+(defun check-launched-rod (text boundary)
+  "Run the scenario TEXT: it forks first on a multiple of BOUNDARY, and no branch ends
+ambiguous or failed."
   (with-fixture simulator-bridge ()
-    (let* ((scenario (ames:parse-scenario (first (ames:read-scenario-forms *launched-hanging-rod*))))
+    (let* ((scenario (ames:parse-scenario (first (ames:read-scenario-forms text))))
            (history (ames:run-scenario scenario :bridge bridge))
            (fork (first (ames::history-states history)))
            (fact (and fork (ames::state-missing-fact fork))))
@@ -117,9 +136,9 @@ speed after the turning point, a sinusoid with an asin phase, is read)."
          bridge scenario
          (lambda ()
            (let ((difference `(- ,(second fact) ,(third fact)))
-                 (top (in-scenario-terms scenario '(- (* l (expt w 2)) (* 6 g)))))
+                 (top (in-scenario-terms scenario boundary)))
              (is (realp (ames.maxima:simplify bridge `(/ ,difference ,top) :strategy :ratsimp))
-                 "a multiple of l w^2 - 6 g: ~S" fact)))))
+                 "a multiple of ~S: ~S" boundary fact)))))
       (labels ((leaves (states)
                  (loop for state in states
                        append (if (ames::state-branches state)
