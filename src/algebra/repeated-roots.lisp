@@ -35,12 +35,14 @@ failed, else the first."
         (return-from polynomial-earliest-root
           (if (listp answer) (values-list answer) (error answer))))
       (multiple-value-bind (reduced reduced-coefficients)
-          (square-free-polynomial (search-bridge search) form offset-variable
-                                  :datum (search-expression search))
+          (call-or-nil (lambda ()
+                         (square-free-polynomial (search-bridge search) form offset-variable
+                                                 :datum (search-expression search))))
         (let ((second (and reduced (< (length reduced-coefficients) (length coefficients))
-                           (multiple-value-list
-                            (polynomial-root-by-degree search reduced offset-variable
-                                                       reduced-coefficients)))))
+                           (handler-case (multiple-value-list
+                                          (polynomial-root-by-degree search reduced offset-variable
+                                                                     reduced-coefficients))
+                             (maxima-error () nil)))))
           (cond ((and second (not (eq (first second) :unknown))) (values-list second))
                 ((listp answer) (values-list answer))
                 (second (values-list second))
@@ -50,7 +52,11 @@ failed, else the first."
   "EXPRESSION, a polynomial of degree 3 or more in VARIABLE (prefix), with each factor it
 repeats taken once (the same real roots in VARIABLE at every value of the parameters),
 as a prefix polynomial of lower degree; NIL when it is no such polynomial or has no
-repeated factor the bridge finds."
+repeated factor the bridge finds (or Maxima fails on the attempt)."
+  (call-or-nil (lambda () (square-free-part-of bridge expression variable))))
+
+(defun square-free-part-of (bridge expression variable)
+  "SQUARE-FREE-PART's work, its Maxima conditions not caught."
   (multiple-value-bind (form offset-variable after-form coefficients)
       (offset-polynomial bridge expression variable 0 :datum expression)
     (declare (ignore after-form))

@@ -61,8 +61,7 @@ depending on VARIABLE), MAXIMA-ERROR, MAXIMA-TIMEOUT."
   "The earliest x > 0 (x >= 0 unless STRICTLY) with A + B cos x + C sin x = 0, as
 (values X :FOUND), (values NIL :NONE), or (values FACT :UNKNOWN), FACT the missing
 relation or NIL (see the file header)."
-  (let ((amplitude `(<= ,(simplified bridge `(expt ,a 2))
-                        ,(simplified bridge `(+ (expt ,b 2) (expt ,c 2)))))
+  (let ((amplitude (amplitude-relation bridge a b c))
         (u (auxiliary-variable bridge *half-angle-variable*)))
     (flet ((settled (relation)
              (let ((verdict (decide bridge relation)))
@@ -105,6 +104,21 @@ relation or NIL (see the file header)."
       (if (settled `(= (+ ,a ,b) 0))
           (values '(* 2 pi) :found)
           (values nil :none)))))
+
+(defun amplitude-relation (bridge a b c)
+  "The relation under which A + B cos x + C sin x has a root: A^2 <= B^2 + C^2; with one of
+B, C proven 0 and the signs of A and the other K decided, the same written |A| <= |K|
+(l w^2 - 3 g <= 0, not l^2 w^4 - 9 g^2 <= 0: a fact linear where its sides are, whose
+boundary a parameter solves)."
+  (let ((k (cond ((eq (decide bridge `(= ,b 0)) :true) c)
+                 ((eq (decide bridge `(= ,c 0)) :true) b))))
+    (flet ((sign-factor (x)
+             (case (decided-sign bridge x) (:positive 1) (:negative -1))))
+      (let ((sa (and k (sign-factor a))) (sk (and k (sign-factor k))))
+        (if (and sa sk)
+            `(<= ,(simplified bridge `(- (* ,sa ,a) (* ,sk ,k))) 0)
+            `(<= ,(simplified bridge `(expt ,a 2))
+                 ,(simplified bridge `(+ (expt ,b 2) (expt ,c 2)))))))))
 
 (defun undecided-quadratic-fact (bridge polynomial u)
   "For the half-angle POLYNOMIAL in U (degree at most 2) whose earliest positive root is
