@@ -54,6 +54,7 @@ EXPRESSION may hold numbers, PI and SYMBOLS only."
                             (exp (unary #'exp))
                             (log (unary (lambda (a) (if (plusp a) (log a) (error 'floating-point-invalid-operation)))))
                             (sin (unary #'sin)) (cos (unary #'cos)) (tan (unary #'tan))
+                            (sinh (unary #'sinh)) (cosh (unary #'cosh)) (tanh (unary #'tanh))
                             (asin (unary (lambda (a) (if (<= -1 a 1) (asin a) (error 'floating-point-invalid-operation)))))
                             (acos (unary (lambda (a) (if (<= -1 a 1) (acos a) (error 'floating-point-invalid-operation)))))
                             (atan (if (rest args)

@@ -93,6 +93,28 @@ proven not negative: G never turns negative."
            (and (holds run `(>= ,a 0))
                 (holds run `(>= (- (expt ,a 2) ,r2) 0)))))))
 
+(defun damped-oscillation-never-negative-p (run g)
+  "True when G = A + exp(-p tau) (B cos(w tau) + C sin(w tau)), p > 0 and w > 0 (a damped
+oscillation: DAMPED-SINUSOID), is proven positive at its first two extremes after the
+start: G' = exp(-p tau) R cos(w tau - psi), psi = atan2(-(p C + w B), w C - p B), vanishes
+at w tau = psi + pi/2 + k pi, where the oscillation alternates in sign and shrinks by
+exp(-p pi / w) from one to the next; so every later minimum lies above the first, and G,
+monotone between, never turns negative. Sharper than the envelope A - sqrt(B^2 + C^2)
+(a spring pushed in through a viscous medium, whose first swing the drag shortens)."
+  (let ((parts (and (trigonometric-in-time-p g) (damped-sinusoid run g))))
+    (when parts
+      (destructuring-bind (a b c w p) parts
+        (declare (ignore a))
+        (when (and (holds run `(> ,p 0)) (holds run `(> ,w 0)))
+          (let ((psi `(atan ,(tidy run `(- (+ (* ,p ,c) (* ,w ,b)))) ,(tidy run `(- (* ,w ,c) (* ,p ,b))))))
+            ;; psi in (-pi, pi]: the first two extremes after 0 are among k = -1 .. 2
+            (loop for k from -1 to 2
+                  for theta = `(+ ,psi (* ,(+ 1/2 k) pi))
+                  always (case (decide run `(> ,theta 0))
+                           (:false t)
+                           (:true (holds run `(> ,(at-time g `(/ ,theta ,w)) 0)))
+                           (t nil)))))))))
+
 (defun sinusoid-floor-fact (run g)
   "For G an oscillation about A > 0 (OSCILLATION-FLOOR-PARTS), the relation A^2 - R2 > 0
 that would prove G never negative: the missing fact to branch on, when it is no larger

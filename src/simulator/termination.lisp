@@ -91,7 +91,8 @@ one, to branch on."
     (let ((root (earliest-root-after run g 0)))
       (cond ((eq root :none) (values :never))
             ((eq root :unknown)
-             (if (or (sinusoid-never-negative-p run g) (positive-after-start-p run g))
+             (if (or (sinusoid-never-negative-p run g) (positive-after-start-p run g)
+                     (damped-oscillation-never-negative-p run g))
                  (values :never)
                  (values :unknown (or (sinusoid-floor-fact run g) (undecided-sign-fact run g 0)))))
             (t
