@@ -309,6 +309,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "speed-questions")
                (:file "bridge-integrators")
                (:file "bridge-truth")
+               (:file "weaker-assumptions")
                (:file "truth-table")
                (:file "algebra-signs")
                (:file "scenario")
