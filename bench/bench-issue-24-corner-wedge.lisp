@@ -22,6 +22,15 @@
 ;;;;   wedge, text report                73 trips  0.15 s     64 trips  0.13 s
 ;;;; SBCL's own CPU: the corner 1.8 s, the wedge 0.2 s. A bare Maxima start: 0.07 s CPU,
 ;;;; 0.3 s wall when the machine is quiet.
+;;;;
+;;;; Figures of 2026-11-26 (branch numeric against main 95ce0d1, load average 10-23; see
+;;;; bench/results-issue-24-corner-wedge.txt for the phases and where the time goes):
+;;;;                                   main                 numeric
+;;;;   wedge, SBCL's own CPU cold      0.215 s, 93 MiB      0.142 s, 64 MiB  (warm-up image)
+;;;;   wedge, Maxima's start           after the scenario   with it (started first)
+;;;;   wedge, run / report             318 / 64 trips       the same, Maxima 0.60 / 0.16 s CPU
+;;;;   corner --numeric, run           2882 trips  7.7 s    2834 trips  7.8 s  (Maxima CPU)
+;;;;   corner --numeric, text report   1031 trips  3.0 s    1031 trips  3.3 s
 
 (defpackage #:ames.bench.corner-wedge
   (:use #:cl)
@@ -91,6 +100,48 @@ ARGUMENTS for bin/ames, as multiples of BARE too."
             label here (/ here bare) there (and there (/ there bare)) (and there (/ here there)) goal)
     (finish-output)))
 
+(defun sbcl-cpu-seconds (arguments)
+  "The CPU seconds (user and system) of the bin/ames process of ARGUMENTS alone, by
+/usr/bin/time: Maxima, which outlives it by a moment (it leaves on end of input), is not
+its reaped child and is not counted. NIL when /usr/bin/time is missing."
+  (when (probe-file "/usr/bin/time")
+    (let* ((text (nth-value 1 (uiop:run-program (list* "/usr/bin/time" "-f" "AMES-CPU %U %S" arguments)
+                                                :output nil :error-output :string
+                                                :ignore-error-status t)))
+           (at (search "AMES-CPU " text :from-end t)))
+      (when at
+        (with-input-from-string (in (subseq text (+ at 9)))
+          (+ (read in) (read in)))))))
+
+(defun first-answer-seconds ()
+  "The wall seconds from starting a bridge's Maxima (the server loaded) to its first
+answer, in this process (the least of *RUNS*)."
+  (loop repeat *runs*
+        minimize (let ((bridge (ames.maxima:make-bridge))
+                       (start (get-internal-real-time)))
+                   (unwind-protect (ames.maxima:simplify bridge 1)
+                     (ames.maxima:close-bridge bridge))
+                   (seconds-since start))))
+
+(defun wedge-phases (root bare)
+  "Print the phases of a cold wedge run of the checkout ROOT: the command line's start
+(bin/ames help: the script's staleness check and the image's start), SBCL's own CPU in
+a cold run, and, for this checkout (measured in this process), the bridge's Maxima start
+to its first answer beside BARE, a bare Maxima start. Maxima's CPU for the work is among
+the in-process figures."
+  (let ((help (least-time (command root "help") *runs*))
+        (first-answer (and (equal root *checkout*) (first-answer-seconds)))
+        (sbcl-cpu (loop repeat *runs*
+                        minimize (or (sbcl-cpu-seconds (command root "run" "particle-on-wedge.lisp"))
+                                     0))))
+    (format t "  the wedge, phase by phase (~A):~%" (namestring root))
+    (format t "    bin/ames help (script and image start)   ~6,3F s wall~%" help)
+    (when first-answer
+      (format t "    Maxima started to its first answer       ~6,3F s wall (a bare start ~5,3F s)~%"
+              first-answer bare))
+    (format t "    SBCL's own CPU in a cold run             ~6,3F s~%" sbcl-cpu)
+    (finish-output)))
+
 (let* ((baseline (let ((root (uiop:getenv "AMES_BASELINE")))
                    (and root (plusp (length root)) (uiop:ensure-directory-pathname root))))
        (bare (least-time '("maxima" "--very-quiet" "--batch-string" "quit();") *runs*)))
@@ -103,6 +154,8 @@ ARGUMENTS for bin/ames, as multiples of BARE too."
        "at most 3 x Maxima's start")
   (row "the corner, --numeric" '("run" "two-blocks-in-corner.lisp" "--numeric") baseline bare 1
        "under 3 s")
+  (wedge-phases *checkout* bare)
+  (when baseline (wedge-phases baseline bare))
   (format t "  this checkout, in process (load-independent): round trips and Maxima CPU~%")
   (loop for (label file numeric) in '(("the wedge" "particle-on-wedge.lisp" nil)
                                       ("the corner, --numeric" "two-blocks-in-corner.lisp" t))

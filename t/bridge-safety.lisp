@@ -88,6 +88,36 @@
      (signals ames.maxima:maxima-process-died (ames.algebra:decide b '(> 2 1))))
    :program "no-such-maxima-program"))
 
+(test a-bridge-started-ahead-answers-in-that-process
+  ;; PRESTART-BRIDGE starts Maxima without waiting; the first request greets it (no
+  ;; second process) and is answered; prestarting a live bridge changes nothing
+  (call-with-bridge
+   (lambda (b)
+     (ames.maxima:prestart-bridge b)
+     (is (ames.maxima:bridge-alive-p b))
+     (let ((pid (ames.maxima:bridge-process-id b)))
+       (ames.maxima:with-assumptions (b '((> x 1)))
+         (is (eq :true (ames.algebra:decide b '(> (* x x) x)))))
+       (ames.maxima:prestart-bridge b)
+       (is (eql pid (ames.maxima:bridge-process-id b)))
+       (is (= 1 (getf (ames.maxima:bridge-statistics b) :restarts)))
+       (is (ames.maxima:equivalent-p b (ames.maxima:simplify b '(- (expt (+ y 1) 2) 1))
+                                     '(+ (expt y 2) (* 2 y)))))))
+  ;; a process started ahead that dies before its greeting is replaced by the first request
+  (call-with-bridge
+   (lambda (b)
+     (ames.maxima:prestart-bridge b)
+     (kill-process (ames.maxima:bridge-process-id b))
+     (is (eq :false (ames.algebra:decide b '(> 1 2)))))))
+
+(test a-missing-maxima-started-ahead-is-a-condition-at-the-first-request
+  (call-with-bridge
+   (lambda (b)
+     (finishes (ames.maxima:prestart-bridge b))
+     (is (not (ames.maxima:bridge-alive-p b)))
+     (signals ames.maxima:maxima-process-died (ames.algebra:decide b '(> 2 1))))
+   :program "no-such-maxima-program"))
+
 (test stack-overflows-in-maxima-leave-the-bridge-usable
   ;; GCL's bind stack overflows at a depth of a few hundred; the second overflow in one
   ;; process may end it. Either way the call fails with a condition and the next works.

@@ -58,8 +58,7 @@ context is not yet set up in Maxima (see OPEN-PENDING-FRAMES)."
 before the process is killed and replaced.")
    (process :initform nil :accessor bridge-process)
    (greeted :initform nil :accessor bridge-greeted
-            :documentation "True once the process has answered the greeting and its
-assumption frames are replayed (a process started ahead, see PRESTART-BRIDGE, is not).")
+            :documentation "True once the process has greeted (see PRESTART-BRIDGE).")
    (nonce :initform nil :accessor bridge-nonce)
    (frame-begin :initform nil :accessor bridge-frame-begin)
    (frame-end :initform nil :accessor bridge-frame-end)
@@ -204,12 +203,6 @@ starts a new process and replays the active assumptions. Returns BRIDGE."
 (define-condition server-gone (error) ()
   (:documentation "Internal: the pipe to Maxima closed (the process ended)."))
 
-(defun start-process (bridge)
-  "Start a Maxima process for BRIDGE, greet it, and replay the assumption frames.
-Signals MAXIMA-PROCESS-DIED when Maxima cannot be started."
-  (spawn-process bridge)
-  (greet-process bridge))
-
 (defun spawn-process (bridge)
   "Start a Maxima process for BRIDGE, without waiting for it (see GREET-PROCESS).
 Signals MAXIMA-PROCESS-DIED when Maxima cannot be started."
@@ -261,10 +254,10 @@ set-up; a process started ahead by PRESTART-BRIDGE is greeted now)."
     (greet-process bridge)))
 
 (defun prestart-bridge (bridge)
-  "Start BRIDGE's Maxima process now, without waiting for it, when none runs: Maxima
-then loads while the caller reads and checks its scenarios, and the first request
-finds it ready (a cold command-line run starts Maxima this way). Failing to start it is
-not signalled here: the first request starts it again and says why. Returns BRIDGE."
+  "Start BRIDGE's Maxima now, without waiting for it, when none runs: it loads while the
+caller reads its scenarios (a cold command-line run), and the first request greets it.
+A failure is not signalled here: the first request starts it again and says why.
+Returns BRIDGE."
   (unless (bridge-alive-p bridge)
     (handler-case (progn (when (bridge-process bridge) (discard-process bridge))
                          (spawn-process bridge))

@@ -141,9 +141,9 @@ the budget is what limits it."
 
 (defvar *request-log* nil
   "When a function of four arguments, each round trip is reported to it after its reply:
-the BRIDGE, the REQUEST (KIND . ARGUMENTS) sent, the seconds Maxima spent on it (NIL after a timeout)
-and the wall seconds of the round trip. For profiling which requests cost the time
-(bench/profile-requests.lisp); NIL, the default, costs nothing.")
+the BRIDGE, the REQUEST (KIND . ARGUMENTS) sent, the seconds Maxima spent on it (NIL
+after a timeout) and the wall seconds of the round trip. For profiling which requests
+cost the time (bench/profile-requests.lisp); NIL, the default, costs nothing.")
 
 (defun round-trip (bridge request &optional (timeout (request-timeout bridge)))
   "Send REQUEST (KIND . ARGUMENTS) and return the reply's STATUS, DATA and SECONDS as
