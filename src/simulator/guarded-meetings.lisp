@@ -129,3 +129,41 @@ fails is passed, the search going on from it (up to four)."
                      (return-from guarded-angle-root (values status s)))
                    (setf from (let ((copy (copy-group from))) (setf (group-s0 copy) s) copy)))))
       (values :unknown `(:meets-beyond-the-first-roots (= ,f 0))))))
+
+;;; Numbers: closed-form motion whose crossing has no closed form (numeric-roots.lisp)
+
+(defun masked-after (function from)
+  "FUNCTION of TAU, 1 up to FROM: a search for its next crossing after FROM."
+  (lambda (time) (if (<= time from) 1d0 (funcall function time))))
+
+(defun guarded-numeric-crossing (run solved groups condition rate step until)
+  "For CONDITION, a guarded conjunction over closed-form motion whose crossing has no
+closed form: the first TAU (up to UNTIL, sampled every STEP, or on the geometric grid
+without one) where its gap crosses below zero with every guard holding there, or NIL.
+The gap itself is searched, not a gap gated by the guards (a gated gap hides a crossing
+inside the face between two samples); a crossing past the face's end is passed, the search
+going on once the gap is positive again (up to eight crossings). RATE is the gap's rate."
+  (let* ((bindings (numeric-bindings run))
+         (over-tau (lambda (x)
+                     (let ((f (numeric-function
+                               (substitute-expressions bindings (motion-value groups (over-state-terms run solved x)))
+                               '(tau))))
+                       (lambda (time) (safe-value f (vector time))))))
+         (meeting (relation-meeting run solved (ames.engine:termination-condition-relation condition)))
+         (gap (funcall over-tau (ames.geometry:meeting-gap meeting)))
+         (margins (loop for r in (ames.geometry:meeting-extent meeting)
+                        unless (eq (first r) 'or) collect (funcall over-tau (extent-margin r))))
+         (negated (lambda (f) (and f (lambda (time) (let ((v (funcall f time))) (and v (- v)))))))
+         (search (lambda (f r)
+                   (if step
+                       (first-numeric-crossing f (or r (constantly nil)) step until)
+                       (first-geometric-crossing f until)))))
+    (let ((from nil))
+      (loop repeat 8
+            do (let ((crossing (funcall search (if from (masked-after gap from) gap) rate)))
+                 (cond ((null crossing) (return nil))
+                       ((every (lambda (m) (let ((x (funcall m crossing))) (and x (>= x -1d-9)))) margins)
+                        (return crossing))
+                       (t (let ((back (funcall search (masked-after (funcall negated gap) crossing)
+                                               (funcall negated rate))))
+                            (if back (setf from back) (return nil))))))))))

@@ -228,13 +228,17 @@ fires within the search's reach."
                         (and reach (< reach (* (1- *root-search-steps*) step)) reach)))
                ;; past REACH it is positive for ever: searched up to there, never is proven
                (until (if (and horizon reach) (min horizon (+ reach step)) (or horizon (and reach (+ reach step)))))
-               (times (loop for function in functions
+               (times (if (guarded-relation-parts (ames.engine:termination-condition-relation condition))
+                          ;; a corner's touching within its face: guarded-meetings.lisp
+                          (let ((crossing (guarded-numeric-crossing run solved groups condition rate step until)))
+                            (and crossing (list crossing)))
+                          (loop for function in functions
                             for crossing = (if step
                                                (first-numeric-crossing
                                                 function (or rate (constantly nil)) step until)
                                                ;; no period: a geometric grid of times
                                                (first-geometric-crossing function until))
-                            when crossing collect crossing))
+                            when crossing collect crossing)))
                (time (and times (reduce #'min times))))
           (cond ((and time (plusp time))
                  (push (list condition time (and rate (funcall rate time))) found))
