@@ -45,18 +45,3 @@
   (force push :on block :at ((- (/ w 2)) (* 9/20 k)) :value (p 0))
   (friction block floor :static mu)
   (simulate :states 2 :until 1))
-
-(scenario pushed-block-at-height-y
-  "A block pushed at a height y above its centre: it slides or tips according to y."
-  (parameters (m :positive (:value 1)) (g :positive (:value 981/100)) (w :positive (:value 1))
-              (k :positive (:value 2)) (mu :positive (< mu (/ (+ (* 4 w w) (* k k)) (* 3 w k))) (:value 1/2))
-              (p :positive (> p (* mu m g)) (:value 6))
-              (y (> y (- (/ k 2))) (< y (/ k 2)) (:value -1/2)))
-  (gravity g)
-  (body floor :fixed t :shape (half-plane (1 0) (0 0)))
-  (body block :mass m :inertia :uniform :position (0 (/ k 2)) :velocity (0 0)
-              :shape (polygon ((- (/ w 2)) (- (/ k 2))) ((/ w 2) (- (/ k 2)))
-                              ((/ w 2) (/ k 2)) ((- (/ w 2)) (/ k 2))))
-  (force push :on block :at ((- (/ w 2)) y) :value (p 0))
-  (friction block floor :static mu)
-  (simulate :states 2 :until 1))

@@ -41,3 +41,14 @@ the group then moves with constant accelerations."
     (and bindings
          (notany (lambda (rate) (mentions-state-p solved (substitute-expressions bindings rate)))
                  rates))))
+
+(defun frozen-rotation-p (run solved group)
+  "True when GROUP, classified :CONSTANT, is so only with its rotating bodies held at rest
+in their angles (its rates in SOLVED mention the state): a group at rest in equilibrium
+then keeps the equilibrium's integrator (equilibrium.lisp), as it had before."
+  (some (lambda (rate) (and rate (mentions-state-p solved rate)))
+        (append (loop for body in (group-bodies group)
+                      append (loop for axis in '(:x :y)
+                                   collect (cdr (assoc `(ames.kb:vel ,body ,axis)
+                                                       (solved-model-rates solved) :test #'equal))))
+                (rotation-rates run solved group))))

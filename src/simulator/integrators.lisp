@@ -234,7 +234,10 @@ searched, under parameter values: see numeric.lisp)."
     (dolist (group groups groups)
       (setf (group-kind group) (rotation-kind run solved group (classify-group run solved group)))
       (ecase (group-kind group)
-        (:constant (integrate-constant run solved group))
+        (:constant (unless (and (frozen-rotation-p run solved group)
+                                ;; at rest in equilibrium, as before a body was held
+                                (integrate-equilibrium run solved group))
+                     (integrate-constant run solved group)))
         ;; at rest in equilibrium: no direction of motion (equilibrium.lisp)
         (:path (or (integrate-equilibrium run solved group)
                    (integrate-path run solved group)))
