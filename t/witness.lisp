@@ -286,7 +286,12 @@ behind an active contact is put on it.")
 comparator counted the duration without a number (a travel-time integral) as wrong.
 Fixed: such a state is unchecked (a verdict of its own); a scenario without parameters
 records the integral's number; and the comparator evaluates sines and inverse tangents
-of 40-digit radicals to 160 digits, where the speed at the turning point is exactly 0."))
+of 40-digit radicals to 160 digits, where the speed at the turning point is exactly 0.")
+    ("witness-failed-drag-projectile-777-339.lisp"
+     "A ball bouncing under quadratic drag (e = 1/2): the witness failed at the end of its
+Zeno sequence (a rebound of 3.5e-8 m/s, then Siconos's processEvents). Fixed in the
+witness: a body touching a fixed face with a normal speed under 1e-7 starts the next
+model at rest on it, under state-dependent forces."))
   "Disagreements the witness found and AMES has since fixed: each must now agree, with
 its file under witness/disagreements/ kept as the regression case.")
 
