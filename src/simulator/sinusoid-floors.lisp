@@ -133,6 +133,20 @@ than *LARGEST-BOUNDARY-FACT*. NIL for any other G."
 G has no root after the start. Asked only where the root search did not decide."
   (positive-after-p run g 0))
 
+(defun exponential-in-time-p (g)
+  "True when G is a function of TAU alone (every parameter a number) whose functions of
+TAU are exponentials and logarithms only: a gap under drag, whose sign Maxima decides
+quickly (with parameters left, or tan or atan of TAU, is() can take a minute)."
+  (labels ((walk (x)
+             (cond ((and (symbolp x) x (not (member x '(tau pi))))
+                    (return-from exponential-in-time-p nil))
+                   ((atom x) nil)
+                   ((and (member (first x) '(exp log)) (not (free-of-p 'tau x))) t)
+                   ((and (not (member (first x) '(+ - * / expt sqrt))) (not (free-of-p 'tau x)))
+                    (return-from exponential-in-time-p nil))
+                   (t (some #'walk (rest x))))))
+    (walk g)))
+
 (defun positive-after-p (run g after)
   "True when G > 0 is proven for every TAU > AFTER under the assumptions (Maxima's signs,
 which know exp() > 0 and log(X) > 0 for X > 1): G has no root after AFTER. Asked only
