@@ -198,6 +198,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "abs-signs")
                  (:file "termination")
                  (:file "sinusoid-floors")
+                 (:file "exponential-floors")
                  (:file "speed-line-roots")
                  (:file "check-model")
                  (:file "path")

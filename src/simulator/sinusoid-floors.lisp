@@ -55,10 +55,11 @@ symbol U."
                      (t x))))
       (walk expression))))
 
-(defun damped-sinusoid (run g)
+(defun damped-sinusoid (run g &optional (expand t))
   "(A B C W P) with G = A + exp(-P tau) (B cos(W tau) + C sin(W tau)), P >= 0, checked by
-simplification; or NIL."
-  (let* ((expanded (ignore-errors (tidy run g :expanded-trigexpand)))
+simplification; or NIL. G is first expanded (trigexpand) unless EXPAND is NIL (which
+keeps sin(3 u) whole where W is 3 times a radical)."
+  (let* ((expanded (if expand (ignore-errors (tidy run g :expanded-trigexpand)) g))
          (decay (and expanded (decaying-exponential run expanded))))
     (when decay
       (let* ((u (gensym "DECAY"))
@@ -101,7 +102,8 @@ at w tau = psi + pi/2 + k pi, where the oscillation alternates in sign and shrin
 exp(-p pi / w) from one to the next; so every later minimum lies above the first, and G,
 monotone between, never turns negative. Sharper than the envelope A - sqrt(B^2 + C^2)
 (a spring pushed in through a viscous medium, whose first swing the drag shortens)."
-  (let ((parts (and (trigonometric-in-time-p g) (damped-sinusoid run g))))
+  (let ((parts (and (trigonometric-in-time-p g)
+                    (or (damped-sinusoid run g) (damped-sinusoid run g nil)))))
     (when parts
       (destructuring-bind (a b c w p) parts
         (declare (ignore a))
@@ -132,6 +134,20 @@ than *LARGEST-BOUNDARY-FACT*. NIL for any other G."
   "True when G > 0 is proven for every TAU > 0 under the assumptions (Maxima's signs):
 G has no root after the start. Asked only where the root search did not decide."
   (positive-after-p run g 0))
+
+(defun exponential-in-time-p (g)
+  "True when G is a function of TAU alone (every parameter a number) whose functions of
+TAU are exponentials and logarithms only: a gap under drag, whose sign Maxima decides
+quickly (with parameters left, or tan or atan of TAU, is() can take a minute)."
+  (labels ((walk (x)
+             (cond ((and (symbolp x) x (not (member x '(tau pi))))
+                    (return-from exponential-in-time-p nil))
+                   ((atom x) nil)
+                   ((and (member (first x) '(exp log)) (not (free-of-p 'tau x))) t)
+                   ((and (not (member (first x) '(+ - * / expt sqrt))) (not (free-of-p 'tau x)))
+                    (return-from exponential-in-time-p nil))
+                   (t (some #'walk (rest x))))))
+    (walk g)))
 
 (defun positive-after-p (run g after)
   "True when G > 0 is proven for every TAU > AFTER under the assumptions (Maxima's signs,

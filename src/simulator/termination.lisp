@@ -92,7 +92,8 @@ one, to branch on."
       (cond ((eq root :none) (values :never))
             ((eq root :unknown)
              (if (or (sinusoid-never-negative-p run g) (positive-after-start-p run g)
-                     (damped-oscillation-never-negative-p run g))
+                     (damped-oscillation-never-negative-p run g)
+                     (overdamped-never-negative-p run g))  ; exponential-floors.lisp
                  (values :never)
                  (values :unknown (or (sinusoid-floor-fact run g) (undecided-sign-fact run g 0)))))
             (t
@@ -225,8 +226,9 @@ CONTACT then NIL); OVER-TIME makes functions of TAU of them. RATE is the gap's r
                         (return-from meeting-time
                           (if (or (roots-outside-extent-p run gap after extent)
                                   ;; a gap of one sign has no root (sinusoid-floors.lisp)
-                                  (positive-after-p run gap after)
-                                  (positive-after-p run `(- ,gap) after))
+                                  (and (exponential-in-time-p gap)
+                                       (or (positive-after-p run gap after)
+                                           (positive-after-p run `(- ,gap) after))))
                               (values :never)
                               ;; the roots up to AFTER were no meeting: not before it
                               (values :unknown (undecided-sign-fact run gap after)
