@@ -228,7 +228,7 @@ lost m g s I / (I + m r^2)."
 its rope goes slack (no jerk: a rope's impulse, if reported, is 0), the lighter mass and the pulley keep their speeds, and the
 energy lost is its (1/2) m1 v^2 = m1 (m1 - m2) g h R^2 / (I + (m1 + m2) R^2)."
   (with-fixture simulator-bridge ()
-    (let* ((scenario (scenario-named "atwood-massive-pulley"))
+    (let* ((scenario (scenario-named-with-states "atwood-massive-pulley" 1))
            (impact (first-impact scenario bridge)))
       (is (not (null impact)))
       (when impact
