@@ -165,3 +165,14 @@ v0 = -2: x = l0 + exp(-g tau) (A cosh(q tau) + B sinh(q tau)), q = sqrt(g^2 - k/
        `(+ 3/2 (* (exp (- (* ,g ames.base:tau)))
                   (+ (* 9/20 (cosh (* ,q ames.base:tau)))
                      (* (/ (+ -2 (* ,g 9/20)) ,q) (sinh (* ,q ames.base:tau))))))))))
+
+(test one-sided-taylor-series
+  "The one-sided series about 0+ (the bridge's ONE-SIDED-TAYLOR-COEFFICIENTS, which the
+local series of |v| v at rest falls back on): sqrt(9 x^2 + x^3) = 3 x sqrt(1 + x/9) =
+3 x + x^2/6 - x^3/216 + ... for x > 0; 1/x (a pole) and sqrt(x) (a half power) have none."
+  (with-fixture simulator-bridge ()
+    (let ((x 'ames.base:tau))
+      (is (equal '(0 3 1/6 -1/216)
+                 (ames.maxima:one-sided-taylor-coefficients bridge `(sqrt (+ (* 9 (expt ,x 2)) (expt ,x 3))) x 3)))
+      (is (null (ames.maxima:one-sided-taylor-coefficients bridge `(/ 1 ,x) x 2)))
+      (is (null (ames.maxima:one-sided-taylor-coefficients bridge `(sqrt ,x) x 2))))))
