@@ -5,6 +5,7 @@
 ;;;; that followed (under state-dependent forces). A body touching a fixed face or arc with a
 ;;;; normal speed under 1e-7 now starts the next model at rest on it (siconos_arcs.py's
 ;;;; SETTLED). Now agrees (AMES's three states; the witness then slides on to its horizon).
+;;;; Seed 777 #977 failed alike and now agrees too.
 ;;;; reason: Exception: std::exception
 ;;;; Run: bin/ames check witness/disagreements/witness-failed-drag-projectile-777-339.lisp --numeric
 
