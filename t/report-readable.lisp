@@ -219,7 +219,11 @@ report writes it as a formula (read back without evaluation), the words kept."
     (is (search "the tree's bound is reached; the missing fact: " text))
     (is (= 1 (count-if #'consp phrase)))
     ;; nothing evaluated, nothing that is not a formula taken for one
-    (is (equal '("a (list #.(error)) b") (ames.report::failure-phrase "a (list #.(error)) b")))))
+    (is (equal '("a (list #.(error)) b") (ames.report::failure-phrase "a (list #.(error)) b")))
+    ;; words in parentheses stay words, a short quantity term is still a formula
+    (is (equal '("wound on it (its tangent point wanders round the disc)")
+               (ames.report::failure-phrase "wound on it (its tangent point wanders round the disc)")))
+    (is (= 1 (count-if #'consp (ames.report::failure-phrase "at (pos ball :x)"))))))
 
 (test numeric-roots-lose-their-square-factors
   "sqrt(8 h/g) is written 2 sqrt(2 h/g), 2^(3/2) as 2 sqrt(2) and sqrt(32) as 4 sqrt(2):

@@ -227,7 +227,7 @@ direction): sqrt(|w|^2 - R^2) - SENSE R (theta - theta0)."
          (lambda (situation segment)
            (error 'unmodelled-situation
                   :datum segment
-                  :detail (format nil "The rope ~(~A~) swings off its line where it leaves the disc ~(~A~) it is wound on (its tangent point wanders round the disc); only a wound rope that keeps its direction is modelled."
+                  :detail (format nil "The rope ~(~A~) swings off its line where it leaves the disc ~(~A~) it is wound on: its tangent point wanders round the disc. Only a wound rope that keeps its direction is modelled."
                                   (entity-property (entity-named situation segment) :rope)
                                   (entity-property (entity-named situation segment) :disc))))
          "Signals UNMODELLED-SITUATION: a wound rope's piece swings.")

@@ -15,6 +15,9 @@ position after it, or NIL. Read with *READ-EVAL* false into a package of its own
           (let ((*read-eval* nil) (*package* (find-package '#:ames.report.read-back)))
             (read-from-string text t nil :start start :preserve-whitespace t))
         (and (consp form) (symbolp (first form))
+             ;; words in parentheses, (its tangent point wanders ...), read as a term of
+             ;; many names: a formula is an operator form or a short quantity term
+             (or (compound-expression-p form) (<= (length form) 3))
              (or (valid-expression-p form :kind :arithmetic) (valid-expression-p form :kind :condition))
              (values form end)))
     (error () nil)))
