@@ -8,8 +8,12 @@
 ;;;; gap 0 and its point within the face). Such a conjunction is reached when A - B
 ;;;; closes to 0 from positive while every GUARD holds there: a corner crossing the line
 ;;;; of a face past its end reaches nothing, and the search goes on to the next crossing.
-;;;; RELATION-MEETING gives both as one MEETING, so every integrator's search treats
-;;;; them alike (termination.lisp, rotation-path.lisp, numeric.lisp).
+;;;; RELATION-MEETING gives both as one MEETING (the numeric integrator's event functions,
+;;;; the self-check, a path's search read it); the searches along TAU and along a rotating
+;;;; body's angle take the first closing of the gap and test the guards there
+;;;; (GUARDED-RELATION-TIME-AND-RATE, GUARDED-ANGLE-ROOT), and under numbers the gap itself
+;;;; is searched (GUARDED-NUMERIC-CROSSING). A guard the algebra leaves open at a closing
+;;;; is the run's parameter values' to settle, else an unknown the caller branches on.
 
 (in-package #:ames.simulator)
 

@@ -205,9 +205,8 @@ division (DIVIDED-BY-TAU), as long as the quotient is defined at the start."
   "When the relative motion first meets CONTACT from its exterior, strictly after the
 start: (values :AT TIME RATE), (values :NEVER) or (values :UNKNOWN FACT NOT-BEFORE),
 NOT-BEFORE (or NIL) a time before which it is proven not to meet. MEETING is
-the geometry's meeting over state terms, or a guarded conjunction's (guarded-meetings.lisp,
-CONTACT then NIL); OVER-TIME makes functions of TAU of them. RATE is the gap's rate then
-(negative: an impact)."
+the geometry's meeting over state terms; OVER-TIME makes functions of TAU of them.
+RATE is the gap's rate then (negative: an impact)."
   (let* ((gap (tidy run (funcall over-time (ames.geometry:meeting-gap meeting))))
          (rate-of (lambda (time) (tidy run (at-time (time-derivative gap) time))))
          (extent (mapcar (lambda (r) (funcall over-time r)) (ames.geometry:meeting-extent meeting))))
@@ -246,9 +245,7 @@ CONTACT then NIL); OVER-TIME makes functions of TAU of them. RATE is the gap's r
                                    (values :unknown (nth (position :unknown answers) checks)
                                            root)))
                                 (t (setf after root))))))))
-      (values :unknown (if contact
-                           `(:meets ,@(contact-bodies run contact))
-                           `(:meets-beyond-the-first-roots (= ,gap 0)))))))
+      (values :unknown `(:meets ,@(contact-bodies run contact))))))
 
 ;;; The candidates
 
