@@ -14,9 +14,7 @@
 
 (in-suite failure-classes)
 
-(defun scenario-from-text (text)
-  "The validated scenario written in TEXT (scenario-language source)."
-  (ames:parse-scenario (first (ames:read-scenario-forms text))))
+;; SCENARIO-FROM-TEXT is the one of queries-answers.lisp.
 
 ;;; Class 3: a bumper in the path of a block sliding on a floor
 
