@@ -225,11 +225,12 @@ direction): sqrt(|w|^2 - R^2) - SENSE R (theta - theta0)."
            (register-template kb head function :documentation documentation)))
     (reg 'wound-piece-swings
          (lambda (situation segment)
-           (error 'unmodelled-situation
-                  :datum segment
-                  :detail (format nil "The rope ~(~A~) swings off its line where it leaves the disc ~(~A~) it is wound on: its tangent point wanders round the disc. Only a wound rope that keeps its direction is modelled."
-                                  (entity-property (entity-named situation segment) :rope)
-                                  (entity-property (entity-named situation segment) :disc))))
+           ;; the datum is the user's rope, not the piece (an entity of the simulator's)
+           (let ((rope (entity-property (entity-named situation segment) :rope)))
+             (error 'unmodelled-situation
+                    :datum rope
+                    :detail (format nil "The rope ~(~A~) swings off its line where it leaves the disc ~(~A~) it is wound on: its tangent point wanders round the disc. Only a wound rope that keeps its direction is modelled."
+                                    rope (entity-property (entity-named situation segment) :disc)))))
          "Signals UNMODELLED-SITUATION: a wound rope's piece swings.")
     (reg 'winding-undecided
          (lambda (situation rope)
