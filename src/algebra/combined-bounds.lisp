@@ -24,6 +24,11 @@ not recurse.")
 (defparameter *largest-relation-for-combined-bounds* 400
   "The largest relation (EXPRESSION-SIZE) DECIDE-BY-COMBINED-BOUNDS works on.")
 
+(defparameter *deepest-combined-bounds* 2
+  "How many DECIDE calls may be under way (the relation asked and the rewritten ones its
+reasoning asks) for DECIDE-BY-COMBINED-BOUNDS to work; deeper, it answers :UNKNOWN as a
+cut (not cached).")
+
 (defparameter *most-combined-facts* 8
   "The most facts linear in one variable whose pairs DECIDE-BY-COMBINED-BOUNDS tries.")
 
@@ -131,9 +136,11 @@ two such facts mention the variable."
 (defun decide-by-combined-bounds (bridge relation)
   "RELATION (< > <= >=) decided by two facts in force that bound one of its variables,
 combined (see the file header): :TRUE, :FALSE (its negation so proven) or :UNKNOWN."
+  (when (> (length *deciding*) *deepest-combined-bounds*)
+    ;; too deep among rewritten relations: a verdict cut short, not cached (DECIDE)
+    (push :depth *cut-short*)
+    (return-from decide-by-combined-bounds :unknown))
   (if (or *combining-bounds* *substituting-orders*
-          ;; only for the relation asked, not for the rewritten ones its reasoning asks
-          (rest *deciding*)
           (not (member (expression-operator relation) '(> >= < <=)))
           (> (expression-size relation) *largest-relation-for-combined-bounds*))
       :unknown
