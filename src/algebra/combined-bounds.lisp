@@ -9,7 +9,8 @@
 ;;;; looks for that: a relation f > 0 (or >= 0) whose f is of degree 1 in a variable V,
 ;;;; and two facts s1 >= 0, s2 >= 0 (or > 0) of degree 1 in V, with f = a s1 + b s2 exactly
 ;;;; (a and b free of V, solved from the coefficients of V^0 and V^1); when a >= 0 and b >= 0
-;;;; are proven (and f's strictness follows), f > 0 holds wherever the facts do. Sound:
+;;;; are proven (and f's strictness follows, with a's and b's divisors nonzero: the
+;;;; identity then holds everywhere), f > 0 holds wherever the facts do. Sound:
 ;;;; every step is an identity or a proven sign. Costly, so tried last, on small relations,
 ;;;; and the multipliers are first evaluated at admissible points (witnesses.lisp): a pair
 ;;;; whose multiplier is negative at one is not asked of Maxima.
@@ -22,6 +23,11 @@ not recurse.")
 
 (defparameter *largest-relation-for-combined-bounds* 400
   "The largest relation (EXPRESSION-SIZE) DECIDE-BY-COMBINED-BOUNDS works on.")
+
+(defparameter *deepest-combined-bounds* 2
+  "How many DECIDE calls may be under way (the relation asked and the rewritten ones its
+reasoning asks) for DECIDE-BY-COMBINED-BOUNDS to work; deeper, it answers :UNKNOWN as a
+cut (not cached).")
 
 (defparameter *most-combined-facts* 8
   "The most facts linear in one variable whose pairs DECIDE-BY-COMBINED-BOUNDS tries.")
@@ -54,6 +60,27 @@ this strategy)."
   (let ((*combining-bounds* t))
     (eq :true (decide bridge (list (if strict '> '>=) x 0)))))
 
+(defun divisors (expression)
+  "The non-numeric divisors of EXPRESSION: D of each (/ X D) and of each (EXPT D -N)."
+  (let ((found '()))
+    (labels ((walk (x)
+               (when (and (consp x) (not (quantity-term-p x)))
+                 (case (expression-operator x)
+                   (/ (dolist (d (rest (expression-arguments x))) (pushnew d found :test #'equal)))
+                   (expt (when (and (realp (third x)) (minusp (third x)))
+                           (pushnew (second x) found :test #'equal))))
+                 (mapc #'walk (expression-arguments x)))))
+      (walk expression))
+    (remove-if #'numberp found)))
+
+(defun divisors-nonzero-p (bridge &rest expressions)
+  "True when every divisor of EXPRESSIONS is proven nonzero (of one strict sign): the
+identity GOAL = a s1 + b s2 then holds at every admissible point, not only where the
+multipliers are defined (which is enough for GOAL >= 0, by continuity, but not for > 0)."
+  (every (lambda (d) (or (proven-nonnegative-p bridge d t)
+                         (proven-nonnegative-p bridge (list '- d) t)))
+         (reduce #'union (mapcar #'divisors expressions) :initial-value '())))
+
 (defun combination-proves-p (bridge goal strict variable first second)
   "True when GOAL = a FIRST + b SECOND (entries (C0 C1 STRICT) of facts linear in
 VARIABLE, GOAL's own (C0 C1) in GOAL) with a, b proven >= 0, and GOAL > 0 when STRICT."
@@ -74,7 +101,9 @@ VARIABLE, GOAL's own (C0 C1) in GOAL) with a, b proven >= 0, and GOAL > 0 when S
                            (part a strict1))))
               (when pa
                 (let ((pb (part b strict2)))
-                  (and pb (or (not strict) (eq pa :strict) (eq pb :strict))))))))))))
+                  (and pb (or (not strict)
+                              (and (or (eq pa :strict) (eq pb :strict))
+                                   (divisors-nonzero-p bridge a b)))))))))))))
 
 (defun bound-fact-p (fact)
   "True when FACT (a relation) can bound a variable against others: an inequality that
@@ -107,9 +136,11 @@ two such facts mention the variable."
 (defun decide-by-combined-bounds (bridge relation)
   "RELATION (< > <= >=) decided by two facts in force that bound one of its variables,
 combined (see the file header): :TRUE, :FALSE (its negation so proven) or :UNKNOWN."
+  (when (> (length *deciding*) *deepest-combined-bounds*)
+    ;; too deep among rewritten relations: a verdict cut short, not cached (DECIDE)
+    (push :depth *cut-short*)
+    (return-from decide-by-combined-bounds :unknown))
   (if (or *combining-bounds* *substituting-orders*
-          ;; only for the relation asked, not for the rewritten ones its reasoning asks
-          (rest *deciding*)
           (not (member (expression-operator relation) '(> >= < <=)))
           (> (expression-size relation) *largest-relation-for-combined-bounds*))
       :unknown
