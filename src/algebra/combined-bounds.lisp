@@ -21,6 +21,11 @@
   "True while DECIDE-BY-COMBINED-BOUNDS decides the signs of multipliers, so that it does
 not recurse.")
 
+(defvar *combined-bounds-wanted* t
+  "NIL where a caller wants only the cheaper strategies (the presentation's sign questions,
+asked for every term of every printed form): DECIDE-BY-COMBINED-BOUNDS then answers
+:UNKNOWN as a cut, not cached, so that a later question may still be proven by it.")
+
 (defparameter *largest-relation-for-combined-bounds* 400
   "The largest relation (EXPRESSION-SIZE) DECIDE-BY-COMBINED-BOUNDS works on.")
 
@@ -136,6 +141,9 @@ two such facts mention the variable."
 (defun decide-by-combined-bounds (bridge relation)
   "RELATION (< > <= >=) decided by two facts in force that bound one of its variables,
 combined (see the file header): :TRUE, :FALSE (its negation so proven) or :UNKNOWN."
+  (unless *combined-bounds-wanted*
+    (push :not-wanted *cut-short*)
+    (return-from decide-by-combined-bounds :unknown))
   (when (> (length *deciding*) *deepest-combined-bounds*)
     ;; too deep among rewritten relations: a verdict cut short, not cached (DECIDE)
     (push :depth *cut-short*)

@@ -13,7 +13,7 @@ It asks Maxima only through the bridge.")
    #:constant-sign #:rules-of-signs
    #:relation-signs #:signs-relation #:relation-verdict
    ;; deciding (deciding.lisp)
-   #:decide #:substitute-subexpressions #:holds-p #:sign-varies-p #:refuted-p
+   #:decide #:substitute-subexpressions #:holds-p #:*combined-bounds-wanted* #:sign-varies-p #:refuted-p
    ;; numbers before proofs (values.lisp)
    #:call-with-parameter-values #:with-parameter-values #:current-parameter-values
    #:value-truth #:decide-by-values #:facts-from-values
