@@ -77,7 +77,8 @@ INITIAL-POS (at the state's start), VEL or ACC (its rates)."
     (mapcar (lambda (x) `(/ ,x ,norm)) d0)))
 
 (defun register-span-templates (kb)
-  "Register in KB the template functions of spans."
+  "Register in KB the template functions of spans measured along their starting direction,
+their length and their starting sizes."
   (flet ((reg (head function documentation)
            (register-template kb head function :documentation documentation)))
     (reg 'initial-span-direction
@@ -121,7 +122,14 @@ INITIAL-POS (at the state's start), VEL or ACC (its rates)."
     (reg 'span-start-speed-squared
          (lambda (situation a b)
            (let ((v0 (span-difference situation a b 'initial-vel))) (ames.geometry:dot v0 v0)))
-         "The square of the points' relative speed at the start of the state.")
+         "The square of the points' relative speed at the start of the state.")))
+
+(defun register-separating-span-templates (kb)
+  "Register in KB the template functions of spans that open from zero length along their
+points' relative velocity, of spans that keep to their line, and the refusal of a span
+whose direction is undefined."
+  (flet ((reg (head function documentation)
+           (register-template kb head function :documentation documentation)))
     (reg 'separating-span-direction
          (lambda (situation a b axis) (axis-component (separating-direction situation a b) axis))
          "A component of the unit vector along which a span of zero length at the start opens: its relative velocity's.")
@@ -166,6 +174,7 @@ and do not move apart, so its direction (Hooke's d/|d|, a tension's) is 0/0."
                          span)))
 
 (register-span-templates *mechanics*)
+(register-separating-span-templates *mechanics*)
 
 (defcomponent straight-span (:knowledge-base *mechanics*)
   "A straight span from point A to point B (see the file header): its length, unit
