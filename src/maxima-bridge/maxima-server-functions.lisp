@@ -133,6 +133,66 @@ no power (2 or more) of sin, cos, sinh or cosh, which are all its search works o
                                (list '($num) (list '(mquote) ratsimped))
                                (list '($denom) (list '(mquote) ratsimped)))))))))
 
+(defun ames-linear-variable-p (x)
+  "True when X is a name the bridge generated for a variable (AMES-MANGLED-NAME-P's
+$AMESV... or $AMESX...): an indeterminate to rat() and factor(), unlike %pi or %e."
+  (and (symbolp x)
+       (let ((name (symbol-name x)))
+         (and (> (length name) 6)
+              (or (string= "$AMESV" name :end2 6) (string= "$AMESX" name :end2 6))))))
+
+(defun ames-linear-integer-parts (r)
+  "(VALUES TERMS CONSTANT) when R, a simplified form, is a linear form c0 + c1 x1 + ...
+in distinct variables (AMES-LINEAR-VARIABLE-P) with integer coefficients: TERMS the
+list of (ci . xi), CONSTANT the integer c0; NIL when R is of any other shape."
+  (flet ((term (x)
+           (cond ((ames-linear-variable-p x) (cons 1 x))
+                 ((and (consp x) (consp (car x)) (eq (caar x) 'mtimes)
+                       (= (length x) 3) (integerp (cadr x))
+                       (ames-linear-variable-p (caddr x)))
+                  (cons (cadr x) (caddr x))))))
+    (cond ((and (consp r) (consp (car r)) (eq (caar r) 'mplus))
+           (let ((terms nil) (constant 0))
+             (dolist (x (cdr r))
+               (cond ((integerp x) (unless (eql constant 0) (return-from ames-linear-integer-parts nil))
+                                   (setq constant x))
+                     ((term x) (push (term x) terms))
+                     (t (return-from ames-linear-integer-parts nil))))
+             (and terms
+                  (= (length terms) (length (remove-duplicates (mapcar #'cdr terms))))
+                  (values terms constant))))
+          ((term r) (values (list (term r)) 0)))))
+
+(defun ames-linear-factor (r)
+  "factor(R) computed without factor() when R is a linear form in distinct variables
+with integer coefficients (AMES-LINEAR-INTEGER-PARTS): the content of R (the gcd of
+its coefficients, with the sign of the coefficient of its main variable, the greatest
+under Maxima's ordering) times the rest, which is irreducible, structured as factor()
+structures it; NIL for any other R (then factor() is asked)."
+  (multiple-value-bind (terms constant) (ames-linear-integer-parts r)
+    (when terms
+      (let* ((main (reduce #'(lambda (a b) (if (great (cdr a) (cdr b)) a b)) terms))
+             (content (* (signum (car main))
+                         (reduce #'gcd (mapcar #'car terms) :initial-value constant))))
+        (if (and (null (cdr terms)) (eql constant 0))
+            (if (eql (car main) 1)
+                (cdr main)
+                (list (list 'mtimes 'simp 'factored) (car main) (cdr main)))
+            (let ((sum (simplifya
+                        (cons (list 'mplus)
+                              (cons (/ constant content)
+                                    (mapcar #'(lambda (term)
+                                                (let ((c (/ (car term) content)))
+                                                  (if (eql c 1)
+                                                      (cdr term)
+                                                      (list (list 'mtimes 'simp 'ratsimp) c (cdr term)))))
+                                            terms)))
+                        nil)))
+              (if (eql content 1)
+                  (cons (list 'mplus 'simp 'irreducible 'factored) (cdr sum))
+                  (list (list 'mtimes 'simp 'factored) content
+                        (cons (list 'mplus 'simp 'irreducible) (cdr sum))))))))))
+
 (defun $ames_simplification_candidates (expr trigonometric radicals)
   "The forms the bridge's simplest-form compares, each computed once (a request listing
 them as separate calls computes ratsimp(EXPR) and trigsimp(EXPR) twice):
@@ -152,7 +212,8 @@ argument is a square once sin^2 + cos^2 = 1 is used)."
                   (append (list ratsimped)
                           (and trigonometric (list trigsimped (ames-call '$ratsimp trigsimped)))
                           (and (not (ames-big-integer-p ratsimped))
-                               (list (ames-call-or-nil '$factor ratsimped)))
+                               (list (or (ames-linear-factor ratsimped)
+                                         (ames-call-or-nil '$factor ratsimped))))
                           (and radicals (list (ames-call-or-nil '$radcan expr)))
                           (and radicals trigonometric (list (ames-call-or-nil '$radcan trigsimped))))))))
 
@@ -176,7 +237,9 @@ its factor(r) too."
                           (list (ames-call '$ratsimp ($ames_trigsimp expr)))))))
     (cons '(mlist simp)
           (loop for base in bases
-                for factored = (if (ames-big-integer-p base) base (ames-call '$factor base))
+                for factored = (cond ((ames-big-integer-p base) base)
+                                     ((ames-linear-factor base))
+                                     (t (ames-call '$factor base)))
                 append (list base factored (ames-scanmap-factorsum factored)
                              (ames-call '$multthru base))))))
 
