@@ -163,6 +163,22 @@ list of (ci . xi), CONSTANT the integer c0; NIL when R is of any other shape."
                   (values terms constant))))
           ((term r) (values (list (term r)) 0)))))
 
+(defun ames-linear-ratsimp (expr)
+  "ratsimp(EXPR) as a request gets it (simplified again), computed without ratsimp()
+when EXPR is a linear form in distinct variables with integer coefficients
+(AMES-LINEAR-INTEGER-PARTS): the same terms, each product marked as ratsimp() marks
+it; NIL for any other EXPR."
+  (multiple-value-bind (terms constant) (ames-linear-integer-parts expr)
+    (when terms
+      (simplifya (cons (list 'mplus)
+                       (cons constant
+                             (mapcar #'(lambda (term)
+                                         (if (eql (car term) 1)
+                                             (cdr term)
+                                             (list (list 'mtimes 'simp 'ratsimp) (car term) (cdr term))))
+                                     terms)))
+                 nil))))
+
 (defun ames-linear-factor (r)
   "factor(R) computed without factor() when R is a linear form in distinct variables
 with integer coefficients (AMES-LINEAR-INTEGER-PARTS): the content of R (the gcd of
@@ -204,7 +220,7 @@ left out; when RADICALS is false (EXPR has no radical, logarithm or power with a
 symbolic or fractional exponent, where radcan(EXPR) is ratsimp(EXPR) again),
 radcan(EXPR) is left out; radcan(trigsimp(EXPR)) needs both (a square root whose
 argument is a square once sin^2 + cos^2 = 1 is used)."
-  (let* ((ratsimped (ames-call '$ratsimp expr))
+  (let* ((ratsimped (or (ames-linear-ratsimp expr) (ames-call '$ratsimp expr)))
          (trigsimped (and trigonometric ($ames_trigsimp expr))))
     ;; factor and radcan, which only offer a smaller form, are left out where they fail
     (cons '(mlist simp)
@@ -232,7 +248,7 @@ algebra: [r, factor(r), scanmap(factorsum, factor(r)), multthru(r)] for r = rats
 TRIGONOMETRIC is true, also for r = ratsimp(trigsimp(EXPR)) (sin^2 + cos^2 = 1, tan as
 sin/cos), in that order. A base with a big integer (AMES-BIG-INTEGER-P) stands for
 its factor(r) too."
-  (let ((bases (cons (ames-call '$ratsimp expr)
+  (let ((bases (cons (or (ames-linear-ratsimp expr) (ames-call '$ratsimp expr))
                      (and trigonometric
                           (list (ames-call '$ratsimp ($ames_trigsimp expr)))))))
     (cons '(mlist simp)
