@@ -163,6 +163,37 @@ list of (ci . xi), CONSTANT the integer c0; NIL when R is of any other shape."
                   (values terms constant))))
           ((term r) (values (list (term r)) 0)))))
 
+(defun ames-sum-term-variable (x)
+  "The variable of X when X is a variable of the bridge (AMES-LINEAR-VARIABLE-P) or an
+integer times one, as a request writes it; else NIL."
+  (cond ((ames-linear-variable-p x) x)
+        ((and (consp x) (consp (car x)) (eq (caar x) 'mtimes) (null (cdar x))
+              (= (length x) 3) (integerp (cadr x)) (ames-linear-variable-p (caddr x)))
+         (caddr x))))
+
+(defun ames-presort-sums (form)
+  "FORM with the arguments of each sum of distinct variables (or integer multiples of
+them: AMES-SUM-TERM-VARIABLE) put in descending order, their integer constant last:
+the order in which Maxima's simplifier inserts them fastest (it inserts each term into
+the sorted sum from its head: a sum given in ascending order takes time quadratic in
+its length). Such a sum simplifies to the same form whatever the order of its terms;
+other forms are left as they are."
+  (if (or (atom form) (atom (car form)))
+      form
+      (let ((arguments (mapcar #'ames-presort-sums (cdr form))))
+        (if (and (eq (caar form) 'mplus) (null (cdar form)) (cddr arguments)
+                 (<= (count-if #'integerp arguments) 1)
+                 (every #'(lambda (x) (or (integerp x) (ames-sum-term-variable x))) arguments))
+            (let ((variables (mapcar #'ames-sum-term-variable (remove-if #'integerp arguments))))
+              (if (= (length variables) (length (remove-duplicates variables :test #'eq)))
+                  (cons (car form)
+                        (append (sort (remove-if #'integerp arguments)
+                                      #'(lambda (a b) (great (ames-sum-term-variable a)
+                                                             (ames-sum-term-variable b))))
+                                (remove-if-not #'integerp arguments)))
+                  (cons (car form) arguments)))
+            (cons (car form) arguments)))))
+
 (defun ames-linear-ratsimp (expr)
   "ratsimp(EXPR) as a request gets it (simplified again), computed without ratsimp()
 when EXPR is a linear form in distinct variables with integer coefficients
