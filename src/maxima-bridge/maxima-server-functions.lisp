@@ -133,6 +133,113 @@ no power (2 or more) of sin, cos, sinh or cosh, which are all its search works o
                                (list '($num) (list '(mquote) ratsimped))
                                (list '($denom) (list '(mquote) ratsimped)))))))))
 
+(defun ames-linear-variable-p (x)
+  "True when X is a name the bridge generated for a variable (AMES-MANGLED-NAME-P's
+$AMESV... or $AMESX...): an indeterminate to rat() and factor(), unlike %pi or %e."
+  (and (symbolp x)
+       (let ((name (symbol-name x)))
+         (and (> (length name) 6)
+              (or (string= "$AMESV" name :end2 6) (string= "$AMESX" name :end2 6))))))
+
+(defun ames-linear-integer-parts (r)
+  "(VALUES TERMS CONSTANT) when R, a simplified form, is a linear form c0 + c1 x1 + ...
+in distinct variables (AMES-LINEAR-VARIABLE-P) with integer coefficients: TERMS the
+list of (ci . xi), CONSTANT the integer c0; NIL when R is of any other shape."
+  (flet ((term (x)
+           (cond ((ames-linear-variable-p x) (cons 1 x))
+                 ((and (consp x) (consp (car x)) (eq (caar x) 'mtimes)
+                       (= (length x) 3) (integerp (cadr x))
+                       (ames-linear-variable-p (caddr x)))
+                  (cons (cadr x) (caddr x))))))
+    (cond ((and (consp r) (consp (car r)) (eq (caar r) 'mplus))
+           (let ((terms nil) (constant 0))
+             (dolist (x (cdr r))
+               (cond ((integerp x) (unless (eql constant 0) (return-from ames-linear-integer-parts nil))
+                                   (setq constant x))
+                     ((term x) (push (term x) terms))
+                     (t (return-from ames-linear-integer-parts nil))))
+             (and terms
+                  (= (length terms) (length (remove-duplicates (mapcar #'cdr terms))))
+                  (values terms constant))))
+          ((term r) (values (list (term r)) 0)))))
+
+(defun ames-sum-term-variable (x)
+  "The variable of X when X is a variable of the bridge (AMES-LINEAR-VARIABLE-P) or an
+integer times one, as a request writes it; else NIL."
+  (cond ((ames-linear-variable-p x) x)
+        ((and (consp x) (consp (car x)) (eq (caar x) 'mtimes) (null (cdar x))
+              (= (length x) 3) (integerp (cadr x)) (ames-linear-variable-p (caddr x)))
+         (caddr x))))
+
+(defun ames-presort-sums (form)
+  "FORM with the arguments of each sum of distinct variables (or integer multiples of
+them: AMES-SUM-TERM-VARIABLE) put in descending order, their integer constant last:
+the order in which Maxima's simplifier inserts them fastest (it inserts each term into
+the sorted sum from its head: a sum given in ascending order takes time quadratic in
+its length). Such a sum simplifies to the same form whatever the order of its terms;
+other forms are left as they are."
+  (if (or (atom form) (atom (car form)))
+      form
+      (let ((arguments (mapcar #'ames-presort-sums (cdr form))))
+        (if (and (eq (caar form) 'mplus) (null (cdar form)) (cddr arguments)
+                 (<= (count-if #'integerp arguments) 1)
+                 (every #'(lambda (x) (or (integerp x) (ames-sum-term-variable x))) arguments))
+            (let ((variables (mapcar #'ames-sum-term-variable (remove-if #'integerp arguments))))
+              (if (= (length variables) (length (remove-duplicates variables :test #'eq)))
+                  (cons (car form)
+                        (append (sort (remove-if #'integerp arguments)
+                                      #'(lambda (a b) (great (ames-sum-term-variable a)
+                                                             (ames-sum-term-variable b))))
+                                (remove-if-not #'integerp arguments)))
+                  (cons (car form) arguments)))
+            (cons (car form) arguments)))))
+
+(defun ames-linear-ratsimp (expr)
+  "ratsimp(EXPR) as a request gets it (simplified again), computed without ratsimp()
+when EXPR is a linear form in distinct variables with integer coefficients
+(AMES-LINEAR-INTEGER-PARTS): the same terms, each product marked as ratsimp() marks
+it; NIL for any other EXPR."
+  (multiple-value-bind (terms constant) (ames-linear-integer-parts expr)
+    (when terms
+      (simplifya (cons (list 'mplus)
+                       (cons constant
+                             (mapcar #'(lambda (term)
+                                         (if (eql (car term) 1)
+                                             (cdr term)
+                                             (list (list 'mtimes 'simp 'ratsimp) (car term) (cdr term))))
+                                     terms)))
+                 nil))))
+
+(defun ames-linear-factor (r)
+  "factor(R) computed without factor() when R is a linear form in distinct variables
+with integer coefficients (AMES-LINEAR-INTEGER-PARTS): the content of R (the gcd of
+its coefficients, with the sign of the coefficient of its main variable, the greatest
+under Maxima's ordering) times the rest, which is irreducible, structured as factor()
+structures it; NIL for any other R (then factor() is asked)."
+  (multiple-value-bind (terms constant) (ames-linear-integer-parts r)
+    (when terms
+      (let* ((main (reduce #'(lambda (a b) (if (great (cdr a) (cdr b)) a b)) terms))
+             (content (* (signum (car main))
+                         (reduce #'gcd (mapcar #'car terms) :initial-value constant))))
+        (if (and (null (cdr terms)) (eql constant 0))
+            (if (eql (car main) 1)
+                (cdr main)
+                (list (list 'mtimes 'simp 'factored) (car main) (cdr main)))
+            (let ((sum (simplifya
+                        (cons (list 'mplus)
+                              (cons (/ constant content)
+                                    (mapcar #'(lambda (term)
+                                                (let ((c (/ (car term) content)))
+                                                  (if (eql c 1)
+                                                      (cdr term)
+                                                      (list (list 'mtimes 'simp 'ratsimp) c (cdr term)))))
+                                            terms)))
+                        nil)))
+              (if (eql content 1)
+                  (cons (list 'mplus 'simp 'irreducible 'factored) (cdr sum))
+                  (list (list 'mtimes 'simp 'factored) content
+                        (cons (list 'mplus 'simp 'irreducible) (cdr sum))))))))))
+
 (defun $ames_simplification_candidates (expr trigonometric radicals)
   "The forms the bridge's simplest-form compares, each computed once (a request listing
 them as separate calls computes ratsimp(EXPR) and trigsimp(EXPR) twice):
@@ -144,7 +251,7 @@ left out; when RADICALS is false (EXPR has no radical, logarithm or power with a
 symbolic or fractional exponent, where radcan(EXPR) is ratsimp(EXPR) again),
 radcan(EXPR) is left out; radcan(trigsimp(EXPR)) needs both (a square root whose
 argument is a square once sin^2 + cos^2 = 1 is used)."
-  (let* ((ratsimped (ames-call '$ratsimp expr))
+  (let* ((ratsimped (or (ames-linear-ratsimp expr) (ames-call '$ratsimp expr)))
          (trigsimped (and trigonometric ($ames_trigsimp expr))))
     ;; factor and radcan, which only offer a smaller form, are left out where they fail
     (cons '(mlist simp)
@@ -152,7 +259,8 @@ argument is a square once sin^2 + cos^2 = 1 is used)."
                   (append (list ratsimped)
                           (and trigonometric (list trigsimped (ames-call '$ratsimp trigsimped)))
                           (and (not (ames-big-integer-p ratsimped))
-                               (list (ames-call-or-nil '$factor ratsimped)))
+                               (list (or (ames-linear-factor ratsimped)
+                                         (ames-call-or-nil '$factor ratsimped))))
                           (and radicals (list (ames-call-or-nil '$radcan expr)))
                           (and radicals trigonometric (list (ames-call-or-nil '$radcan trigsimped))))))))
 
@@ -171,12 +279,14 @@ algebra: [r, factor(r), scanmap(factorsum, factor(r)), multthru(r)] for r = rats
 TRIGONOMETRIC is true, also for r = ratsimp(trigsimp(EXPR)) (sin^2 + cos^2 = 1, tan as
 sin/cos), in that order. A base with a big integer (AMES-BIG-INTEGER-P) stands for
 its factor(r) too."
-  (let ((bases (cons (ames-call '$ratsimp expr)
+  (let ((bases (cons (or (ames-linear-ratsimp expr) (ames-call '$ratsimp expr))
                      (and trigonometric
                           (list (ames-call '$ratsimp ($ames_trigsimp expr)))))))
     (cons '(mlist simp)
           (loop for base in bases
-                for factored = (if (ames-big-integer-p base) base (ames-call '$factor base))
+                for factored = (cond ((ames-big-integer-p base) base)
+                                     ((ames-linear-factor base))
+                                     (t (ames-call '$factor base)))
                 append (list base factored (ames-scanmap-factorsum factored)
                              (ames-call '$multthru base))))))
 

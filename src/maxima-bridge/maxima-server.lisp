@@ -221,7 +221,9 @@ a NUL character, so NUL is looked for separately.)"
                            (ames-validate form))))
        (if complaint
            (list :rejected complaint)
-           (ames-evaluate form))))
+           ;; sums of variables put in the order the simplifier inserts fastest
+           ;; (maxima-server-functions.lisp): the same answer, sooner
+           (ames-evaluate (ames-presort-sums form)))))
     (t (list :rejected "unknown request kind"))))
 
 (defun ames-handle (line)

@@ -63,14 +63,19 @@ UNTRANSLATABLE-RESULT, MAXIMA-ERROR, MAXIMA-TIMEOUT."
     (error 'invalid-bridge-argument :datum strategy
                                     :detail (format nil "the strategy must be one of ~{~S~^ ~}"
                                                     *simplification-strategies*)))
-  (let ((form (to-mx bridge expression :any)))
-    (if (eq strategy :full)
-        (simplest-form bridge form expression)
-        (let ((answer (maxima-request bridge (simplification-form strategy form) :datum expression)))
-          (or (and (not (and (consp expression) (member (first expression) '(= /= < > <= >= and or not))))
-                   (mentions-imaginary-unit-p answer)
-                   (real-form bridge form expression))
-              (from-mx bridge answer))))))
+  (let ((form (to-mx bridge expression :any))
+        (constant (and (member strategy '(:ratsimp :full)) (exact-constant-value expression))))
+    (cond
+      ;; Maxima's answer is that rational (exact-constants.lisp)
+      (constant constant)
+      ((eq strategy :full)
+       (simplest-form bridge form expression))
+      (t
+       (let ((answer (maxima-request bridge (simplification-form strategy form) :datum expression)))
+         (or (and (not (and (consp expression) (member (first expression) '(= /= < > <= >= and or not))))
+                  (mentions-imaginary-unit-p answer)
+                  (real-form bridge form expression))
+             (from-mx bridge answer)))))))
 
 (defun trigonometric-form-p (form)
   "True when the Maxima FORM contains sin, cos or tan. Without them trigsimp() is

@@ -15,7 +15,7 @@ layer above, AMES.ALGEBRA: it asks through the exported operations only.")
    #:bridge-in-scope-p #:prestart-bridge
    #:*reply-limit*
    ;; operations
-   #:simplify #:prefetch-simplifications #:expression-size #:solve-equations #:equivalent-p
+   #:simplify #:prefetch-simplifications #:prefetch-solutions #:expression-size #:solve-equations #:equivalent-p
    #:call-with-assumptions #:with-assumptions #:current-assumptions #:flatten-facts
    #:bridge-frames ; the scopes in force: their identity keys a cache of what they imply
    ;; the algebra layer's hooks into the assumptions (assumptions.lisp)

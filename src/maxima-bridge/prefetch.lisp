@@ -92,3 +92,21 @@ MAXIMA-BUDGET-EXCEEDED when the run's time is up."
     (when (rest pairs)
       (prefetch-pairs bridge (nreverse pairs)))
     nil))
+
+(defun prefetch-solutions (bridge systems)
+  "Ask BRIDGE's Maxima together the solve() requests SOLVE-EQUATIONS will send for each
+of SYSTEMS, a list of (EQUATIONS . UNKNOWNS), translated in that order as SOLVE-EQUATIONS
+translates them (so that the names Maxima sees are the ones it would see), and cache
+each answer as its single request's (PREFETCH-REQUESTS): SOLVE-EQUATIONS then finds
+them, and signals its conditions where it would. A system that does not translate is
+left to SOLVE-EQUATIONS. Returns nothing useful."
+  (prefetch-requests
+   bridge
+   (loop for (equations . unknowns) in systems
+         for request = (handler-case
+                           (let* ((equation-forms (mapcar (lambda (e) (equation-to-maxima bridge e))
+                                                          equations))
+                                  (unknown-forms (mapcar (lambda (u) (to-mx bridge u)) unknowns)))
+                             (mcall "$SOLVE" (mlist equation-forms) (mlist unknown-forms)))
+                         (error () nil))
+         when request collect request)))

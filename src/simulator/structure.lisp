@@ -83,38 +83,71 @@ a list of lists of equation indices, every block after the blocks it needs."
         (unless (aref numbers e) (visit e))))
     (nreverse blocks)))
 
+(defun block-dependencies (blocks occurrences owner)
+  "For each of BLOCKS (EQUATION-BLOCKS' order), the positions in BLOCKS of the other
+blocks it needs: a vector of lists."
+  (let ((position-of (make-hash-table)))
+    (loop for block in blocks for i from 0
+          do (dolist (e block) (setf (gethash e position-of) i)))
+    (coerce (loop for block in blocks for i from 0
+                  collect (remove i (remove-duplicates
+                                     (loop for e in block
+                                           append (mapcar (lambda (u) (gethash (aref owner u) position-of))
+                                                          (aref occurrences e))))))
+            'vector)))
+
+(defun independent-run-end (dependencies start)
+  "The end (exclusive) of the longest run of blocks from START on, in order, none of
+which needs another of the run: they can be solved together."
+  (loop for end from (1+ start) below (length dependencies)
+        unless (every (lambda (needed) (< needed start)) (aref dependencies end))
+          return end
+        finally (return (length dependencies))))
+
 (defun solve-by-blocks (run equations unknowns)
   "Solve EQUATIONS for UNKNOWNS block by block (see the file header): the alist of the
 unique solution, or NIL when the structure does not settle it (the caller then solves
-the whole system). Also returns the number of blocks."
+the whole system). Also returns the number of blocks. The solve() requests of a run of
+blocks none of which needs another are asked together first (one round trip, the same
+requests in the same order: AMES.MAXIMA:PREFETCH-SOLUTIONS)."
   (let* ((occurrences (equation-unknown-indices equations unknowns))
          (owner (perfect-matching occurrences (length unknowns))))
     (when owner
-      (let ((blocks (equation-blocks occurrences owner))
-            (unknown-vector (coerce unknowns 'vector))
-            (equation-vector (coerce equations 'vector))
-            ;; the values found so far, the first of a term winning (as ASSOC over them
-            ;; in order would find it): no list search per node of each block's equations
-            (table (make-hash-table :test #'equal)))
-        (dolist (block blocks (values (loop for unknown in unknowns
-                                            collect (multiple-value-bind (value found)
-                                                        (gethash unknown table)
-                                                      (and found (cons unknown value))))
-                                      (length blocks)))
-          (let* ((block-unknowns (loop for u from 0 below (length owner)
-                                       when (member (aref owner u) block)
-                                         collect (aref unknown-vector u)))
-                 (block-equations (mapcar (lambda (e)
-                                            (substitute-from-table table (aref equation-vector e)))
-                                          block))
-                 (solutions (handler-case (ames.maxima:solve-equations (run-bridge run)
-                                                                       block-equations block-unknowns)
-                              (ames.maxima:solve-failed () :failed))))
-            (unless (and (consp solutions) (null (rest solutions)))
-              (return-from solve-by-blocks nil))
-            (loop for (term . value) in (first solutions)
-                  unless (nth-value 1 (gethash term table))
-                    do (setf (gethash term table) value))))))))
+      (let* ((blocks (equation-blocks occurrences owner))
+             (dependencies (block-dependencies blocks occurrences owner))
+             (unknown-vector (coerce unknowns 'vector))
+             (equation-vector (coerce equations 'vector))
+             ;; the values found so far, the first of a term winning (as ASSOC over them
+             ;; in order would find it): no list search per node of each block's equations
+             (table (make-hash-table :test #'equal))
+             (prefetched 0))
+        (flet ((block-system (block)
+                 (cons (mapcar (lambda (e) (substitute-from-table table (aref equation-vector e)))
+                               block)
+                       (loop for u from 0 below (length owner)
+                             when (member (aref owner u) block)
+                               collect (aref unknown-vector u)))))
+          (loop for block in blocks
+                for i from 0
+                do (when (>= i prefetched)
+                     (setf prefetched (independent-run-end dependencies i))
+                     (when (> (- prefetched i) 1)
+                       (ames.maxima:prefetch-solutions
+                        (run-bridge run)
+                        (mapcar #'block-system (subseq blocks i prefetched)))))
+                   (destructuring-bind (block-equations . block-unknowns) (block-system block)
+                     (let ((solutions (handler-case (ames.maxima:solve-equations (run-bridge run)
+                                                                                 block-equations block-unknowns)
+                                        (ames.maxima:solve-failed () :failed))))
+                       (unless (and (consp solutions) (null (rest solutions)))
+                         (return-from solve-by-blocks nil))
+                       (loop for (term . value) in (first solutions)
+                             unless (nth-value 1 (gethash term table))
+                               do (setf (gethash term table) value)))))
+          (values (loop for unknown in unknowns
+                        collect (multiple-value-bind (value found) (gethash unknown table)
+                                  (and found (cons unknown value))))
+                  (length blocks)))))))
 
 ;;; A system Maxima cannot solve for its radicals
 
