@@ -20,7 +20,7 @@ It asks Maxima only through the bridge.")
    #:call-with-parameter-values #:with-parameter-values #:current-parameter-values
    #:value-truth #:decide-by-values #:facts-from-values
    ;; the values decide first (values-first.lisp)
-   #:call-with-values-first #:values-first-p #:decide-first-cheaply #:signs-refuted-by-values
+   #:call-with-values-first #:values-first-p #:decide-first-cheaply #:cheap-proof #:signs-refuted-by-values
    #:undecided-witnesses #:explain-undecided
    ;; roots (roots.lisp, trig-roots.lisp)
    #:earliest-root #:square-free-part #:earliest-trigonometric-root
