@@ -112,3 +112,30 @@ is pruned. A relation in a variable no fact bounds is never pruned."
                (let ((kept (getf (first alternatives) :assume)))
                  (is (eq '> (first kept)))
                  (is (equal p (second kept))))))))))))
+
+(test witnesses-know-exact-zeros
+  "At a point, sin(atan2(0, x)/2) is exactly 0 for x > 0 and 1 for x < 0 (the imaginary
+part of sqrt(x) over sqrt|x|): > 0 fails at x = 2 and holds at x = -2, >= 0 holds at
+both; a product with the number 0 is exactly 0; an equation is never sure; and a ball
+that only rounds to zero settles nothing."
+  (let ((imaginary '(sin (/ (atan 0 x) 2))))
+    (is (eq :false (ames.algebra::condition-truth `(> ,imaginary 0) '((x . 2d0)))))
+    (is (eq :true (ames.algebra::condition-truth `(> ,imaginary 0) '((x . -2d0)))))
+    (is (eq :true (ames.algebra::condition-truth `(>= ,imaginary 0) '((x . 2d0)))))
+    (is (eq :true (ames.algebra::condition-truth `(<= (* 0 y) 0) '((y . 5d0)))))
+    (is (eq :false (ames.algebra::condition-truth `(< (* 0 y) 0) '((y . 5d0)))))
+    (is (null (ames.algebra::condition-truth `(= (* 0 y) 0) '((y . 5d0)))))
+    ;; 0.1 + 0.2 - 0.3 is not exactly zero in floating point: no verdict
+    (is (null (ames.algebra::condition-truth '(> (- (+ a b) c) 0) '((a . 0.1d0) (b . 0.2d0) (c . 0.3d0)))))))
+
+(test undecidable-imaginary-part-is-seen-both-ways
+  "The imaginary part of a root sqrt(x), x of either sign, is positive at some admissible
+points and zero at others: > 0 is undecidable, and DECIDE answers :UNKNOWN; under x > 0
+it is zero everywhere, and > 0 is never answered :TRUE."
+  (call-with-bridge
+   (lambda (b)
+     (let ((relation '(> (* (sqrt 3) (sin (/ (atan 0 x) 2))) 0)))
+       (ames.maxima:with-assumptions (b '((> y 0)))
+         (is (eq :unknown (ames.algebra:decide b relation))))
+       (ames.maxima:with-assumptions (b '((> x 0)))
+         (is (not (eq :true (ames.algebra:decide b relation)))))))))
