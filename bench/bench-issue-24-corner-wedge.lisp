@@ -31,6 +31,13 @@
 ;;;;   wedge, run / report             318 / 64 trips       the same, Maxima 0.60 / 0.16 s CPU
 ;;;;   corner --numeric, run           2882 trips  7.7 s    2834 trips  7.8 s  (Maxima CPU)
 ;;;;   corner --numeric, text report   1031 trips  3.0 s    1031 trips  3.3 s
+;;;;
+;;;; Figures of 2026-11-26 (branch forks against main 68e2679, load average ~25; see
+;;;; bench/results-issue-24-forks.txt):
+;;;;                                   main                 forks
+;;;;   corner --numeric, run           2972 trips  8.1 s    2349 trips  6.2 s  (Maxima CPU)
+;;;;   corner --numeric, text report   1031 trips  3.2 s     530 trips  1.3 s
+;;;;   corner --numeric, bin/ames wall 94.5 s               51.4 s (the same minutes)
 
 (defpackage #:ames.bench.corner-wedge
   (:use #:cl)

@@ -14,11 +14,13 @@ It asks Maxima only through the bridge.")
    #:relation-signs #:signs-relation #:relation-verdict
    ;; deciding (deciding.lisp)
    #:decide #:substitute-subexpressions #:holds-p #:*combined-bounds-wanted* #:sign-varies-p #:refuted-p
+   ;; a relation proven to contradict the facts in force (contradictions.lisp)
+   #:contradicts-facts-p
    ;; numbers before proofs (values.lisp)
    #:call-with-parameter-values #:with-parameter-values #:current-parameter-values
    #:value-truth #:decide-by-values #:facts-from-values
    ;; the values decide first (values-first.lisp)
-   #:call-with-values-first #:values-first-p #:decide-first-cheaply #:signs-refuted-by-values
+   #:call-with-values-first #:values-first-p #:decide-first-cheaply #:cheap-proof #:signs-refuted-by-values
    #:undecided-witnesses #:explain-undecided
    ;; roots (roots.lisp, trig-roots.lisp)
    #:earliest-root #:square-free-part #:earliest-trigonometric-root

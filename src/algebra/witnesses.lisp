@@ -42,13 +42,23 @@
         ((< (+ (ball-center ball) (ball-radius ball)) 0) :negative)
         (t nil)))
 
+(defun exact-zero-ball-p (ball)
+  "True when BALL is exactly zero (radius zero): what the exact zeros give (the number 0,
+sin 0, the angle of a point on the positive x axis, a product with an exact zero), with
+no rounding."
+  (and (zerop (ball-center ball)) (zerop (ball-radius ball))))
+
 (defun ball+ (a b)
-  (rounded-ball (+ (ball-center a) (ball-center b)) (+ (ball-radius a) (ball-radius b))))
+  (cond ((exact-zero-ball-p a) b)
+        ((exact-zero-ball-p b) a)
+        (t (rounded-ball (+ (ball-center a) (ball-center b)) (+ (ball-radius a) (ball-radius b))))))
 
 (defun ball-negation (a)
   (make-ball (- (ball-center a)) (ball-radius a)))
 
 (defun ball* (a b)
+  (when (or (exact-zero-ball-p a) (exact-zero-ball-p b))
+    (return-from ball* (make-ball 0d0 0d0)))
   (let ((x (ball-center a)) (rx (ball-radius a)) (y (ball-center b)) (ry (ball-radius b)))
     (rounded-ball (* x y) (+ (* (abs x) ry) (* (abs y) rx) (* rx ry)))))
 
@@ -81,7 +91,7 @@ is undefined or not real somewhere in A, and for the operators it does not know.
       (exp (rounded-ball (exp x) (* (exp x) (- (exp rx) 1))))
       (log (when (positive-ball-p a)
              (rounded-ball (log x) (- (log x) (log (- x rx))))))
-      (sin (rounded-ball (sin x) (min rx 2d0)))
+      (sin (if (exact-zero-ball-p a) (make-ball 0d0 0d0) (rounded-ball (sin x) (min rx 2d0))))
       (cos (rounded-ball (cos x) (min rx 2d0)))
       (tan (let ((c (cos x)))
              (when (> (abs c) (+ rx 1d-12))
@@ -93,8 +103,13 @@ is undefined or not real somewhere in A, and for the operators it does not know.
 
 (defun ball-atan2 (y x)
   "The angle of (X, Y) in (-pi, pi], or NIL when the balls reach the origin or the
-negative x axis, where it is not continuous."
+negative x axis, where it is not continuous; with Y exactly zero, exactly 0 for X
+surely positive and pi for X surely negative (Maxima's atan2(0, x))."
   (let ((cy (ball-center y)) (ry (ball-radius y)) (cx (ball-center x)) (rx (ball-radius x)))
+    (when (exact-zero-ball-p y)
+      (return-from ball-atan2
+        (cond ((> (- cx rx) 0) (make-ball 0d0 0d0))
+              ((< (+ cx rx) 0) (rounded-ball pi 0d0)))))
     (let ((distance (- (sqrt (+ (* cx cx) (* cy cy))) rx ry)))
       (when (and (> distance 0) (or (> (- cx rx) 0) (> (abs cy) ry)))
         (rounded-ball (atan cy cx) (/ (+ rx ry) distance))))))
@@ -105,7 +120,8 @@ double float, or -> ball for a whole box of points), or NIL where it is undefine
 real somewhere."
   (labels ((fail () (return-from expression-ball nil))
            (value (x)
-             (cond ((rationalp x) (let ((d (coerce x 'double-float)))
+             (cond ((eql x 0) (make-ball 0d0 0d0))
+                   ((rationalp x) (let ((d (coerce x 'double-float)))
                                     (rounded-ball d 0d0)))
                    ((floatp x) (make-ball (coerce x 'double-float) 0d0))
                    ((constant-symbol-p x) (rounded-ball pi 0d0))
@@ -144,7 +160,8 @@ real somewhere."
 
 (defun condition-truth (condition point)
   "Whether the relation or logical CONDITION surely holds at POINT: :TRUE, :FALSE, or NIL
-when that is not sure (= is never sure)."
+when that is not sure (= is never sure). An inequality whose sides' difference is
+exactly zero there (EXACT-ZERO-BALL-P) is sure: X > 0 fails, X >= 0 holds."
   (case (expression-operator condition)
     (not (case (condition-truth (second condition) point) (:true :false) (:false :true)))
     (and (let ((truths (mapcar (lambda (c) (condition-truth c point)) (expression-arguments condition))))
@@ -152,11 +169,16 @@ when that is not sure (= is never sure)."
     (or (let ((truths (mapcar (lambda (c) (condition-truth c point)) (expression-arguments condition))))
           (cond ((member :true truths) :true) ((every (lambda (x) (eq x :false)) truths) :false))))
     (t (let* ((difference (expression-ball (list '- (relation-lhs condition) (relation-rhs condition)) point))
-              (sign (and difference (ball-sign difference))))
+              (sign (and difference (if (exact-zero-ball-p difference)
+                                        (and (member (expression-operator condition) '(> >= < <=))
+                                             :zero)
+                                        (ball-sign difference)))))
          (when sign
            (ecase (expression-operator condition)
-             ((> >=) (if (eq sign :positive) :true :false))
-             ((< <=) (if (eq sign :negative) :true :false))
+             (> (if (eq sign :positive) :true :false))
+             (>= (if (member sign '(:positive :zero)) :true :false))
+             (< (if (eq sign :negative) :true :false))
+             (<= (if (member sign '(:negative :zero)) :true :false))
              (/= :true)
              (= :false)))))))
 

@@ -100,19 +100,46 @@ declared, quantity terms (a_x), other names, s, then tau."
    :negative-p (lambda (expression) (proven-sign-p presenter '< expression))
    :nonnegative-p (lambda (expression) (proven-sign-p presenter '>= expression))))
 
+(defvar *cheap-signs* nil
+  "True while PROVEN-SIGN-P asks only for a cheap proof (ames.algebra:CHEAP-PROOF): where
+a form is presented that no result depends on and whose terms' signs the full proof
+mostly fails on (the facts assumed from the given values).")
+
 (defun proven-sign-p (presenter relation expression)
   "True when the bridge proves (RELATION EXPRESSION 0) under the scenario's assumptions
-(remembered in PRESENTER's cache); false when it does not or cannot."
+(remembered in PRESENTER's cache); false when it does not or cannot. Under *CHEAP-SIGNS*,
+by a cheap proof only, and a failed one is not remembered (a full proof may still come)."
   (let ((key (list relation expression)))
     (multiple-value-bind (known found) (gethash key (presenter-cache presenter))
-      (if found
-          known
-          (setf (gethash key (presenter-cache presenter))
-                (handler-case (let ((ames.algebra:*combined-bounds-wanted* nil))
-                                ;; a form's arrangement is not worth the costliest proofs
-                                (ames.algebra:holds-p (presenter-bridge presenter)
-                                                      (list relation expression 0)))
-                  (ames.maxima:maxima-condition () nil)))))))
+      (cond (found known)
+            (*cheap-signs*
+             (let ((proven (handler-case (eq :true (ames.algebra:cheap-proof
+                                                    (presenter-bridge presenter)
+                                                    (list relation expression 0)))
+                             (ames.maxima:maxima-condition () nil))))
+               (when proven (setf (gethash key (presenter-cache presenter)) t))
+               proven))
+            (t (setf (gethash key (presenter-cache presenter))
+                     (handler-case (let ((ames.algebra:*combined-bounds-wanted* nil))
+                                     ;; a form's arrangement is not worth the costliest proofs
+                                     (ames.algebra:holds-p (presenter-bridge presenter)
+                                                           (list relation expression 0)))
+                       (ames.maxima:maxima-condition () nil))))))))
+
+(defun present-cheaply (presenter relation)
+  "RELATION presented (PRESENT-RELATION) with the signs of its terms asked of cheap proofs
+only (*CHEAP-SIGNS*), and without remembering the forms of its sides: for the facts
+assumed from the given values, whose terms' signs the full proofs mostly fail on."
+  (let ((*cheap-signs* t)
+        (cache (presenter-cache presenter))
+        (sides (and (consp relation) (relation-operator-p (first relation))
+                    (list (list (relation-lhs relation) nil) (list (relation-rhs relation) nil)))))
+    (let ((before (mapcar (lambda (key) (multiple-value-list (gethash key cache))) sides)))
+      (prog1 (present-relation presenter relation)
+        ;; a side presented here is presented again, with full proofs, where else it shows
+        (loop for key in sides
+              for (value found) in before
+              do (if found (setf (gethash key cache) value) (remhash key cache)))))))
 
 ;;; Rewrites the assumptions justify
 

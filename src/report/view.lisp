@@ -307,7 +307,7 @@ NUMBERS when it is not a number itself (a string, as the text report prints it),
                          collect (phrase (if (getf assumed :state)
                                              (format nil "at state ~D: " (getf assumed :state))
                                              "elsewhere in the run (the geometry, an impact): ")
-                                         (present-relation presenter (getf assumed :fact))))
+                                         (present-cheaply presenter (getf assumed :fact))))
           :ambiguity
           (when (typep stopped 'ambiguous-transition)
             (list :missing-fact (phrase (present-relation presenter (ambiguous-transition-missing-fact stopped)))

@@ -99,7 +99,8 @@ parameter's default value."
 with FACTS the assumptions the branch adds and S its scenario (the boundary's has a
 parameter substituted). They do not overlap: X > 0, X < 0 and X = 0 when there is a
 boundary branch, else FACT and its strict opposite. Alternatives the assumptions
-already exclude are left out."
+already exclude, or proven impossible under the facts in force (IMPOSSIBLE-FACT-P), are
+left out."
   (let* ((scenario (run-scenario run))
          (boundary
            (multiple-value-bind (parameter value)
@@ -107,7 +108,8 @@ already exclude are left out."
                     (boundary-substitution run fact))
              (when parameter
                (let ((facts (parameter-facts scenario parameter value)))
-                 (unless (some (lambda (f) (eq (decide run f) :false)) facts)
+                 (unless (or (some (lambda (f) (eq (decide run f) :false)) facts)
+                             (impossible-fact-p run `(= ,(relation-lhs fact) ,(relation-rhs fact))))
                    (let ((form (substituted-form (scenario-form scenario) parameter value)))
                      (handler-case
                          (list :assume `(= ,(relation-lhs fact) ,(relation-rhs fact))
@@ -118,7 +120,7 @@ already exclude are left out."
          (alternatives '()))
     ;; with a boundary branch of its own, the sides are strict (X >= 0 becomes X > 0)
     (dolist (side (list (if boundary (negated-fact (negated-fact fact)) fact) (negated-fact fact)))
-      (unless (eq (decide run side) :false)
+      (unless (or (eq (decide run side) :false) (impossible-fact-p run side))
         (push (list :assume side :facts (list side) :scenario scenario) alternatives)))
     (when boundary (push boundary alternatives))
     (nreverse alternatives)))
@@ -187,7 +189,9 @@ that fact: see ASSUMED-ON-THIS-PATH-P)."
                                   :final-velocities (run-velocities run)
                                   :missing-fact fact :fork t)))
         (note-rotation-held run fork)
-        (when (rest alternatives)
+        ;; one consistent outcome (the others proven impossible) is still a fork: its
+        ;; branch assumes the fact that the facts in force imply
+        (when alternatives
           (setf (state-branches fork)
                 (let ((*branching* (list :count (+ (getf *branching* :count 0) (length alternatives))
                                          :depth (1+ (getf *branching* :depth 0))

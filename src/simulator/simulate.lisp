@@ -165,6 +165,13 @@ noted in the history) for the rest of the run."
                    (when (and (scenario-branch (run-scenario run))
                               (fork run history index condition check-incremental))
                      (return-from run-states))
+                   ;; no fork (the tree is full, or no branching): an outcome the facts in
+                   ;; force imply (the others proven impossible) is assumed
+                   (let ((implied (assume-implied-fact run history index condition)))
+                     (when implied
+                       (return-from run-states
+                         (ames.maxima:with-assumptions ((run-bridge run) (list implied))
+                           (run-states run history index limit check-incremental)))))
                    (let ((fact (fact-from-values run (core-fact run (ambiguous-transition-missing-fact condition))
                                                  (history-parameter-values history))))
                      (when (or (null fact)
