@@ -116,7 +116,9 @@ contacts among POINTS count when they are penetrated."
   (let ((violations '())
         (active (active-contacts run)))
     (dolist (condition (ames.engine:model-termination-conditions (run-model run)))
-      (unless (eq (ames.engine:termination-condition-kind condition) :activation)
+      ;; a watch compares the motion with the state's own start (its direction), so it
+      ;; holds at no start: not tested here (its state constants need the solved start)
+      (unless (member (ames.engine:termination-condition-kind condition) '(:activation :watch))
         (multiple-value-bind (verdict fact)
             (fires-at-once run solved (ames.engine:termination-condition-relation condition))
           (unless (eq verdict :false)
