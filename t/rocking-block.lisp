@@ -78,3 +78,35 @@ malformed."
   (signals ames.engine:component-definition-error
     (ames.engine::parse-component 'watching "A watch." '((:arguments (?b :entity body))
                                                         (:watch (< (angvel ?b) 0))))))
+
+(defparameter *block-spun-at-one*
+  "(scenario block-spun-at-one
+     \"The rocking block set turning at w0 = 1: its turning angle is a root of a quadratic in
+its half-angle tangent with irrational coefficients.\"
+     (gravity 981/100)
+     (body floor :fixed t :shape (half-plane (1 0) (0 0)))
+     (body block :mass 1 :inertia :uniform :position (0 1) :velocity (1 1/2) :angular-velocity -1
+                 :shape (polygon (-1/2 -1) (1/2 -1) (1/2 1) (-1/2 1)))
+     (friction block floor :static 1)
+     (simulate :states 2))"
+  "The block of scenarios/block-rocking-on-an-edge.lisp set turning at w0 = 1.")
+
+(test block-spun-at-one-turns-where-its-energy-says
+  "At w0 = 1 the first turning angle (no rational sine) still balances the energy, and the
+block falls back onto its face at the speed it started with (the order of the next
+state's events needs the roots of a quadratic with irrational coefficients: its earliest
+positive root, not the other one)."
+  (with-fixture simulator-bridge ()
+    (let ((scenario (first (ames:read-scenarios-from-string *block-spun-at-one*))))
+      (multiple-value-bind (history states) (run-of scenario bridge)
+        (is (eq :state-limit (ames::history-outcome history)))
+        (is (= 2 (length states)))
+        (when (= 2 (length states))
+          (destructuring-bind (rise back) states
+            (flet ((final (state accessor) (second (assoc 'block (funcall accessor state) :test #'same-name-p*))))
+              (is (same-name-p* 'turns (first (ames::state-end-event rise))))
+              (is-same bridge "energy at the turning point"
+                       (rocking-energy-balance 1 (final rise #'ames::state-final-angles) 1) 0)
+              (is (same-name-p* 'collision (first (ames::state-end-event back))))
+              (is-same bridge "back on its face" (final back #'ames::state-final-angles) 0)
+              (is-same bridge "the speed it started with" (final back #'ames::state-final-angular-velocities) 1))))))))
