@@ -213,6 +213,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "numeric-roots")
                  (:file "numeric-angle-roots")
                  (:file "angle-intervals")
+                 (:file "corner-snapping")
                  (:file "states")
                  (:file "impacts")
                  (:file "simulate")

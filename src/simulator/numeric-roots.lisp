@@ -354,4 +354,7 @@ positions put exactly on the contacts reached (SNAP-ONTO-CONTACTS)."
                                                          (vector time))))
                                              (body-motion run groups body what)))))
                          (body-names run))))
-    (if (eq what :pos) (snap-onto-contacts run values fired) values)))
+    (if (eq what :pos)
+        (snap-corners-onto-faces run (snap-onto-contacts run values fired)
+                                 (rotation-final-values run groups fired 'ames.kb:angle))
+        values)))
