@@ -89,8 +89,12 @@ SNAP-CORNER-VELOCITIES)."
   (let ((values (unsnapped-final-values run groups fired what)))
     (cond ((notany (lambda (group) (eq (group-kind group) :numeric)) groups) values)
           ((eq what :pos)
-           (snap-corners-onto-faces run (snap-onto-contacts run values fired) ; numeric-roots.lisp
-                                    (rotation-final-values run groups fired 'ames.kb:angle))) ; corner-snapping.lisp
+           (let ((values (snap-onto-contacts run values fired))) ; numeric-roots.lisp
+             (if (run-rotations run)
+                 (snap-corners-onto-faces run values ; corner-snapping.lisp
+                                          (rotation-final-values run groups fired 'ames.kb:angle))
+                 values)))
+          ((null (run-rotations run)) values)
           (t (snap-corner-velocities run values (final-values run groups fired :pos)
                                      (rotation-final-values run groups fired 'ames.kb:angle)
                                      (rotation-final-values run groups fired 'ames.kb:angvel))))))
