@@ -33,7 +33,7 @@ face, or from a face's end, and still be put exactly on it.")
   (let ((v (ignore-errors (expression-value x (and (run-numbers-known-p run) (numeric-bindings run))))))
     (and (realp v) (coerce v 'double-float))))
 
-(defun corner-snap-conditions (run body theta position)
+(defun corner-snap-conditions (run body theta position &optional leaving)
   "The near conditions G(x, y) of the rotating BODY at angle THETA and POSITION (X Y)
 (see the file header): a list of (G . VALUE), G over (pos BODY :x) and (pos BODY :y),
 VALUE its double at POSITION; second value the tolerance; third, the gaps among them as
@@ -46,8 +46,8 @@ the geometry writes them (over the position and (angle BODY))."
          (conditions '()) (gaps '()))
     (flet ((at-angle (x) (substitute-expressions (list (cons `(ames.kb:angle ,body) theta)) x))
            (value (x) (snap-number run (substitute-expressions bindings x))))
-      (loop for (nil observer nil . geometry) in (run-corner-contacts run)
-            when (eq observer body)
+      (loop for (name observer nil . geometry) in (run-corner-contacts run)
+            when (and (eq observer body) (not (member name leaving)))
               do (let* ((gap (at-angle (ames.geometry:rotating-contact-gap geometry)))
                         (margins (mapcar (lambda (r) (at-angle (extent-margin r)))
                                          (ames.geometry:contact-extent-relations geometry)))
@@ -116,17 +116,32 @@ arithmetic; NIL when some expression is not affine in X and Y."
                    from to)))
     (and (every #'realp d) (sqrt (+ (expt (first d) 2) (expt (second d) 2))))))
 
-(defun snap-corners-onto-faces (run positions angles)
+(defun leaving-contacts (fired)
+  "The contact entities that FIRED candidates end by a force, not by the geometry: a
+corner whose normal force turns attractive lifts off (its relation speaks of no position
+or angle). Such a corner leaves its face at the state's end: it is not put back on it
+(its gap is 0 and so is its normal force, and the next state could not decide whether it
+still touches)."
+  (loop for candidate in fired
+        for condition = (candidate-condition candidate)
+        when (and condition (eq (ames.engine:termination-condition-kind condition) :deactivation)
+                  (notany #'state-quantity-p
+                          (expression-variables (ames.engine:termination-condition-relation condition))))
+          collect (let ((key (ames.engine:termination-condition-instance condition)))
+                    (and (consp key) (second key)))))
+
+(defun snap-corners-onto-faces (run positions angles &optional fired)
   "POSITIONS (an alist body -> (X Y)) with each rotating body whose corners are within
 *CORNER-SNAP-TOLERANCE* of a face or a face's end, at its angle in ANGLES (an alist body
 -> (THETA)), moved exactly onto them (see the file header), when it moves no further than
-that tolerance; the others as they are."
+that tolerance; the others as they are. The contacts the FIRED candidates lift off
+(LEAVING-CONTACTS) are not snapped."
   (mapcar (lambda (entry)
             (destructuring-bind (body position) entry
               (let ((theta (second (assoc body angles))))
                 (or (and theta (not (body-fixed-p run body))
                          (multiple-value-bind (conditions tolerance)
-                             (corner-snap-conditions run body theta position)
+                             (corner-snap-conditions run body theta position (leaving-contacts fired))
                            (let ((snapped (and conditions (snapped-position run body conditions position))))
                              (and snapped
                                   (let ((moved (distance-moved run snapped position)))
@@ -134,7 +149,7 @@ that tolerance; the others as they are."
                     entry))))
           positions))
 
-(defun snap-corner-velocities (run velocities positions angles omegas)
+(defun snap-corner-velocities (run velocities positions angles omegas &optional fired)
   "VELOCITIES (an alist body -> (VX VY)) with each rotating body's velocity changed the
 least that makes the rate of every gap of a corner touching a face (at its exact
 POSITIONS, ANGLES and angular velocities OMEGAS, alists body -> value) exactly 0 where
@@ -147,7 +162,8 @@ arithmetic. A rate further from 0 (a corner striking its face) is left as it is.
                     (omega (second (assoc body omegas)))
                     (position (second (assoc body positions))))
                 (or (and theta omega position (not (body-fixed-p run body))
-                         (let* ((gaps (nth-value 2 (corner-snap-conditions run body theta position)))
+                         (let* ((gaps (nth-value 2 (corner-snap-conditions run body theta position
+                                                                             (leaving-contacts fired))))
                                 (tolerance (* *corner-snap-tolerance*
                                               (max 1d0 (or (ignore-errors (sqrt (+ (expt (snap-number run (first velocity)) 2)
                                                                                     (expt (snap-number run (second velocity)) 2))))

@@ -357,5 +357,5 @@ positions put exactly on the contacts reached (SNAP-ONTO-CONTACTS)."
     (cond ((not (eq what :pos)) values)
           ((run-rotations run)
            (snap-corners-onto-faces run (snap-onto-contacts run values fired)
-                                    (rotation-final-values run groups fired 'ames.kb:angle)))
+                                    (rotation-final-values run groups fired 'ames.kb:angle) fired))
           (t (snap-onto-contacts run values fired)))))

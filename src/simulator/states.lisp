@@ -92,12 +92,12 @@ SNAP-CORNER-VELOCITIES)."
            (let ((values (snap-onto-contacts run values fired))) ; numeric-roots.lisp
              (if (run-rotations run)
                  (snap-corners-onto-faces run values ; corner-snapping.lisp
-                                          (rotation-final-values run groups fired 'ames.kb:angle))
+                                          (rotation-final-values run groups fired 'ames.kb:angle) fired)
                  values)))
           ((null (run-rotations run)) values)
           (t (snap-corner-velocities run values (final-values run groups fired :pos)
                                      (rotation-final-values run groups fired 'ames.kb:angle)
-                                     (rotation-final-values run groups fired 'ames.kb:angvel))))))
+                                     (rotation-final-values run groups fired 'ames.kb:angvel) fired)))))
 
 (defun unsnapped-final-values (run groups fired what)
   "FINAL-VALUES before the positions are put on the contacts reached."
