@@ -243,7 +243,8 @@ refuses with an error (not a timeout), is :UNKNOWN."
                          (:true (return :true))
                          (:unknown (setf result :unknown))
                          (:false)))))
-               (t (let ((answer (handler-case (decide-relation bridge condition)
+               (t (let ((answer (handler-case (or (constant-relation-by-intervals condition)
+                                                  (decide-relation bridge condition))
                                   ;; the reasoning's own arithmetic met a division by a
                                   ;; literal zero (the relation is undefined): nothing is proven
                                   (arithmetic-error () :unknown)

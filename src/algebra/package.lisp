@@ -12,6 +12,8 @@ It asks Maxima only through the bridge.")
    #:+all-signs+ #:number-signs #:negated-signs #:only-signs-p #:sum-signs #:power-signs #:sign-product
    #:constant-sign #:rules-of-signs
    #:relation-signs #:signs-relation #:relation-verdict
+   ;; interval arithmetic (intervals.lisp)
+   #:interval-value #:positive-over-interval-p #:constant-relation-by-intervals
    ;; deciding (deciding.lisp)
    #:decide #:substitute-subexpressions #:holds-p #:*combined-bounds-wanted* #:sign-varies-p #:refuted-p
    ;; a relation proven to contradict the facts in force (contradictions.lisp)

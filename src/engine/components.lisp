@@ -59,6 +59,8 @@ PARSE-COMPONENT or DEFCOMPONENT."
   (activation-event nil)                  ; an EVENT-SPEC or NIL
   (deactivation-relations '() :type list) ; termination conditions
   (deactivation-events '() :type list)    ; an EVENT-SPEC or NIL for each of them
+  (watch-relations '() :type list)        ; termination conditions that change nothing
+  (watch-events '() :type list)           ; the EVENT-SPEC of each of them
   (assertions '() :type list)             ; in every mode
   (equations '() :type list)              ; in every mode
   (modes '() :type list)

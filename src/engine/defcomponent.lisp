@@ -8,6 +8,7 @@
 ;;;;       (:arguments ARGUMENT...)
 ;;;;       (:activation CONDITION... [(:event EVENT [:impact EVENT])] | :always)
 ;;;;       (:deactivation RELATION-OR-EVENT-CONDITION... | :never)
+;;;;       (:watch (:when RELATION :event EVENT) ...)   ; events that change no decision
 ;;;;       (:assert PATTERN...)             ; qualitative assertions, in every mode
 ;;;;       (:equations EQUATION...)         ; quantitative assertions, in every mode
 ;;;;       (:mode MODE-NAME                 ; zero or more modes, mutually exclusive, listed
@@ -65,7 +66,14 @@
 ;;;;   (acc ?b :y) are quantity terms. A template form may also stand alone for the whole
 ;;;;   relation or equation: (:activation (on-contact ?c)).
 ;;;;
-;;;;   Deactivation and transition relations are termination conditions: the engine never
+;;;;   A watch is a termination condition of an active instance that ends the state with its
+;;;;   EVENT and changes no decision of the model (no mode to leave, nothing deactivated):
+;;;;   the next state has the same model, started from the new positions and velocities,
+;;;;   and what its relation reads of the state's start (a state constant) is the new
+;;;;   start's. A turning point is one (kb/rotation-turning.lisp): the angular velocity
+;;;;   changes sign relative to the direction the state starts turning in.
+;;;;
+;;;;   Deactivation, watch and transition relations are termination conditions: the engine never
 ;;;;   decides them; they are tested on the solved model, so they may mention quantities
 ;;;;   that are not state variables (a normal force).
 ;;;;
@@ -101,6 +109,7 @@
     (:arguments ARGUMENT...)
     (:activation CONDITION... [(:event EVENT [:impact EVENT])] | :always)
     (:deactivation RELATION-OR-EVENT-CONDITION... | :never)
+    (:watch (:when RELATION :event EVENT) ...)
     (:assert PATTERN...) (:equations EQUATION...)
     (:mode MODE-NAME (:entry CONDITION...) (:assert PATTERN...) (:equations EQUATION...)
       (:transition :to MODE-NAME :when RELATION [:event EVENT] [:impact EVENT]) ...) ...)

@@ -260,7 +260,7 @@ grammar). Signals COMPONENT-DEFINITION-ERROR naming the clause at fault."
   (unless (proper-list-p sections)
     (definition-error name sections "The sections must form a proper list."))
   (let* ((parts (split-sections name sections
-                                '(:arguments :activation :deactivation :assert :equations :mode)
+                                '(:arguments :activation :deactivation :watch :assert :equations :mode)
                                 :repeatable '(:mode)))
          (arguments '()) (bound '()) (declared '()))
     (when (section :arguments parts)
@@ -285,6 +285,8 @@ grammar). Signals COMPONENT-DEFINITION-ERROR naming the clause at fault."
          (let ((modes (loop for clause in (cdr (assoc :mode parts))
                            collect (parse-mode name clause key-bound all-bound collections))))
           (check-modes name modes (cdr (assoc :mode parts)))
+          (multiple-value-bind (watch-relations watch-events)
+              (parse-watches name (section :watch parts) all-bound collections)
           (%make-component
            :name name :documentation documentation :arguments arguments
            :activation-beliefs activation-beliefs
@@ -292,10 +294,25 @@ grammar). Signals COMPONENT-DEFINITION-ERROR naming the clause at fault."
            :activation-event activation-event
            :deactivation-relations deactivation-relations
            :deactivation-events deactivation-events
+           :watch-relations watch-relations :watch-events watch-events
            :assertions (parse-assertions name (section :assert parts) key-bound collections)
            :equations (parse-equations name (section :equations parts) all-bound)
            :modes modes
-           :definition sections)))))))
+           :definition sections))))))))
+
+(defun parse-watches (name section bound collections)
+  "Parse a :WATCH section, items (:WHEN RELATION :EVENT TEMPLATE): (values RELATIONS
+EVENT-SPECS), one of each per item (none when SECTION is NIL, absent). A watch names
+its event: it changes nothing in the model, so the event is all it stands for."
+  (multiple-value-bind (beliefs relations events)
+      (parse-conditions name section bound collections :allow-events :deactivation)
+    (declare (ignore beliefs))
+    (loop for event in events
+          for item in (section-body name section)
+          unless (and event (event-spec-event event))
+            do (definition-error name item "A watch is (:WHEN RELATION :EVENT TEMPLATE)."
+                                 section))
+    (values relations events)))
 
 (defun check-modes (name modes clauses)
   "Check MODES (parsed from CLAUSES) together: unique names, transitions to other

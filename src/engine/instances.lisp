@@ -212,14 +212,15 @@ Signals ENGINE-ERROR when MODEL has no node for DATUM."
 (defstruct (termination-condition (:constructor make-termination-condition
                                       (kind instance relation change &optional event impact)))
   "A condition under which the state's model stops being valid: KIND is
-:DEACTIVATION, :MODE-TRANSITION or :ACTIVATION; INSTANCE the instance's key;
+:DEACTIVATION, :MODE-TRANSITION, :ACTIVATION or :WATCH; INSTANCE the instance's key;
 RELATION the expanded relation in the prefix algebra; CHANGE what it stands for,
 to give APPLY-TRANSITION when it fires: (:deactivate KEY), (:activate KEY) or
-(:mode KEY :from MODE :to MODE). EVENT is the event the owning component says the
+(:mode KEY :from MODE :to MODE), NIL for a watch (it ends the state with its event and
+changes no decision: the next state is the same model from its new start). EVENT is the event the owning component says the
 condition is, its variables replaced, e.g. (:lift-off particle sphere), or NIL when
 the component names none; IMPACT the event it is instead when it is reached at a
 non-zero rate (an impulsive event), or NIL."
-  (kind nil :type (member :deactivation :mode-transition :activation))
+  (kind nil :type (member :deactivation :mode-transition :activation :watch))
   (instance nil)
   (relation nil)
   (change nil)

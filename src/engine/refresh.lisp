@@ -239,8 +239,8 @@ templates with INSTANCE's bindings and collections substituted. Two values."
 
 (defun model-termination-conditions (model)
   "The termination conditions of MODEL's state, as TERMINATION-CONDITION objects:
-the deactivation conditions and the current mode's transition conditions of every
-active instance, and the activation condition (a conjunction) of every qualified
+the deactivation conditions, watches and the current mode's transition conditions of
+every active instance, and the activation condition (a conjunction) of every qualified
 instance that is not active. Relations are expanded for the instance; each carries
 the event its component names for it."
   (let ((conditions '()))
@@ -254,6 +254,13 @@ the event its component names for it."
                           (push (make-termination-condition
                                  :deactivation key (expanded-relation model instance template)
                                  (list :deactivate key) event impact)
+                                conditions)))
+               (loop for template in (component-watch-relations component)
+                     for spec in (component-watch-events component)
+                     do (multiple-value-bind (event impact) (instance-event instance spec)
+                          (push (make-termination-condition
+                                 :watch key (expanded-relation model instance template)
+                                 nil event impact)
                                 conditions)))
                (let ((mode (instance-mode instance)))
                  (when mode

@@ -97,7 +97,8 @@ as RESTING-FACE-FRICTION says."
                  (* (friction-force ?contact) (corner-tangent ?contact :y))))
   (:mode :static
    (:entry (= (corner-slip-speed ?contact) 0))
-   (:assert (reported :forces (:friction ?body1 ?body2 (friction-force ?contact) :mode :static)))
+   (:assert (reported :forces (:friction ?body1 ?body2 (friction-force ?contact) :mode :static))
+            (corner-sticks ?body1 ?body2 :at ?contact))
    (:equations (= (corner-slip-acc ?contact) 0))
    (:transition :to :sliding-backward
                 :when (> (friction-force ?contact) (* ?mu-s (normal-force ?contact)))

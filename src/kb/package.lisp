@@ -57,6 +57,8 @@ syntax in src/scenario/.")
    #:kinetic-energy #:momentum #:potential-energy #:pressing #:taut
    ;; rotation (rotation.lisp): a rotating body's state variables and what it reports
    #:angle #:angvel #:angacc #:moment #:acts-at #:rotational-energy #:angular-momentum
+   ;; the direction a rotating body starts turning in over a state (turning.lisp)
+   #:initial-turn
    ;; corners of rotating polygons and segments on fixed faces (corners.lisp)
    #:corner-contact #:resting-face
    #:unmodelled-situation))

@@ -108,14 +108,35 @@ sin, cos or tan, radcan only when it has radicals, logarithms or exponentials (o
 they equal the ratsimp one)."
   (let* ((candidates (mlist-items
                       (maxima-request bridge (simplest-form-request form) :datum expression)))
-         (best nil))
+         (best nil)
+         (reference :unset))
     (dolist (candidate candidates)
       (let ((translated (handler-case (from-mx bridge candidate)
                           (untranslatable-result () nil))))
+        (when (eq reference :unset)
+          (setf reference (and translated (constant-number translated))))
         (when (and translated
+                   (same-number-p reference translated)
                    (or (null best) (< (expression-size translated) (expression-size best))))
           (setf best translated))))
     (or best (real-form bridge form expression) (from-mx bridge (first candidates)))))
+
+(defun constant-number (expression)
+  "EXPRESSION's value as a double when it is a real number written without names (only
+numbers, PI and functions of them), else NIL."
+  (and (null (expression-variables expression))
+       (let ((value (ignore-errors (expression-value expression))))
+         (and (realp value) (coerce value 'double-float)))))
+
+(defun same-number-p (reference expression)
+  "True unless REFERENCE (a double, the value of the first simplification of a number)
+and EXPRESSION's value (another simplification's) are both known and differ beyond
+rounding: radcan() takes sqrt(x^2) for x whatever the sign of x, so a number it rewrites
+can change sign (a root of a quadratic whose leading coefficient is a negative number
+written with sin and atan became the other root); such a simplification is dropped."
+  (let ((value (and reference (constant-number expression))))
+    (or (null value)
+        (<= (abs (- value reference)) (* 1d-9 (max 1d0 (abs reference)))))))
 
 (defun mentions-imaginary-unit-p (form)
   "True when the Maxima FORM contains %i."

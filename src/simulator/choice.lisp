@@ -116,7 +116,9 @@ contacts among POINTS count when they are penetrated."
   (let ((violations '())
         (active (active-contacts run)))
     (dolist (condition (ames.engine:model-termination-conditions (run-model run)))
-      (unless (eq (ames.engine:termination-condition-kind condition) :activation)
+      ;; a watch compares the motion with the state's own start (its direction), so it
+      ;; holds at no start: not tested here (its state constants need the solved start)
+      (unless (member (ames.engine:termination-condition-kind condition) '(:activation :watch))
         (multiple-value-bind (verdict fact)
             (fires-at-once run solved (ames.engine:termination-condition-relation condition))
           (unless (eq verdict :false)
@@ -134,8 +136,12 @@ contacts among POINTS count when they are penetrated."
               (if contact
                   (penetrates-at-once run solved contact active)
                   (fires-at-once run solved
-                                 (let ((relations (ames.engine:choice-point-relations point)))
-                                   (if (rest relations) (cons 'and relations) (first relations)))))
+                                 ;; the whole activation condition: a corner on a face's
+                                 ;; line exactly at the face's end (decided within it at the
+                                 ;; start) enters only if it does not move out of the face
+                                 (or (activation-relation run key)
+                                     (let ((relations (ames.engine:choice-point-relations point)))
+                                       (if (rest relations) (cons 'and relations) (first relations))))))
             (unless (eq verdict :false)
               (push (list key verdict fact (list :penetrates contact)) violations))))
         (when (and (eq (ames.engine:choice-point-kind point) :activation)
@@ -144,6 +150,15 @@ contacts among POINTS count when they are penetrated."
             (when relation
               (push (list key :true relation (list :departs key)) violations))))))
     (nreverse violations)))
+
+(defun activation-relation (run key)
+  "The activation condition (a conjunction of all its relations, those decided at the
+start too) of the inactive instance KEY in the current model, or NIL."
+  (let ((condition (find-if (lambda (c)
+                              (and (eq (ames.engine:termination-condition-kind c) :activation)
+                                   (equal (ames.engine:termination-condition-instance c) key)))
+                            (ames.engine:model-termination-conditions (run-model run)))))
+    (and condition (ames.engine:termination-condition-relation condition))))
 
 (defun degeneracies (run solved points)
   "How degenerate the current assignment is: the active touching contacts whose every

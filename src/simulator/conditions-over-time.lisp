@@ -65,7 +65,27 @@ state terms."
         ((eq (first term) 'ames.kb:contact-gap)
          (ames.geometry:meeting-gap (contact-meeting-terms run solved (second term))))
         ((state-constant-term-p term) (with-initial-positions run term))
+        ((eq (first term) 'ames.kb:initial-turn) (initial-turn run solved (second term)))
         (t (quantity-value solved term))))
+
+(defun initial-turn (run solved body)
+  "The direction BODY starts turning in over the state, the state constant (initial-turn
+BODY): 1 or -1, the sign of the first derivative of its angular velocity that is not
+zero at the start (omega0, else the angular acceleration, ...: the leading term of its
+local series), 0 when every one is (it does not turn). Signals AMBIGUOUS-TRANSITION
+with the missing fact when the assumptions leave that sign open."
+  (multiple-value-bind (signs coefficient)
+      (leading-sign-of run solved `(ames.kb:angvel ,body))
+    (case (one-sign signs)
+      (:positive 1)
+      (:negative -1)
+      (:zero 0)
+      (t (or (open-sign-question run coefficient
+                                 (format nil "the direction ~A starts turning in" body))
+             (error 'unsupported-situation
+                    :datum body
+                    :detail (format nil "The direction ~A starts turning in, the sign of ~S, ~
+                                         is not decided." body coefficient)))))))
 
 (defun over-state-terms (run solved expression)
   "EXPRESSION with every quantity term written over SOLVED's state terms."

@@ -140,6 +140,15 @@ fails is passed, the search going on from it (up to four)."
   "FUNCTION of TAU, 1 up to FROM: a search for its next crossing after FROM."
   (lambda (time) (if (<= time from) 1d0 (funcall function time))))
 
+(defun start-touching-crossing-p (gap crossing)
+  "True when the CROSSING found of GAP (a function of TAU) is the touching the state
+starts with: GAP is 0 at TAU = 0 (a corner left exactly at a face's end by the state
+before, put there exactly: corner-snapping.lisp) and the crossing is the round-off of
+that zero, before 1e-12. The start's choice search has decided that touching (the
+corner does not enter the face: it moves out past its end): it is no event."
+  (let ((start (funcall gap 0d0)))
+    (and start (<= (abs start) 1d-15) (< crossing 1d-12))))
+
 (defun guarded-numeric-crossing (run solved groups condition rate step until)
   "For CONDITION, a guarded conjunction over closed-form motion whose crossing has no
 closed form: the first TAU (up to UNTIL, sampled every STEP, or on the geometric grid
@@ -166,7 +175,8 @@ going on once the gap is positive again (up to eight crossings). RATE is the gap
       (loop repeat 8
             do (let ((crossing (funcall search (if from (masked-after gap from) gap) rate)))
                  (cond ((null crossing) (return nil))
-                       ((every (lambda (m) (let ((x (funcall m crossing))) (and x (>= x -1d-9)))) margins)
+                       ((and (every (lambda (m) (let ((x (funcall m crossing))) (and x (>= x -1d-9)))) margins)
+                             (not (start-touching-crossing-p gap crossing)))
                         (return crossing))
                        (t (let ((back (funcall search (masked-after (funcall negated gap) crossing)
                                                (funcall negated rate))))

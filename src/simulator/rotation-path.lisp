@@ -175,9 +175,11 @@ the order of two event times (recorded as assumed from them)."
                                                          (group-s0 group) (group-direction group))
           (ames.maxima:maxima-error () (values :unknown nil)))
       (when (eq root :unknown)
-        ;; no proven root: under parameter values, searched with numbers
+        ;; no proven root: under parameter values, searched with numbers; none found,
+        ;; proven positive up to the turning point by intervals (angle-intervals.lisp)
         (let ((found (numeric-angle-root run group function)))
-          (when found (setf root found))))
+          (cond (found (setf root found))
+                ((positive-before-turning-p run group function) (setf root :none)))))
       (case root
         (:none (values :never))
         (:unknown (values :unknown (or status `(:roots-of (= ,function 0)))))
