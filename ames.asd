@@ -52,6 +52,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "angles")
                  (:file "witnesses")
                  (:file "constant-zero")
+                 (:file "round-off")
                  (:file "deciding")
                  (:file "orders")
                  (:file "square-orders")
