@@ -22,7 +22,9 @@
 EXPRESSION-VALUE takes them) is relative to: for a sum or difference, the sum of its
 terms' scales; for a product, their product; for a quotient, the numerator's scale over
 the denominator's size; for a power with a non-negative constant exponent, the base's
-scale to that power; else the size of the value. NIL when a value is not real."
+scale to that power; for a sine or cosine, its size plus its argument's scale (an error
+in the argument moves it by as much), for an exponential its size times one plus its
+argument's scale; else the size of the value. NIL when a value is not real."
   (labels ((size (x) (let ((v (expression-value x bindings))) (and (realp v) (abs v))))
            (scale (x)
              (if (atom x)
@@ -41,6 +43,11 @@ scale to that power; else the size of the value. NIL when a value is not real."
                              (if (and (realp exponent) (>= exponent 0) base)
                                  (expt (float base 1d0) exponent)
                                  (size x))))
+                     ;; an argument's round-off moves these by as much times the slope
+                     ((sin cos) (let ((s (scale (first arguments))) (v (size x)))
+                                  (and s v (+ v s))))
+                     (exp (let ((s (scale (first arguments))) (v (size x)))
+                            (and s v (* v (+ 1 s)))))
                      (t (size x))))))
            (sum-of (scales) (and (every #'realp scales) (reduce #'+ scales)))
            (product-of (scales) (and (every #'realp scales) (reduce #'* scales))))
