@@ -364,6 +364,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "witness-crosscheck")
                (:file "witness-hinged")
                (:file "witness-refusals")
+               (:file "witness-refusals-roots")
                (:file "leftward-arcs")
                (:file "trust-fresh")
                (:file "trust-fresh-impacts")

@@ -12,10 +12,15 @@
 ;;;;
 ;;;; ROUND-OFF-SCALE bounds the magnitude the round-off of a double evaluation is relative
 ;;;; to (sums add their terms' magnitudes, products multiply them); a value within
-;;;; *ROUND-OFF-DIFFERENCE* of it is no sign. CONSTANT-ZERO-SIGNS decides such a constant
+;;;; *FLOAT-ROUND-OFF* of it is no sign. CONSTANT-ZERO-SIGNS decides such a constant
 ;;;; exactly (EXACTLY-ZERO-P, constant-zero.lisp) or leaves its sign open, never the float's.
 
 (in-package #:ames.algebra)
+
+(defparameter *float-round-off* 1d-12
+  "A double value within this of its ROUND-OFF-SCALE (relative) may be round-off of an
+exact zero (a few thousand units in the last place: the terms' own errors added up);
+beyond it, its sign is the float's.")
 
 (defun round-off-scale (expression &optional bindings)
   "A magnitude the round-off of EXPRESSION's double value (under BINDINGS, as
@@ -55,13 +60,13 @@ argument's scale; else the size of the value. NIL when a value is not real."
       (and (realp s) (float s 1d0)))))
 
 (defun zero-to-round-off-p (expression &optional bindings)
-  "True when EXPRESSION's double value (under BINDINGS) is within *ROUND-OFF-DIFFERENCE*
+  "True when EXPRESSION's double value (under BINDINGS) is within *FLOAT-ROUND-OFF*
 of its ROUND-OFF-SCALE: its sign is beyond what the float can tell. NIL when its value is
 not real or is exact (a rational is its own sign)."
   (multiple-value-bind (value exact) (expression-value expression bindings)
     (and (realp value) (not exact)
          (let ((scale (round-off-scale expression bindings)))
-           (and scale (<= (abs value) (* *round-off-difference* (max scale least-positive-normalized-double-float))))))))
+           (and scale (<= (abs value) (* *float-round-off* (max scale least-positive-normalized-double-float))))))))
 
 (defun constant-zero-signs (bridge expression)
   "For a constant EXPRESSION (no variables) whose double value is zero to round-off
