@@ -116,3 +116,30 @@ Jn = m v / (1 + 3 c^2 - 3 mu s c) = 5 m v / 11, Jt = mu Jn = 5 m v / 22 inward."
   "mu = 1 >= 9/13: the end sticks; Jn = m v (1 + 3 s^2) / 4 = 13 m v / 25 and the
 friction Jx = 3 s c m v / 4 = 9 m v / 25 (within mu Jn)."
   (rod-impact-check "1" 9/25 13/25))
+
+(test self-check-steps-no-finer-than-the-rates-round-off
+  "y' = 1 computed as the small difference of terms of 1e9 (a rope's tension near its
+pulley, from the expanded formula: terms of 1e9 for a result of 1e3) has a round-off of
+1e-7 that changes at random with y: the step-doubling estimate of a step's error is then
+about h 1e-8, and a tolerance of 1e-13 per step asks steps of 1e-5 and fewer (the incline
+pulley crawled at 1,500 steps a second to the 120 s limit): 2,000 steps do not reach
+tau = 1. With the rates' round-off scale (*RATE-SCALES*, here 1e9: ROUND-OFF-FORM gives
+it from the terms) a step is not asked to do better than that round-off: tau = 1 is
+reached within the 2,000 steps, at y = 1 within 1e-6, and the error allowed beyond the
+tolerance is counted (*ERROR-SUM* > 0: the check reports such a state unchecked rather
+than compare it to 1e-8). ROUND-OFF-FORM adds the sizes of a sum's terms."
+  (let* ((rates (lambda (y time)
+                  (declare (ignore time))
+                  (vector (+ 1 (* 1d-7 (/ (- (mod (* 7919 (sxhash (svref y 0))) 1001) 500) 500))))))
+         (ames.check::*step-limit* 2000))
+    (signals ames.check::integration-failed
+      (ames.check:integrate-rk4 rates (vector 0d0) 0d0 1d0))
+    (let ((ames.check::*rate-scales* (lambda (y time) (declare (ignore y time)) (vector 1d9)))
+          (ames.check::*error-sum* 0d0))
+      (let ((y (ames.check:integrate-rk4 rates (vector 0d0) 0d0 1d0)))
+        (is (< (abs (- (svref y 0) 1)) 1d-6) "~S" y)
+        (is (plusp ames.check::*error-sum*)))))
+  (is (= 2000000003d0 (funcall (ames.check:compile-numeric
+                                (ames.check::round-off-form '(+ (- (+ 1000000000 y) 1000000000 y) 1))
+                                '(y))
+                               (vector 1d0)))))

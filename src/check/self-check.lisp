@@ -75,7 +75,7 @@ period, at whose end it must be back where it started, its turning points allowe
                    (samples (let ((*error-sum* 0d0))
                               (prog1 (integrate-grid (setup-rates setup) (setup-y0 setup)
                                                      (or end period (coerce horizon 'double-float)) *grid-points*)
-                                (when (> *error-sum* (* 1/10 *relative-tolerance*))
+                                (when (and (plusp *error-sum*) (> *error-sum* (* 1/10 *relative-tolerance*)))
                                   ;; the rates' round-off (ROUND-OFF-FLOOR) bounds the steps
                                   (unchecked (format nil "the round-off of its rates limits the integration to ~,1,,,,,'eE"
                                                      *error-sum*))))))
