@@ -143,3 +143,14 @@ than compare it to 1e-8). ROUND-OFF-FORM adds the sizes of a sum's terms."
                                 (ames.check::round-off-form '(+ (- (+ 1000000000 y) 1000000000 y) 1))
                                 '(y))
                                (vector 1d0)))))
+
+(test step-and-spring-refusals-now-agree-with-the-witness
+  "witness/disagreements/refused-step-meets-undecided.lisp (the particle bouncing past a
+step's end) and refused-drag-spring-closes-constant-fact.lisp (a damped spring that never
+closes) now agree with Siconos."
+  (with-siconos
+    (dolist (name '("refused-step-meets-undecided.lisp" "refused-drag-spring-closes-constant-fact.lisp"))
+      (let* ((path (asdf:system-relative-pathname "ames" (format nil "witness/disagreements/~A" name)))
+             (result (check-text (uiop:read-file-string path) :numeric t)))
+        (is (eq :agree (getf result :verdict))
+            "~A gives ~(~A~): ~A" name (getf result :verdict) (getf result :reason))))))
