@@ -210,6 +210,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "oscillation")
                  (:file "numeric")
                  (:file "earliest")
+                 (:file "numeric-round-off")
                  (:file "numeric-roots")
                  (:file "numeric-angle-roots")
                  (:file "states")

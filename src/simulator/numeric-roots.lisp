@@ -94,25 +94,6 @@ between two samples), else NIL."
     (let ((value (funcall function b)))
       (and value (< value 0) b))))
 
-(defparameter *crossing-round-off* (* 256 double-float-epsilon)
-  "A value of an event function within this of its round-off scale (ROUND-OFF-SCALE of
-its expression at that time) is zero as far as the float can tell: no sign change.")
-
-(defun below-round-off-p (value tolerance)
-  "True when VALUE is negative beyond TOLERANCE (a non-negative number): a sign a float
-can tell."
-  (< value (- tolerance)))
-
-(defun round-off-crossing (function time next step tolerance)
-  "FUNCTION, >= 0 at TIME, is negative at NEXT but within its round-off (TOLERANCE, a
-function of the time): a sign change only when it is negative beyond round-off one STEP
-later, and then its crossing bisected over [TIME, NEXT + STEP]; else (:ROUND-OFF NEXT),
-a zero the float cannot tell from a touch or a crossing."
-  (let* ((later (+ next step)) (value (funcall function later)))
-    (if (and value (below-round-off-p value (funcall tolerance later)))
-        (bisect-crossing function time later)
-        (list :round-off next))))
-
 (defun first-numeric-crossing (function rate step horizon &optional (tolerance (constantly 0d0)))
   "The first TAU > 0 (up to HORIZON, or *ROOT-SEARCH-STEPS* steps of STEP) where FUNCTION
 of TAU crosses below zero, or NIL; (:ROUND-OFF TAU) when it first goes below zero only
@@ -293,16 +274,6 @@ fires within the search's reach."
               (append (and (null found) (nreverse unfired))
                       (loop for (condition time) in (reverse touched)
                             when (or (null found) (<= time earliest)) collect condition))))))
-
-(defun crossing-tolerance (run solved groups condition)
-  "The round-off margin of CONDITION's violation function over the closed-form motion of
-GROUPS, a function of the time: *CROSSING-ROUND-OFF* times its ROUND-OFF-SCALE with the
-run's numbers (0 where it has none: an OR of conditions, a value that is not real)."
-  (let ((expression (substitute-expressions (numeric-bindings run)
-                                            (condition-time-function run solved groups condition))))
-    (lambda (time)
-      (let ((scale (ames.algebra:round-off-scale expression (list (cons 'tau time)))))
-        (if scale (* *crossing-round-off* scale) 0d0)))))
 
 (defun add-numeric-roots (run solved groups rooted candidates unknown)
   "CANDIDATES and UNKNOWN (see CANDIDATES-OF) with the conditions of ROOTED, a list of
