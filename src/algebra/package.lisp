@@ -36,4 +36,6 @@ It asks Maxima only through the bridge.")
    #:along-motion #:earliest-coordinate-root #:coordinate-root-ahead #:decided-or-by-values #:turning-point #:coordinate-travel-time
    #:swing-period
    ;; real square roots (radicals.lisp)
-   #:real-radicals #:simplify-real))
+   #:real-radicals #:simplify-real
+   ;; the scale of round-off (round-off.lisp)
+   #:round-off-scale))

@@ -66,11 +66,20 @@ another (see WITNESSED-BOTH-WAYS-P): its signs include :POSITIVE and :NEGATIVE."
   "The signs of FORM, for the tests that only ask whether they lie within a set that
 lacks :POSITIVE or :NEGATIVE (ONLY, ROOT-VERDICT): all three, without asking Maxima,
 when FORM is seen to take both signs, else SIGNS-OF, narrowed by DECIDE (which knows
-more than Maxima's sign(): trigonometric bounds, orderings) when Maxima leaves several."
-  (if (mixed-signs-p search form)
-      (list :positive :negative :zero)
-      (let ((signs (signs-of search form)))
-        (if (rest signs) (decided-signs search form signs) signs))))
+more than Maxima's sign(): trigonometric bounds, orderings) when Maxima leaves several.
+A constant FORM zero to round-off is decided exactly or left open (round-off.lisp):
+Maxima's sign() would give its float's sign."
+  (cond ((constant-form-zero-signs search form))
+        ((mixed-signs-p search form) (list :positive :negative :zero))
+        (t (let ((signs (signs-of search form)))
+             (if (rest signs) (decided-signs search form signs) signs)))))
+
+(defun constant-form-zero-signs (search form)
+  "CONSTANT-ZERO-SIGNS of the root FORM's expression, NIL when it has none or does not
+translate."
+  (let ((expression (handler-case (root-form-expression (search-bridge search) form)
+                      (untranslatable-result () nil))))
+    (and expression (constant-zero-signs (search-bridge search) expression))))
 
 (defun decided-signs (search form signs)
   "SIGNS (several) narrowed by DECIDE on FORM's translation: the sign it proves, or the

@@ -42,7 +42,9 @@ relative error, or the time by which an event comes earlier), DETAIL says more."
   "A state ready to check: TERMS (its state terms), VARIABLES (TERMS, TAU and the
 parameters), PARAMETERS (their values, doubles), RATES (a function of a state vector and
 a time), Y0 the start, MODEL the recorded :CHECK-MODEL."
-  terms variables parameters rates y0 model (cache (make-hash-table :test #'equal)))
+  terms variables parameters rates y0 model (cache (make-hash-table :test #'equal))
+  ;; a function of a state vector and a time: the rates' round-off scales (ROUND-OFF-FORM)
+  rate-scales)
 
 (defun compiled (setup expression)
   "EXPRESSION as a function of a state vector and a time (see COMPILE-NUMERIC), compiled
@@ -70,6 +72,8 @@ NIL (and a reason) when its start has no value."
                              :variables (append terms (list 'tau) (mapcar #'car values))
                              :parameters (map 'simple-vector (lambda (e) (coerce (cdr e) 'double-float)) values)))
          (rate-functions (mapcar (lambda (entry) (compiled setup (cdr entry))) (getf model :rates)))
+         (scale-functions (mapcar (lambda (entry) (compiled setup (round-off-form (cdr entry))))
+                                  (getf model :rates)))
          (y0 (map 'simple-vector (lambda (term)
                                    (value-under (cdr (assoc term (getf model :initial) :test #'equal)) values))
                   terms)))
@@ -77,7 +81,9 @@ NIL (and a reason) when its start has no value."
       (return-from make-setup (values nil "a state variable has no value at the start")))
     (setf (setup-y0 setup) y0
           (setup-rates setup) (lambda (y time)
-                                (map 'simple-vector (lambda (f) (funcall f y time)) rate-functions)))
+                                (map 'simple-vector (lambda (f) (funcall f y time)) rate-functions))
+          (setup-rate-scales setup) (lambda (y time)
+                                      (map 'simple-vector (lambda (f) (funcall f y time)) scale-functions)))
     setup))
 
 (defun safe (function y time)

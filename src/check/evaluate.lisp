@@ -88,3 +88,29 @@ it has none. Signals UNEVALUABLE as COMPILE-NUMERIC does."
         (vector (map 'simple-vector (lambda (entry) (coerce (cdr entry) 'double-float)) bindings)))
     (handler-case (funcall function vector)
       (arithmetic-error () nil))))
+
+(defun round-off-form (expression)
+  "An expression whose value bounds the magnitude the round-off of EXPRESSION's double
+value is relative to: sums and differences add their terms' sizes, products multiply
+them, a quotient divides by the denominator's size, a power of a non-negative constant
+exponent raises the base's; a sine or cosine adds its argument's (an error in the
+argument moves it by as much), an exponential multiplies by one plus it; any other
+operand counts by its size."
+  (flet ((size (x) (if (realp x) (abs x) `(abs ,x))))
+    (if (atom expression)
+        (size expression)
+        (let ((arguments (rest expression)))
+          (case (first expression)
+            ((+ -) (cons '+ (mapcar #'round-off-form arguments)))
+            (* (cons '* (mapcar #'round-off-form arguments)))
+            (/ (if (rest arguments)
+                   `(/ ,(round-off-form (first arguments)) ,@(mapcar #'size (rest arguments)))
+                   `(/ 1 ,(size (first arguments)))))
+            (sqrt `(sqrt ,(round-off-form (first arguments))))
+            (expt (let ((power (second arguments)))
+                    (if (and (realp power) (>= power 0))
+                        `(expt ,(round-off-form (first arguments)) ,power)
+                        (size expression))))
+            ((sin cos) `(+ ,(size expression) ,(round-off-form (first arguments))))
+            (exp `(* ,expression (+ 1 ,(round-off-form (first arguments)))))
+            (t (size expression)))))))

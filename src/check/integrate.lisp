@@ -15,6 +15,37 @@
 (defparameter *step-limit* 200000
   "The most steps one self-check integration may take; beyond, the state is not checked.")
 
+(defparameter *rate-round-off* (* 64 double-float-epsilon)
+  "The round-off of a rate's double value, relative to its ROUND-OFF scale (see
+*RATE-SCALES*): a few dozen units in the last place of the largest terms it adds.")
+
+(defvar *rate-scales* nil
+  "NIL, or a function of a state vector and a time giving the vector of the round-off
+scales of the rates there (the sizes of the terms each adds, see ROUND-OFF-FORM): the
+rates are then known no better than *RATE-ROUND-OFF* times these, and a step's error
+estimate is not asked to go below the error their round-off makes over the step.")
+
+(defvar *error-sum* nil
+  "NIL, or the sum of the error estimates beyond *STEP-TOLERANCE* of the steps
+INTEGRATE-RK4 has taken since it was bound to 0 (those the rates' round-off allowed, see
+ROUND-OFF-FLOOR): what the round-off may have cost the integration, relative to the
+state's sizes. 0 when every step kept to the tolerance.")
+
+(defun round-off-floor (y time h)
+  "The largest error estimate (as STEP-ERROR measures it, over 15) that the rates'
+round-off alone can make over a step H from Y at TIME: H times their round-off, relative
+to each component's size; 0 without *RATE-SCALES*. A rate computed as the small
+difference of large terms (a rope's tension near its pulley: terms of 1e9 for a result
+of 1e3) has a noise that a step's two estimates differ by in proportion to H, not to
+H^5: demanding less than it shrinks the steps without end."
+  (if *rate-scales*
+      (let ((scales (funcall *rate-scales* y time)))
+        (/ (* (abs h) *rate-round-off*
+              (loop for i below (length y)
+                    maximize (/ (svref scales i) (max 1d0 (abs (svref y i))))))
+           15))
+      0d0))
+
 (define-condition integration-failed (ames-error) ()
   (:documentation "The self-check's integration could not go on: the rates have no value
 (the motion leaves the region where the model is defined) or it takes too many steps."))
@@ -63,16 +94,22 @@ Y0 at time FROM. Signals INTEGRATION-FAILED."
                    (let* ((whole (rk4-step rates y time h))
                           (half (rk4-step rates y time (/ h 2)))
                           (halves (rk4-step rates half (+ time (/ h 2)) (/ h 2)))
-                          (err (/ (step-error whole halves) 15)))
-                     (if (and (> err *step-tolerance*) (> h (* 1d-14 (max 1d0 (abs to)))))
-                         (setf h (* h (max 0.1d0 (* 0.9d0 (expt (/ *step-tolerance* err) 1/5)))))
+                          (err (/ (step-error whole halves) 15))
+                          ;; no finer than the rates' own round-off over the step
+                          (tolerance (max *step-tolerance*
+                                          (handler-case (round-off-floor y time h)
+                                            (arithmetic-error () 0d0)))))
+                     (if (and (> err tolerance) (> h (* 1d-14 (max 1d0 (abs to)))))
+                         (setf h (* h (max 0.1d0 (* 0.9d0 (expt (/ tolerance err) 1/5)))))
                          (progn
                            ;; Richardson: the halves plus a fifteenth of their difference
                            (dotimes (i (length y))
                              (setf (svref halves i)
                                    (+ (svref halves i) (/ (- (svref halves i) (svref whole i)) 15))))
+                           ;; a step the rates' round-off allowed beyond the tolerance
+                           (when (and *error-sum* (> err *step-tolerance*)) (incf *error-sum* err))
                            (setf y halves time (if (>= (+ time h) to) to (+ time h)))
-                           (setf h (* h (min 4d0 (* 0.9d0 (expt (/ *step-tolerance* (max err 1d-300)) 1/5)))))))))
+                           (setf h (* h (min 4d0 (* 0.9d0 (expt (/ tolerance (max err 1d-300)) 1/5)))))))))
         (arithmetic-error ()
           (error 'integration-failed :datum time
                                      :detail "The equations of motion have no value here: the self-check's integration stopped."))))

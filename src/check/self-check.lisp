@@ -69,10 +69,16 @@ period, at whose end it must be back where it started, its turning points allowe
       (handler-case
           (multiple-value-bind (setup reason) (make-setup model values)
             (unless setup (unchecked reason))
-            (let* ((end (if (eq duration :forever) nil (coerce duration 'double-float)))
+            (let* ((*rate-scales* (setup-rate-scales setup))
+                   (end (if (eq duration :forever) nil (coerce duration 'double-float)))
                    (period (and periodic (null end) (period-number state values)))
-                   (samples (integrate-grid (setup-rates setup) (setup-y0 setup)
-                                            (or end period (coerce horizon 'double-float)) *grid-points*))
+                   (samples (let ((*error-sum* 0d0))
+                              (prog1 (integrate-grid (setup-rates setup) (setup-y0 setup)
+                                                     (or end period (coerce horizon 'double-float)) *grid-points*)
+                                (when (and (plusp *error-sum*) (> *error-sum* (* 1/10 *relative-tolerance*)))
+                                  ;; the rates' round-off (ROUND-OFF-FLOOR) bounds the steps
+                                  (unchecked (format nil "the round-off of its rates limits the integration to ~,1,,,,,'eE"
+                                                     *error-sum*))))))
                    ;; a periodic state's closed form describes one swing, from one turning
                    ;; point to the next (the way back is its mirror): compared over it
                    (failures (append (compare-motion setup state

@@ -94,9 +94,12 @@ between two samples), else NIL."
     (let ((value (funcall function b)))
       (and value (< value 0) b))))
 
-(defun first-numeric-crossing (function rate step horizon)
+(defun first-numeric-crossing (function rate step horizon &optional (tolerance (constantly 0d0)))
   "The first TAU > 0 (up to HORIZON, or *ROOT-SEARCH-STEPS* steps of STEP) where FUNCTION
-of TAU crosses below zero, or NIL."
+of TAU crosses below zero, or NIL; (:ROUND-OFF TAU) when it first goes below zero only
+within round-off (TOLERANCE, a function of the time giving a non-negative margin; 0 by
+default): a crossing needs a sign change the float can tell (a value below -TOLERANCE),
+else it is no proof of one (a gap that only tends to zero, evaluated as -1e-15)."
   (let ((before (funcall function 0d0)) (rate-before (funcall rate 0d0)) (time 0d0))
     (loop repeat *root-search-steps*
           for next = (if horizon (min (+ time step) horizon) (+ time step))
@@ -105,12 +108,18 @@ of TAU crosses below zero, or NIL."
           do (cond ((and before after (>= before 0) (< after 0)
                          ;; a jump below zero is no crossing (guarded-meetings.lisp)
                          (not (jump-below-zero-p function (bisect-crossing function time next) before)))
-                    (return-from first-numeric-crossing (bisect-crossing function time next)))
+                    (return-from first-numeric-crossing
+                      (if (below-round-off-p after (funcall tolerance next))
+                          (bisect-crossing function time next)
+                          (round-off-crossing function time next step tolerance))))
                    ((and before after (>= before 0) (>= after 0) rate-before rate-after
                          (< rate-before 0) (> rate-after 0))
                     (let ((dip (dip-crossing function rate time next)))
                       (when dip
-                        (return-from first-numeric-crossing (bisect-crossing function time dip))))))
+                        (return-from first-numeric-crossing
+                          (if (below-round-off-p (funcall function dip) (funcall tolerance dip))
+                              (bisect-crossing function time dip)
+                              (list :round-off dip)))))))
              (when (and horizon (>= next horizon))
                (return-from first-numeric-crossing nil))
              (setf time next before after rate-before rate-after))
@@ -120,9 +129,11 @@ of TAU crosses below zero, or NIL."
   "The grid of times the search follows where the functions have no period: (FIRST
 RATIO LAST), about 23,000 times from 1e-6 growing by 0.1% a step.")
 
-(defun first-geometric-crossing (function horizon)
+(defun first-geometric-crossing (function horizon &optional (tolerance (constantly 0d0)))
   "The first TAU > 0 (up to HORIZON, or the grid's end) on *GEOMETRIC-ROOT-GRID* where
-FUNCTION of TAU goes from >= 0 to < 0, bisected to double precision, or NIL. A dip that
+FUNCTION of TAU goes from >= 0 to < 0, bisected to double precision, or NIL; (:ROUND-OFF
+TAU) when it is below zero only within round-off there (TOLERANCE, as for
+FIRST-NUMERIC-CROSSING) and not beyond it at the next grid time. A dip that
 starts and ends between two grid times is missed, as by the numeric integrator's own
 event search; the search ends where FUNCTION has no value."
   (destructuring-bind (first ratio last) *geometric-root-grid*
@@ -133,7 +144,10 @@ event search; the search ends where FUNCTION has no value."
             do (cond ((null value) (return nil))
                      ((and before (>= before 0) (< value 0)
                            (not (jump-below-zero-p function (bisect-crossing function previous time) before)))
-                      (return (bisect-crossing function previous time))))
+                      (return (if (below-round-off-p value (funcall tolerance time))
+                                  (bisect-crossing function previous time)
+                                  (round-off-crossing function previous time
+                                                      (- (min (* time ratio) last) time) tolerance)))))
                (when (>= time last) (return nil))
                (setf previous time before value)))))
 
@@ -219,7 +233,7 @@ a velocity; UNFIRED the conditions not found firing when there is no HORIZON and
 fires within the search's reach."
   (let ((step (sampling-step run solved groups conditions))
         (horizon (and horizon (coerce horizon 'double-float)))
-        (found '()) (unfired '()))
+        (found '()) (unfired '()) (touched '()))
     (dolist (condition conditions)
       (multiple-value-bind (functions rate) (condition-crossing-functions run solved groups condition)
         (let* ((reach (let ((reach (and (not (eq (first (ames.engine:termination-condition-relation condition)) 'or))
@@ -228,6 +242,7 @@ fires within the search's reach."
                         (and reach (< reach (* (1- *root-search-steps*) step)) reach)))
                ;; past REACH it is positive for ever: searched up to there, never is proven
                (until (if (and horizon reach) (min horizon (+ reach step)) (or horizon (and reach (+ reach step)))))
+               (tolerance (crossing-tolerance run solved groups condition))
                (times (if (guarded-relation-parts (ames.engine:termination-condition-relation condition))
                           ;; a corner's touching within its face: guarded-meetings.lisp
                           (let ((crossing (guarded-numeric-crossing run solved groups condition rate step until)))
@@ -235,13 +250,18 @@ fires within the search's reach."
                           (loop for function in functions
                             for crossing = (if step
                                                (first-numeric-crossing
-                                                function (or rate (constantly nil)) step until)
+                                                function (or rate (constantly nil)) step until tolerance)
                                                ;; no period: a geometric grid of times
-                                               (first-geometric-crossing function until))
+                                               (first-geometric-crossing function until tolerance))
                             when crossing collect crossing)))
-               (time (and times (reduce #'min times))))
-          (cond ((and time (plusp time))
+               ;; (:ROUND-OFF TAU): zero there to round-off, no sign change proven
+               (touches (mapcar #'second (remove-if-not #'consp times)))
+               (touch (and touches (reduce #'min touches)))
+               (crossings (remove-if-not #'realp times))
+               (time (and crossings (reduce #'min crossings))))
+          (cond ((and time (plusp time) (or (null touch) (< time touch)))
                  (push (list condition time (and rate (funcall rate time))) found))
+                ((and touch (plusp touch)) (push (list condition touch) touched))
                 ((and (null horizon) (null reach)) (push condition unfired))))))
     (let ((earliest (loop for (nil time) in found minimize time)))
       (values (loop for (condition time rate) in found
@@ -249,8 +269,11 @@ fires within the search's reach."
                       collect (let ((impact (and rate (< rate (- (* 1d-9 (max 1d0 (abs rate))))) rate)))
                                 (make-candidate condition (condition-event condition impact) time
                                                 :rate (or impact 0))))
-              ;; searched past the earliest crossing found, they do not fire before it
-              (and (null found) (nreverse unfired))))))
+              ;; searched past the earliest crossing found, they do not fire before it;
+              ;; one that touches zero within round-off no later than it stays undecided
+              (append (and (null found) (nreverse unfired))
+                      (loop for (condition time) in (reverse touched)
+                            when (or (null found) (<= time earliest)) collect condition))))))
 
 (defun add-numeric-roots (run solved groups rooted candidates unknown)
   "CANDIDATES and UNKNOWN (see CANDIDATES-OF) with the conditions of ROOTED, a list of

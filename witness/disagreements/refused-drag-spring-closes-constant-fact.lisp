@@ -1,4 +1,6 @@
-;;;; refused-drag-spring-closes-constant-fact.lisp -- a refusal make crosscheck finds in the
+;;;; refused-drag-spring-closes-constant-fact.lisp -- FIXED on main before this note (now
+;;;; agrees, one state forever; t/witness-refusals.lisp's springs in oil test the cause).
+;;;; Was: a refusal make crosscheck finds in the
 ;;;; drag-spring family (seed 777 #109; #225 and #312 alike): a block on a spring (rest length
 ;;;; 1, stretched to 1.15) in a viscous medium, moving away from the post at 2. AMES: "the run ended
 ;;;; ambiguous or undecided": the candidate (:spring-closes S) (the spring through zero length,

@@ -1,4 +1,9 @@
-;;;; refused-step-meets-undecided.lisp -- a refusal make crosscheck finds in the step family
+;;;; refused-step-meets-undecided.lisp -- FIXED (now agrees; t/witness-refusals-roots.lisp):
+;;;; the particle crosses the line of the step's bottom face, beyond the face's end, at the
+;;;; moment it lands on the floor; the search for a later crossing took that root again,
+;;;; Maxima's sign() having called the product of the roots (0, written with radicals) "neg"
+;;;; (src/algebra/round-off.lisp decides such a constant exactly or leaves it open).
+;;;; Was: a refusal make crosscheck finds in the step family
 ;;;; (seed 777 #235): a particle thrown horizontally at 5/2 from (0, 4) toward a step
 ;;;; (x from 3/4 to 9/4, top at 5/4), g = 29/4, e = 1/2. By hand: it lands on the step's top
 ;;;; at t = sqrt(22/29) = 0.871, x = 2.177 (< 9/4), and bounces up at 3.16 while moving right
