@@ -1,0 +1,93 @@
+;;;; t/witness-comparator.lisp -- the comparator against a first-order witness, from answers
+;;;; kept on file (no Siconos, no Maxima): a swing's velocity set beside AMES's at AMES's own
+;;;; position at the sample's time (src/witness/compare-swing.lisp).
+
+(in-package #:ames.tests)
+
+(in-suite witness-crosscheck)
+
+(defun commented-answers (path)
+  "AMES's and the witness's answers kept as comments in the disagreement file PATH
+(written by WRITE-DISAGREEMENT): (:AMES ANSWER :WITNESS ANSWER)."
+  (with-open-file (in path)
+    (let ((parts '()) (current nil))
+      (loop for line = (read-line in nil) while line
+            do (cond ((search ";; AMES's answer:" line) (setf current (list :ames)) (push current parts))
+                     ((search ";; witness's answer:" line) (setf current (list :witness)) (push current parts))
+                     ((and current (eql 0 (search ";;   " line)))
+                      (setf (cdr current) (append (cdr current) (list (subseq line 5)))))))
+      (let ((*package* (find-package '#:ames-scenario)) (*read-eval* nil))
+        (loop for (key . lines) in (reverse parts)
+              append (list key (read-from-string (format nil "~{~A~%~}" lines))))))))
+
+(defun hinged-swing-982 ()
+  "The answers of the hinged disc of seed 777 #982 (a uniform disc, r = 1/4, hinged at
+its rim, released 39 degrees from the vertical under g = 15; the witness Moreau-Jean
+with a step of 1e-3 s)."
+  (commented-answers (asdf:system-relative-pathname
+                      "ames" "witness/disagreements/witness-wrong-hinged-swing-777-982.lisp")))
+
+(defun compare-kept (answers)
+  "The comparison of the kept ANSWERS, the witness's horizon its end."
+  (let ((witness (getf answers :witness)))
+    (ames.witness:compare-results (getf answers :ames) witness '()
+                                  :t-end (getf (getf witness :end) :time))))
+
+(defun swing-982-rk4 (time &optional (steps 20000))
+  "The disc's centre velocity (VX VY) at TIME by RK4 on its own equation: the centre's
+angle s from the pin, s'' = -40 cos s (I = 3/32 about the pin, m g r = 15/4), from rest at
+s = -17 pi/60; the centre at (cos s, sin s)/4."
+  (let ((s (- (/ (* 17 pi) 60))) (w 0d0) (h (/ time steps)))
+    (flet ((acc (s) (* -40 (cos s))))
+      (dotimes (k steps)
+        (let* ((k1s w) (k1w (acc s))
+               (k2s (+ w (* h 1/2 k1w))) (k2w (acc (+ s (* h 1/2 k1s))))
+               (k3s (+ w (* h 1/2 k2w))) (k3w (acc (+ s (* h 1/2 k2s))))
+               (k4s (+ w (* h k3w))) (k4w (acc (+ s (* h k3s)))))
+          (incf s (* h 1/6 (+ k1s (* 2 k2s) (* 2 k3s) k4s)))
+          (incf w (* h 1/6 (+ k1w (* 2 k2w) (* 2 k3w) k4w))))))
+    (list (* -1/4 (sin s) w) (* 1/4 (cos s) w))))
+
+(defun comparison-row (comparison what)
+  (find what (ames.witness:comparison-rows comparison) :key #'second :test #'equal))
+
+(test swing-velocity-compared-at-ames-own-position
+  "The hinged disc 5 ms before a turning point: the first-order witness lags its motion,
+and AMES's velocity at the witness's position differed by 0.021 (8 %); at AMES's own
+position at the sample's time it is the exact one (RK4 on the disc's equation: vx =
+0.253163 at t = 0.971864) and agrees."
+  (let* ((comparison (compare-kept (hinged-swing-982)))
+         (vx (comparison-row comparison "velocity x swing at 0.9719 s"))
+         (vy (comparison-row comparison "velocity y swing at 0.9719 s"))
+         (exact (swing-982-rk4 0.9718640166741922d0)))
+    (is (eq :agree (ames.witness:comparison-verdict comparison)) "~A" (ames.witness:comparison-reason comparison))
+    (is (near (first exact) (third vx) 1d-6) "vx ~A, RK4 ~A" (third vx) (first exact))
+    (is (near (second exact) (third vy) 1d-6) "vy ~A, RK4 ~A" (third vy) (second exact))
+    (is (= 2 (count-if (lambda (row) (eql 0 (search "turning point" (second row))))
+                       (ames.witness:comparison-rows comparison))))))
+
+(defun scale-velocities (answer factor)
+  "ANSWER with each on-path velocity form of its states multiplied by FACTOR."
+  (let ((answer (copy-tree answer)))
+    (dolist (state (getf answer :states) answer)
+      (dolist (entry (getf state :velocities))
+        (let ((value (second entry)))
+          (when (and (consp value) (eq (first value) :on-path))
+            (setf (second value) (mapcar (lambda (x) `(* ,factor ,x)) (second value)))))))))
+
+(test swing-velocity-errors-still-caught
+  "The same comparison still finds real errors: AMES's velocity 10 % too fast everywhere,
+and a witness whose velocity 5 ms before the turn differs from AMES's by 0.03 (the size
+of the lag that was taken for an error), are AMES wrong, the second at that sample."
+  (let ((answers (hinged-swing-982)))
+    (let ((faster (list :ames (scale-velocities (getf answers :ames) 11/10)
+                        :witness (getf answers :witness))))
+      (is (eq :ames-wrong (ames.witness:comparison-verdict (compare-kept faster)))))
+    (let* ((witness (copy-tree (getf answers :witness)))
+           (sample (car (last (getf witness :samples))))
+           (velocity (second (first (getf sample :velocities)))))
+      (incf (first velocity) 0.03d0)
+      (let ((comparison (compare-kept (list :ames (getf answers :ames) :witness witness))))
+        (is (eq :ames-wrong (ames.witness:comparison-verdict comparison)))
+        (is (search "velocity x swing at 0.9719" (ames.witness:comparison-reason comparison))
+            "~A" (ames.witness:comparison-reason comparison))))))
