@@ -8,11 +8,14 @@
 
 (defun commented-answers (path)
   "AMES's and the witness's answers kept as comments in the disagreement file PATH
-(written by WRITE-DISAGREEMENT): (:AMES ANSWER :WITNESS ANSWER)."
+(written by WRITE-DISAGREEMENT): (:AMES ANSWER :WITNESS ANSWER), and :FINER-WITNESS, the
+witness at a quarter of its step, where the file keeps it."
   (with-open-file (in path)
     (let ((parts '()) (current nil))
       (loop for line = (read-line in nil) while line
-            do (cond ((search ";; AMES's answer:" line) (setf current (list :ames)) (push current parts))
+            do (cond ((search ";; witness's answer at a quarter of its step:" line)
+                      (setf current (list :finer-witness)) (push current parts))
+                     ((search ";; AMES's answer:" line) (setf current (list :ames)) (push current parts))
                      ((search ";; witness's answer:" line) (setf current (list :witness)) (push current parts))
                      ((and current (eql 0 (search ";;   " line)))
                       (setf (cdr current) (append (cdr current) (list (subseq line 5)))))))
@@ -91,3 +94,52 @@ of the lag that was taken for an error), are AMES wrong, the second at that samp
         (is (eq :ames-wrong (ames.witness:comparison-verdict comparison)))
         (is (search "velocity x swing at 0.9719" (ames.witness:comparison-reason comparison))
             "~A" (ames.witness:comparison-reason comparison))))))
+
+(defun rod-ledge-23-14 ()
+  "The answers of the rod of seed 23 rod-ledge #14 (landing on a ledge's edge, struck
+again by it while spinning at 23 rad/s): AMES's, the witness's at its step 1e-3 and at
+2.5e-4."
+  (commented-answers (asdf:system-relative-pathname
+                      "ames" "witness/disagreements/witness-wrong-rod-ledge-23-14.lisp")))
+
+(defun compare-refining-kept (answers)
+  "COMPARE-REFINING of the kept ANSWERS, the witness run at a finer step answered by the
+kept finer witness when that is the step asked for (else a failure, as a witness that
+gave no answer): (VALUES COMPARISON STEPS-ASKED)."
+  (let* ((witness (getf answers :witness)) (finer (getf answers :finer-witness)) (asked '()))
+    (values (ames.witness:compare-refining
+             (getf answers :ames) '(("t_end" . 1d0)) witness '()
+             :t-end (getf (getf witness :end) :time)
+             :run (lambda (model &key timeout)
+                    (declare (ignore timeout))
+                    (let ((step (cdr (assoc "step" model :test #'equal))))
+                      (push step asked)
+                      (if (near step (getf finer :step) 1d-12) finer '(:status :error :message "no")))))
+            (reverse asked))))
+
+(test first-order-disagreement-refined-by-the-witness-step
+  "The rod struck by a ledge's edge at 23 rad/s: at the witness's step 1e-3 its impact
+comes 0.75 ms late and omega after it is 3.4 % off AMES's; at a quarter of the step the
+witness agrees with AMES to 20 steps (0.5 %), and the verdict says at which step."
+  (let ((answers (rod-ledge-23-14)))
+    (is (eq :ames-wrong (ames.witness:comparison-verdict
+                         (ames.witness:compare-results (getf answers :ames) (getf answers :witness) '()
+                                                       :t-end (getf (getf (getf answers :witness) :end) :time)))))
+    (multiple-value-bind (comparison asked) (compare-refining-kept answers)
+      (is (eq :agree (ames.witness:comparison-verdict comparison)) "~A" (ames.witness:comparison-reason comparison))
+      (is (equal '(2.5d-4) asked))
+      (is (search "step 2.5e-4" (ames.witness:comparison-reason comparison))))))
+
+(test first-order-refinement-still-catches-errors
+  "The same rod with AMES's omega after the second impact off by 0.17 (the coarse
+witness's error, the other way): the refined witness still disagrees, to its tighter
+tolerance."
+  (let* ((answers (rod-ledge-23-14))
+         (ames (copy-tree (getf answers :ames)))
+         (state (third (ames.witness:ames-path (getf ames :states))))
+         (entry (first (getf state :final-angular-velocities))))
+    (setf (second entry) `(- ,(second entry) 17/100))
+    (multiple-value-bind (comparison asked) (compare-refining-kept (list* :ames ames answers))
+      (is (eq :ames-wrong (ames.witness:comparison-verdict comparison)))
+      (is (= 2 (length asked)))
+      (is (search "final angular velocity" (ames.witness:comparison-reason comparison))))))

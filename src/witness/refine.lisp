@@ -45,7 +45,7 @@ a :TIMEOUT)."
                (setf witness finer
                      comparison (compare-results answer finer values :t-end t-end))
                (setf (comparison-reason comparison)
-                     (format nil "at the witness's step ~,3G s~@[: ~A~]; at its step ~,3G s: ~A"
-                             (getf finer :step) (comparison-reason comparison)
-                             first-step first-reason))))
+                     (format nil "at the witness's step ~A s~@[: ~A~]; at its step ~A s: ~A"
+                             (coerce (getf finer :step) 'single-float) (comparison-reason comparison)
+                             (coerce first-step 'single-float) first-reason))))
     (values comparison witness)))
