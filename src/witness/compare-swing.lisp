@@ -97,7 +97,7 @@ bisection on [A, B] with Newton steps (dt/ds = 1/|ds/dt|) when they stay inside;
 a time has no value."
   (let ((low 0d0) (high 1d0) (a (swing-a swing)) (span (- (swing-b swing) (swing-a swing))))
     (flet ((at (w) (+ a (* span w))))
-      (loop with w = (/ time (swing-half swing))
+      (loop with w = (max 0d0 (min 1d0 (/ time (swing-half swing))))
             repeat 200
             do (let ((tw (time-from-a swing (at w))))
                  (unless tw (return-from swing-position nil))
