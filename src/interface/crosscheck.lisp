@@ -35,7 +35,8 @@ crash and a witness failure are written under DIRECTORY."
                                        text result))
     (list :index index :family family :verdict verdict
           :reason (let ((reason (getf result :reason)))
-                    ;; an agreement has a reason only when the witness's step was refined
+                    ;; an agreement has a reason only when the witness's step was refined (records are
+                    ;; read in the keyword package: a NIL written reads back as :NIL)
                     (and reason
                          (let ((line (substitute #\Space #\Newline (princ-to-string reason))))
                            (subseq line 0 (min 160 (length line))))))
@@ -153,7 +154,7 @@ counts per verdict with the refusal rate, and the time per scenario."
     (dolist (record records)
       (incf (getf verdicts (getf record :verdict) 0)))
     (format stream "  verdicts:~{ ~(~A~) ~D~^,~}~%" verdicts)
-    (let ((refined (count-if (lambda (r) (and (eq (getf r :verdict) :agree) (getf r :reason))) records)))
+    (let ((refined (count-if (lambda (r) (and (eq (getf r :verdict) :agree) (stringp (getf r :reason)))) records)))
       (when (plusp refined)
         (format stream "  agreed at a finer witness step (src/witness/refine.lisp): ~D~%" refined)))
     (when records
