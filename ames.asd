@@ -272,6 +272,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "compare-angles")
                  (:file "compare-first-order")
                  (:file "compare-time-limit")
+                 (:file "compare-slow-impacts")
                  (:file "refine")
                  (:file "generate")
                  (:file "generate-curved")

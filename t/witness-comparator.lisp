@@ -143,3 +143,33 @@ tolerance."
       (is (eq :ames-wrong (ames.witness:comparison-verdict comparison)))
       (is (= 2 (length asked)))
       (is (search "final angular velocity" (ames.witness:comparison-reason comparison))))))
+
+(defun block-step-2026-433 ()
+  "The answers of the block of seed 2026 block-step #433 (plastic landing on its corner on a
+ledge, the corner striking again 10.6 ms later at 0.5 mm/s), the witness's with the
+collision speed the rotation driver now states (max(0.05, 20 g h) = 0.23 m/s)."
+  (let ((answers (commented-answers (asdf:system-relative-pathname
+                                     "ames" "witness/disagreements/witness-unseen-impact-block-step-2026-433.lisp"))))
+    (setf (getf answers :witness) (list* :collision-speed 0.23d0 (getf answers :witness)))
+    answers))
+
+(test impact-slower-than-the-witness-sees-is-unsupported
+  "AMES's second impact of the block's corner, at 2 E / J = 4.97e-4 m/s (its own impulse
+and energy lost, restitution 0), is under the witness's collision speed: not witnessed
+(unsupported, said so), where it was taken for AMES wrong; the same impact losing 2000
+times the energy (1 m/s) is one the witness would see, and its absence is AMES wrong."
+  (let* ((answers (block-step-2026-433))
+         (witness (getf answers :witness))
+         (end (getf (getf witness :end) :time)))
+    (flet ((verdict (ames restitution)
+             (let ((ames.witness::*largest-restitution* restitution))
+               (ames.witness:compare-results ames witness '() :t-end end))))
+      (is (eq :ames-wrong (ames.witness:comparison-verdict (verdict (getf answers :ames) nil))))
+      (let ((comparison (verdict (getf answers :ames) 0)))
+        (is (eq :unsupported (ames.witness:comparison-verdict comparison)))
+        (is (search "4.97" (ames.witness:comparison-reason comparison)) "~A" (ames.witness:comparison-reason comparison)))
+      (let* ((ames (copy-tree (getf answers :ames)))
+             (event (getf (second (ames.witness:ames-path (getf ames :states))) :end-event))
+             (data (member-if #'keywordp (rest event))))
+        (setf (getf data :energy-lost) `(* 2000 ,(getf data :energy-lost)))
+        (is (eq :ames-wrong (ames.witness:comparison-verdict (verdict ames 0))))))))

@@ -30,7 +30,8 @@ MODEL with a quarter of its step and compared again (see the file's header), up 
 +REFINEMENTS+ times, until it agrees. Returns (VALUES COMPARISON WITNESS), those that
 decided, the comparison's reason naming the steps. RUN runs the witness on a model (with
 a :TIMEOUT)."
-  (let ((comparison (compare-results answer witness values :t-end t-end)))
+  (let* ((*largest-restitution* (model-largest-restitution model)) ; compare-slow-impacts.lisp
+         (comparison (compare-results answer witness values :t-end t-end)))
     (loop with first-reason = (comparison-reason comparison)
           with first-step = (getf witness :step)
           for k from 1 to +refinements+
