@@ -185,12 +185,7 @@ velocity off by 1e-5, or another event, is a disagreement."
                                    :speed-squared 1))))))))))
 
 (defparameter *known-disagreements*
-  '(("witness-wrong-hinged-swing-777-982.lisp"
-     "A disc hinged at its rim, near a turning point: the comparator evaluates AMES's speed
-at the first-order witness's position, which lags by 0.0047 rad, and the speed goes as the
-square root of the energy left: 0.234 against the witness's 0.255; AMES's 0.2532 at the
-right angle is exact (checked by hand). A comparator defect, kept until it compares at
-AMES's own position."))
+  '()
   "Disagreements AMES has today, each kept as a scenario file under
 witness/disagreements/ with the reason; a test checks that each still disagrees, so
 that a fix shows up (then move the file to *WITNESSED-FIXES*).")
@@ -296,7 +291,13 @@ of 40-digit radicals to 160 digits, where the speed at the turning point is exac
      "A ball bouncing under quadratic drag (e = 1/2): the witness failed at the end of its
 Zeno sequence (a rebound of 3.5e-8 m/s, then Siconos's processEvents). Fixed in the
 witness: a body touching a fixed face with a normal speed under 1e-7 starts the next
-model at rest on it, under state-dependent forces."))
+model at rest on it, under state-dependent forces.")
+    ("witness-wrong-hinged-swing-777-982.lisp"
+     "A disc hinged at its rim, near a turning point: the comparator evaluated AMES's speed
+at the first-order witness's position, which lags by 0.0047 rad, and the speed goes as the
+square root of the energy left: 0.234 against the witness's 0.255; AMES's 0.2532 at the
+right angle is exact (RK4). Fixed in the comparator: a swing's velocity is AMES's at its
+own position at the sample's time (src/witness/compare-swing.lisp)."))
   "Disagreements the witness found and AMES has since fixed: each must now agree, with
 its file under witness/disagreements/ kept as the regression case.")
 

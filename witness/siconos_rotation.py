@@ -319,7 +319,8 @@ def main_rotation(model):
     except Exception as e:  # the witness failed: say so, never a result
         print("(:status :error :message %s)" % sx_string("%s: %s" % (type(e).__name__, e)))
         return
-    out = ["(:status :ok", " :scheme :moreau-jean :step %s" % sx_number(driver.step), " :events ("]
+    out = ["(:status :ok", " :scheme :moreau-jean :step %s :collision-speed %s"
+           % (sx_number(driver.step), sx_number(driver.collision_speed())), " :events ("]
     for ev in driver.events:
         pairs = " ".join("(%s %s %s)" % (p[0], sx_string(p[1]), sx_string(p[2])) for p in ev["pairs"])
         out.append("  (:time %s :pairs (%s) %s :hinges %s)" % (

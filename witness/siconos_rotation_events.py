@@ -14,12 +14,17 @@ class Events:
                             "hinges": hinges})
 
 
+    def collision_speed(self):
+        """The approach speed above which a contact's closing is a collision (slower, the
+        contact just starts pressing): a few times what gravity adds in a step."""
+        return max(0.05, 20.0 * float(self.model.get("gravity", 0.0)) * self.step)
+
     def contact_events(self, tp, qp, vp, t, q, v, lams, state):
         """The events of contacts in the step from (TP, QP, VP) to (T, Q, V), LAMS the
         relations' impulses; STATE holds each contact's history (pressing or not, its last
         two forces, a pending lift-off)."""
         h = self.step
-        collide = max(0.05, 20.0 * float(self.model.get("gravity", 0.0)) * h)
+        collide = self.collision_speed()
         for k, (r, lam) in enumerate(zip(self.relations, lams)):
             if not isinstance(r, (Contact, Rope)):
                 continue

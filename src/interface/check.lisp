@@ -68,12 +68,13 @@ while into a last state that lasts forever."
           (list :verdict :unsupported :answer answer
                 :reason "AMES's run has no numeric end time (values missing?)")))
       (handler-case
-          (let ((witness (ames.witness:run-witness
-                          (ames.witness:scenario-model scenario values horizon
-                                                       :samples (ames.witness:witness-sample-times answer values)))))
+          (let* ((model (ames.witness:scenario-model scenario values horizon
+                                                     :samples (ames.witness:witness-sample-times answer values)))
+                 (witness (ames.witness:run-witness model)))
             (case (ames.witness:witness-status witness)
-              (:ok (let ((comparison (ames.witness:compare-results answer witness values
-                                                                   :t-end horizon)))
+              ;; a first-order witness's disagreement is checked at a finer step (refine.lisp)
+              (:ok (multiple-value-bind (comparison witness)
+                       (ames.witness:compare-refining answer model witness values :t-end horizon)
                      (list :verdict (ames.witness:comparison-verdict comparison)
                            :reason (ames.witness:comparison-reason comparison)
                            :comparison comparison :answer answer :witness witness)))

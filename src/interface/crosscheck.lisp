@@ -35,7 +35,9 @@ crash and a witness failure are written under DIRECTORY."
                                        text result))
     (list :index index :family family :verdict verdict
           :reason (let ((reason (getf result :reason)))
-                    (and reason (not (eq verdict :agree))
+                    ;; an agreement has a reason only when the witness's step was refined (records are
+                    ;; read in the keyword package: a NIL written reads back as :NIL)
+                    (and reason
                          (let ((line (substitute #\Space #\Newline (princ-to-string reason))))
                            (subseq line 0 (min 160 (length line))))))
           :seconds (float (seconds-since start) 1d0) :witness-seconds ames.witness:*witness-seconds*)))
@@ -152,6 +154,9 @@ counts per verdict with the refusal rate, and the time per scenario."
     (dolist (record records)
       (incf (getf verdicts (getf record :verdict) 0)))
     (format stream "  verdicts:~{ ~(~A~) ~D~^,~}~%" verdicts)
+    (let ((refined (count-if (lambda (r) (and (eq (getf r :verdict) :agree) (stringp (getf r :reason)))) records)))
+      (when (plusp refined)
+        (format stream "  agreed at a finer witness step (src/witness/refine.lisp): ~D~%" refined)))
     (when records
       (format stream "  refused: ~,1F %~%" (* 100 (/ (getf verdicts :refused 0) (length records))))))
   (print-time-figures records stream))

@@ -159,6 +159,14 @@ root of the energy left, so that an error in the energy weighs most)."
                            (sign (if back -1 1)))
                       (compare-number walk (format nil "path x ~A" what) (first p) wx)
                       (compare-number walk (format nil "path y ~A" what) (second p) wy)
+                      ;; a swing: AMES's velocity at its own position at the sample's time
+                      ;; (compare-swing.lisp), not at the witness's, which lags near a turn
+                      (multiple-value-bind (own-p own-v)
+                          (velocity-at-own-time state entry ventry values start-s elapsed)
+                        (when own-v
+                          (compare-number walk (format nil "own x ~A" what) (first own-p) wx)
+                          (compare-number walk (format nil "own y ~A" what) (second own-p) wy)
+                          (setf v own-v sign 1)))
                       (compare-number walk (format nil "velocity x ~A" what) (and v (* sign (first v))) wvx
                                       (sample-velocity-tolerance walk (and v (* sign (first v))) wvx))
                       (compare-number walk (format nil "velocity y ~A" what) (and v (* sign (second v))) wvy

@@ -273,6 +273,7 @@ bumper turns within one state of closed forms in time)."
     (loop while (and (walk-events walk) (turns-only-p (first (walk-events walk))))
           do (pop (walk-events walk))))
   (check-witnessable walk event)
+  (check-seeable-impact walk event)     ; compare-slow-impacts.lisp
   (unless (walk-events walk)
     (finish walk :ames-wrong "AMES ends the state with ~S at ~A; the witness has no more events"
             (event-head event) end))

@@ -20,7 +20,7 @@ AMES's geometry, knowledge base or simulator, so that its answers are independen
    ;; comparison (compare.lisp)
    #:compare-results #:comparison-verdict #:comparison-rows #:comparison-reason
    #:print-comparison #:*time-tolerance* #:*value-tolerance* #:*accumulation-tolerance* #:*first-order-tolerance*
-   #:ames-end-time #:ames-path
+   #:ames-end-time #:ames-path #:compare-refining
    #:*curved-tolerance* #:witness-sample-times #:witness-horizon-extra
    ;; generation (generate.lisp)
    #:*families* #:*random* #:*symbolic* #:random-scenario #:generator-families

@@ -13,6 +13,8 @@
 ;;;; there AMES's formula gives 0.23398. A first-order witness's phase lag near a turning point
 ;;;; is taken for a wrong speed. To fix in the comparator (compare at AMES's own position at
 ;;;; the sample's time, integrating its energy integral) or the witness (a smaller step).
+;;;; Fixed in the comparator (src/witness/compare-swing.lisp): a swing's velocity is now AMES's
+;;;; at its own position at the sample's time (0.253163 here); it agrees (t/witness-comparator.lisp).
 ;;;; Run: bin/ames check witness/disagreements/witness-wrong-hinged-swing-777-982.lisp --numeric
 
 (scenario hinged-swing-982 "A body hinged at a point swings under gravity." (gravity 15)

@@ -1,0 +1,86 @@
+;;;; witness-failed-drag-slide-2026-548 -- a disagreement found by the witness (make crosscheck).
+;;;; verdict: witness-failed
+;;;; reason: the witness's server gave no answer within 120 s
+;;;; Examined: as drag-slide #362, AMES's wall impact comes after 274 s, a horizon the witness
+;;;; cannot integrate within its 120 s. A witness limitation, not AMES's.
+;;;; Run: bin/ames check witness/disagreements/witness-failed-drag-slide-2026-548.lisp --numeric
+
+(scenario drag-slide-548 "A block slides through a medium with drag on a frictionless floor."
+ (gravity 29/4) (restitution 0) (body floor :fixed t :shape (half-plane (1 0) (0 0)))
+ (body wall :fixed t :shape (polygon (16 0) (17 0) (17 2) (16 2)))
+ (body block :mass 3/4 :position (0 0) :velocity (1 0) :shape (polygon (0 0) (1 0) (1 1) (0 1)))
+ (drag oil :on block :quadratic 11/50) (simulate :states 3))
+
+
+;; AMES's answer:
+;;   (:SCENARIO AMES-SCENARIO::DRAG-SLIDE-548 :STATES
+;;    ((:INDEX 0 :START 0 :DURATION 274.2643249942098d0 :CONTACTS
+;;      ((AMES-SCENARIO::BLOCK AMES-SCENARIO::FLOOR :FEATURE (:EDGE 0 :OF AMES-SCENARIO::FLOOR)
+;;        :OBSERVER-FEATURE (:EDGE 0 :OF AMES-SCENARIO::BLOCK)))
+;;      :ACCELERATIONS
+;;      ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::WALL (0 0))
+;;       (AMES-SCENARIO::BLOCK ((- (/ 1650 (EXPT (+ 75 (* 22 AMES.BASE:TAU)) 2))) 0)))
+;;      :FORCES
+;;      ((:DRAG AMES-SCENARIO::OIL AMES-SCENARIO::BLOCK
+;;        ((- (/ 2475 (* (EXPT (+ 75 (* 22 AMES.BASE:TAU)) 2) 2))) 0))
+;;       (:GRAVITY AMES-SCENARIO::BLOCK (0 -87/16))
+;;       (:NORMAL AMES-SCENARIO::BLOCK AMES-SCENARIO::FLOOR 87/16))
+;;      :POSITIONS
+;;      ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::WALL (0 0))
+;;       (AMES-SCENARIO::BLOCK ((/ (* 75 (LOG (/ (+ 75 (* 22 AMES.BASE:TAU)) 75))) 22) 0)))
+;;      :VELOCITIES
+;;      ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::WALL (0 0))
+;;       (AMES-SCENARIO::BLOCK ((/ 75 (+ 75 (* 22 AMES.BASE:TAU))) 0)))
+;;      :INITIAL-VELOCITIES
+;;      ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::WALL (0 0)) (AMES-SCENARIO::BLOCK (1 0)))
+;;      :END-EVENT
+;;      (:COLLISION AMES-SCENARIO::BLOCK AMES-SCENARIO::WALL :IMPULSE 15895599/1726280462 :ENERGY-LOST
+;;       84223355856267/1490022116741466722)
+;;      :FINAL-POSITIONS
+;;      ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::WALL (0 0)) (AMES-SCENARIO::BLOCK (15 0)))
+;;      :FINAL-VELOCITIES
+;;      ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::WALL (0 0))
+;;       (AMES-SCENARIO::BLOCK (10597066/863140231 0)))
+;;      :IMPACT
+;;      (:CONTACTS
+;;       ((AMES-SCENARIO::BLOCK AMES-SCENARIO::FLOOR :FEATURE (:EDGE 0 :OF AMES-SCENARIO::FLOOR)
+;;         :OBSERVER-FEATURE (:EDGE 0 :OF AMES-SCENARIO::BLOCK))
+;;        (AMES-SCENARIO::BLOCK AMES-SCENARIO::WALL :FEATURE (:EDGE 3 :OF AMES-SCENARIO::WALL)
+;;         :OBSERVER-FEATURE (:EDGE 1 :OF AMES-SCENARIO::BLOCK)))
+;;       :IMPULSES
+;;       ((:IMPULSE AMES-SCENARIO::BLOCK AMES-SCENARIO::FLOOR 0)
+;;        (:IMPULSE AMES-SCENARIO::BLOCK AMES-SCENARIO::WALL 15895599/1726280462))
+;;       :ENERGY-LOST 84223355856267/1490022116741466722 :VELOCITIES-BEFORE
+;;       ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::WALL (0 0))
+;;        (AMES-SCENARIO::BLOCK (10597066/863140231 0)))
+;;       :VELOCITIES-AFTER
+;;       ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::WALL (0 0)) (AMES-SCENARIO::BLOCK (0 0))))
+;;      :ENERGY
+;;      ((:KINETIC AMES-SCENARIO::BLOCK (/ 16875 (* (EXPT (+ 75 (* 22 AMES.BASE:TAU)) 2) 8)))
+;;       (:POTENTIAL (:GRAVITY AMES-SCENARIO::BLOCK) 0))
+;;      :MOMENTUM ((:MOMENTUM AMES-SCENARIO::BLOCK ((/ 225 (+ 300 (* 88 AMES.BASE:TAU))) 0))))
+;;     (:INDEX 1 :START 682071241/2486912 :DURATION :FOREVER :CONTACTS
+;;      ((AMES-SCENARIO::BLOCK AMES-SCENARIO::FLOOR :FEATURE (:EDGE 0 :OF AMES-SCENARIO::FLOOR)
+;;        :OBSERVER-FEATURE (:EDGE 0 :OF AMES-SCENARIO::BLOCK))
+;;       (AMES-SCENARIO::BLOCK AMES-SCENARIO::WALL :FEATURE (:EDGE 3 :OF AMES-SCENARIO::WALL)
+;;        :OBSERVER-FEATURE (:EDGE 1 :OF AMES-SCENARIO::BLOCK)))
+;;      :ACCELERATIONS
+;;      ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::WALL (0 0)) (AMES-SCENARIO::BLOCK (0 0))) :FORCES
+;;      ((:DRAG AMES-SCENARIO::OIL AMES-SCENARIO::BLOCK (0 0))
+;;       (:GRAVITY AMES-SCENARIO::BLOCK (0 -87/16))
+;;       (:NORMAL AMES-SCENARIO::BLOCK AMES-SCENARIO::FLOOR 87/16)
+;;       (:NORMAL AMES-SCENARIO::BLOCK AMES-SCENARIO::WALL 0))
+;;      :POSITIONS
+;;      ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::WALL (0 0)) (AMES-SCENARIO::BLOCK (15 0)))
+;;      :VELOCITIES
+;;      ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::WALL (0 0)) (AMES-SCENARIO::BLOCK (0 0)))
+;;      :INITIAL-VELOCITIES
+;;      ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::WALL (0 0)) (AMES-SCENARIO::BLOCK (0 0)))
+;;      :END-EVENT :NONE :FINAL-POSITIONS NIL :FINAL-VELOCITIES NIL :ENERGY
+;;      ((:KINETIC AMES-SCENARIO::BLOCK 0) (:POTENTIAL (:GRAVITY AMES-SCENARIO::BLOCK) 0)) :MOMENTUM
+;;      ((:MOMENTUM AMES-SCENARIO::BLOCK (0 0)))))
+;;    :OUTCOME :COMPLETE :ANSWERS NIL :SELF-CHECK
+;;    (:CHECKED (0 1) :UNCHECKED NIL :NUMBERS (0 0) :EQUATIONS (61 61) :FAILURES NIL))
+
+;; witness's answer:
+;;   (:STATUS :ERROR :MESSAGE "the witness's server gave no answer within 120 s")
