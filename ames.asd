@@ -211,6 +211,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "earliest")
                  (:file "numeric-roots")
                  (:file "numeric-angle-roots")
+                 (:file "approximate-starts")
                  (:file "states")
                  (:file "impacts")
                  (:file "simulate")
