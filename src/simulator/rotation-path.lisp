@@ -267,7 +267,9 @@ the rate's sign is the numbers' and the time the numeric travel time."
                            (if numeric
                                (let ((r (numeric-or-nil (run-bridge run) rate (run-values run))))
                                  (and r (< r (- (* 1d-9 (max 1d0 (abs r)))))))
-                               (holds run `(< ,rate 0))))))
+                               ;; under values, as the slope's sign at the root
+                               ;; (ANGLE-ROOT-AHEAD): a cheap proof, else the values
+                               (eq :true (decided-or-by-values-first run `(< ,rate 0)))))))
     (make-candidate condition
                     (condition-event condition (and approaching rate))
                     (if numeric
