@@ -212,6 +212,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "numeric-roots")
                  (:file "numeric-angle-roots")
                  (:file "approximate-starts")
+                 (:file "pending-candidates")
                  (:file "states")
                  (:file "impacts")
                  (:file "simulate")
