@@ -361,6 +361,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "tipping")
                (:file "ledge-impacts")
                (:file "tipping-criterion")
+               (:file "approximate-starts")
                (:file "witness-curved")
                (:file "witness-crosscheck")
                (:file "witness-hinged")
