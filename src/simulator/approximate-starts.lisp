@@ -10,8 +10,9 @@
 ;;;; relations, with sines and cosines of the angle, in the next state's choice search. So
 ;;;; there, as for the order of two event times, the values decide first: a cheap proof
 ;;;; (AMES.ALGEBRA:DECIDE-FIRST-CHEAPLY), else the values' verdict, recorded as assumed from
-;;;; them (the report lists it). A sign the values leave open (too close to call, a zero)
-;;;; still gets DECIDE's full work.
+;;;; them (the report lists it). A sign the values leave open (too close to call, a zero,
+;;;; or a value within a small tolerance of the size of its terms: what vanishes at the
+;;;; event is only near zero at the approximate start) still gets DECIDE's full work.
 
 (in-package #:ames.simulator)
 
@@ -23,12 +24,43 @@ with numbers."
        (ames.algebra:values-first-p)
        (not (closed-form-time-p (run-time run)))))
 
+(defparameter *approximate-start-tolerance* 1d-9
+  "How small, relative to the size of its terms (TERM-MAGNITUDE), a value at a start that
+numbers put there is taken as too close to zero for the values to give its sign: a
+quantity that vanishes at the event found with numbers (a friction limit reached) is only
+near zero at the rational angle that approximates it.")
+
+(defun term-magnitude (expression bindings)
+  "The size of EXPRESSION's terms at BINDINGS (an alist name -> double): sums and
+differences add their parts' sizes, products multiply them, a quotient divides by its
+divisor's value, anything else is its own absolute value; NIL where a value is missing."
+  (flet ((value (x) (let ((v (expression-value x bindings))) (and (realp v) (abs v)))))
+    (if (and (consp expression) (not (quantity-term-p expression)))
+        (let ((parts (mapcar (lambda (a) (term-magnitude a bindings)) (rest expression))))
+          (case (first expression)
+            ((+ -) (and (every #'realp parts) (reduce #'+ parts)))
+            (* (and (every #'realp parts) (reduce #'* parts)))
+            (/ (let ((divisor (value (third expression))))
+                 (and (realp (first parts)) divisor (plusp divisor) (/ (first parts) divisor))))
+            (t (value expression))))
+        (value expression))))
+
+(defun clearly-nonzero-at-values-p (run x)
+  "True when X's value at the run's values is larger than *APPROXIMATE-START-TOLERANCE*
+times the size of its terms."
+  (let* ((bindings (numeric-bindings run))
+         (value (expression-value x bindings))
+         (size (term-magnitude x bindings)))
+    (and (realp value) (realp size)
+         (> (abs value) (* *approximate-start-tolerance* (max size least-positive-normalized-double-float))))))
+
 (defun sign-at-approximate-start (run x refuted)
   "X's sign set at the start of a state that starts where numbers put it
 (APPROXIMATE-START-P), when the run's values give X one strict sign (REFUTED, from
 AMES.ALGEBRA:SIGNS-REFUTED-BY-VALUES, holds the other two) and a cheap proof or the values
 settle it (DECIDED-OR-BY-VALUES-FIRST); else NIL (SIGN-OF goes on as elsewhere)."
-  (when (and refuted (= 2 (length refuted)) (approximate-start-p run))
+  (when (and refuted (= 2 (length refuted)) (approximate-start-p run)
+             (clearly-nonzero-at-values-p run x))
     (let ((sign (first (set-difference '(:positive :negative) refuted))))
       (when sign
         (when (eq :true (decided-or-by-values-first
