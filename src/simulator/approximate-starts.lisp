@@ -10,9 +10,11 @@
 ;;;; relations, with sines and cosines of the angle, in the next state's choice search. So
 ;;;; there, as for the order of two event times, the values decide first: a cheap proof
 ;;;; (AMES.ALGEBRA:DECIDE-FIRST-CHEAPLY), else the values' verdict, recorded as assumed from
-;;;; them (the report lists it). A sign the values leave open (too close to call, a zero,
-;;;; or a value within a small tolerance of the size of its terms: what vanishes at the
-;;;; event is only near zero at the approximate start) still gets DECIDE's full work.
+;;;; them (the report lists it). A value within a small tolerance of the size of its
+;;;; terms is zero there, also recorded as assumed from the values: what vanishes at the
+;;;; event (the friction limit that ended the state) is only near zero at the rational
+;;;; angle that approximates it, and no proof over the parameters can say more (DECIDE's
+;;;; full strategies on it ran past the run's time limit).
 
 (in-package #:ames.simulator)
 
@@ -59,10 +61,24 @@ times the size of its terms."
 (APPROXIMATE-START-P), when the run's values give X one strict sign (REFUTED, from
 AMES.ALGEBRA:SIGNS-REFUTED-BY-VALUES, holds the other two) and a cheap proof or the values
 settle it (DECIDED-OR-BY-VALUES-FIRST); else NIL (SIGN-OF goes on as elsewhere)."
-  (when (and refuted (= 2 (length refuted)) (approximate-start-p run)
-             (clearly-nonzero-at-values-p run x))
-    (let ((sign (first (set-difference '(:positive :negative) refuted))))
-      (when sign
-        (when (eq :true (decided-or-by-values-first
-                         run (if (eq sign :positive) `(> ,x 0) `(< ,x 0))))
-          (list sign))))))
+  (when (approximate-start-p run)
+    (cond ((and refuted (= 2 (length refuted)) (clearly-nonzero-at-values-p run x))
+           (let ((sign (first (set-difference '(:positive :negative) refuted))))
+             (when (and sign
+                        (eq :true (decided-or-by-values-first
+                                   run (if (eq sign :positive) `(> ,x 0) `(< ,x 0)))))
+               (list sign))))
+          ((near-zero-at-values-p run x)
+           ;; vanishing at the event found with numbers: zero, as the values have it
+           (push (list :fact `(= ,x 0) :from :values) (run-assumed run))
+           (list :zero)))))
+
+(defun near-zero-at-values-p (run x)
+  "True when X mentions a parameter, has a value at the run's values, and that value is
+within *APPROXIMATE-START-TOLERANCE* of the size of its terms (not one proven zero: a
+quantity that vanishes at the approximate start, as at the event it approximates)."
+  (let* ((bindings (numeric-bindings run))
+         (value (expression-value x bindings))
+         (size (term-magnitude x bindings)))
+    (and (expression-variables x) (realp value) (realp size) (plusp size)
+         (<= (abs value) (* *approximate-start-tolerance* size)))))
