@@ -58,9 +58,9 @@ whose order is not proven are both worked out."
 
 (test values-decide-signs-at-a-start-found-with-numbers
   "Under values deciding first, a - b (a = 2, b = 1) is positive at a state's start that
-an end found with numbers gave (the fact recorded as assumed from the values), and b - a
-negative; at a start in closed form its sign stays undecided (a fork's fact), and so it
-does without values."
+an end found with numbers gave (the fact recorded as assumed from the values), b - a
+negative, a - 2 b zero (within the tolerance); at a start in closed form the sign of
+a - b stays undecided (a fork's fact), and so it does without values."
   (with-fixture simulator-bridge ()
     (let ((run (two-parameter-run bridge '((a . 2) (b . 1)))))
       (ames.maxima:with-assumptions (bridge '((> a 0) (> b 0)))
@@ -72,7 +72,14 @@ does without values."
              (is (equal '(:positive) (ames.simulator::sign-of run '(- a b))))
              (is (equal '(:negative) (ames.simulator::sign-of run '(- b a))))
              (is (member '(> (- a b) 0) (ames.algebra:facts-from-values) :test #'equal)
-                 "recorded: ~S" (ames.algebra:facts-from-values)))))
+                 "recorded: ~S" (ames.algebra:facts-from-values))
+             ;; (a - 2 b) vanishes at the values (as a friction limit at the event that
+             ;; ended the previous state): zero there, recorded as assumed from them;
+             ;; (a - 2 b + a/10^6) is small but clearly not zero: positive
+             (is (equal '(:zero) (ames.simulator::sign-of run '(- a (* 2 b)))))
+             (is (member '(= (- a (* 2 b)) 0) (mapcar (lambda (entry) (getf entry :fact)) (ames.simulator::run-assumed run))
+                         :test #'equal))
+             (is (equal '(:positive) (ames.simulator::sign-of run '(+ (- a (* 2 b)) (/ a 1000000))))))))
         (let ((without (two-parameter-run bridge '())))
           (setf (ames.simulator::run-time without) '(:no-closed-form :after-state 0))
           (is (equal ames.algebra:+all-signs+ (ames.simulator::sign-of without '(- a b)))))))))
