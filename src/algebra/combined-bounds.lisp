@@ -59,10 +59,19 @@ NIL for another operator."
   "True when X is surely negative at an admissible point (X >= 0 cannot be proven)."
   (relation-refuted-p bridge (list '>= x 0)))
 
+(defparameter *multiplier-nesting* 2
+  "How many DECIDE calls deep a multiplier's proof may go below the question that
+combines the bounds: its own DECIDE and one rewritten relation (the order substitution
+writing a variable as its bound plus an excess, say); deeper questions are cut short.")
+
 (defun proven-nonnegative-p (bridge x strict)
   "True when X > 0 (STRICT) or X >= 0 is proven under the facts in force (DECIDE, without
-this strategy)."
-  (let ((*combining-bounds* t))
+this strategy, and at most *MULTIPLIER-NESTING* calls deep: a multiplier of two facts
+that is not proven at once by the signs, is() or one substitution is rarely proven
+deeper, and the reasoning's nested questions on it took minutes on a pushed block's
+choice search)."
+  (let ((*combining-bounds* t)
+        (*deepest-decision* (min *deepest-decision* (+ (length *deciding*) *multiplier-nesting*))))
     (eq :true (decide bridge (list (if strict '> '>=) x 0)))))
 
 (defun divisors (expression)

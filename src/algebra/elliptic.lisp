@@ -36,7 +36,10 @@ the numeric checks that follow can accept the results)."
             (multiple-value-bind (d phase) (amplitude-and-phase bridge b c)
               (when d
                 (let ((margin (simplified bridge `(- ,a ,d))))
-                  (case (or (decided-sign bridge margin) (witnessed-sign bridge margin))
+                  ;; the regime only picks the formula, never proven (the numeric check
+                  ;; decides): a cheap proof, else the admissible points, not DECIDE's
+                  ;; full strategies (minutes on a tipping block's margin)
+                  (case (or (cheaply-decided-sign bridge margin) (witnessed-sign bridge margin))
                     (:positive (make-sinusoid a d phase k :rotation))
                     ((:negative :zero) (make-sinusoid a d phase k :libration))))))))))))
 
@@ -111,6 +114,12 @@ gives (to be checked numerically); else PHASE."
                (when value (setf n (round value (* 2 pi)))))
              n))
           (shifted (or n 0))))))
+
+(defun cheaply-decided-sign (bridge expression)
+  "The strict sign of EXPRESSION (:POSITIVE or :NEGATIVE) that CHEAP-PROOF proves under the
+current assumptions, or NIL."
+  (cond ((eq :true (cheap-proof bridge (list '> expression 0))) :positive)
+        ((eq :true (cheap-proof bridge (list '< expression 0))) :negative)))
 
 (defun witnessed-sign (bridge expression)
   "The sign EXPRESSION has at every admissible point where it has a value (:POSITIVE or

@@ -256,6 +256,15 @@ is reported unsupported otherwise."
         (t (values :unknown s))))))
 
 (defun angle-candidate (run group condition relation over-angle s with-rate)
+  "A pending CANDIDATE of CONDITION at the angle S of GROUP: its time and rate are worked
+out (FIRING-AT-ANGLE) only when no other candidate on GROUP is proven nearer
+(SETTLE-PENDING-CANDIDATES, pending-candidates.lisp): the travel time and the rate at a
+far angle cost integrals and sign proofs that cannot change which event comes first."
+  (make-pending-candidate
+   condition s group
+   (lambda () (firing-at-angle run group condition relation over-angle s with-rate))))
+
+(defun firing-at-angle (run group condition relation over-angle s with-rate)
   "The CANDIDATE of CONDITION (its RELATION) firing at the angle S of GROUP; its rate in
 time there WITH-RATE (none at a turning point, where the speed's slope is infinite). At
 an angle found with numbers (a rational S under parameter values, numeric-angle-roots.lisp)
@@ -269,7 +278,9 @@ the rate's sign is the numbers' and the time the numeric travel time."
                            (if numeric
                                (let ((r (numeric-or-nil (run-bridge run) rate (run-values run))))
                                  (and r (< r (- (* 1d-9 (max 1d0 (abs r)))))))
-                               (holds run `(< ,rate 0))))))
+                               ;; under values, as the slope's sign at the root
+                               ;; (ANGLE-ROOT-AHEAD): a cheap proof, else the values
+                               (eq :true (decided-or-by-values-first run `(< ,rate 0)))))))
     (make-candidate condition
                     (condition-event condition (and approaching rate))
                     (if numeric

@@ -118,6 +118,8 @@ for the signs the run's values do not refute (SIGNS-REFUTED-BY-VALUES)."
           ;; under values, a sign that fails at them is not tried (no proof exists)
           ((progn (setf refuted (ames.algebra:signs-refuted-by-values (run-bridge run) x))
                   nil))
+          ;; at a start that numbers put there, the values decide first (approximate-starts.lisp)
+          ((sign-at-approximate-start run x refuted))
           ((and (not (member :positive refuted)) (holds run `(> ,x 0))) (list :positive))
           ((and (not (member :negative refuted)) (holds run `(< ,x 0))) (list :negative))
           ((and (not (member :zero refuted))

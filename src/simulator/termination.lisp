@@ -366,6 +366,9 @@ broad-phase.lisp) never fires."
                        unknown))
                 ((not (member condition numeric))
                  (push (condition-event condition nil) never))))))
+    ;; candidates along an angle proven beyond another are dropped, the rest worked out
+    ;; (pending-candidates.lisp)
+    (setf candidates (settle-pending-candidates run candidates))
     ;; roots with no closed form, searched with numbers (numeric-roots.lisp)
     (multiple-value-setq (candidates unknown)
       (add-numeric-roots run solved groups (reverse rooted) candidates unknown))
