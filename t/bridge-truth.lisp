@@ -334,3 +334,19 @@ signalled DIVISION-BY-ZERO from its own reasoning, which ended the run)."
    (lambda (b)
      (is (eq :unknown (decided b '((> d 0) (> g 0))
                                '(< (- (/ (+ (* -2 g d) (* 2 g 0)) (* d 0))) 0)))))))
+
+(test a-root-split-gives-its-numerator-back
+  "Clearing a square root writes the numerator n = a + b sqrt(A) only where a + b sqrt(A)
+gives n back: in sqrt(sin c) sqrt(g) (m cos c - sin c), expanded, sin(c)^(3/2) is free of
+sqrt(sin c) for hipow() but its cube for ratcoef(), which dropped that term (b = m cos c
+sqrt(g), a = 0) and proved the negative form positive."
+  (call-with-bridge
+   (lambda (b)
+     (let ((facts '((> c 0) (< c (/ pi 2)) (> m 0) (> g 0) (< (- (* (cos c) m) (sin c)) 0)))
+           (x '(/ (* (sqrt (sin c)) (sqrt g) (- (* (cos c) m) (sin c)))
+                (* (tan c) (sqrt (- (sin c) (* (cos c) m)))))))
+       (is (eq :true (decided b facts `(< ,x 0))))
+       (is (eq :false (decided b facts `(> ,x 0))))
+       (is (eq :false (decided b facts `(>= ,x 0))))
+       ;; and at numbers that satisfy the facts, the form is negative
+       (is (minusp (ames.base:expression-value (sublis '((c . 1/2) (m . 1/4) (g . 10)) x))))))))

@@ -182,8 +182,11 @@ three-valued logic. Verdicts are cached under the facts in force, like requests.
 question asked again while it is being decided (by the reasoning about a rewritten
 relation) is answered :UNKNOWN there, and so is one nested too deep; an :UNKNOWN that
 owes something to such a cut is not cached.
-Signals UNTRANSLATABLE-EXPRESSION, MAXIMA-ERROR, MAXIMA-TIMEOUT."
+Signals UNTRANSLATABLE-EXPRESSION, MAXIMA-ERROR, MAXIMA-TIMEOUT, and BUDGET-EXCEEDED when
+the running budget's deadline has passed (even for a relation it could decide without
+Maxima)."
   (check-translatable relation :condition)
+  (check-deadline relation)
   (let ((key (verdict-key bridge relation)))
     (multiple-value-bind (verdict found) (cached-answer bridge key)
       (unless found

@@ -325,8 +325,9 @@ already values, quoted so that they are not evaluated twice)."
 (defun $ames_square_root_parts (difference)
   "The list [n, d, k, a, b] for DIFFERENCE = n / d (num and denom of its ratsimp), k a
 square root sqrt(A) in n (AMES-SQUARE-ROOT-KERNEL) in which n is linear, n = a + b k
-(ratcoef of expand(n)); [n, d] when n has no square root or is not linear in it: the
-requests the bridge's SQUARE-ROOT-PART-SIGNS asked one after the other, in one. A
+(ratcoef of expand(n), checked: a + b k gives n back); [n, d] when n has no square root
+or is not linear in it: the requests the bridge's SQUARE-ROOT-PART-SIGNS asked one after
+the other, in one. A
 numerator with a root that AMES-VALIDATE refuses (%i) is an error, as the request that
 sent it back was refused."
   (let* ((simplified (ames-apply '$ratsimp difference))
@@ -339,10 +340,14 @@ sent it back was refused."
                         (if (ames-validate numerator)
                             (merror "AMES server: the numerator is not allowed in a request")
                             (ames-apply '$expand numerator)))))
-    (if (and kernel (eql 1 (ames-apply '$hipow expanded kernel)))
-        (list '(mlist simp) numerator denominator kernel
-              (ames-apply '$ratcoef expanded kernel 0) (ames-apply '$ratcoef expanded kernel 1))
-        (list '(mlist simp) numerator denominator))))
+    (let* ((linear (and kernel (eql 1 (ames-apply '$hipow expanded kernel))))
+           (a (and linear (ames-apply '$ratcoef expanded kernel 0)))
+           (b (and linear (ames-apply '$ratcoef expanded kernel 1))))
+      ;; hipow() sees sin(x)^(3/2) as free of sqrt(sin(x)), ratcoef() as its cube: a
+      ;; numerator is linear in the root only where a + b k gives it back
+      (if (and linear (eql 0 ($ratsimp (sub expanded (add a (mul b kernel))))))
+          (list '(mlist simp) numerator denominator kernel a b)
+          (list '(mlist simp) numerator denominator)))))
 
 (defmspec $ames_each (form)
   "The list of the answers to the unevaluated requests of FORM, each evaluated as
