@@ -66,6 +66,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "truth")
                  (:file "imaginary-radicands")
                  (:file "inverse-angles")
+                 (:file "half-angles")
                  (:file "values")
                  (:file "values-first")
                  (:file "roots")
@@ -146,7 +147,8 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "turning")
                  (:file "rope-swing")
                  (:file "radial-turning")
-                 (:file "energy")))
+                 (:file "energy")
+                 (:file "event-kinds")))
    (:module "scenario" :pathname "src/scenario/" :serial t
     :depends-on ("base" "algebra" "geometry")
     :components ((:file "package")

@@ -274,3 +274,13 @@ non-zero at its end."
                     (ames.maxima:equivalent-p bridge `(- ,(second relation) ,(third relation))
                                               (in-scenario-terms scenario '(- mu (tan a)))))
                "~S" value)))))))
+
+(test a-query-names-only-declared-kinds-of-event
+  "A query's event pattern names a kind the knowledge base declares: (:zork A B) is
+refused when the scenario is read, (:collision A B) is taken."
+  (signals ames.scenario:scenario-error
+    (scenario-from-text (format nil *rough-incline-text*
+                                '("(query q (value (speed particle) :at (:zork particle incline)))"))))
+  (is (typep (scenario-from-text (format nil *rough-incline-text*
+                                         '("(query q (value (speed particle) :at (:collision particle incline)))")))
+             'ames.scenario:scenario)))

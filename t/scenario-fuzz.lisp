@@ -120,9 +120,13 @@ its kind."
             (let ((i (+ 3 (random (- (length form) 3) state))))
               (replace-at form (list i) (list (nth i form))))))
        (:drop-parameters
-        (remove-if (lambda (clause)
-                     (and (consp clause) (symbolp (car clause)) (string= (car clause) "PARAMETERS")))
-                   form))
+        ;; a scenario written in numbers has no parameters to drop: wrapped instead (no
+        ;; draw of the dice, so the other forms' mutations stay as they were)
+        (if (clause-indices form "PARAMETERS")
+            (remove-if (lambda (clause)
+                         (and (consp clause) (symbolp (car clause)) (string= (car clause) "PARAMETERS")))
+                       form)
+            (list form)))
        (:odd-keywords
         (let* ((i (random-element (clause-indices form "BODY") state))
                (clause (nth i form))

@@ -115,9 +115,11 @@ parameters taking their values from BINDINGS (an alist name -> real)."
 (defun constant-relation-by-intervals (relation)
   "The truth of RELATION, (OP LHS RHS) with OP among < <= > >= = /= over numbers and PI
 alone, when the interval of LHS - RHS excludes 0: :TRUE or :FALSE; NIL otherwise (a name
-in it, an interval holding 0, a form without an interval)."
+in it, an interval holding 0, a form without an interval, and two rational sides, which
+Maxima compares exactly as it always did)."
   (when (and (consp relation) (member (first relation) '(< <= > >= = /=))
              (= (length relation) 3)
+             (not (and (rationalp (second relation)) (rationalp (third relation))))
              (null (expression-variables relation)))
     (let ((d (interval-value `(- ,(second relation) ,(third relation)) '())))
       (when d

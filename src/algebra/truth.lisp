@@ -17,7 +17,9 @@
 ;;;;   7. inverse angles: sin, cos and tan of angles made of asin, acos, atan expanded into
 ;;;;      algebra (inverse-angles.lisp);
 ;;;;   8. polar angles: atan2(y, x) with y of known sign written pi/2 - atan(x/y) or
-;;;;      -pi/2 - atan(x/y) (inverse-angles.lisp).
+;;;;      -pi/2 - atan(x/y) (inverse-angles.lisp);
+;;;;   9. half angles: sin, cos and tan of a plain angle written in t = tan(x/2)
+;;;;      (half-angles.lisp).
 ;;;; Every step is an equivalence or a sound relaxation, so a :TRUE or :FALSE it finds is
 ;;;; proven; a step that cannot apply answers :UNKNOWN. Steps ask DECIDE about smaller or
 ;;;; rewritten relations; DECIDE stops a question that is already under way, and
@@ -291,7 +293,7 @@ by its CDR."
 (defparameter *reasoning-steps*
   '(decide-by-quarter-turns decide-by-signed-parts decide-by-common-factors
     decide-by-monotonicity decide-by-squares decide-by-angle-substitution
-    decide-by-inverse-angle-expansion decide-by-polar-angles)
+    decide-by-inverse-angle-expansion decide-by-polar-angles decide-by-half-angles)
   "The steps of DECIDE-BY-REASONING, in the order they are tried.")
 
 (defun decide-by-reasoning (bridge relation)

@@ -324,12 +324,12 @@ already values, quoted so that they are not evaluated twice)."
 
 (defun $ames_square_root_parts (difference)
   "The list [n, d, k, a, b] for DIFFERENCE = n / d (num and denom of its ratsimp), k a
-square root sqrt(A) in n (AMES-SQUARE-ROOT-KERNEL) in which n is linear, n = a + b k
-(ratcoef of expand(n), checked: a + b k gives n back); [n, d] when n has no square root
-or is not linear in it: the requests the bridge's SQUARE-ROOT-PART-SIGNS asked one after
-the other, in one. A
-numerator with a root that AMES-VALIDATE refuses (%i) is an error, as the request that
-sent it back was refused."
+square root sqrt(A) in n (AMES-SQUARE-ROOT-KERNEL) and n = a + b k exactly: expand(n)
+with k written as a fresh z (ratsubst(), which also reads sin(x)^(3/2) as z^3 and
+2^(5/2) as z^5), its remainder by z^2 - A, whose coefficients of z^0 and z^1 are a and b;
+[n, d] when n has no square root, or a or b still holds z. The requests the bridge's
+SQUARE-ROOT-PART-SIGNS asked one after the other, in one. A numerator with a root that
+AMES-VALIDATE refuses (%i) is an error, as the request that sent it back was refused."
   (let* ((simplified (ames-apply '$ratsimp difference))
          (numerator (ames-apply '$num simplified))
          (denominator (ames-apply '$denom simplified))
@@ -339,15 +339,20 @@ sent it back was refused."
                         ;; own when there was a root: refused as that request was
                         (if (ames-validate numerator)
                             (merror "AMES server: the numerator is not allowed in a request")
-                            (ames-apply '$expand numerator)))))
-    (let* ((linear (and kernel (eql 1 (ames-apply '$hipow expanded kernel))))
-           (a (and linear (ames-apply '$ratcoef expanded kernel 0)))
-           (b (and linear (ames-apply '$ratcoef expanded kernel 1))))
-      ;; hipow() sees sin(x)^(3/2) as free of sqrt(sin(x)), ratcoef() as its cube: a
-      ;; numerator is linear in the root only where a + b k gives it back
-      (if (and linear (eql 0 ($ratsimp (sub expanded (add a (mul b kernel))))))
-          (list '(mlist simp) numerator denominator kernel a b)
-          (list '(mlist simp) numerator denominator)))))
+                            (ames-apply '$expand numerator))))
+         (z '$ames_root_z)
+         (linear (and kernel
+                      ;; hipow() and ratcoef() of expand(n) in k disagree on powers of
+                      ;; k written as powers of A (sin(x)^(3/2), 2^(5/2)): reduce
+                      ;; the polynomial in z modulo z^2 = A instead
+                      (ames-apply '$ratdisrep
+                                  (ames-apply '$remainder (ames-apply '$ratsubst z kernel expanded)
+                                              (sub (power z 2) (second kernel)) z))))
+         (a (and linear (ames-apply '$ratcoef linear z 0)))
+         (b (and linear (ames-apply '$ratcoef linear z 1))))
+    (if (and linear ($freeof z a) ($freeof z b))
+        (list '(mlist simp) numerator denominator kernel a b)
+        (list '(mlist simp) numerator denominator))))
 
 (defmspec $ames_each (form)
   "The list of the answers to the unevaluated requests of FORM, each evaluated as

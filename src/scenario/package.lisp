@@ -32,6 +32,8 @@ never code), the validator that turns a scenario form into a SCENARIO object or 
 SCENARIO-ERROR naming the clause or body at fault, and the checks that need the geometry
 and Maxima (assumptions, overlaps).")
   (:export
+   ;; the event kinds a query may name, set by the knowledge base (queries.lisp)
+   #:*event-kinds*
    ;; conditions (conditions.lisp)
    #:scenario-error #:scenario-error-scenario #:scenario-error-location
    #:scenario-error-clause #:scenario-error-source

@@ -72,10 +72,19 @@ UNDECLARED-SYMBOL-ERROR naming X when nothing of that name is declared."
                              (show (car x))))
              (cons operator (mapcar (lambda (y) (checked-quantity validation y)) (rest x)))))))
 
+(defvar *event-kinds* nil
+  "NIL, or a function of no arguments giving the kinds of event (keywords) the knowledge
+base declares, which a query's event pattern must name; the knowledge base sets it.")
+
 (defun checked-pattern (validation x)
-  "The event pattern X, (:KIND NAME...), with its names declared."
+  "The event pattern X, (:KIND NAME...), with its names declared and, where
+*EVENT-KINDS* gives them, its KIND among the declared ones."
   (unless (and (consp x) (proper-list-p x) (keywordp (car x)))
     (query-reject validation x "an event is written as it is printed, (:KIND BODY ...), not ~A" (show x)))
+  (let ((kinds (and *event-kinds* (funcall *event-kinds*))))
+    (when (and kinds (not (member (car x) kinds)))
+      (query-reject validation x "~A is no kind of event; the kinds are ~{~(~S~)~^, ~}"
+                    (show (car x)) (sort (copy-list kinds) #'string<))))
   (cons (car x) (mapcar (lambda (name)
                           (if (keywordp name) name (query-name-of validation name "body or rope")))
                         (rest x))))
