@@ -350,3 +350,16 @@ sqrt(g), a = 0) and proved the negative form positive."
        (is (eq :false (decided b facts `(>= ,x 0))))
        ;; and at numbers that satisfy the facts, the form is negative
        (is (minusp (ames.base:expression-value (sublis '((c . 1/2) (m . 1/4) (g . 10)) x))))))))
+
+(test half-angles-place-sums-of-sines-and-cosines
+  "1 + sin a - cos a > 0 for 0 < a < pi/2 (t = tan(a/2): 2t (1 + t)/(1 + t^2)), the
+factor of the disc down the wedge's fork; sin a + cos a > 1 there too (2t (1 - t) > 0 over
+1 + t^2); 1 - sin a - cos a is left open for 0 < a < pi (its sign changes at pi/2)."
+  (call-with-bridge
+   (lambda (b)
+     (let ((quarter '((> a 0) (< a (/ pi 2)))))
+       (is (eq :true (decided b quarter '(> (- (+ 1 (sin a)) (cos a)) 0))))
+       (is (eq :true (decided b quarter '(> (+ (sin a) (cos a)) 1))))
+       (is (eq :false (decided b (list* '(> h 0) '(> r 0) quarter)
+                               '(< (+ (* (cos a) (expt h 2)) (* (- (+ 1 (sin a)) (cos a)) h r)) 0))))
+       (is (eq :unknown (decided b '((> a 0) (< a pi)) '(> (- 1 (sin a) (cos a)) 0))))))))
