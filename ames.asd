@@ -193,6 +193,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "conditions-over-time")
                  (:file "guarded-meetings")
                  (:file "choice")
+                 (:file "choice-preferences")
                  (:file "choice-subsets")
                  (:file "frozen-rotation")
                  (:file "integrators")
