@@ -111,40 +111,5 @@ positive root, not the other one)."
               (is-same bridge "back on its face" (final back #'ames::state-final-angles) 0)
               (is-same bridge "the speed it started with" (final back #'ames::state-final-angular-velocities) 1))))))))
 
-;;; Corners put exactly on their faces at a numeric state's end (corner-snapping.lisp)
-
-(test rod-sliding-off-a-ledge-ends-exactly-at-its-edge
-  "The rod of scenarios/rod-lands-across-a-ledge.lisp, under its values, slides on the
-ledge's edge (integrated numerically) until the edge reaches its left end: the state's end
-puts that end exactly at the edge, (x, y) = (l/2)(cos theta, sin theta) with theta the
-integrated angle (Maxima-checked equivalence, not a number within 1e-12), and gives the
-rod's velocity no component into the edge's face."
-  (with-fixture simulator-bridge ()
-    (let* ((form (let ((form (copy-tree (ames:scenario-form (scenario-named "rod-lands-across-a-ledge")))))
-                   (setf (cdr (assoc 'ames-scenario::simulate (cdddr form))) '(:states 2))
-                   form))
-           (scenario (ames:parse-scenario form))
-           (values (ames.scenario:run-parameter-values scenario :numeric t)))
-      (multiple-value-bind (history states) (run-of scenario bridge :parameter-values values)
-        (declare (ignore history))
-        (is (= 2 (length states)))
-        (when (= 2 (length states))
-          (let* ((slide (second states))
-                 (position (per-body (ames::state-final-positions slide) "ROD"))
-                 (velocity (per-body (ames::state-final-velocities slide) "ROD"))
-                 (theta (per-body (ames::state-final-angles slide) "ROD"))
-                 (omega (per-body (ames::state-final-angular-velocities slide) "ROD"))
-                 (l (find "L" (ames:scenario-parameters scenario)
-                          :key (lambda (p) (string (ames:scenario-parameter-name p))) :test #'string=))
-                 (l (ames:scenario-parameter-name l)))
-            (is (member :endpoint (ames::state-end-event slide)))
-            (is-same bridge "the rod's left end at the edge, x" (first position) `(* (/ ,l 2) (cos ,theta)))
-            (is-same bridge "the rod's left end at the edge, y" (second position) `(* (/ ,l 2) (sin ,theta)))
-            ;; the edge (0, 0) on the rod's face: the rate of its gap, the velocity of the
-            ;; rod's point at the edge across the rod, (v + omega k x r) . n = 0, with
-            ;; r = -(l/2)(cos, sin) and n = (-sin, cos)
-            (is-same bridge "no velocity into the edge"
-                     `(+ (* (- (sin ,theta)) (+ ,(first velocity) (* ,omega (/ ,l 2) (sin ,theta))))
-                         (* (cos ,theta) (- ,(second velocity) (* ,omega (/ ,l 2) (cos ,theta)))))
-                     0)
-            ))))))
+;;; Corners put exactly on their faces at a numeric state's end (corner-snapping.lisp) are
+;;; checked on the rod sliding off the ledge, in t/ledge-impacts.lisp.
