@@ -60,10 +60,20 @@ itself), or NIL."
   "True when SPEC, part of a parameter's declaration, is a default (:VALUE NUMBER)."
   (and (consp spec) (symbolp (first spec)) (string= (symbol-name (first spec)) "VALUE")))
 
+(defun selects-parameter-p (clause parameter)
+  "True when CLAUSE is a query selecting PARAMETER, (query NAME (parameter PARAMETER ...))."
+  (and (consp clause) (symbolp (first clause)) (string= (symbol-name (first clause)) "QUERY")
+       (consp (cddr clause)) (consp (third clause)) (symbolp (first (third clause)))
+       (string= (symbol-name (first (third clause))) "PARAMETER")
+       (symbolp (second (third clause)))
+       (string= (symbol-name (second (third clause))) (symbol-name parameter))))
+
 (defun substituted-form (form parameter value)
   "The scenario FORM with PARAMETER replaced by VALUE everywhere (in the other
 parameters' assumptions too) but in its own declaration, which is dropped, and with no
-parameter's default value."
+parameter's default value. A query selecting PARAMETER is left out: its answer is read
+off every path of the run (ANSWER-QUESTION), this boundary's among them, in the
+scenario that declares it."
   (labels ((walk (x)
              (cond ((and (symbolp x) (string= (symbol-name x) (symbol-name parameter))) value)
                    ((atom x) x)
@@ -86,7 +96,7 @@ parameter's default value."
                                                                             (symbol-name parameter)))))
                                            (rest clause))))
                   (walk clause)))
-            form)))
+            (remove-if (lambda (clause) (selects-parameter-p clause parameter)) form))))
 
 (defun parameter-facts (scenario parameter value)
   "The assumptions SCENARIO declares on PARAMETER, with VALUE put for it."
