@@ -43,6 +43,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "root-forms")
                  (:file "prefetch")
                  (:file "weaker-assumptions")
+                 (:file "compiled-server")
                  (:static-file "maxima-server.lisp")
                  (:static-file "maxima-server-functions.lisp")))
    (:module "algebra" :pathname "src/algebra/" :serial t
