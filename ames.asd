@@ -420,6 +420,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "hardening-fuzz")
                (:file "scale")
                (:file "elimination")
+               (:file "compiled-server")
                (:file "deferred-pairs")
                (:file "self-check")
                (:file "line-turning")
