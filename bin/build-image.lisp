@@ -8,7 +8,7 @@
 ;;; The request server compiled by Maxima's GCL into build/gcl/ (see the bridge's
 ;;; compiled-server.lisp): every Maxima a run starts loads it compiled. Without gcc the
 ;;; sources are loaded, as before.
-(unless (ames.maxima::compile-server-files)
+(unless (ignore-errors (ames.maxima::compile-server-files))
   (format *error-output* "~&the request server could not be compiled: Maxima loads its sources~%"))
 
 ;;; A warm-up before saving: one run of a small scenario with its text report, so that
