@@ -5,6 +5,12 @@
 (asdf:load-asd (merge-pathnames "../ames.asd" *load-truename*))
 (asdf:load-system "ames")
 
+;;; The request server compiled by Maxima's GCL into build/gcl/ (see the bridge's
+;;; compiled-server.lisp): every Maxima a run starts loads it compiled. Without gcc the
+;;; sources are loaded, as before.
+(unless (ignore-errors (ames.maxima::compile-server-files))
+  (format *error-output* "~&the request server could not be compiled: Maxima loads its sources~%"))
+
 ;;; A warm-up before saving: one run of a small scenario with its text report, so that
 ;;; what the first run in a process pays once (the generic functions' dispatch caches
 ;;; filled on first call, the rule engine's first matches, the first garbage collections

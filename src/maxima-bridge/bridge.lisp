@@ -210,7 +210,7 @@ Signals MAXIMA-PROCESS-DIED when Maxima cannot be started."
           (handler-case
               (sb-ext:run-program (bridge-program bridge)
                                   (list "--very-quiet" "--init=ames-bridge-no-init"
-                                        "-p" (namestring (truename *server-file*)))
+                                        "-p" (namestring (truename (server-file-to-load))))
                                   :search t :wait nil :input :stream :output :stream
                                   :error :output :external-format :latin-1)
             (error (c)

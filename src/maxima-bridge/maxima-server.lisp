@@ -139,9 +139,13 @@ a NUL character, so NUL is looked for separately.)"
 
 ;;; The Maxima functions the bridge calls ($AMES_...), and the presentation's, live in
 ;;; their own file beside this one (GCL code too); loaded here, after the whitelist they
-;;; extend and before the loop.
+;;; extend and before the loop. Beside the compiled server (build/gcl/, see the bridge's
+;;; compiled-server.lisp) it is compiled too.
 
-(load (merge-pathnames "maxima-server-functions.lisp" *load-truename*))
+(let ((compiled (merge-pathnames "maxima-server-functions.o" *load-truename*)))
+  (load (if (probe-file compiled)
+            compiled
+            (merge-pathnames "maxima-server-functions.lisp" *load-truename*))))
 
 ;;; The loop.
 

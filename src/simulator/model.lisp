@@ -40,68 +40,7 @@ rate term, in canonical order."
         when (eq (first belief) 'ames.kb:reported)
           collect (list (second belief) (third belief))))
 
-;;; Elimination of definitions
-
-(defun definition-of (equation unknowns)
-  "When EQUATION is (= TERM EXPR) or (= EXPR TERM) with TERM one of UNKNOWNS (a hash
-table) not occurring in EXPR, (values TERM EXPR); else NIL."
-  (flet ((try (term expression)
-           (when (and (quantity-term-p term) (gethash term unknowns)
-                      (free-of-p term expression))
-             (return-from definition-of (values term expression)))))
-    (try (relation-lhs equation) (relation-rhs equation))
-    (try (relation-rhs equation) (relation-lhs equation))
-    nil))
-
-(defun eliminate-definitions (equations unknowns)
-  "Eliminate from EQUATIONS every unknown that one of them defines outright (see
-DEFINITION-OF): returns the remaining equations (with the definitions substituted) and
-the definitions, an alist term -> expression in the order they were eliminated (an
-expression may mention terms eliminated later, never earlier). The first equation (in
-order) that is a definition is eliminated first; an index of which equations mention
-which unknown keeps each substitution to the equations it concerns."
-  (let* ((table (make-hash-table :test #'equal))
-         (remaining (coerce equations 'vector))
-         (count (length remaining))
-         (gone (make-array count :element-type 'bit :initial-element 0))
-         (pending (make-array count :element-type 'bit :initial-element 1))
-         (mentions (make-hash-table :test #'equal))
-         (definitions '())
-         (next 0))
-    (dolist (unknown unknowns) (setf (gethash unknown table) t))
-    (flet ((note-mentions (index expression)
-             (dolist (term (expression-variables expression))
-               (when (gethash term table) (pushnew index (gethash term mentions))))))
-      (dotimes (index count) (note-mentions index (aref remaining index)))
-      ;; only an equation changed by a substitution can become a definition: look at
-      ;; each pending one in order, from the earliest
-      (loop while (< next count)
-            do (if (zerop (aref pending next))
-                   (incf next)
-                   (progn
-                     (setf (aref pending next) 0)
-                     (multiple-value-bind (term expression) (definition-of (aref remaining next) table)
-                       (when term
-                         (remhash term table)
-                         (setf (aref gone next) 1)
-                         (push (cons term expression) definitions)
-                         (let ((binding (list (cons term expression)))
-                               (earliest next))
-                           (dolist (index (gethash term mentions))
-                             (when (and (zerop (aref gone index))
-                                        (not (free-of-p term (aref remaining index))))
-                               (setf (aref remaining index)
-                                     (substitute-expressions binding (aref remaining index))
-                                     (aref pending index) 1
-                                     earliest (min earliest index))
-                               (note-mentions index expression)))
-                           (setf next earliest))))))))
-    (values (remove-if (lambda (equation)
-                         (equal (relation-lhs equation) (relation-rhs equation)))
-                       (loop for index below count
-                             when (zerop (aref gone index))
-                               collect (fold-zeros (aref remaining index))))
-            (nreverse definitions))))
+;;; Elimination of definitions: see elimination.lisp
 
 (defun fold-zeros (expression)
   "EXPRESSION with products holding a literal 0 replaced by 0 and zero terms of sums and
