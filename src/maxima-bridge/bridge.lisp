@@ -335,6 +335,12 @@ MAXIMA-OUTPUT-OVERFLOW or MAXIMA-PROCESS-DIED."
       (when found
         (incf (statistics-cache-hits record))
         (return-from maxima-request answer)))
+    ;; a definite sign() or is() answer found under fewer facts (weaker-assumptions.lisp)
+    (when key
+      (multiple-value-bind (answer found) (inherited-answer bridge form)
+        (when found
+          (incf (statistics-cache-hits record))
+          (return-from maxima-request answer))))
     (multiple-value-bind (timeout budget-bound) (request-timeout bridge)
       (when (and budget-bound (<= timeout 0)) (signal-out-of-time datum))
       (multiple-value-bind (status data) (request-with-restart bridge form datum timeout)
