@@ -31,6 +31,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
     :components ((:file "package")
                  (:file "conditions")
                  (:file "translation")
+                 (:file "fact-free-requests")
                  (:file "bridge")
                  (:file "framing")
                  (:file "assumptions")

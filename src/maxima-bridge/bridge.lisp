@@ -329,7 +329,7 @@ Signals MAXIMA-ERROR, MAXIMA-QUESTION (restart ASSUME-AND-RETRY), MAXIMA-TIMEOUT
 MAXIMA-BUDGET-EXCEEDED (the run's time is up, before or during the request),
 MAXIMA-OUTPUT-OVERFLOW or MAXIMA-PROCESS-DIED."
   (let* ((record (bridge-statistics-record bridge))
-         (key (and cache (cons form (assumption-key bridge)))))
+         (key (and cache (request-key bridge form))))
     (incf (statistics-calls record))
     (multiple-value-bind (answer found) (if key (gethash key (bridge-cache bridge)) (values nil nil))
       (when found

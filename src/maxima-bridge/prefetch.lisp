@@ -23,7 +23,6 @@ BRIDGE's cache does not hold yet, each once, in order. Atoms, numbers and untran
 expressions are left out."
   (let ((seen (make-hash-table :test #'equal))
         (cache (bridge-cache bridge))
-        (assumptions (assumption-key bridge))
         (pairs '()))
     (dolist (expression expressions (nreverse pairs))
       (unless (or (atom expression) (rationalp expression))
@@ -31,7 +30,7 @@ expressions are left out."
                       (maxima-condition () nil))))
           (when (consp form)
             (let* ((request (simplest-form-request form))
-                   (key (cons request assumptions)))
+                   (key (request-key bridge request)))
               (unless (or (gethash key seen) (nth-value 1 (gethash key cache)))
                 (setf (gethash key seen) t)
                 (push (cons key request) pairs)))))))))
@@ -82,10 +81,9 @@ the single requests are then asked as without the prefetch. Signals
 MAXIMA-BUDGET-EXCEEDED when the run's time is up."
   (let ((seen (make-hash-table :test #'equal))
         (cache (bridge-cache bridge))
-        (assumptions (assumption-key bridge))
         (pairs '()))
     (dolist (request requests)
-      (let ((key (cons request assumptions)))
+      (let ((key (request-key bridge request)))
         (unless (or (gethash key seen) (nth-value 1 (gethash key cache))
                     (nth-value 1 (inherited-answer bridge request)))
           (setf (gethash key seen) t)
