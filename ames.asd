@@ -332,6 +332,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "bridge-integrators")
                (:file "bridge-truth")
                (:file "weaker-assumptions")
+               (:file "fact-free-requests")
                (:file "truth-table")
                (:file "algebra-signs")
                (:file "scenario")
