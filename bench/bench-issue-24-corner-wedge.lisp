@@ -1,5 +1,6 @@
 ;;;; bench/bench-issue-24-corner-wedge.lisp -- two rows of issue 24 beside a baseline
-;;;; checkout: the wedge run cold, and the thesis's corner under --numeric.
+;;;; checkout: the wedge run cold, and the thesis's corner under --numeric (and, in
+;;;; process, without values).
 ;;;;
 ;;;; Wall times of whole bin/ames processes (the least of RUNS), of this checkout and, when
 ;;;; the environment variable AMES_BASELINE names another checkout (e.g. a worktree of the
@@ -38,6 +39,13 @@
 ;;;;   corner --numeric, run           2972 trips  8.1 s    2349 trips  6.2 s  (Maxima CPU)
 ;;;;   corner --numeric, text report   1031 trips  3.2 s     530 trips  1.3 s
 ;;;;   corner --numeric, bin/ames wall 94.5 s               51.4 s (the same minutes)
+;;;;
+;;;; Figures of 2026-11-26 (branch s6-corner against main a1f5c78, in process, load average
+;;;; 8-12; see bench/results-issue-24-corner.txt; CPU seconds, Maxima's from /proc):
+;;;;                                   main                          s6-corner
+;;;;   corner without values, run      4874 trips 14.0 + 2.9 s SBCL  4513 trips 13.1 + 2.7 s SBCL
+;;;;   corner --numeric, run           2322 trips  6.1 + 1.6 s SBCL  2252 trips  6.0 + 1.6 s SBCL
+;;;;   corner --numeric, text report    530 trips  1.1 + 0.3 s SBCL   527 trips  1.1 + 0.2 s SBCL
 
 (defpackage #:ames.bench.corner-wedge
   (:use #:cl)
@@ -165,7 +173,8 @@ the in-process figures."
   (when baseline (wedge-phases baseline bare))
   (format t "  this checkout, in process (load-independent): round trips and Maxima CPU~%")
   (loop for (label file numeric) in '(("the wedge" "particle-on-wedge.lisp" nil)
-                                      ("the corner, --numeric" "two-blocks-in-corner.lisp" t))
+                                      ("the corner, --numeric" "two-blocks-in-corner.lisp" t)
+                                      ("the corner, without values" "two-blocks-in-corner.lisp" nil))
         do (multiple-value-bind (trips cpu report-trips report-cpu) (in-process-figures file numeric)
              (format t "  ~34A run ~5D trips ~6,2F s CPU; text report ~5D trips ~6,2F s CPU~%"
                      label trips cpu report-trips report-cpu)

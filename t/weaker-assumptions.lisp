@@ -1,4 +1,4 @@
-;;;; t/weaker-assumptions.lisp -- a verdict proven under some facts is taken over under more
+;;;; t/weaker-assumptions.lisp -- a verdict (or a definite sign() or is() answer) proven under some facts is taken over under more
 ;;;; facts (a branch does not prove again what its parent proved before the fork), and only
 ;;;; then: never from a sibling's facts, never an undecided one.
 
@@ -46,3 +46,34 @@ over by the other, whose facts do not include it; each gets its own, opposite ve
          (ames.maxima:with-assumptions (b '((> f (* m g))))
            (is (eq :false (ames.algebra:decide b relation)))
            (is (eq :true (ames.algebra:decide b '(> f (* m g)))))))))))
+
+(test a-definite-sign-holds-under-more-facts
+  "Maxima's sign() of m g + 1, pos under m, g > 0, is pos under f > m g too, without a
+round trip (the request's definite answer is taken over); sign() of
+f - m g, any sign under m, g > 0 alone, is asked again under f > m g, and is pos there."
+  (call-with-bridge
+   (lambda (b)
+     (ames.maxima:with-assumptions (b '((> m 0) (> g 0)))
+       (let ((product '(+ (* m g) 1)))
+         (is (equal '(:positive) (ames.maxima:maxima-signs b product)))
+         (is (equal '(:negative :positive :zero)
+                    (sort (copy-list (ames.maxima:maxima-signs b '(- f (* m g)))) #'string<)))
+         (ames.maxima:with-assumptions (b '((> f (* m g))))
+           (let ((trips (maxima-round-trips b)))
+             (is (equal '(:positive) (ames.maxima:maxima-signs b product)))
+             (is (= trips (maxima-round-trips b)))
+             (is (equal '(:positive) (ames.maxima:maxima-signs b '(- f (* m g)))))
+             (is (< trips (maxima-round-trips b))))))))))
+
+(test a-sibling-branch-lends-no-sign
+  "sign() of m g - f is neg under f > m g and pos under its sibling f < m g: a definite
+answer is taken over from fewer facts only, never from a sibling's."
+  (call-with-bridge
+   (lambda (b)
+     (ames.maxima:with-assumptions (b '((> m 0) (> g 0)))
+       (let ((difference '(- (* m g) f)))
+         (ames.maxima:with-assumptions (b '((> f (* m g))))
+           (is (equal '(:negative) (ames.maxima:maxima-signs b difference))))
+         (ames.maxima:with-assumptions (b '((< f (* m g))))
+           (is (equal '(:positive) (ames.maxima:maxima-signs b difference)))
+           (is (eq :true (ames.maxima:maxima-is b '(> (* m g) f))))))))))

@@ -52,3 +52,42 @@ now. Oldest first."
                 do (setf (cdr entry) (append (cdr entry) (list other))))
         (setf (car entry) known)))
     (cdr entry)))
+
+;;; Definite answers of sign() and is() taken over
+
+(defparameter *sign-head* (wire "$SIGN") "The head of a sign() request.")
+(defparameter *is-head* (wire "$IS") "The head of an is() request.")
+
+(defun definite-answer-p (form answer)
+  "True when ANSWER, Maxima's answer to the request FORM, is one that more facts cannot
+change: sign() of pos, neg or zero, is() true or false. Any other request or answer
+(pz, pnz, unknown, a simplified form) is NIL: more facts may narrow a sign or make a
+simpler form."
+  (let ((head (and (consp form) (consp (first form)) (first (first form)))))
+    (cond ((eq head *sign-head*)
+           (and (symbolp answer) (member (symbol-name answer) '("$POS" "$NEG" "$ZERO")
+                                         :test #'string=)
+                t))
+          ((eq head *is-head*) (or (eq answer +true+) (eq answer +false+)))
+          (t nil))))
+
+(defun sign-or-is-request-p (form)
+  "True when the Maxima request FORM is a sign() or an is() question."
+  (and (consp form) (consp (first form))
+       (or (eq (first (first form)) *sign-head*) (eq (first (first form)) *is-head*))))
+
+(defun inherited-answer (bridge form)
+  "The answer to the sign() or is() request FORM that BRIDGE's cache holds under facts
+that are a strict part of the facts in force (see WEAKER-ASSUMPTION-KEYS), when it is
+definite (DEFINITE-ANSWER-P): (values ANSWER T), the answer then also cached under the
+facts in force; else (values NIL NIL). Sound as INHERITED-VERDICT is: what sign() or
+is() showed from fewer facts holds under more (in a branch, the fork's own questions
+asked again under the branch's fact)."
+  (when (and (sign-or-is-request-p form) (bridge-frames bridge))
+    (let ((cache (bridge-cache bridge)))
+      (dolist (id (weaker-assumption-keys bridge) (values nil nil))
+        (multiple-value-bind (answer found) (gethash (cons form id) cache)
+          (when (and found (definite-answer-p form answer))
+            (when (>= (hash-table-count cache) *cache-limit*) (clrhash cache))
+            (setf (gethash (cons form (assumption-key bridge)) cache) answer)
+            (return (values answer t))))))))
