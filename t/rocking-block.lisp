@@ -113,3 +113,37 @@ positive root, not the other one)."
 
 ;;; Corners put exactly on their faces at a numeric state's end (corner-snapping.lisp) are
 ;;; checked on the rod sliding off the ledge, in t/ledge-impacts.lisp.
+
+;;; The symbolic rocking block's bound, w0^2 < 3 g (sqrt(w^2 + k^2) - k) / (w^2 + k^2) (it
+;;; does not go over its edge), as the run asks it: a polynomial in w0 that is convex
+;;; between the bounds 0 and that root (src/algebra/convex-bounds.lisp).
+
+(defparameter *rocking-bound-facts*
+  '((> g 0) (> w 0) (> k 0) (> w0 0)
+    (< w0 (sqrt (/ (* 3 g (- (sqrt (+ (expt w 2) (expt k 2))) k)) (+ (expt w 2) (expt k 2))))))
+  "The symbolic rocking block's declared facts: w0 below the speed that brings its centre
+over its edge.")
+
+(defun rocking-over-the-top (factor)
+  "(D^2 w0^2 + 3 g k)^2 - 9 g^2 FACTOR D^2, D^2 = w^2 + k^2: negative for FACTOR = 1
+exactly when the energy (1/2) I_edge w0^2 is less than m g (D - k)/2, the rise of the
+centre to its top over the edge."
+  `(- (expt (+ (* (+ (expt w 2) (expt k 2)) (expt w0 2)) (* 3 g k)) 2)
+      (* 9 (expt g 2) ,factor (+ (expt w 2) (expt k 2)))))
+
+(test convexity-between-declared-bounds
+  "DECIDE proves what follows from a polynomial's convexity between two declared bounds,
+and nothing that fails at an admissible point."
+  (call-with-bridge
+   (lambda (b)
+     ;; 0 < x < 1: x^2 - x < 0 (convex, zero at both ends)
+     (is (eq :true (decided b '((> x 0) (< x 1)) '(< (- (expt x 2) x) 0))))
+     (is (eq :false (decided b '((> x 0) (< x 1)) '(>= (- (expt x 2) x) 0))))
+     ;; but not x^2 - x/2 < 0 (1/2 at x = 1 - epsilon)
+     (is (not (eq :true (decided b '((> x 0) (< x 1)) '(< (- (expt x 2) (* 1/2 x)) 0)))))
+     ;; the rocking block: below the top
+     (let ((over (rocking-over-the-top 1)))
+       (is (eq :true (decided b *rocking-bound-facts* `(< ,over 0))))
+       (is (eq :false (decided b *rocking-bound-facts* `(>= ,over 0)))))
+     ;; a smaller top is not proven (w0 may be above it)
+     (is (not (eq :true (decided b *rocking-bound-facts* `(< ,(rocking-over-the-top 1/2) 0))))))))
