@@ -225,6 +225,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "numeric-angle-roots")
                  (:file "angle-intervals")
                  (:file "corner-snapping")
+                 (:file "flat-corner-snapping")
                  (:file "approximate-starts")
                  (:file "pending-candidates")
                  (:file "states")
