@@ -147,3 +147,49 @@ and nothing that fails at an admissible point."
        (is (eq :false (decided b *rocking-bound-facts* `(>= ,over 0)))))
      ;; a smaller top is not proven (w0 may be above it)
      (is (not (eq :true (decided b *rocking-bound-facts* `(< ,(rocking-over-the-top 1/2) 0))))))))
+
+;;; A body resting by two corners on one face at a numeric state's end is put back flat on
+;;; it (src/simulator/flat-corner-snapping.lisp): the rocking block on a frictionless floor
+;;; (two degrees of freedom, integrated numerically) falls back onto its face; its angle,
+;;; off 0 by the integration's round-off, is moved to 0 exactly and its centre to the
+;;; height k/2 = 1, where both bottom corners are on the floor. An angle further off than
+;;; the tolerance, or one corner only near the floor, is left as it is. (The run itself
+;;; still stops where that corner strikes the floor at a speed: src/simulator/numeric.lisp.)
+
+(defparameter *frictionless-rocking-block*
+  "(scenario frictionless-rocking-block
+     \"The rocking block of scenarios/block-rocking-on-an-edge.lisp on a frictionless floor.\"
+     (gravity 981/100)
+     (body floor :fixed t :shape (half-plane (1 0) (0 0)))
+     (body block :mass 1 :inertia :uniform :position (0 1)
+                 :velocity ((sqrt 11772/10000) (/ (sqrt 11772/10000) 2))
+                 :angular-velocity (- (sqrt 11772/10000))
+                 :shape (polygon (-1/2 -1) (1/2 -1) (1/2 1) (-1/2 1)))
+     (simulate :states 1))"
+  "The rocking block set turning about its right edge on a frictionless floor.")
+
+(test body-on-two-corners-is-put-back-flat
+  "Both bottom corners within 1e-11 of the floor: the angle goes to 0 exactly, the angular
+velocity (1e-12) to 0, the centre to height 1, so that both gaps are exactly 0; an angle
+of 1e-6 (a corner 5e-7 above the floor: beyond the tolerance) is left as it is, and so is a
+block tilted by 0.1 (one corner on the floor)."
+  (with-fixture simulator-bridge ()
+    (let* ((scenario (first (ames:read-scenarios-from-string *frictionless-rocking-block*)))
+           (block (find-symbol "BLOCK" (symbol-package (ames:scenario-name scenario))))
+           (run (ames.simulator::make-run (nth-value 1 (ames.scenario::check-scenario scenario bridge)) bridge)))
+      (flet ((flat (theta position)
+               (ames.simulator::flat-corner-angle run block theta position '())))
+        ;; near flat: theta 3e-12, centre 1e-12 high
+        (let ((theta 3/1000000000000) (position (list 3/10 (+ 1 1/1000000000000))))
+          (multiple-value-bind (angle slope) (flat theta position)
+            (is (eql 0 angle))
+            (is (and slope (> (abs slope) 0.5d0))))
+          ;; the position follows at that angle: both corners exactly on the floor
+          (let ((snapped (second (assoc block (ames.simulator::snap-corners-onto-faces
+                                               run (list (list block position)) (list (list block 0)))))))
+            (is (eql 1 (second snapped)))
+            (is (eql 3/10 (first snapped)))))
+        ;; too far off to be round-off, and one corner only
+        (is (null (flat 1/1000000 (list 3/10 1))))
+        (let ((tilt 1/10))
+          (is (null (flat tilt (list 3/10 (+ (* (cos tilt) 1) (* (sin tilt) 1/2)))))))))))
