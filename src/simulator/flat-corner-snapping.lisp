@@ -21,11 +21,10 @@
 
 (in-package #:ames.simulator)
 
-(defun gap-angle-difference (run body position theta first second)
+(defun gap-angle-difference (run body first second)
   "FIRST - SECOND, two gaps over BODY's position and angle, as a function of the symbol
 SNAP-ANGLE when it is free of the position (its coefficients in x and y simplify to 0);
-NIL otherwise. POSITION and THETA only check that it is."
-  (declare (ignore position theta))
+NIL otherwise."
   (let* ((x `(ames.kb:pos ,body :x)) (y `(ames.kb:pos ,body :y)) (angle `(ames.kb:angle ,body))
          (over (substitute-expressions (list (cons x 'snap-x) (cons y 'snap-y) (cons angle 'snap-angle))
                                        `(- ,first ,second)))
@@ -73,7 +72,7 @@ D'(theta*), the rate of the two gaps' difference per unit angle (a double)."
     (declare (ignore conditions tolerance))
     (loop for (first . others) on gaps
           do (dolist (second others)
-               (let ((difference (gap-angle-difference run body position theta first second)))
+               (let ((difference (gap-angle-difference run body first second)))
                  (when difference
                    (multiple-value-bind (angle value) (flat-angle run difference theta)
                      (when (and angle value
