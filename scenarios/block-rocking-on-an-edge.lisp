@@ -24,7 +24,8 @@
 ;;;; angle is s = -2 atan(1/7) (sin s = -7/25, cos s = 24/25: the centre rises by 1/10).
 ;;;; Symbolically (w, k, m, g, w0 parameters) the run forks at its start on the facts that
 ;;;; decide which corner and friction modes hold (the choice search's, as for the tipping
-;;;; blocks of awaiting-rotation/): not yet the textbook's one state.
+;;;; blocks of awaiting-rotation/): not yet the textbook's one state
+;;;; (awaiting-rotation/block-rocking-symbolic.lisp, and its README's "Rocking session").
 
 (scenario block-rocking-on-an-edge
   "A block set turning about its bottom edge rises on it, turns back and rocks on its other edge."

@@ -113,3 +113,83 @@ positive root, not the other one)."
 
 ;;; Corners put exactly on their faces at a numeric state's end (corner-snapping.lisp) are
 ;;; checked on the rod sliding off the ledge, in t/ledge-impacts.lisp.
+
+;;; The symbolic rocking block's bound, w0^2 < 3 g (sqrt(w^2 + k^2) - k) / (w^2 + k^2) (it
+;;; does not go over its edge), as the run asks it: a polynomial in w0 that is convex
+;;; between the bounds 0 and that root (src/algebra/convex-bounds.lisp).
+
+(defparameter *rocking-bound-facts*
+  '((> g 0) (> w 0) (> k 0) (> w0 0)
+    (< w0 (sqrt (/ (* 3 g (- (sqrt (+ (expt w 2) (expt k 2))) k)) (+ (expt w 2) (expt k 2))))))
+  "The symbolic rocking block's declared facts: w0 below the speed that brings its centre
+over its edge.")
+
+(defun rocking-over-the-top (factor)
+  "(D^2 w0^2 + 3 g k)^2 - 9 g^2 FACTOR D^2, D^2 = w^2 + k^2: negative for FACTOR = 1
+exactly when the energy (1/2) I_edge w0^2 is less than m g (D - k)/2, the rise of the
+centre to its top over the edge."
+  `(- (expt (+ (* (+ (expt w 2) (expt k 2)) (expt w0 2)) (* 3 g k)) 2)
+      (* 9 (expt g 2) ,factor (+ (expt w 2) (expt k 2)))))
+
+(test convexity-between-declared-bounds
+  "DECIDE proves what follows from a polynomial's convexity between two declared bounds,
+and nothing that fails at an admissible point."
+  (call-with-bridge
+   (lambda (b)
+     ;; 0 < x < 1: x^2 - x < 0 (convex, zero at both ends)
+     (is (eq :true (decided b '((> x 0) (< x 1)) '(< (- (expt x 2) x) 0))))
+     (is (eq :false (decided b '((> x 0) (< x 1)) '(>= (- (expt x 2) x) 0))))
+     ;; but not x^2 - x/2 < 0 (1/2 at x = 1 - epsilon)
+     (is (not (eq :true (decided b '((> x 0) (< x 1)) '(< (- (expt x 2) (* 1/2 x)) 0)))))
+     ;; the rocking block: below the top
+     (let ((over (rocking-over-the-top 1)))
+       (is (eq :true (decided b *rocking-bound-facts* `(< ,over 0))))
+       (is (eq :false (decided b *rocking-bound-facts* `(>= ,over 0)))))
+     ;; a smaller top is not proven (w0 may be above it)
+     (is (not (eq :true (decided b *rocking-bound-facts* `(< ,(rocking-over-the-top 1/2) 0))))))))
+
+;;; A body resting by two corners on one face at a numeric state's end is put back flat on
+;;; it (src/simulator/flat-corner-snapping.lisp): the rocking block on a frictionless floor
+;;; (two degrees of freedom, integrated numerically) falls back onto its face; its angle,
+;;; off 0 by the integration's round-off, is moved to 0 exactly and its centre to the
+;;; height k/2 = 1, where both bottom corners are on the floor. An angle further off than
+;;; the tolerance, or one corner only near the floor, is left as it is. (The run itself
+;;; still stops where that corner strikes the floor at a speed: src/simulator/numeric.lisp.)
+
+(defparameter *frictionless-rocking-block*
+  "(scenario frictionless-rocking-block
+     \"The rocking block of scenarios/block-rocking-on-an-edge.lisp on a frictionless floor.\"
+     (gravity 981/100)
+     (body floor :fixed t :shape (half-plane (1 0) (0 0)))
+     (body block :mass 1 :inertia :uniform :position (0 1)
+                 :velocity ((sqrt 11772/10000) (/ (sqrt 11772/10000) 2))
+                 :angular-velocity (- (sqrt 11772/10000))
+                 :shape (polygon (-1/2 -1) (1/2 -1) (1/2 1) (-1/2 1)))
+     (simulate :states 1))"
+  "The rocking block set turning about its right edge on a frictionless floor.")
+
+(test body-on-two-corners-is-put-back-flat
+  "Both bottom corners within 1e-11 of the floor: the angle goes to 0 exactly, the angular
+velocity (1e-12) to 0, the centre to height 1, so that both gaps are exactly 0; an angle
+of 1e-6 (a corner 5e-7 above the floor: beyond the tolerance) is left as it is, and so is a
+block tilted by 0.1 (one corner on the floor)."
+  (with-fixture simulator-bridge ()
+    (let* ((scenario (first (ames:read-scenarios-from-string *frictionless-rocking-block*)))
+           (block (find-symbol "BLOCK" (symbol-package (ames:scenario-name scenario))))
+           (run (ames.simulator::make-run (nth-value 1 (ames.scenario::check-scenario scenario bridge)) bridge)))
+      (flet ((flat (theta position)
+               (ames.simulator::flat-corner-angle run block theta position '())))
+        ;; near flat: theta 3e-12, centre 1e-12 high
+        (let ((theta 3/1000000000000) (position (list 3/10 (+ 1 1/1000000000000))))
+          (multiple-value-bind (angle slope) (flat theta position)
+            (is (eql 0 angle))
+            (is (and slope (> (abs slope) 0.5d0))))
+          ;; the position follows at that angle: both corners exactly on the floor
+          (let ((snapped (second (assoc block (ames.simulator::snap-corners-onto-faces
+                                               run (list (list block position)) (list (list block 0)))))))
+            (is (eql 1 (second snapped)))
+            (is (eql 3/10 (first snapped)))))
+        ;; too far off to be round-off, and one corner only
+        (is (null (flat 1/1000000 (list 3/10 1))))
+        (let ((tilt 1/10))
+          (is (null (flat tilt (list 3/10 (+ (* (cos tilt) 1) (* (sin tilt) 1/2)))))))))))

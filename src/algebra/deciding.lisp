@@ -125,8 +125,8 @@ finds it."
   "The truth of RELATION, whose sides are LHS and RHS, that is() did not decide: by the
 opposite relation, the signs of the difference of its sides (after clearing a square
 root), equivalence (for = and /=, unless HOLDS, a point where the sides differ, was
-seen), what a physicist knows, the order substitution and two bounds combined
-(combined-bounds.lisp); :UNKNOWN when none decides it."
+seen), what a physicist knows, the order substitution, two bounds combined
+(combined-bounds.lisp) and concavity between two bounds (convex-bounds.lisp); :UNKNOWN when none decides it."
   (let* ((operator (expression-operator relation))
          (equation (member operator '(= /=)))
          ;; is() proves X <= 0 from the fact X <= 0 but not that X > 0 fails: ask the
@@ -157,7 +157,9 @@ seen), what a physicist knows, the order substitution and two bounds combined
       (when (eq verdict :unknown)
         (setf verdict (decide-by-order-substitution bridge relation)))
       (when (eq verdict :unknown)
-        (setf verdict (decide-by-combined-bounds bridge relation))))
+        (setf verdict (decide-by-combined-bounds bridge relation)))
+      (when (eq verdict :unknown)
+        (setf verdict (decide-by-convexity bridge relation))))
     verdict))
 
 (defvar *deciding* '()

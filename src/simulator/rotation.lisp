@@ -107,7 +107,10 @@ ames.kb:angle or ames.kb:angvel; (B (:NO-CLOSED-FORM)) for a body integrated num
                       (cond ((and (eq (group-kind group) :numeric) (null (group-end-state group)))
                              (rotation-initial-value run term))
                             ((eq (group-kind group) :numeric)
-                             (rational-of (cdr (assoc term (group-end-state group) :test #'equal))))
+                             ;; flat on a face by two corners: flat-corner-snapping.lisp
+                             (snap-flat-rotation run group body head
+                                                 (rational-of (cdr (assoc term (group-end-state group) :test #'equal)))
+                                                 fired))
                             (t (end-value run (substitute-expressions
                                                (list (cons (group-variable group)
                                                            (group-at-end run groups group fired)))
