@@ -331,16 +331,10 @@ MAXIMA-OUTPUT-OVERFLOW or MAXIMA-PROCESS-DIED."
   (let* ((record (bridge-statistics-record bridge))
          (key (and cache (request-key bridge form))))
     (incf (statistics-calls record))
-    (multiple-value-bind (answer found) (if key (gethash key (bridge-cache bridge)) (values nil nil))
+    (multiple-value-bind (answer found) (and key (known-answer bridge form key))
       (when found
         (incf (statistics-cache-hits record))
         (return-from maxima-request answer)))
-    ;; a definite sign() or is() answer found under fewer facts (weaker-assumptions.lisp)
-    (when key
-      (multiple-value-bind (answer found) (inherited-answer bridge form)
-        (when found
-          (incf (statistics-cache-hits record))
-          (return-from maxima-request answer))))
     (multiple-value-bind (timeout budget-bound) (request-timeout bridge)
       (when (and budget-bound (<= timeout 0)) (signal-out-of-time datum))
       (multiple-value-bind (status data) (request-with-restart bridge form datum timeout)

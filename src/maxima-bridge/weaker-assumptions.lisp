@@ -91,3 +91,10 @@ asked again under the branch's fact)."
             (when (>= (hash-table-count cache) *cache-limit*) (clrhash cache))
             (setf (gethash (cons form (assumption-key bridge)) cache) answer)
             (return (values answer t))))))))
+
+(defun known-answer (bridge form key)
+  "(values ANSWER T) when FORM's answer is known without a round trip: cached under KEY,
+or a definite sign() or is() answer found under fewer facts (INHERITED-ANSWER);
+else (values NIL NIL)."
+  (multiple-value-bind (answer found) (gethash key (bridge-cache bridge))
+    (if found (values answer t) (inherited-answer bridge form))))
