@@ -207,6 +207,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "prefetch-values")
                  (:file "abs-signs")
                  (:file "termination")
+                 (:file "horizon-phase")
                  (:file "sinusoid-floors")
                  (:file "exponential-floors")
                  (:file "speed-line-roots")
