@@ -373,6 +373,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "witness-rotation")
                (:file "scenario-rotation")
                (:file "rotation-rolling")
+               (:file "race-side-by-side")
                (:file "rolling-events")
                (:file "rotation-corners")
                (:file "hinged-swing")
