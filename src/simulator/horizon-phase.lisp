@@ -15,7 +15,10 @@
 ;;;; + c2 tau^2 (broad-phase.lisp's coefficients). On [0, T], f lies between f(0) and f(T)
 ;;;; when c1 and c2 have one weak sign (f monotone), and above the lesser of them when it
 ;;;; is concave toward the side kept (c2 weakly opposite to it). So f keeps the strict side
-;;;; on (0, T] when f(0) and f(T) do and one of those holds. The signs of c1 and c2 are the
+;;;; on (0, T] when f(0) and f(T) do and one of those holds. Convex with c1 toward the
+;;;; locus (a body overtaking another that speeds up), its least value on [0, T] is f(T)
+;;;; while its rate c1 + 2 c2 T is still toward the locus, else at most f's vertex,
+;;;; c0 - c1^2 / (4 c2): either of those of the side kept will do. The signs of c1 and c2 are the
 ;;;; broad phase's, else the algebra's (two bodies both rolling down, one faster than the
 ;;;; other: the sign of the difference); f(0)'s cheaply else by the algebra, f(T)'s by the algebra under the
 ;;;; run's facts (the scenario's assumptions: the second incline far enough). Only what is
@@ -70,19 +73,27 @@ by the algebra."
 
 (defun apart-until-p (run reach offsets c1 c2 signs horizon side)
   "True when each of OFFSETS + C1 tau + C2 tau^2 keeps the strict SIDE for tau in (0,
-HORIZON]: SIGNS (those of C1 and C2) make it monotone or concave toward SIDE, and it is
-of SIDE at 0 and at HORIZON."
+HORIZON]: of SIDE at 0, and, as SIGNS (those of C1 and C2) shape it, at HORIZON where it
+is monotone or concave toward SIDE, or where it is convex and still heading away from
+SIDE at HORIZON (its least distance there), or at its vertex (see the file header)."
   (destructuring-bind (s1 s2) signs
-    (flet ((weak (s sign) (ames.algebra:only-signs-p s sign :zero)))
-      (and (or (and (weak s1 :positive) (weak s2 :positive))
-               (and (weak s1 :negative) (weak s2 :negative))
-               (weak s2 (if (eq side :positive) :negative :positive)))
-           (every (lambda (offset) (strict-side-p run reach offset side)) offsets)
-           (every (lambda (offset)
-                    (strict-side-p run reach
-                                   `(+ ,offset (* ,c1 ,horizon) (* ,c2 (expt ,horizon 2)))
-                                   side))
-                  offsets)))))
+    (let ((toward (if (eq side :positive) :negative :positive)))
+      (flet ((weak (s sign) (ames.algebra:only-signs-p s sign :zero))
+             (holds-side (expression) (strict-side-p run reach expression side))
+             (at-horizon (offset) `(+ ,offset (* ,c1 ,horizon) (* ,c2 (expt ,horizon 2)))))
+        (and (every #'holds-side offsets)
+             (cond ((or (and (weak s1 side) (weak s2 side)) (weak s2 toward))
+                    (every (lambda (offset) (holds-side (at-horizon offset))) offsets))
+                   ((and (weak s1 toward) (eq (one-sign s2) side))
+                    ;; convex, heading toward the locus first: its least value on
+                    ;; [0, HORIZON] is at HORIZON while the rate is still toward it there,
+                    ;; else at its vertex, OFFSET - C1^2 / (4 C2)
+                    (every (lambda (offset)
+                             (or (and (strict-side-p run reach `(+ ,c1 (* 2 ,c2 ,horizon))
+                                                     toward)
+                                      (holds-side (at-horizon offset)))
+                                 (holds-side `(- ,offset (/ (expt ,c1 2) (* 4 ,c2))))))
+                           offsets))))))))
 
 (defun out-of-reach-until-p (run reach contact horizon)
   "True when the observer of CONTACT is proven, along one axis, strictly on one side of

@@ -1,7 +1,9 @@
-;;;; t/race-side-by-side.lisp -- the hoop and the disc released side by side in one scenario
-;;;; (issue 23, scenarios/hoop-and-disc-race-side-by-side.lisp): four bodies, the meetings
-;;;; of those that do not touch set aside up to the disc's arrival (the horizon phase,
-;;;; src/simulator/horizon-phase.lisp).
+;;;; t/independent-bodies.lisp -- bodies that do not interact cost no more together than
+;;;; apart (issue 23): the hoop and the disc released side by side in one scenario
+;;;; (scenarios/hoop-and-disc-race-side-by-side.lisp), four bodies, the meetings of those
+;;;; that do not touch set aside up to the disc's arrival (the horizon phase,
+;;;; src/simulator/horizon-phase.lisp); four pucks stopping at once on a rough floor, their
+;;;; 81 combinations of friction modes settled puck by puck (choice-clusters.lisp).
 ;;;;
 ;;;; Expected results (textbook), L = h / (2 sin a) the half slope: the disc rolls at
 ;;;; (2/3) g sin a and reaches its foot after sqrt(3 L / (g sin a)), which ends the state;
@@ -12,10 +14,11 @@
 
 (in-package #:ames.tests)
 
-(def-suite race-side-by-side :in all-tests
-  :description "The hoop and the disc racing side by side in one scenario: the disc first, both times in closed form.")
+(def-suite independent-bodies :in all-tests
+  :description "Bodies that do not interact: the hoop and the disc racing side by side in one
+scenario (the disc first, both times in closed form); four pucks stopping at once.")
 
-(in-suite race-side-by-side)
+(in-suite independent-bodies)
 
 (defun along-slope (scenario fraction)
   "The acceleration vector FRACTION g sin a down the slope of angle a, in SCENARIO's terms."
@@ -64,3 +67,49 @@ at sqrt(4 L / (g sin a)), later: the disc's time is sqrt(3)/2 of it."
                    "the disc first")
                (is-same bridge "the disc's time sqrt(3)/2 of the hoop's"
                         `(/ ,(ames::state-duration state) ,hoop-time) '(/ (sqrt 3) 2))))))))))
+
+(defparameter *four-pucks*
+  '(scenario four-pucks "Four pucks launched alike along a rough floor, far apart."
+    (parameters (m :positive) (g :positive) (v0 :positive) (mu :positive))
+    (gravity g)
+    (body floor :fixed t :shape (half-plane (1 0) (0 0)))
+    (body p1 :mass m :position (0 0) :velocity (v0 0) :shape point)
+    (body p2 :mass m :position (10 0) :velocity (v0 0) :shape point)
+    (body p3 :mass m :position (20 0) :velocity (v0 0) :shape point)
+    (body p4 :mass (* 2 m) :position (30 0) :velocity (v0 0) :shape point)
+    (friction p1 floor :static mu)
+    (friction p2 floor :static mu)
+    (friction p3 floor :static mu)
+    (friction p4 floor :static mu)
+    (simulate :states 2))
+  "Four pucks that stop at the same instant: 3^4 = 81 combinations of friction modes
+there, more than the choice search enumerates at once.")
+
+(test four-pucks-stop-at-once-and-rest
+  "Each puck slides at -mu g and stops after v0 / (mu g), v0^2 / (2 mu g) on (textbook),
+all at once; then each rests, its static friction 0, for ever: the stop's 81 combinations
+of modes are settled puck by puck (each puck's own three), the whole checked consistent."
+  (with-fixture simulator-bridge ()
+    (let* ((scenario (ames:parse-scenario *four-pucks*))
+           (states (nth-value 1 (run-of scenario bridge))))
+      (is (= 2 (length states)) "two states: ~S" states)
+      (when (= 2 (length states))
+        (destructuring-bind (sliding resting) states
+          (flet ((x (form) (in-scenario-terms scenario form)))
+            (call-with-scenario-facts
+             bridge scenario
+             (lambda ()
+               (is-same bridge "they stop after v0 / (mu g)" (ames::state-duration sliding)
+                        (x '(/ v0 (* mu g))))
+               (loop for (puck start) in '(("P1" 0) ("P2" 10) ("P3" 20) ("P4" 30))
+                     do (is-same-vector bridge "sliding at -mu g"
+                                        (per-body (ames::state-accelerations sliding) puck)
+                                        (x '((- (* mu g)) 0)))
+                        (is-same-vector bridge "v0^2 / (2 mu g) on"
+                                        (per-body (ames::state-final-positions sliding) puck)
+                                        (x `((+ ,start (/ (expt v0 2) (* 2 mu g))) 0)))
+                        (is-same-vector bridge "at rest"
+                                        (per-body (ames::state-accelerations resting) puck) '(0 0))
+                        (check-friction bridge resting puck "FLOOR" :static 0))
+               (is (eq :forever (ames::state-duration resting))
+                   "at rest for ever: ~S" (ames::state-duration resting))))))))))
