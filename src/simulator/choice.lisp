@@ -308,56 +308,57 @@ settled apart (choice-clusters.lisp)."
                                   ;; caller branches on, or settles by the values
                                   (lambda (condition) (undecided-to-ambiguity condition run))))
                   (ames.engine:model-choice-points (run-model run) :decider (run-decider run)))))
-    (or (and (> (combination-count run points) *combination-limit*)
-             (settle-by-clusters run points))
-        (settle-points run points))))
+    (multiple-value-bind (lone groups modes) (point-groups run points)
+      (or (and (> (combination-count groups modes) *combination-limit*)
+               (settle-by-clusters run points))
+          (settle-points run points lone groups modes)))))
 
-(defun combination-count (run points)
-  "How many combinations of alternatives and modes the choice POINTS give."
-  (multiple-value-bind (lone groups modes) (point-groups run points)
-    (declare (ignore lone))
-    (reduce #'* (append (mapcar (lambda (g) (1+ (length g))) groups)
-                        (mapcar (lambda (m) (length (ames.engine:choice-point-options m))) modes)))))
+(defun combination-count (groups modes)
+  "How many combinations of the alternatives' GROUPS and the MODES' options there are."
+  (reduce #'* (append (mapcar (lambda (g) (1+ (length g))) groups)
+                      (mapcar (lambda (m) (length (ames.engine:choice-point-options m))) modes))))
 
-(defun settle-points (run points)
-  "SETTLE-CHOICES over the choice POINTS."
-  (multiple-value-bind (lone groups modes) (point-groups run points)
-    (let* ((option-lists (append (mapcar #'group-options groups) (mapcar #'mode-options modes)))
-           (combos (combinations option-lists))
-           (base (mapcar (lambda (p) (cons (ames.engine:choice-point-instance p) :true)) lone))
-           (trials '()))
-      (when (> (length combos) *combination-limit*)
-        (error 'unsupported-situation
-               :datum (mapcar #'ames.engine:choice-point-instance points)
-               :detail (format nil "~D combinations of corner contacts and modes to try: more than ~D."
-                               (length combos) *combination-limit*)))
-      (dolist (combo combos)
-        (apply-assignment run points (append combo base))
-        (let ((trial (pivot run points lone)))
-          (undo-forced-changes run trial)
-          (if (eq (trial-verdict trial) :singular)
-              ;; pivoting cannot go through a singular assignment: try every subset
-              (setf trials (revappend (subset-trials run points combo lone) trials))
-              (push trial trials))))
-      (setf trials (nreverse trials))
-      (when (and lone (every (lambda (trial) (member (trial-verdict trial) '(:inconsistent :singular)))
-                             trials))
-        ;; pivoting stops where a mode's exit fires beside a contact's violation (a
-        ;; friction impulse that would slip on a contact that would pull): before
-        ;; refusing, every subset of the lone contacts with every combination
-        (setf trials (loop for combo in combos append (subset-trials run points combo lone))))
-      (let ((chosen (choose-trial run trials points)))
-        (apply-assignment run points (trial-assignment chosen))
-        (dolist (change (forced-changes chosen))
-          (when (mode-change-applies-p run change)
-            (ames.engine:apply-transition (run-model run) (list change) :decider (run-decider run))))
-        (setf (trial-notes chosen)
-              (list :points (mapcar #'ames.engine:choice-point-instance points)
-                    :chosen (trial-assignment chosen)
-                    :tried (mapcar (lambda (trial)
-                                     (list :assignment (trial-assignment trial)
-                                           :verdict (trial-verdict trial)
-                                           :degenerate (trial-degenerate trial)
-                                           :why (trial-notes trial)))
-                                   trials)))
-        chosen))))
+(defun settle-points (run points &optional (lone nil groups-p) groups modes)
+  "SETTLE-CHOICES over the choice POINTS (split by POINT-GROUPS into LONE, GROUPS and
+MODES, when they are not given)."
+  (unless groups-p
+    (multiple-value-setq (lone groups modes) (point-groups run points)))
+  (let* ((option-lists (append (mapcar #'group-options groups) (mapcar #'mode-options modes)))
+         (combos (combinations option-lists))
+         (base (mapcar (lambda (p) (cons (ames.engine:choice-point-instance p) :true)) lone))
+         (trials '()))
+    (when (> (length combos) *combination-limit*)
+      (error 'unsupported-situation
+             :datum (mapcar #'ames.engine:choice-point-instance points)
+             :detail (format nil "~D combinations of corner contacts and modes to try: more than ~D."
+                             (length combos) *combination-limit*)))
+    (dolist (combo combos)
+      (apply-assignment run points (append combo base))
+      (let ((trial (pivot run points lone)))
+        (undo-forced-changes run trial)
+        (if (eq (trial-verdict trial) :singular)
+            ;; pivoting cannot go through a singular assignment: try every subset
+            (setf trials (revappend (subset-trials run points combo lone) trials))
+            (push trial trials))))
+    (setf trials (nreverse trials))
+    (when (and lone (every (lambda (trial) (member (trial-verdict trial) '(:inconsistent :singular)))
+                           trials))
+      ;; pivoting stops where a mode's exit fires beside a contact's violation (a
+      ;; friction impulse that would slip on a contact that would pull): before
+      ;; refusing, every subset of the lone contacts with every combination
+      (setf trials (loop for combo in combos append (subset-trials run points combo lone))))
+    (let ((chosen (choose-trial run trials points)))
+      (apply-assignment run points (trial-assignment chosen))
+      (dolist (change (forced-changes chosen))
+        (when (mode-change-applies-p run change)
+          (ames.engine:apply-transition (run-model run) (list change) :decider (run-decider run))))
+      (setf (trial-notes chosen)
+            (list :points (mapcar #'ames.engine:choice-point-instance points)
+                  :chosen (trial-assignment chosen)
+                  :tried (mapcar (lambda (trial)
+                                   (list :assignment (trial-assignment trial)
+                                         :verdict (trial-verdict trial)
+                                         :degenerate (trial-degenerate trial)
+                                         :why (trial-notes trial)))
+                                 trials)))
+      chosen)))
