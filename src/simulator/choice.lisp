@@ -149,7 +149,8 @@ contacts among POINTS count when they are penetrated."
           (let ((relation (departing-relation run solved point)))
             (when relation
               (push (list key :true relation (list :departs key)) violations))))))
-    (nreverse violations)))
+    ;; settling one cluster of bodies, the others' violations are theirs (choice-clusters.lisp)
+    (in-cluster-violations run (nreverse violations))))
 
 (defun activation-relation (run key)
   "The activation condition (a conjunction of all its relations, those decided at the
@@ -298,7 +299,9 @@ UNSUPPORTED-SITUATION beyond *SUBSET-LIMIT* points."
 (defun settle-choices (run)
   "Choose by consistency the contacts and modes that hold at the start of the current
 state, leave the model in that assignment and return its TRIAL, with the others tried
-as its notes. Signals AMBIGUOUS-TRANSITION or UNSOLVABLE-MODEL (see CHOOSE-TRIAL)."
+as its notes. Signals AMBIGUOUS-TRANSITION or UNSOLVABLE-MODEL (see CHOOSE-TRIAL). Beyond
+*COMBINATION-LIMIT* combinations, the choice points of bodies that do not interact are
+settled apart (choice-clusters.lisp)."
   (let ((points (handler-bind ((ames.engine:undecided-relation
                                   ;; a choice held up by an undecided condition (a corner's
                                   ;; place within its face): an ambiguity the state's
@@ -306,42 +309,56 @@ as its notes. Signals AMBIGUOUS-TRANSITION or UNSOLVABLE-MODEL (see CHOOSE-TRIAL
                                   (lambda (condition) (undecided-to-ambiguity condition run))))
                   (ames.engine:model-choice-points (run-model run) :decider (run-decider run)))))
     (multiple-value-bind (lone groups modes) (point-groups run points)
-      (let* ((option-lists (append (mapcar #'group-options groups) (mapcar #'mode-options modes)))
-             (combos (combinations option-lists))
-             (base (mapcar (lambda (p) (cons (ames.engine:choice-point-instance p) :true)) lone))
-             (trials '()))
-        (when (> (length combos) *combination-limit*)
-          (error 'unsupported-situation
-                 :datum (mapcar #'ames.engine:choice-point-instance points)
-                 :detail (format nil "~D combinations of corner contacts and modes to try: more than ~D."
-                                 (length combos) *combination-limit*)))
-        (dolist (combo combos)
-          (apply-assignment run points (append combo base))
-          (let ((trial (pivot run points lone)))
-            (undo-forced-changes run trial)
-            (if (eq (trial-verdict trial) :singular)
-                ;; pivoting cannot go through a singular assignment: try every subset
-                (setf trials (revappend (subset-trials run points combo lone) trials))
-                (push trial trials))))
-        (setf trials (nreverse trials))
-        (when (and lone (every (lambda (trial) (member (trial-verdict trial) '(:inconsistent :singular)))
-                               trials))
-          ;; pivoting stops where a mode's exit fires beside a contact's violation (a
-          ;; friction impulse that would slip on a contact that would pull): before
-          ;; refusing, every subset of the lone contacts with every combination
-          (setf trials (loop for combo in combos append (subset-trials run points combo lone))))
-        (let ((chosen (choose-trial run trials points)))
-          (apply-assignment run points (trial-assignment chosen))
-          (dolist (change (forced-changes chosen))
-            (when (mode-change-applies-p run change)
-              (ames.engine:apply-transition (run-model run) (list change) :decider (run-decider run))))
-          (setf (trial-notes chosen)
-                (list :points (mapcar #'ames.engine:choice-point-instance points)
-                      :chosen (trial-assignment chosen)
-                      :tried (mapcar (lambda (trial)
-                                       (list :assignment (trial-assignment trial)
-                                             :verdict (trial-verdict trial)
-                                             :degenerate (trial-degenerate trial)
-                                             :why (trial-notes trial)))
-                                     trials)))
-          chosen)))))
+      (or (and (> (combination-count groups modes) *combination-limit*)
+               (settle-by-clusters run points))
+          (settle-points run points lone groups modes)))))
+
+(defun combination-count (groups modes)
+  "How many combinations of the alternatives' GROUPS and the MODES' options there are."
+  (reduce #'* (append (mapcar (lambda (g) (1+ (length g))) groups)
+                      (mapcar (lambda (m) (length (ames.engine:choice-point-options m))) modes))))
+
+(defun settle-points (run points &optional (lone nil groups-p) groups modes)
+  "SETTLE-CHOICES over the choice POINTS (split by POINT-GROUPS into LONE, GROUPS and
+MODES, when they are not given)."
+  (unless groups-p
+    (multiple-value-setq (lone groups modes) (point-groups run points)))
+  (let* ((option-lists (append (mapcar #'group-options groups) (mapcar #'mode-options modes)))
+         (combos (combinations option-lists))
+         (base (mapcar (lambda (p) (cons (ames.engine:choice-point-instance p) :true)) lone))
+         (trials '()))
+    (when (> (length combos) *combination-limit*)
+      (error 'unsupported-situation
+             :datum (mapcar #'ames.engine:choice-point-instance points)
+             :detail (format nil "~D combinations of corner contacts and modes to try: more than ~D."
+                             (length combos) *combination-limit*)))
+    (dolist (combo combos)
+      (apply-assignment run points (append combo base))
+      (let ((trial (pivot run points lone)))
+        (undo-forced-changes run trial)
+        (if (eq (trial-verdict trial) :singular)
+            ;; pivoting cannot go through a singular assignment: try every subset
+            (setf trials (revappend (subset-trials run points combo lone) trials))
+            (push trial trials))))
+    (setf trials (nreverse trials))
+    (when (and lone (every (lambda (trial) (member (trial-verdict trial) '(:inconsistent :singular)))
+                           trials))
+      ;; pivoting stops where a mode's exit fires beside a contact's violation (a
+      ;; friction impulse that would slip on a contact that would pull): before
+      ;; refusing, every subset of the lone contacts with every combination
+      (setf trials (loop for combo in combos append (subset-trials run points combo lone))))
+    (let ((chosen (choose-trial run trials points)))
+      (apply-assignment run points (trial-assignment chosen))
+      (dolist (change (forced-changes chosen))
+        (when (mode-change-applies-p run change)
+          (ames.engine:apply-transition (run-model run) (list change) :decider (run-decider run))))
+      (setf (trial-notes chosen)
+            (list :points (mapcar #'ames.engine:choice-point-instance points)
+                  :chosen (trial-assignment chosen)
+                  :tried (mapcar (lambda (trial)
+                                   (list :assignment (trial-assignment trial)
+                                         :verdict (trial-verdict trial)
+                                         :degenerate (trial-degenerate trial)
+                                         :why (trial-notes trial)))
+                                 trials)))
+      chosen)))

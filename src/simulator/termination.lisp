@@ -325,6 +325,28 @@ velocity, an impulsive event)."
                       :full))
         (values status time))))
 
+(defun condition-result (run solved groups reach condition)
+  "How the termination CONDITION fires in the state (solved as SOLVED, integrated as
+GROUPS; REACH the broad phase's): a list (CANDIDATE), (:NEVER), (:NUMERIC) for a condition
+over a :NUMERIC group (watched by a numeric integration), or (:UNKNOWN FACT [NOT-BEFORE])."
+  (let* ((relation (ames.engine:termination-condition-relation condition))
+         (contact (gap-relation-contact relation))
+         (involved (and (not (and contact (cannot-meet-p reach contact)))
+                        (condition-groups run solved groups relation))))
+    (multiple-value-list
+     (cond ((null involved) :never)
+           ((some (lambda (g) (eq (group-kind g) :numeric)) involved) :numeric)
+           ((and (null (rest involved)) (eq (group-kind (first involved)) :speed-line))
+            (speed-line-candidate run solved groups (first involved) condition))
+           ((every (lambda (g) (member (group-kind g) '(:constant :linear :speed-line))) involved)
+            ;; where the root is undecided, a number under values (numeric-roots.lisp)
+            (tau-candidate run solved groups condition))
+           ((and (null (rest involved)) (eq (group-kind (first involved)) :rotation-path))
+            (turning-candidate run solved (first involved) condition))
+           ((and (null (rest involved)) (member (group-kind (first involved)) '(:path :line)))
+            (path-candidate run solved (first involved) condition))
+           (t (values :unknown `(:no-closed-form ,(condition-event condition nil))))))))
+
 (defun candidates-of (run solved groups)
   "Every termination condition of the model that fires: (values CANDIDATES UNKNOWN
 NEVER), UNKNOWN a list of (FACT EVENT [NOT-BEFORE]) for the conditions whose firing is
@@ -333,39 +355,26 @@ NEVER the events of the conditions proven never to fire in this state. Condition
 a :NUMERIC group are watched by a numeric integration (under parameter values) up to
 the earliest of the others. A contact the broad phase proves out of reach (see
 broad-phase.lisp) never fires."
-  (let ((candidates '()) (unknown '()) (numeric '()) (never '()) (rooted '())
-        (reach (make-reach run solved groups)))
+  (let* ((candidates '()) (unknown '()) (numeric '()) (never '()) (rooted '())
+         (reach (make-reach run solved groups))
+         (conditions (ames.engine:model-termination-conditions (run-model run))))
     ;; the pairs left out of the world must stay apart (deferred-pairs.lisp)
     (check-deferred-pairs reach)
-    (dolist (condition (ames.engine:model-termination-conditions (run-model run)))
-      (let* ((relation (ames.engine:termination-condition-relation condition))
-             (contact (gap-relation-contact relation))
-             (involved (and (not (and contact (cannot-meet-p reach contact)))
-                            (condition-groups run solved groups relation))))
-        (multiple-value-bind (result fact not-before)
-            (cond ((null involved) :never)
-                  ((some (lambda (g) (eq (group-kind g) :numeric)) involved)
-                   (push condition numeric)
-                   :never)
-                  ((and (null (rest involved)) (eq (group-kind (first involved)) :speed-line))
-                   (speed-line-candidate run solved groups (first involved) condition))
-                  ((every (lambda (g) (member (group-kind g) '(:constant :linear :speed-line))) involved)
-                   ;; where the root is undecided, a number under values (numeric-roots.lisp)
-                   (tau-candidate run solved groups condition))
-                  ((and (null (rest involved)) (eq (group-kind (first involved)) :rotation-path))
-                   (turning-candidate run solved (first involved) condition))
-                  ((and (null (rest involved)) (member (group-kind (first involved)) '(:path :line)))
-                   (path-candidate run solved (first involved) condition))
-                  (t (values :unknown `(:no-closed-form ,(condition-event condition nil)))))
-          (cond ((candidate-p result) (push result candidates))
+    ;; the meetings of bodies that do not touch come last, set aside where they are
+    ;; proven out of reach before another candidate (horizon-phase.lisp)
+    (let ((results (condition-results run reach conditions
+                                      (lambda (condition) (condition-result run solved groups reach condition)))))
+      (dolist (condition conditions)
+        (destructuring-bind (result &optional fact not-before) (gethash condition results)
+          (cond ((eq result :numeric) (push condition numeric))
+                ((candidate-p result) (push result candidates))
                 ((and (eq result :unknown) (numeric-root-fallback-p run fact))
                  (push (cons condition fact) rooted))
                 ((eq result :unknown)
                  (push (list* fact (condition-event condition nil)
                               (and not-before (list not-before)))
                        unknown))
-                ((not (member condition numeric))
-                 (push (condition-event condition nil) never))))))
+                (t (push (condition-event condition nil) never))))))
     ;; candidates along an angle proven beyond another are dropped, the rest worked out
     ;; (pending-candidates.lisp)
     (setf candidates (settle-pending-candidates run candidates))
