@@ -6,7 +6,7 @@
 ;;;; (x = ln(1 + k v0 t)/k), AMES's duration 167.19365648338618; the witness (Lsodar with Python
 ;;;; drag callbacks) cannot integrate that horizon within its 120 s under the run's load.
 ;;;; A witness limitation (a long horizon), as drag-slide-2026-362; AMES's time checked by hand.
-;;;; Run: bin/ames check /work/wt/witness/t/../witness/disagreements/witness-failed-drag-slide-2027-610.lisp --numeric
+;;;; Run: bin/ames check witness/disagreements/witness-failed-drag-slide-2027-610.lisp --numeric
 
 (scenario drag-slide-610 "A block slides through a medium with drag on a frictionless floor."
  (gravity 43/4) (restitution 0) (body floor :fixed t :shape (half-plane (1 0) (0 0)))
