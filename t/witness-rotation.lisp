@@ -261,3 +261,31 @@ probes; a rope's wound end is marked."
          (points (cdr (assoc "points" (second (cdr (assoc "ropes" model :test #'equal))) :test #'equal))))
     (is (null (assoc "wound" (second points) :test #'equal)))
     (is (eq :true (cdr (assoc "wound" (third points) :test #'equal))))))
+
+(test witness-block-corner-slides-off-a-ledge-edge
+  "The block of witness/disagreements/witness-wrong-block-step-2026-774.lisp lands plastically
+on its corner on a frictionless ledge (t = 0.4223 s), pivots on it sliding right and leaves
+the ledge's edge at 0.50732 s (AMES's time), the ledge's corner then outside the block. No
+horizontal force acts on it till it strikes again (gravity and the ledge's top push
+vertically): its horizontal velocity stays -1/2 m/s, and its corner leaves the ledge
+(within 2 h of AMES's time) with no collision there. The witness once took the ledge's
+corner, at the end of the block's right face, for a contact of that face and pushed it
+left (-0.95 m/s)."
+  (with-siconos
+    (let* ((scenario (first (ames:read-scenario-file
+                             (asdf:system-relative-pathname
+                              "ames" "witness/disagreements/witness-wrong-block-step-2026-774.lisp"))))
+           (values (ames.scenario:run-parameter-values scenario :numeric t))
+           (answer (ames.witness:run-witness (ames.witness:scenario-model scenario values 0.53d0)))
+           (events (ames.witness:witness-events answer))
+           (leaves (find :leaves events :key (lambda (e) (first (first (getf e :pairs)))))))
+      (is (eq :ok (ames.witness:witness-status answer)))
+      (is (equal '(:collision) (mapcar (lambda (e) (first (first (getf e :pairs))))
+                                       (remove-if-not (lambda (e) (< (getf e :time) 0.45d0)) events))))
+      (is (notany (lambda (e) (and (eq :collision (first (first (getf e :pairs))))
+                                   (< 0.45d0 (getf e :time) 0.53d0)))
+                  events))
+      (is (and leaves (< (abs (- (getf leaves :time) 0.507323d0)) (* 2 *witness-step*))))
+      (dolist (state (cons (ames.witness:witness-end answer) events))
+        (is (< (abs (+ 0.5d0 (first (state-entry state :velocities "block")))) 1d-9)
+            "at ~,4F s: ~S" (getf state :time) (state-entry state :velocities "block"))))))

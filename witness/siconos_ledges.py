@@ -15,11 +15,15 @@ Contact of the same driver (the same Moreau-Jean relation, events and projection
 The face holds the corner only while P, seen in the body's own frame, lies within the
 face's extent and in front of it (the body's own Face, whose COVERS and POSITION the
 events read: a corner passing an end of the body's face is (:leaves BODY OBSTACLE)).
+It holds it only in the face's region, not on its line: a corner that is not yet held and
+that, one step ahead, would be behind the face but in front of a neighbouring face of the
+body (sharing an end) passes outside the body around their common vertex (the body's
+corner slides off the obstacle's edge past it): no contact of that face (block-step #774).
 """
 
 import numpy as np
 
-from siconos_rotation_relations import FAR, MARGIN, Contact, Face, perp, rotation
+from siconos_rotation_relations import FAR, MARGIN, STEP, Contact, Face, perp, rotation
 
 
 def body_faces(body):
@@ -49,8 +53,10 @@ def obstacle_corners(obstacle):
 class CornerContact(Contact):
     """A fixed corner against a free body's straight face (see the module's header)."""
 
-    def __init__(self, body, a, b, corner, obstacle, n_dofs, mu, e, q0):
+    def __init__(self, body, a, b, corner, obstacle, n_dofs, mu, e, q0, neighbours=()):
         self.corner = np.array(corner, dtype=float)
+        # the body's faces sharing an end with this one, as Faces (own frame)
+        self.neighbours = [Face({"a": list(na), "b": list(nb)}, obstacle) for na, nb in neighbours]
         # the body's face in its own frame: COVERS and POSITION take the corner's
         # own-frame point (POINT)
         Contact.__init__(self, body, Face({"a": list(a), "b": list(b)}, obstacle),
@@ -70,6 +76,17 @@ class CornerContact(Contact):
 
     def gap(self, q):
         return float(np.dot(self.face.n, self.point(q) - self.face.a))
+
+    def update_front(self, q, v=None, held=False):
+        """As a Contact's, and (see the module's header) not held when, not pressing, the
+        corner one step ahead (Q + STEP V) is behind the face and in front of a neighbour."""
+        Contact.update_front(self, q)
+        if not self.front or held or v is None or not self.neighbours:
+            return
+        ahead = q + STEP * np.asarray(v, dtype=float)
+        p = self.point(ahead)
+        if self.gap(ahead) < 0 and any(float(np.dot(f.n, p - f.a)) > 0 for f in self.neighbours):
+            self.front = False
 
     def rows_at(self, q):
         r, turn = self.arm(q), self.turn(q)
@@ -102,7 +119,11 @@ def corner_contacts(model, bodies, n_dofs, q0, friction_coefficient, restitution
                     continue
                 mu = friction_coefficient(model, b.name, obstacle["name"])
                 e = restitution(model, b.name, obstacle["name"])
-                for a, bb in body_faces(b):
-                    out.append(CornerContact(b, a, bb, corner, obstacle["name"], n_dofs, mu, e, q0))
+                faces = body_faces(b)
+                for k, (a, bb) in enumerate(faces):
+                    near = [faces[j] for j in ((k - 1) % len(faces), (k + 1) % len(faces))
+                            if len(faces) > 2 and j != k]
+                    out.append(CornerContact(b, a, bb, corner, obstacle["name"], n_dofs, mu, e, q0,
+                                             near))
     return out
 

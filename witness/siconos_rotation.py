@@ -244,7 +244,7 @@ class RotationDriver(Events):
         Siconos 4.4 leaves stale for an interaction that was not active."""
         for k, (r, inter) in enumerate(zip(self.relations, self.inters)):
             if isinstance(r, Contact) and lams is not None:
-                r.update_front(q)
+                r.update_front(q, v, lams[k][0] > 0)
             if isinstance(r, (Contact, Hinge)):
                 r.refresh(q)
             if lams is not None and isinstance(r, Contact) and not lams[k][0] > 0:

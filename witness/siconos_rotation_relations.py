@@ -118,11 +118,13 @@ class Contact(Relation):
         self.front = False
         self.update_front(q0)
 
-    def update_front(self, q):
+    def update_front(self, q, v=None, held=False):
         """Whether the face may hold the contact in the coming step: its point lies within
         the face's extent, and in front of the face (or it was already held: a contact
         in force may sink by round-off). A point behind a face's line (the body beside a
-        convex obstacle, seen from a face that looks away) is never held by it."""
+        convex obstacle, seen from a face that looks away) is never held by it. V (the
+        velocities) and HELD (whether it pressed in the last step) serve the relations
+        that look ahead (siconos_ledges.py)."""
         point = self.point(q)
         if not self.face.covers(point):
             self.front = False

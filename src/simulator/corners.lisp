@@ -12,10 +12,14 @@
 ;;;; fixed polygon or segment with each straight face of the rotating body (the geometry's
 ;;;; ROTATING-BODY-CONTACTS gives both; which kind it is, only the geometry knows). A corner
 ;;;; touches only within its face (gap 0, place between the face's ends: CORNER-TOUCHING-NOW,
-;;;; the knowledge base's activation). Only the faces the corner
-;;;; is in front of or on at the scenario's start (gap >= 0 decided) are described: a face
+;;;; the knowledge base's activation). A rotating corner is described only on the fixed
+;;;; faces it is in front of or on at the scenario's start (gap >= 0 decided): a fixed face
 ;;;; whose line the corner is behind (the underside of an incline under a block on its
-;;;; slope) cannot be reached before another face of that convex body. The corners of one
+;;;; slope) cannot be reached before another face of that convex body. A fixed corner is
+;;;; described on every face of the rotating body: the body turns its faces, so one whose
+;;;; line the corner is behind at the start may come round to it (a block spinning off a
+;;;; ledge's edge strikes it with the face that was on the far side: block-step 2027 #650,
+;;;; witness/disagreements/ames-wrong-block-step-2027-650.lisp). The corners of one
 ;;;; body touching one face at a state's start are each other's MATES (friction on such a
 ;;;; resting face is statically indeterminate: src/kb/friction.lisp, CORNER-FRICTION).
 
@@ -71,7 +75,8 @@ file header), found at the first call."
                           (run-bridge run) (run-shape run (scenario-body-name body))
                           (corner-configuration body) (run-shape run (scenario-body-name fixed))
                           :fixed-position (scenario-body-position fixed)))
-          (when (holds run `(>= ,(at-scenario-start body (ames.geometry:rotating-contact-gap contact)) 0))
+          (when (or (eq (ames.geometry:rotating-contact-kind contact) :face-on-vertex)
+                    (holds run `(>= ,(at-scenario-start body (ames.geometry:rotating-contact-gap contact)) 0)))
             (push (list* (corner-contact-name index) (scenario-body-name body)
                          (scenario-body-name fixed) contact)
                   contacts)

@@ -24,6 +24,27 @@
 ;;;;     the pulley pushes (P >= 0); without the piece's direction that is proven only when
 ;;;;     |R| <= T (either way along the piece P = T -+ |R| >= 0), else not modelled. Here
 ;;;;     R = m2 g (up), T = m1 g sin a: both bodies stay at rest for ever.
+;;;; Refinements (witness helper, session 6; still not done: an AMES feature of several
+;;;; hours across ropes.lisp, spans.lisp and the impact kb, and a wrong answer is worse
+;;;; than this honest stop):
+;;;;  - the event: ROPE-PIECE-CLOSING's activation can carry :impact, as corners.lisp's
+;;;;    (:contact ...) does; the impact situation then needs the closed piece named (the
+;;;;    event's rope and bodies) since the piece's length there is a symbolic zero;
+;;;;  - the next state knows the piece is closed from its start alone: span start length 0
+;;;;    and relative speed 0 (STRAIGHT-SPAN's :undefined-direction entry), so
+;;;;    ROPE-SEGMENT-SPAN must not assert a span then, and a closed-piece component takes
+;;;;    over: the body's point pinned to the pulley's point (acceleration equal), a hold
+;;;;    force F (two unknown components, from the pulley's body, Newton's third law on it)
+;;;;    replacing the tension along the piece, (= (span-length S) 0) and
+;;;;    (= (span-acceleration S) 0) for the rope's sum; ROPE-SLACK-NOW and ROPE-RATE-NOW
+;;;;    read positions directly and must skip the closed piece (0/0 otherwise); the state
+;;;;    holds while F.F <= T^2 and T >= 0, its exits (:slackens ROPE) and the body pulled
+;;;;    off the pulley (then refused: a zero-length piece opening from rest has no
+;;;;    direction); a rotating body at the piece's end: refused (its point pinned is a hinge);
+;;;;  - the witness: where the closing ends the last state asked for, the crosscheck's verdict
+;;;;    is "unsupported" (the witness does not model it: seed 2027 #135); for an agreement
+;;;;    the witness needs the piece's length (B - A).u0 >= 0 as a unilateral relation with
+;;;;    Newton's law (siconos_lines.py, linear in the positions while the piece keeps u0).
 ;;;; Run: bin/ames run witness/disagreements/refused-incline-pulley-piece-closes.lisp
 
 (scenario incline-pulley-1 "A particle on an incline pulled over a pulley by a hanging mass."

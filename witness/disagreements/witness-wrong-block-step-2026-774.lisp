@@ -1,5 +1,11 @@
 ;;;; witness-wrong-block-step-2026-774 -- a disagreement found by the witness (make crosscheck
-;;;; N=1000 SEED=2026 #774), examined by hand: the witness's, not AMES's (OPEN: the witness to fix).
+;;;; N=1000 SEED=2026 #774), examined by hand: the witness's, not AMES's. FIXED in the witness
+;;;; (siconos_ledges.py): a fixed corner that is not yet held is not held by a turning body's
+;;;; face when, one step ahead, it would be behind that face and in front of a neighbouring
+;;;; face (it passes outside the body around their common vertex). Now agrees (the witness's
+;;;; state 1 ends with (:leaves block ledge) at 0.50737 s, vx stays -1/2); regression test
+;;;; witness-block-corner-slides-off-a-ledge-edge (t/witness-rotation.lisp, witness alone).
+;;;; The original header follows.
 ;;;; verdict: ames-wrong
 ;;;; reason: state 2: final position x block: AMES -0.342434163338882d0, witness -0.3749712895348658d0
 ;;;; The block (side 3/4, tilted -22.6 degrees) lands plastically on its bottom-right corner on
@@ -16,7 +22,7 @@
 ;;;; the right face at that face's very end, for a contact. To fix in the witness: a fixed
 ;;;; corner on a turning body's face holds only while it is in front of the face (gap >= 0 up to
 ;;;; the margin) and not in front of the neighbouring face beyond the shared vertex (the
-;;;; corner's region of the face, not its line). Not fixed in this session (no time left).
+;;;; corner's region of the face, not its line).
 ;;;; Run: bin/ames check witness/disagreements/witness-wrong-block-step-2026-774.lisp --numeric
 
 (scenario block-step-774 "A rod or a block falls across the edge of a ledge." (gravity 5)
