@@ -59,6 +59,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "orders")
                  (:file "square-orders")
                  (:file "combined-bounds")
+                 (:file "fact-remainders")
                  (:file "contradictions")
                  (:file "signs")
                  (:file "quick-signs")
