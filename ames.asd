@@ -381,6 +381,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "tipping")
                (:file "ledge-impacts")
                (:file "tipping-criterion")
+               (:file "fact-remainders")
                (:file "fork-pruning")
                (:file "approximate-starts")
                (:file "witness-curved")

@@ -115,19 +115,22 @@ ratsimp (DENOMINATOR 1 for a polynomial)."
             (values form 1))
       (values (if negated `(- ,numerator) numerator) denominator))))
 
+(defun numerator-polynomial (bridge expression)
+  "The polynomial (POLYNOMIAL-OF) of the numerator of EXPRESSION times the sign of its
+denominator, when that sign is proven: a polynomial of EXPRESSION's sign, or NIL."
+  (or (polynomial-of expression)
+      (multiple-value-bind (numerator denominator) (quotient-parts bridge expression)
+        (cond ((eql denominator 1) (polynomial-of numerator))
+              ((proven-nonnegative-p bridge denominator t) (polynomial-of numerator))
+              ((proven-nonnegative-p bridge `(- ,denominator) t) (polynomial-of `(- ,numerator)))))))
+
 (defun goal-proven-by-one-fact-p (bridge goal strict facts)
   "True when GOAL > 0 (STRICT) or GOAL >= 0 follows from one of FACTS (relations in force)
 and a remainder of proven sign (see the file header)."
-  (multiple-value-bind (numerator denominator) (quotient-parts bridge goal)
-    (unless (eql denominator 1)
-      (cond ((proven-nonnegative-p bridge denominator t))
-            ((proven-nonnegative-p bridge `(- ,denominator) t)
-             (setf numerator `(- ,numerator)))
-            (t (return-from goal-proven-by-one-fact-p nil))))
-    (let ((goal-polynomial (polynomial-of numerator)))
-      (dolist (fact (and goal-polynomial facts) nil)
+  (let ((goal-polynomial (numerator-polynomial bridge goal)))
+    (dolist (fact (and goal-polynomial facts) nil)
         (multiple-value-bind (slack fact-strict) (slack-of fact)
-          (let ((fact-polynomial (and slack (polynomial-of slack))))
+          (let ((fact-polynomial (and slack (numerator-polynomial bridge slack))))
             (dolist (c (and fact-polynomial (remainder-multipliers goal-polynomial fact-polynomial)))
               (let ((rest (polynomial-sum goal-polynomial (polynomial-scaled fact-polynomial (- c)))))
                 (if (null rest)
@@ -137,4 +140,4 @@ and a remainder of proven sign (see the file header)."
                   (let ((remainder (polynomial-expression rest)))
                     (when (and (not (multiplier-refuted-p bridge remainder))
                                (proven-nonnegative-p bridge remainder (and strict (not fact-strict))))
-                      (return-from goal-proven-by-one-fact-p t))))))))))))
+                      (return-from goal-proven-by-one-fact-p t)))))))))))
