@@ -8,7 +8,8 @@
 ;;;; mu m g w^2 + 80 mu m g k^2. The order substitution writes a variable as its bound
 ;;;; plus an excess, and the combined bounds need two facts linear in one variable; the
 ;;;; sum of one fact and a positive remainder is neither. GOAL-PROVEN-BY-ONE-FACT-P finds
-;;;; it: both polynomials expanded, c taken from the ratio of the coefficients of a
+;;;; it: both polynomials expanded in Lisp (POLYNOMIAL-OF: sines, roots and other
+;;;; non-polynomial subterms taken as atoms, so the identity is exact), c taken from the ratio of the coefficients of a
 ;;;; monomial they share (positive ratios only, the few smallest distinct ones), and the
 ;;;; remainder f - c s asked of DECIDE (without the combined bounds, as their multipliers
 ;;;; are). Sound: f - c s = r is an identity of polynomials and c > 0, s > 0 (or >= 0),
@@ -129,14 +130,14 @@ denominator, when that sign is proven: a polynomial of EXPRESSION's sign, or NIL
 and a remainder of proven sign (see the file header)."
   (let ((goal-polynomial (numerator-polynomial bridge goal)))
     (dolist (fact (and goal-polynomial facts) nil)
-        (multiple-value-bind (slack fact-strict) (slack-of fact)
-          (let ((fact-polynomial (and slack (numerator-polynomial bridge slack))))
-            (dolist (c (and fact-polynomial (remainder-multipliers goal-polynomial fact-polynomial)))
-              (let ((rest (polynomial-sum goal-polynomial (polynomial-scaled fact-polynomial (- c)))))
-                (if (null rest)
-                    ;; GOAL = c FACT: as strict as the fact
-                    (when (or (not strict) fact-strict)
-                      (return-from goal-proven-by-one-fact-p t))
+      (multiple-value-bind (slack fact-strict) (slack-of fact)
+        (let ((fact-polynomial (and slack (numerator-polynomial bridge slack))))
+          (dolist (c (and fact-polynomial (remainder-multipliers goal-polynomial fact-polynomial)))
+            (let ((rest (polynomial-sum goal-polynomial (polynomial-scaled fact-polynomial (- c)))))
+              (if (null rest)
+                  ;; GOAL = c FACT: as strict as the fact
+                  (when (or (not strict) fact-strict)
+                    (return-from goal-proven-by-one-fact-p t))
                   (let ((remainder (polynomial-expression rest)))
                     (when (and (not (multiplier-refuted-p bridge remainder))
                                (proven-nonnegative-p bridge remainder (and strict (not fact-strict))))
