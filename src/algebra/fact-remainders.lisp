@@ -46,8 +46,14 @@
   "POLYNOMIAL times the number C."
   (mapcar (lambda (term) (cons (car term) (* c (cdr term)))) polynomial))
 
+(defparameter *largest-remainder-expansion* 400
+  "POLYNOMIAL-OF gives up on a product of more pairs of terms than this.")
+
 (defun polynomial-product (p q)
-  "The product of the polynomials P and Q."
+  "The product of the polynomials P and Q; throws TOO-LARGE past
+*LARGEST-REMAINDER-EXPANSION* pairs of terms."
+  (when (> (* (length p) (length q)) *largest-remainder-expansion*)
+    (throw 'too-large nil))
   (apply #'polynomial-sum
          (loop for (m1 . c1) in p
                collect (loop for (m2 . c2) in q
@@ -56,7 +62,9 @@
 (defun polynomial-of (expression)
   "EXPRESSION (prefix) expanded as a polynomial over its variables and non-polynomial
 subterms, with rational coefficients, as (values POLYNOMIAL T); NIL when a division by a
-non-number or a float stands in the way (the zero polynomial is (values NIL T))."
+non-number or a float stands in the way, or the expansion grows too large (the zero
+polynomial is (values NIL T)). Like the simulator's EXPANDED-MONOMIALS
+(polynomial-signs.lisp, a layer up), with other subterms taken as atoms."
   (labels ((fail () (return-from polynomial-of nil))
            (walk (x)
              (cond ((rationalp x) (if (zerop x) '() (list (cons '() x))))
@@ -83,7 +91,8 @@ non-number or a float stands in the way (the zero polynomial is (values NIL T)).
                                           (setf result (polynomial-product result base))))
                                       (list (cons (list (cons x 1)) 1)))))
                           (t (list (cons (list (cons x 1)) 1)))))))))
-    (values (walk expression) t)))
+    (catch 'too-large
+      (values (walk expression) t))))
 
 (defun polynomial-expression (polynomial)
   "POLYNOMIAL as a prefix expression."
