@@ -165,7 +165,12 @@ combined (see the file header): :TRUE, :FALSE (its negation so proven) or :UNKNO
                ;; a relation that fails at an admissible point cannot be proven
                (and (not (relation-refuted-p bridge relation))
                     (multiple-value-bind (slack strict) (slack-of relation)
-                      (goal-proven-by-pairs-p bridge (simplified bridge slack :ratsimp) strict)))))
+                      (let ((goal (simplified bridge slack :ratsimp)))
+                        ;; one fact and a remainder of one sign (fact-remainders.lisp), then pairs
+                        (or (goal-proven-by-one-fact-p
+                             bridge goal strict
+                             (remove-if-not #'bound-fact-p (flatten-facts (current-assumptions bridge))))
+                            (goal-proven-by-pairs-p bridge goal strict)))))))
         (cond ((proven relation) :true)
               ((proven (negate-condition relation)) :false)
               (t :unknown)))))

@@ -16,8 +16,9 @@
 
 (defun decided-or-by-values (bridge relation)
   "RELATION's truth under the assumptions (:TRUE, :FALSE or :UNKNOWN), or, when they
-leave it open, at the run's parameter values (recorded, see DECIDE-BY-VALUES)."
-  (let ((truth (decide bridge relation)))
+leave it open, at the run's parameter values (recorded, see DECIDE-BY-VALUES); while
+the values decide first (values-first.lisp), after only a cheap proof."
+  (let ((truth (decide-first-cheaply bridge relation)))
     (if (eq truth :unknown) (or (decide-by-values relation) :unknown) truth)))
 
 (defvar *sine-variable* (make-symbol "SINE")

@@ -52,11 +52,12 @@ its equation: the gap whose closing reaches it."
   "Whether every one of GUARDS holds where AT (a function turning a relation's operands
 into their values at the place searched) puts them: :TRUE, :FALSE or (values :UNKNOWN
 FACT). What the assumptions leave open the run's parameter values settle when it has
-them (the fact recorded as assumed from them), as they settle the order of events."
+them (the fact recorded as assumed from them), as they settle the order of events; while
+they decide first (AMES.ALGEBRA:VALUES-FIRST-P), after only a cheap proof."
   (let ((unknown nil))
     (dolist (guard guards (if unknown (values :unknown unknown) :true))
       (let* ((relation (guard-at guard at))
-             (truth (decide run relation)))
+             (truth (ames.algebra:decide-first-cheaply (run-bridge run) relation)))
         (when (eq truth :unknown)
           (setf truth (or (ames.algebra:decide-by-values relation) :unknown)))
         (case truth

@@ -283,14 +283,16 @@ SERIES-COEFFICIENTS to COUNT coefficients, one derivative at a time."
         do (destructuring-bind (coefficients derivative factorial) entry
              (let* ((k (length coefficients))
                     (factorial (if (> k 0) (* factorial k) factorial))
-                    (c (tidy run (at-time (substitute-expressions (solved-model-initial solved)
-                                                                  `(/ ,derivative ,factorial))
-                                          0))))
+                    (c (tidy run (without-zeros
+                                  (at-time (substitute-expressions (solved-model-initial solved)
+                                                                   `(/ ,derivative ,factorial))
+                                           0)))))
                (setf (first entry) (append coefficients (list c))
                      (third entry) factorial
                      (second entry) (if (< k *series-order*)
-                                        `(+ ,(ames.geometry:differentiate derivative 'tau)
-                                            ,(time-derivative-in solved derivative))
+                                        (without-zeros
+                                         `(+ ,(ames.geometry:differentiate derivative 'tau)
+                                             ,(time-derivative-in solved derivative)))
                                         derivative))))))
 
 (defun local-series (run solved expression)
