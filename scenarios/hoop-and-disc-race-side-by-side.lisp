@@ -20,7 +20,7 @@
 ;;;; bodies apart (choice-clusters.lisp), but the meeting of the flying disc with the hoop
 ;;;; is still worked out in full and overruns Maxima's time (a run of 3 states exits 3).
 
-(scenario hoop-and-disc-race
+(scenario hoop-and-disc-race-side-by-side
   "A hoop and a disc roll down two identical inclines: the disc arrives first."
   (parameters (m :positive (:value 1)) (g :positive (:value 981/100)) (r :positive (:value 1/5))
               (h :positive (> h r) (:value 2)) (a (> a 0) (< a (/ pi 2)) (:value (deg 30)))
