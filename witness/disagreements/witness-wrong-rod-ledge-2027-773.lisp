@@ -1,16 +1,22 @@
-;;;; ames-wrong-rod-ledge-2027-773 -- a disagreement found by the witness (make crosscheck).
-;;;; verdict: ames-wrong
+;;;; witness-wrong-rod-ledge-2027-773 -- a disagreement found by the witness (make crosscheck).
+;;;; verdict: ames-wrong (the comparator's); examined: the witness is wrong (a graze)
 ;;;; reason: at the witness's step 6.25e-5 s: state 1: end time: AMES 0.5263276733272356d0, witness 0.494375d0; at its step 0.001 s: state 1: end time: AMES 0.5263276733272356d0, witness 0.492d0
-;;;; Examined in part (witness helper, session 6, at the deadline): probably AMES WRONG. The rod
-;;;; lands with its left end on the ledge's top (0.4066 s, agreed) and flies off spinning
-;;;; clockwise (omega = -10.65) while still falling (vy = -2.86): by the witness, at 0.4944 s its
-;;;; lower face comes down onto the ledge's edge (0, 0) (the rod from (-0.164, 0.142) to
-;;;; (0.592, -0.513) passes through it, computed from the witness's state), which AMES's state 1
-;;;; does not see: it flies on to the right end striking the floor at 0.5263 s. Unlike
-;;;; block-step 2027 #650 the edge was in front of that face at the start, so the start-gap
-;;;; filter of src/simulator/corners.lisp is not obviously the cause; to examine (the root of
-;;;; the fixed corner's gap on the rod's face in a spinning flight, or a segment's faces).
-;;;; Run: bin/ames check witness/disagreements/ames-wrong-rod-ledge-2027-773.lisp --numeric
+;;;; Examined (lead, session 6): AMES IS RIGHT; the witness's first-order step cannot resolve
+;;;; a graze. The rod lands with its left end on the ledge's top (0.4065 s, agreed) and flies
+;;;; off spinning clockwise; its lower face then passes over the ledge's edge (0, 0) without
+;;;; touching it. The gap of that corner on the rod's face over AMES's exact closed-form
+;;;; flight (the scenario's numbers put in; the face-on-vertex condition's gap), evaluated by
+;;;; Maxima with 40-digit bigfloats: 0.05523 at the state's start, least at tau = 0.0894945
+;;;; (t = 0.49597), where it is 1.137e-5 (11 micrometres), then growing. A double-precision
+;;;; sampling of the same function agrees (1.49e-5 at tau = 0.0899). The witness (Moreau-Jean,
+;;;; first order) knows the rod's state after the first impact only to O(step) (about 3 m/s x
+;;;; 6.25e-5 s = 2e-4 m at its finest step), more than the clearance, so it strikes the edge
+;;;; (at 0.4944 s with step 6.25e-5, 0.492 s with 1e-3: the time moves with the step). AMES
+;;;; flies on to the rod's right end striking the floor at 0.5263 s. What the comparator could
+;;;; do (not built): where AMES's least gap of a pair over a state is below the witness's
+;;;; resolution at its step, call a witness strike of that pair "unsupported", with the
+;;;; clearance as the reason.
+;;;; Run: bin/ames check witness/disagreements/witness-wrong-rod-ledge-2027-773.lisp --numeric
 
 (scenario rod-ledge-773 "A rod or a block falls across the edge of a ledge." (gravity 23/2)
  (body floor :fixed t :shape (half-plane (1 -3/4) (0 -3/4)))
