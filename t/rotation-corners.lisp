@@ -97,3 +97,50 @@ m g / (2 tan a) toward the wall."
                (is-same-vector bridge "at rest" (per-body (ames::state-velocities state) "LADDER") (quote (0 0)))
                (is-same bridge "not turning"
                         (rotation-entry (ames.simulator:state-angular-velocities state) "LADDER") 0)))))))))
+
+(defparameter *block-beside-a-ledge*
+  "(scenario block-beside-a-ledge \"A spinning block above and to the right of a ledge.\"
+     (gravity 10)
+     (body ledge :fixed t :shape (polygon (-3 -1) (0 -1) (0 0) (-3 0)))
+     (body block :mass 1 :inertia :uniform
+                 :shape (polygon (-1/2 -1/2) (1/2 -1/2) (1/2 1/2) (-1/2 1/2))
+                 :position (2 3) :angle 0 :velocity (-1 0) :angular-velocity 5)
+     (simulate :states 1))"
+  "A square block, spinning, whose right and top faces have the ledge's edge (0, 0)
+behind their lines at the start.")
+
+(test a-fixed-corner-is-described-on-every-face-of-a-rotating-body
+  "The ledge's edge (0, 0) is a :FACE-ON-VERTEX contact with each of the spinning block's
+four faces, the two whose lines it is behind at the start (gap -5/2 and -7/2) too: the
+block turns those faces round to it (witness/disagreements/ames-wrong-block-step-2027-650.lisp,
+where the far face struck the edge and AMES flew through the ledge). The block's own
+corners are still described only on the ledge's faces they are in front of."
+  (with-fixture simulator-bridge ()
+    (let* ((scenario (first (ames:read-scenarios-from-string *block-beside-a-ledge*)))
+           (run (ames.simulator::make-run (nth-value 1 (ames.scenario::check-scenario scenario bridge)) bridge))
+           (geometries (mapcar #'cdddr (ames.simulator::run-corner-contacts run)))
+           (on-faces (remove-if-not (lambda (g)
+                                      (and (eq :face-on-vertex (ames.geometry:rotating-contact-kind g))
+                                           (equal '(0 0) (ames.geometry:rotating-contact-point g))))
+                                    geometries))
+           (start-gaps (mapcar (lambda (g)
+                                 (ames.maxima:simplify
+                                  bridge (ames.simulator::at-scenario-start
+                                          (find-if (lambda (b) (string-equal "BLOCK" (symbol-name (ames.scenario:scenario-body-name b))))
+                                                   (ames.scenario:scenario-bodies scenario))
+                                          (ames.geometry:rotating-contact-gap g))
+                                  :strategy :full))
+                               on-faces)))
+      (is (= 4 (length on-faces)) "~S" start-gaps)
+      (is (= 2 (count-if (lambda (gap) (and (realp gap) (minusp gap))) start-gaps)) "~S" start-gaps)
+      (is (null (set-difference '(-5/2 -7/2) start-gaps)) "~S" start-gaps)
+      ;; a corner of the block on a face of the ledge: only where it is in front of it
+      (is (every (lambda (g)
+                   (let ((gap (ames.maxima:simplify
+                               bridge (ames.simulator::at-scenario-start
+                                       (find-if (lambda (b) (string-equal "BLOCK" (symbol-name (ames.scenario:scenario-body-name b))))
+                                                (ames.scenario:scenario-bodies scenario))
+                                       (ames.geometry:rotating-contact-gap g))
+                               :strategy :full)))
+                     (and (realp gap) (>= gap 0))))
+                 (remove :face-on-vertex geometries :key #'ames.geometry:rotating-contact-kind))))))
