@@ -17,7 +17,7 @@ It asks Maxima only through the bridge.")
    ;; deciding (deciding.lisp)
    #:decide #:substitute-subexpressions #:holds-p #:*combined-bounds-wanted* #:sign-varies-p #:refuted-p
    ;; a relation proven to contradict the facts in force (contradictions.lisp)
-   #:contradicts-facts-p
+   #:contradicts-facts-p #:one-angle-root
    ;; numbers before proofs (values.lisp)
    #:call-with-parameter-values #:with-parameter-values #:current-parameter-values
    #:value-truth #:decide-by-values #:facts-from-values

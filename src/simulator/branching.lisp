@@ -43,7 +43,8 @@ branch of its own."
 (defun boundary-substitution (run fact)
   "For the inequality FACT, (values PARAMETER VALUE) with the equation LHS = RHS solved
 for a parameter of the scenario (the last declared one it determines uniquely, free of
-itself), or NIL."
+itself; an angle met only under sin, cos and tan by its one root in its range and the
+facts in force, ONE-ANGLE-ROOT), or NIL."
   (let ((equation `(= ,(relation-lhs fact) ,(relation-rhs fact))))
     (dolist (parameter (reverse (scenario-parameters (run-scenario run))))
       (let ((name (scenario-parameter-name parameter)))
@@ -54,7 +55,13 @@ itself), or NIL."
             (when (and solutions (null (rest solutions)))
               (let ((value (tidy run (cdr (first (first solutions))) :full)))
                 (when (free-of-p name value)
-                  (return (values name value)))))))))))
+                  (return (values name value)))))
+            ;; an angle met only in its sine, cosine and tangent (2 sin a - cos a = 0),
+            ;; which solve() answers implicitly: its one root in its range, exactly
+            (let ((value (ames.algebra:one-angle-root
+                          (run-bridge run) `(- ,(relation-lhs fact) ,(relation-rhs fact)) name)))
+              (when value
+                (return (values name value))))))))))
 
 (defun default-value-spec-p (spec)
   "True when SPEC, part of a parameter's declaration, is a default (:VALUE NUMBER)."
@@ -108,7 +115,8 @@ scenario that declares it."
   "The branches of the missing FACT: plists (:ASSUME RELATION :FACTS FACTS :SCENARIO S)
 with FACTS the assumptions the branch adds and S its scenario (the boundary's has a
 parameter substituted). They do not overlap: X > 0, X < 0 and X = 0 when there is a
-boundary branch, else FACT and its strict opposite. Alternatives the assumptions
+boundary branch, else FACT and its strict opposite (and, for a strict FACT, its boundary
+marked :UNSOLVED T, with no scenario: see UNSOLVED-BOUNDARY-BRANCH). Alternatives the assumptions
 already exclude, or proven impossible under the facts in force (IMPOSSIBLE-FACT-P), are
 left out."
   (let* ((scenario (run-scenario run))
@@ -132,7 +140,14 @@ left out."
     (dolist (side (list (if boundary (negated-fact (negated-fact fact)) fact) (negated-fact fact)))
       (unless (or (eq (decide run side) :false) (impossible-fact-p run side))
         (push (list :assume side :facts (list side) :scenario scenario) alternatives)))
-    (when boundary (push boundary alternatives))
+    (cond (boundary (push boundary alternatives))
+          ;; X > 0 and X < 0 leave X = 0 out: where no parameter is solved for from it,
+          ;; the boundary is listed unsimulated, with why, rather than left unsaid
+          ((and (member (first fact) '(> <))
+                (not (impossible-fact-p run `(= ,(relation-lhs fact) ,(relation-rhs fact)))))
+           (push (list :assume `(= ,(relation-lhs fact) ,(relation-rhs fact)) :facts '()
+                       :unsolved t)
+                 alternatives)))
     (nreverse alternatives)))
 
 (defun branchable-fact-p (fact)
@@ -207,14 +222,17 @@ that fact: see ASSUMED-ON-THIS-PATH-P)."
                                          :depth (1+ (getf *branching* :depth 0))
                                          :extra-facts (getf *branching* :extra-facts))))
                   (mapcar (lambda (alternative)
-                            (if (or (eq alternative selected)
-                                    (simulate-every-branch-p run selected))
-                                (grow-branch run alternative index check-incremental
-                                             (eq alternative selected)
-                                             (and values (numeric-clock (run-bridge run)
-                                                                        (history-states history)
-                                                                        values)))
-                                (unsimulated-branch alternative)))
+                            (cond
+                              ((getf alternative :unsolved)
+                               (unsolved-boundary-branch alternative (eq alternative selected)))
+                              ((or (eq alternative selected)
+                                   (simulate-every-branch-p run selected))
+                               (grow-branch run alternative index check-incremental
+                                            (eq alternative selected)
+                                            (and values (numeric-clock (run-bridge run)
+                                                                       (history-states history)
+                                                                       values))))
+                              (t (unsimulated-branch alternative))))
                           alternatives)))
           (setf (history-states history) (append (history-states history) (list fork))
                 (history-outcome history) :branched)
@@ -235,6 +253,15 @@ only the selected branch is (the language page, \"Ambiguity and branching\")."
   (append (list :assume (getf alternative :assume) :states '() :outcome :not-simulated)
           (and (getf alternative :substitution)
                (list :substitution (getf alternative :substitution)))))
+
+(defun unsolved-boundary-branch (alternative selected)
+  "The boundary ALTERNATIVE (X = 0) of a fork for which no parameter could be solved,
+listed with its fact and why it is not simulated; :FAILED when the run's values lie on it
+(SELECTED), so that the run does not pass for finished, else :NOT-SIMULATED."
+  (append (list :assume (getf alternative :assume) :states '()
+                :outcome (if selected :failed :not-simulated)
+                :failure "no parameter of the scenario could be solved for from this boundary, so it is not simulated")
+          (and selected (list :selected t))))
 
 (defun continuable-branch-p (run alternative selected)
   "True when the branch ALTERNATIVE continues from the fork (see fork-continuation.lisp):
