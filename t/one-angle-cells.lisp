@@ -125,3 +125,27 @@ sqrt 5."
                             (x '(/ (* m g) (sqrt 5))))
             (is-same bridge "N" (normal-force-between rest-state "PARTICLE" "INCLINE")
                      (x '(/ (* 2 m g) (sqrt 5))))))))))
+
+(test a-boundary-no-parameter-is-solved-for-is-listed
+  "4 sin a cos a - 1 = 0 has two roots in the incline's range (pi/12 and 5 pi/12): no
+parameter is solved for from it, and the fork on 4 sin a cos a - 1 > 0 lists its
+boundary anyway, unsimulated (with why), after the two strict sides; its branch is
+:NOT-SIMULATED, or :FAILED when the run's values lie on it."
+  (with-fixture simulator-bridge ()
+    (let ((scenario (scenario-named "particle-on-incline-of-friction-one-half")))
+      (call-with-scenario-facts
+       bridge scenario
+       (lambda ()
+         (let* ((run (ames.simulator::make-run
+                      (nth-value 1 (ames.scenario::check-scenario scenario bridge)) bridge))
+                (fact (in-scenario-terms scenario '(> (- (* 4 (sin a) (cos a)) 1) 0)))
+                (alternatives (ames.simulator::fork-alternatives run fact)))
+           (is (equal '(> < =) (mapcar (lambda (alt) (first (getf alt :assume))) alternatives)))
+           (let ((boundary (third alternatives)))
+             (is (getf boundary :unsolved))
+             (is (null (getf boundary :scenario)))
+             (is (eq :not-simulated
+                     (getf (ames.simulator::unsolved-boundary-branch boundary nil) :outcome)))
+             (is (eq :failed
+                     (getf (ames.simulator::unsolved-boundary-branch boundary t) :outcome)))
+             (is (stringp (getf (ames.simulator::unsolved-boundary-branch boundary nil) :failure))))))))))
