@@ -116,7 +116,7 @@ scenario that declares it."
 with FACTS the assumptions the branch adds and S its scenario (the boundary's has a
 parameter substituted). They do not overlap: X > 0, X < 0 and X = 0 when there is a
 boundary branch, else FACT and its strict opposite (and, for a strict FACT, its boundary
-marked :UNSOLVED T, with no scenario: see UNSOLVED-BOUNDARY-BRANCH). Alternatives the assumptions
+marked :UNSOLVED with why, with no scenario: see UNSOLVED-BOUNDARY-BRANCH). Alternatives the assumptions
 already exclude, or proven impossible under the facts in force (IMPOSSIBLE-FACT-P), are
 left out."
   (let* ((scenario (run-scenario run))
@@ -146,7 +146,9 @@ left out."
           ((and (member (first fact) '(> <))
                 (not (impossible-fact-p run `(= ,(relation-lhs fact) ,(relation-rhs fact)))))
            (push (list :assume `(= ,(relation-lhs fact) ,(relation-rhs fact)) :facts '()
-                       :unsolved t)
+                       :unsolved (if (<= (ames.maxima:expression-size fact) *largest-boundary-fact*)
+                                     "no parameter of the scenario could be solved for from this boundary, so it is not simulated"
+                                     "this boundary's fact is too large for a parameter to be solved for from it, so it is not simulated"))
                  alternatives)))
     (nreverse alternatives)))
 
@@ -260,7 +262,7 @@ listed with its fact and why it is not simulated; :FAILED when the run's values 
 (SELECTED), so that the run does not pass for finished, else :NOT-SIMULATED."
   (append (list :assume (getf alternative :assume) :states '()
                 :outcome (if selected :failed :not-simulated)
-                :failure "no parameter of the scenario could be solved for from this boundary, so it is not simulated")
+                :failure (getf alternative :unsolved))
           (and selected (list :selected t))))
 
 (defun continuable-branch-p (run alternative selected)
