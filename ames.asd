@@ -301,6 +301,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "compare-first-order")
                  (:file "compare-time-limit")
                  (:file "compare-slow-impacts")
+                 (:file "compare-handover")
                  (:file "refine")
                  (:file "generate")
                  (:file "generate-curved")

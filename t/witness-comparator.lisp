@@ -173,3 +173,27 @@ times the energy (1 m/s) is one the witness would see, and its absence is AMES w
              (data (member-if #'keywordp (rest event))))
         (setf (getf data :energy-lost) `(* 2000 ,(getf data :energy-lost)))
         (is (eq :ames-wrong (ames.witness:comparison-verdict (verdict ames 0))))))))
+
+(defun terrain-2029-225 ()
+  "The answers of the particle of seed 2029 terrain #225: it slides down piece1's slope to
+its foot, where the floor begins (AMES: a leaving, then a state of zero duration ending
+with the floor's collision; the witness: the collision alone)."
+  (commented-answers (asdf:system-relative-pathname
+                      "ames" "witness/disagreements/witness-handover-terrain-2029-225.lisp")))
+
+(test a-face-handing-over-to-another-at-once-agrees
+  "AMES's leaving of the slope's foot and its zero-duration state ending with the floor's
+collision agree with the witness's one collision at that instant; the leaving is not
+accepted when AMES's next state does not end with the witness's event then (a collision
+with the other piece instead), nor when that state is missing."
+  (let ((answers (terrain-2029-225)))
+    (is (eq :agree (ames.witness:comparison-verdict (compare-kept answers))))
+    (let* ((ames (copy-tree (getf answers :ames)))
+           (zero (third (getf ames :states))))
+      (setf (third (getf zero :end-event)) 'ames-scenario::piece0)
+      (is (eq :ames-wrong (ames.witness:comparison-verdict
+                           (compare-kept (list* :ames ames answers))))))
+    (let ((ames (copy-tree (getf answers :ames))))
+      (setf (getf ames :states) (remove (third (getf ames :states)) (getf ames :states)))
+      (is (eq :ames-wrong (ames.witness:comparison-verdict
+                           (compare-kept (list* :ames ames answers))))))))

@@ -279,7 +279,8 @@ bumper turns within one state of closed forms in time)."
             (event-head event) end))
   (let ((witness-event (merge-simultaneous-events walk (pop (walk-events walk))))) ; compare-first-order.lisp
     (compare-number walk "end time" end (getf witness-event :time))
-    (let ((ok (event-matches-p event witness-event)))
+    (let ((ok (or (event-matches-p event witness-event)
+                  (handed-over-p walk event witness-event end)))) ; compare-handover.lisp
       (push (list (walk-index walk) "end event" (format nil "~(~{~A~^ ~}~)" (event-head event))
                   (format nil "~(~{~{~A~^ ~}~^, ~}~)" (getf witness-event :pairs)) nil ok)
             (walk-rows walk))
