@@ -95,7 +95,8 @@ the caller reads of the answer are asked (SETTLED-SIGNS)."
          (steps (append (list (cons '> '(:positive)) (cons '< '(:negative)))
                         (and (member :zero signs)
                              (list (cons '>= '(:positive :zero)) (cons '<= '(:negative :zero))))))
-         (proven-p (lambda (step) (eq (decide bridge (list (car step) expression 0)) :true))))
+         ;; only a proof counts: HOLDS-P leaves out one that fails at an admissible point
+         (proven-p (lambda (step) (holds-p bridge (list (car step) expression 0)))))
     (if tests
         (settled-signs steps signs tests proven-p)
         (loop for step in steps
@@ -264,8 +265,8 @@ proofs not paid for)."
                                         (untranslatable-result () nil))))
                       (and expression
                            (let ((bridge (search-bridge search)))
-                             (or (eq (decide bridge (list '> expression 0)) :true)
-                                 (eq (decide bridge (list '< expression 0)) :true)))))))))))
+                             (or (holds-p bridge (list '> expression 0))
+                                 (holds-p bridge (list '< expression 0))))))))))))
 
 (defun solved-earliest-root (search form offset-variable coefficients)
   "The general case: the roots solve() finds, compared pairwise. COEFFICIENTS is the
