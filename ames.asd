@@ -54,7 +54,6 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "sign-rules")
                  (:file "angles")
                  (:file "witnesses")
-                 (:file "vanishing-witnesses")
                  (:file "constant-zero")
                  (:file "intervals")
                  (:file "round-off")

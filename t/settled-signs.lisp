@@ -1,14 +1,11 @@
 ;;;; t/settled-signs.lisp -- the earliest-root search asks only the sign proofs that can
-;;;; change what it reads of a form's signs (src/algebra/roots.lisp, SETTLED-SIGNS), and
-;;;; HOLDS-P does not try to prove a strict inequality on a square root that vanishes at
-;;;; an admissible point (src/algebra/vanishing-witnesses.lisp).
+;;;; change what it reads of a form's signs (src/algebra/roots.lisp, SETTLED-SIGNS).
 
 (in-package #:ames.tests)
 
 (def-suite settled-signs :in all-tests
   :description "DECIDED-SIGNS with the caller's tests reads as it does with every proof
-asked, and leaves out proofs that cannot change that reading; HOLDS-P leaves out a
-strict inequality on a square root that vanishes at an admissible point.")
+asked, and leaves out proofs that cannot change that reading.")
 
 (in-suite settled-signs)
 
@@ -67,27 +64,3 @@ would read as undecided), a strict root verdict all 4 (<= 0 would read as no roo
     (is (equal '(> <) (asked '((:negative) (:zero) (:positive)))))
     (is (equal '(> < >=) (asked '((:positive :zero)))))
     (is (equal '(> < >= <=) (asked (ames.algebra::verdict-tests t))))))
-
-;;; A strict inequality on a square root that vanishes at an admissible point
-;;; (src/algebra/vanishing-witnesses.lisp)
-
-(test a-square-root-crossing-zero-is-not-proven
-  "Under m, k > 0: sqrt(m - k) l > 0 fails where m = k (an admissible point between one
-where m > k and one where m < k), so HOLDS-P answers NIL without a round trip, and DECIDE
-(asked afterwards) does not prove it either; sqrt(m + k) l > 0, whose radicand never
-vanishes, and sqrt(1/(m - k)) > 0, whose radicand changes sign through a pole only, are
-not taken for vanishing."
-  (call-with-bridge
-   (lambda (b)
-     (ames.maxima:with-assumptions (b '((> m 0) (> k 0) (> l 0)))
-       (let ((relation '(> (* (sqrt (- m k)) l) 0)))
-         (is (ames.algebra::strict-relation-vanishing-p b relation))
-         (is (ames.algebra::strict-relation-vanishing-p b '(< (- (/ (* (sqrt (- m k)) l) m)) 0)))
-         (let ((trips (maxima-round-trips b)))
-           (is (not (ames.algebra:holds-p b relation)))
-           (is (= trips (maxima-round-trips b))))
-         (is (not (eq :true (ames.algebra:decide b relation)))))
-       (is (not (ames.algebra::strict-relation-vanishing-p b '(> (* (sqrt (+ m k)) l) 0))))
-       (is (not (ames.algebra::strict-relation-vanishing-p b '(> (sqrt (/ 1 (- m k))) 0))))
-       ;; only a strict inequality fails where the root vanishes
-       (is (not (ames.algebra::strict-relation-vanishing-p b '(>= (* (sqrt (- m k)) l) 0))))))))

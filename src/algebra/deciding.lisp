@@ -297,15 +297,12 @@ agrees with anything), else :UNKNOWN (|u| >= u holds whatever the sign of u)."
   "True when DECIDE answers :TRUE for RELATION (a relation or a logical form), found
 faster where it does not: a point that surely satisfies the facts in force and surely
 violates RELATION settles it without asking Maxima, since no sound strategy proves a
-relation that fails somewhere (see RELATION-REFUTED-P; STRICT-RELATION-VANISHING-P for a
-strict inequality on a square root whose radicand crosses zero). For callers that act only on
+relation that fails somewhere (see RELATION-REFUTED-P). For callers that act only on
 :TRUE. Signals what DECIDE signals."
   (check-translatable relation :condition)
   (multiple-value-bind (verdict found) (cached-answer bridge (verdict-key bridge relation) :count nil)
     (cond (found (eq verdict :true))
           ((relation-refuted-p bridge relation) nil)
-          ;; a strict inequality on a square root that vanishes at an admissible point
-          ((strict-relation-vanishing-p bridge relation) nil)
           (t (eq (decide bridge relation) :true)))))
 
 (defun refuted-p (bridge relation &key assuming)
