@@ -250,7 +250,7 @@ part is decidedly not zero (sqrt(h - top) under h < top). Such a root of
 a polynomial in time is no time at which anything happens.
 The imaginary part's signs are SIGN-PATTERN-OF's, and only whether they leave out
 :ZERO counts: so of DECIDE's narrowing (DECIDED-SIGNS) only the proofs of > 0 and < 0
-are asked, and none when Maxima's signs leave out :ZERO already (>= 0 and <= 0, which
+are asked (through HOLDS-P: only a proof counts), and none when Maxima's signs leave out :ZERO already (>= 0 and <= 0, which
 DECIDED-SIGNS tries next, can only give signs with :ZERO: the same answer, the failing
 proofs not paid for)."
   (let ((imaginary (root-form-imaginary-part (search-bridge search) offset
