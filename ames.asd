@@ -345,6 +345,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "bridge-truth")
                (:file "weaker-assumptions")
                (:file "fact-free-requests")
+               (:file "settled-signs")
                (:file "truth-table")
                (:file "algebra-signs")
                (:file "scenario")

@@ -62,17 +62,19 @@ another (see WITNESSED-BOTH-WAYS-P): its signs include :POSITIVE and :NEGATIVE."
     (and expression
          (witnessed-both-ways-p (search-bridge search) (list '> expression 0)))))
 
-(defun sign-pattern-of (search form)
+(defun sign-pattern-of (search form &optional tests)
   "The signs of FORM, for the tests that only ask whether they lie within a set that
 lacks :POSITIVE or :NEGATIVE (ONLY, ROOT-VERDICT): all three, without asking Maxima,
 when FORM is seen to take both signs, else SIGNS-OF, narrowed by DECIDE (which knows
 more than Maxima's sign(): trigonometric bounds, orderings) when Maxima leaves several.
 A constant FORM zero to round-off is decided exactly or left open (round-off.lisp):
-Maxima's sign() would give its float's sign."
+Maxima's sign() would give its float's sign. TESTS, when given, are the sets the caller
+asks the signs to lie within (SUBSETP), all it asks of them: DECIDED-SIGNS then leaves
+out the proofs whose outcome could not change any test's answer."
   (cond ((constant-form-zero-signs search form))
         ((mixed-signs-p search form) (list :positive :negative :zero))
         (t (let ((signs (signs-of search form)))
-             (if (rest signs) (decided-signs search form signs) signs)))))
+             (if (rest signs) (decided-signs search form signs tests) signs)))))
 
 (defun constant-form-zero-signs (search form)
   "CONSTANT-ZERO-SIGNS of the root FORM's expression, NIL when it has none or does not
@@ -81,18 +83,51 @@ translate."
                       (untranslatable-result () nil))))
     (and expression (constant-zero-signs (search-bridge search) expression))))
 
-(defun decided-signs (search form signs)
+(defun decided-signs (search form signs &optional tests)
   "SIGNS (several) narrowed by DECIDE on FORM's translation: the sign it proves, or the
-pair it proves with >= or <=; SIGNS when it proves nothing."
+pair it proves with >= or <=; SIGNS when it proves nothing. The proofs are tried in that
+order (>, <, then >= and <= when SIGNS hold :ZERO), the first proven giving the answer.
+With TESTS (sets of signs; see SIGN-PATTERN-OF) only the proofs that can change what
+the caller reads of the answer are asked (SETTLED-SIGNS)."
   (let* ((bridge (search-bridge search))
          (expression (handler-case (root-form-expression bridge form)
-                       (untranslatable-result () (return-from decided-signs signs)))))
-    (flet ((proved (operator) (eq (decide bridge (list operator expression 0)) :true)))
-      (cond ((proved '>) (list :positive))
-            ((proved '<) (list :negative))
-            ((and (member :zero signs) (proved '>=)) (list :positive :zero))
-            ((and (member :zero signs) (proved '<=)) (list :negative :zero))
-            (t signs)))))
+                       (untranslatable-result () (return-from decided-signs signs))))
+         (steps (append (list (cons '> '(:positive)) (cons '< '(:negative)))
+                        (and (member :zero signs)
+                             (list (cons '>= '(:positive :zero)) (cons '<= '(:negative :zero))))))
+         ;; only a proof counts: HOLDS-P leaves out one that fails at an admissible point
+         (proven-p (lambda (step) (holds-p bridge (list (car step) expression 0)))))
+    (if tests
+        (settled-signs steps signs tests proven-p)
+        (loop for step in steps
+              when (funcall proven-p step) return (copy-list (cdr step))
+              finally (return signs)))))
+
+(defun settled-signs (steps signs tests proven-p)
+  "The answer of STEPS ((OPERATOR . SIGNS-IF-PROVEN) ..., tried in order, the first that
+PROVEN-P proves giving its signs, SIGNS when none does), or another answer that lies
+within the same sets of TESTS (SUBSETP): the steps are tried in the same order, and the
+search stops, with SIGNS, as soon as every answer still possible lies within the same
+sets (SAME-ANSWERS-P). It asks PROVEN-P a part of what the search in order asks."
+  (loop for (step . rest) on steps
+        when (same-answers-p tests (cons signs (mapcar #'cdr (cons step rest))))
+          return signs
+        when (funcall proven-p step)
+          return (copy-list (cdr step))
+        finally (return signs)))
+
+(defun same-answers-p (tests answers)
+  "True when every set of signs in ANSWERS lies within the same sets of TESTS (SUBSETP)."
+  (flet ((reading (signs) (mapcar (lambda (set) (subsetp signs set)) tests)))
+    (let ((first (reading (first answers))))
+      (every (lambda (signs) (equal (reading signs) first)) (rest answers)))))
+
+(defun verdict-tests (strictly)
+  "The sets of signs ROOT-VERDICT reads (see SIGN-PATTERN-OF's TESTS) when STRICTLY is
+true or false."
+  (if strictly
+      '((:positive) (:negative :zero))
+      '((:positive :zero) (:negative))))
 
 (defun check-root-search-arguments (expression variable after)
   "Check the arguments of a search for the earliest root of EXPRESSION in VARIABLE after
@@ -139,7 +174,7 @@ depending on VARIABLE), MAXIMA-ERROR, MAXIMA-TIMEOUT."
   "EXPRESSION does not depend on the variable: no root, or (identically zero) every value.
 Its signs are SIGN-PATTERN-OF's (narrowed by DECIDE: mb g (5 l1 - l2)(l1 - l2) expanded
 is not zero when l1 > l2 > 0, which Maxima's sign() does not see)."
-  (let ((signs (sign-pattern-of search constant)))
+  (let ((signs (sign-pattern-of search constant '((:positive :negative) (:zero)))))
     (cond ((not (member :zero signs)) (values :none nil))
           ((and (equal signs '(:zero)) (not (search-strictly search))) (found search 0))
           (t (values :unknown nil)))))
@@ -148,9 +183,10 @@ is not zero when l1 > l2 > 0, which Maxima's sign() does not see)."
   "c0 + c1 s = 0: the one root -c0/c1, when c1 cannot vanish."
   (destructuring-bind (c0 c1) coefficients
     (let ((offset (linear-root-offset c0 c1)))
-      (if (member :zero (sign-pattern-of search c1))
+      (if (member :zero (sign-pattern-of search c1 '((:positive :negative))))
           (unknown search (list offset))
-          (ecase (root-verdict (sign-pattern-of search offset) (search-strictly search))
+          (ecase (root-verdict (sign-pattern-of search offset (verdict-tests (search-strictly search)))
+                                (search-strictly search))
             (:yes (found search offset))
             (:no (values :none nil))
             (:maybe (unknown search (list offset))))))))
@@ -163,18 +199,18 @@ form, its numerator and denominator both negated when the numerator is proven ne
         (datum (search-expression search)))
     (multiple-value-bind (rational numerator) (rational-radicand bridge radicand :datum datum)
       (real-square-root-form bridge rational numerator
-                             (equal (sign-pattern-of search numerator) '(:negative))
+                             (equal (sign-pattern-of search numerator '((:negative))) '(:negative))
                              :datum datum))))
 
 (defun quadratic-earliest-root (search coefficients form offset-variable)
   "c0 + c1 s + c2 s^2 = 0, through the product P = c0/c2 and sum S = -c1/c2 of the roots
 and the reduced discriminant S^2/4 - P: the roots are S/2 -+ sqrt(S^2/4 - P)."
   (destructuring-bind (c0 c1 c2) coefficients
-    (when (member :zero (sign-pattern-of search c2))
+    (when (member :zero (sign-pattern-of search c2 '((:positive :negative))))
       (return-from quadratic-earliest-root
         (solved-earliest-root search form offset-variable coefficients)))
     (multiple-value-bind (product sum half-sum discriminant) (vieta-forms c0 c1 c2)
-     (let* ((product-signs (sign-pattern-of search product))
+     (let* ((product-signs (sign-pattern-of search product '((:negative) (:zero) (:positive))))
            (strictly (search-strictly search))
            (root-of-discriminant nil))
       (flet ((only (signs &rest allowed) (and signs (subsetp signs allowed)))
@@ -191,16 +227,17 @@ and the reduced discriminant S^2/4 - P: the roots are S/2 -+ sqrt(S^2/4 - P)."
             ((equal product-signs '(:zero))
              (if (not strictly)
                  (found search 0)
-                 (ecase (root-verdict (sign-pattern-of search sum) t)
+                 (ecase (root-verdict (sign-pattern-of search sum (verdict-tests t)) t)
                    (:yes (found search sum))
                    (:no (values :none nil))
                    (:maybe (unknown search (list sum))))))
             ;; Roots of the same sign (or complex): both before the start when S <= 0.
             ((only product-signs :positive)
-             (let ((sum-signs (sign-pattern-of search sum)))
+             (let ((sum-signs (sign-pattern-of search sum '((:negative :zero) (:positive)))))
                (cond ((only sum-signs :negative :zero) (values :none nil))
                      ((only sum-signs :positive)
-                      (let ((discriminant-signs (sign-pattern-of search discriminant)))
+                      (let ((discriminant-signs (sign-pattern-of search discriminant
+                                                                  '((:negative) (:positive :zero)))))
                         (cond ((only discriminant-signs :negative) (values :none nil))
                               ((only discriminant-signs :positive :zero) (found search smaller))
                               (t (unknown search (list smaller larger))))))
@@ -213,7 +250,7 @@ part is decidedly not zero (sqrt(h - top) under h < top). Such a root of
 a polynomial in time is no time at which anything happens.
 The imaginary part's signs are SIGN-PATTERN-OF's, and only whether they leave out
 :ZERO counts: so of DECIDE's narrowing (DECIDED-SIGNS) only the proofs of > 0 and < 0
-are asked, and none when Maxima's signs leave out :ZERO already (>= 0 and <= 0, which
+are asked (through HOLDS-P: only a proof counts), and none when Maxima's signs leave out :ZERO already (>= 0 and <= 0, which
 DECIDED-SIGNS tries next, can only give signs with :ZERO: the same answer, the failing
 proofs not paid for)."
   (let ((imaginary (root-form-imaginary-part (search-bridge search) offset
@@ -228,8 +265,8 @@ proofs not paid for)."
                                         (untranslatable-result () nil))))
                       (and expression
                            (let ((bridge (search-bridge search)))
-                             (or (eq (decide bridge (list '> expression 0)) :true)
-                                 (eq (decide bridge (list '< expression 0)) :true)))))))))))
+                             (or (holds-p bridge (list '> expression 0))
+                                 (holds-p bridge (list '< expression 0))))))))))))
 
 (defun solved-earliest-root (search form offset-variable coefficients)
   "The general case: the roots solve() finds, compared pairwise. COEFFICIENTS is the
@@ -253,7 +290,7 @@ miss roots and nothing is proven)."
       (dolist (offset explicit)
         (if (complex-root-form-p offset)
             (progn (push offset undecided) (undecided-anyway))
-            (ecase (root-verdict (sign-pattern-of search offset) strictly)
+            (ecase (root-verdict (sign-pattern-of search offset (verdict-tests strictly)) strictly)
               (:yes (push offset proven))
               (:no)
               (:maybe (unless (non-real-p search offset)
@@ -266,7 +303,8 @@ miss roots and nothing is proven)."
            (let ((earliest (find-if (lambda (candidate)
                                       (every (lambda (other)
                                                (or (eq other candidate)
-                                                   (subsetp (sign-pattern-of search (root-form-difference other candidate))
+                                                   (subsetp (sign-pattern-of search (root-form-difference other candidate)
+                                                                    '((:positive :zero)))
                                                             '(:positive :zero))))
                                              proven))
                                     proven)))

@@ -236,7 +236,12 @@ RATE is the gap's rate then (negative: an impact)."
                         (let* ((root (tidy run root :full))
                                (rate (funcall rate-of root))
                                (checks (cons `(<= ,rate 0) (mapcar (lambda (r) (at-time r root)) extent)))
-                               (answers (mapcar (lambda (r) (decide run r)) checks)))
+                               ;; the first undecided check settles the answer: the
+                               ;; checks after it are not asked
+                               (answers (loop for r in checks
+                                              for answer = (decide run r)
+                                              collect answer
+                                              until (eq answer :unknown))))
                           (cond ((every (lambda (a) (eq a :true)) answers)
                                  (return-from meeting-time (values :at root rate)))
                                 ((member :unknown answers)
