@@ -145,6 +145,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "ropes")
                  (:file "wound-ropes")
                  (:file "wound-rope-impacts")
+                 (:file "closed-rope-pieces")
                  (:file "hinges")
                  (:file "gravitation")
                  (:file "drag")
