@@ -103,6 +103,10 @@ relative speed (the limit of d.v/|d| as it opens along v; 0 when it is closed at
              (refuse-closed-piece situation segment "a rotating body held at a pulley by its point (a hinge)"))
            `(span-length ,segment))
          "The length of a piece closed at its pulley (a rotating body at its end is refused, named).")
+    (reg 'closed-piece-released
+         (lambda (situation segment)
+           (refuse-closed-piece situation segment "its body pulled off the pulley (the hold would exceed the tension), the piece opening from rest along a direction nothing gives,"))
+         "Signals UNMODELLED-SITUATION: a closed piece's body pulled off its pulley.")
     (reg 'closed-piece-relative-acceleration
          (lambda (situation segment axis)
            (multiple-value-bind (a b) (segment-points situation segment)
@@ -132,25 +136,35 @@ each other) holds its body there: the two end points accelerate alike, by a hold
 F of unknown components from the pulley's body on the body (Newton's third law on the
 pulley's body) in place of the tension along the piece; the piece counts length 0 and
 length acceleration 0 in the rope's sum. It holds while the pulley's push along the
-piece is possible, F.F <= T^2; beyond, (:leaves-pulley ROPE A B) ends the state. A
-rotating body at the piece's end (its point pinned: a hinge) is refused, named."
+piece is possible, F.F <= T^2; beyond, (:leaves-pulley ROPE A B): the piece would open
+from rest along a direction nothing gives, refused (named) at once or in the next state.
+A rotating body at the piece's end (its point pinned: a hinge) is refused, named."
   (:arguments (?segment :entity rope-segment
                         :where (:rope ?rope :from (?body1 ?_) :to (?body2 ?_) :within-one-body nil)))
   (:activation (piece-closed-at-start ?segment) (:believes (taut ?rope)))
-  (:deactivation (:when (> (- (+ (expt (force-x (pulley-hold ?segment ?body2)) 2)
-                                 (expt (force-y (pulley-hold ?segment ?body2)) 2))
-                              (expt (tension ?rope) 2))
-                           0)
-                  :event (:leaves-pulley ?rope ?body1 ?body2)))
-  (:assert (held-at-pulley ?segment :rope ?rope)
-           (force (pulley-hold ?segment ?body2) :type pulley-hold :from ?body1 :on ?body2 :contact ?segment)
-           (force (pulley-hold ?segment ?body1) :type pulley-hold :from ?body2 :on ?body1 :contact ?segment)
-           (reported :forces (:pulley-hold ?segment ?body2 ((fx pulley-hold ?segment ?body2)
-                                                            (fy pulley-hold ?segment ?body2)))))
-  (:equations (= (closed-piece-length ?segment) 0)
-              (= (span-acceleration ?segment) 0)
-              (= (closed-piece-relative-acceleration ?segment :x) 0)
-              (= (closed-piece-relative-acceleration ?segment :y) 0)))
+  (:mode :held
+   (:entry :always)
+   (:assert (held-at-pulley ?segment :rope ?rope)
+            (force (pulley-hold ?segment ?body2) :type pulley-hold :from ?body1 :on ?body2 :contact ?segment)
+            (force (pulley-hold ?segment ?body1) :type pulley-hold :from ?body2 :on ?body1 :contact ?segment)
+            (reported :forces (:pulley-hold ?rope ?body1 ((fx pulley-hold ?segment ?body1)
+                                                          (fy pulley-hold ?segment ?body1))))
+            (reported :forces (:pulley-hold ?rope ?body2 ((fx pulley-hold ?segment ?body2)
+                                                          (fy pulley-hold ?segment ?body2)))))
+   (:equations (= (closed-piece-length ?segment) 0)
+               (= (span-acceleration ?segment) 0)
+               (= (closed-piece-relative-acceleration ?segment :x) 0)
+               (= (closed-piece-relative-acceleration ?segment :y) 0))
+   (:transition :to :released
+                :when (> (- (+ (expt (force-x (pulley-hold ?segment ?body2)) 2)
+                               (expt (force-y (pulley-hold ?segment ?body2)) 2))
+                            (expt (tension ?rope) 2))
+                         0)
+                :event (:leaves-pulley ?rope ?body1 ?body2)))
+  ;; entered only by that transition (never at a state's start)
+  (:mode :released
+   (:entry (< 1 0))
+   (:equations (= (closed-piece-released ?segment) 0))))
 
 ;;; At the impact of the closing
 

@@ -279,7 +279,7 @@ rope and pulley clauses)."
   (:event :strikes-pulley
    :words "~A and ~A meet with a speed at the pulley between them: the rope's piece closes up")
   (:event :leaves-pulley :words "~A's piece between ~A and ~A would open from rest: the pulley no longer holds the body")
-  (:force :pulley-hold :names 2 :words "hold of the pulley at ~A on ~A")
+  (:force :pulley-hold :names 2 :words "hold of ~A's pulley on ~A")
   (:impulse :pulley-stop :names 2 :words "impulse of the pulley stop between ~A and ~A")
   (:quantity :tension :force :tension))
 
