@@ -381,6 +381,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "failure-classes")
                (:file "rest-in-contact")
                (:file "refusals")
+               (:file "closing-at-pulley")
                (:file "witness")
                (:file "witness-rotation")
                (:file "scenario-rotation")
