@@ -286,14 +286,15 @@ rope and pulley clauses)."
 ;;; A taut rope's piece closing up: a body reaching its pulley
 
 (defun caught-at-pulley (situation segment)
-  "Signal UNMODELLED-SITUATION: SEGMENT, a piece of a taut rope, has closed up at zero
-speed (the body at one end reached the point at the other, its pulley, with no
-velocity relative to it): with no impact to stop it, what follows is not modelled."
+  "Signal UNMODELLED-SITUATION: SEGMENT, a piece of a taut rope, has closed up (the body
+at one end reached the point at the other, its pulley) with no impact to stop it: at
+zero speed, or at the end of a state integrated numerically (no rate to call it an
+impact). What follows is not modelled."
   (let ((entity (entity-named situation segment)))
     (multiple-value-bind (a b) (segment-points situation segment)
       (error 'unmodelled-situation
              :datum segment
-             :detail (format nil "The piece of rope ~(~A~) between ~(~A~) and ~(~A~) closes up at zero speed: a body reaches the pulley its rope runs over (or the piece turns past a right angle) with no impact to stop it; what follows is not modelled."
+             :detail (format nil "The piece of rope ~(~A~) between ~(~A~) and ~(~A~) closes up with no impact modelled to stop it (reached at zero speed, or at the end of a state integrated numerically): a body reaches the pulley its rope runs over (or the piece turns past a right angle); what follows is not modelled."
                              (entity-property entity :rope) (point-body a) (point-body b))))))
 
 (register-template *mechanics* 'rope-piece-caught #'caught-at-pulley
@@ -308,8 +309,9 @@ piece keeps its direction (its span's fixed direction, the only motion in which 
 close up): the event (:rope-piece-closes ROPE A B) ends the state; reached with a speed,
 it is an impact, (:strikes-pulley A B): the pulley stops the body
 (closed-rope-pieces.lisp), the rope is jerked, and a piece stopped dead is held at its
-pulley in the next state. Closed at zero speed, the next state is not modelled (an
-honest stop, not the body passing through the pulley). A piece that turns (a pendulum
+pulley in the next state. Closed otherwise (at zero speed, or at the end of a state
+integrated numerically), the next state is not modelled (an honest stop, not the body
+passing through the pulley). A piece that turns (a pendulum
 swinging on it) keeps its length, and its projection on its starting direction changing
 sign is no closing."
   (:arguments (?segment :entity rope-segment
