@@ -7,7 +7,8 @@
 ;;;; the piece's other end with an impulse P >= 0 along the piece, Newton's law of
 ;;;; restitution on the piece's rate (the pair's restitution, 0 by default), and the rope,
 ;;;; at its full length, is jerked at once (ROPE-JERK: one impulse J >= 0 all along). The
-;;;; impact's situation marks the piece whose closing it is (its entity :REACHED T); its
+;;;; impact's situation marks the piece whose closing it is (its entity :REACHED
+;;;; ROPE-PIECE-CLOSING, the component whose condition was reached); its
 ;;;; length is zero, and its direction the limit of d/|d| as it closed: minus its ends'
 ;;;; relative velocity just before, over its size.
 ;;;;
@@ -204,7 +205,7 @@ or just after (:AFTER) the impact of its closing, along its direction then."
 (defcomponent closing-piece-kinematics (:knowledge-base *impacts*)
   "How fast the piece whose closing is the impact opens just after it (its separation:
 negative when the body would pass through the pulley)."
-  (:arguments (?segment :entity rope-segment :where (:reached t)))
+  (:arguments (?segment :entity rope-segment :where (:reached rope-piece-closing)))
   (:equations (= (separation-after ?segment) (closing-piece-rate ?segment :after))))
 
 (defcomponent pulley-stop (:knowledge-base *impacts*)
@@ -212,7 +213,8 @@ negative when the body would pass through the pulley)."
 the pulley's body that pushes the body back along the piece, with Newton's law of
 restitution on the piece's rate (the pair's restitution, 0 by default: the body stops
 dead); without one the body must not pass through the pulley."
-  (:arguments (?segment :entity rope-segment :where (:reached t :from (?body1 ?_) :to (?body2 ?_))))
+  (:arguments (?segment :entity rope-segment
+                        :where (:reached rope-piece-closing :from (?body1 ?_) :to (?body2 ?_))))
   (:activation (approaching-after ?segment)
                (:event (:pulley-stop ?body1 ?body2)))
   (:deactivation (:when (< (stop-impulse ?segment) 0) :event (:would-pull ?body1 ?body2)))

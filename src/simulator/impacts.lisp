@@ -36,19 +36,22 @@ off the foot of a slope onto the ground, bouncing up)."
              (touching-alternatives run contact))))
 
 (defun reached-names (reached)
-  "The names in the instances of the conditions of the REACHED candidates: the entities
-whose conditions' reaching is the impact."
+  "An alist name -> component: the names in the instances of the conditions of the
+REACHED candidates, each with the component whose condition it is (the head of the
+instance's key): what the impact is the reaching of."
   (loop for candidate in reached
         for condition = (candidate-condition candidate)
-        when condition
-          append (alexandria:flatten (ames.engine:termination-condition-instance condition))))
+        for key = (and condition (ames.engine:termination-condition-instance condition))
+        when (consp key)
+          append (mapcar (lambda (name) (cons name (first key))) (alexandria:flatten (rest key)))))
 
 (defun marked-reached (entities names)
-  "ENTITIES, each (KIND NAME . PLIST), with :REACHED T added to those the knowledge base
-makes of the scenario's clauses whose NAME is one of NAMES (see REACHED-NAMES): the
-thing whose condition's reaching the impact is (a rope's piece closing up)."
+  "ENTITIES, each (KIND NAME . PLIST), with :REACHED C added to those the knowledge base
+makes of the scenario's clauses whose NAME the alist NAMES (see REACHED-NAMES) gives the
+component C of: whose condition's reaching the impact is (a rope's piece closing up)."
   (mapcar (lambda (entity)
-            (if (member (second entity) names) (append entity (list :reached t)) entity))
+            (let ((entry (assoc (second entity) names)))
+              (if entry (append entity (list :reached (cdr entry))) entity)))
           entities))
 
 (defun impact-entities (run contacts &optional reached)
@@ -56,7 +59,7 @@ thing whose condition's reaching the impact is (a rope's piece closing up)."
 and velocities just before, each of CONTACTS with its outward normal there
 (AMES.KB:TOUCHING-CONTACT-ENTITY), and what the phenomena make of their clauses for an
 impact (AMES.KB:IMPACT-ENTITIES-OF: the ropes), those the REACHED candidates' conditions
-name marked :REACHED T (MARKED-REACHED)."
+name marked :REACHED with their component (MARKED-REACHED)."
   (let ((scenario (run-scenario run)))
     (append
      (mapcar (lambda (body)
