@@ -195,10 +195,33 @@ or just after (:AFTER) the impact of its closing, along its direction then."
       (ames.geometry:dot (closing-piece-direction situation segment)
                          (mapcar (lambda (q p) `(- ,q ,p)) (velocity b) (velocity a))))))
 
+(defun impact-piece-closed (situation segment)
+  "Template IMPACT-PIECE-CLOSED: SEGMENT has zero length at the impact and its closing is
+not the impact's (a piece held at its pulley since an earlier state); never for a
+piece whose closing the impact is."
+  (if (eq (entity-property (entity-named situation segment) :reached) 'rope-piece-closing)
+      '(< 1 0)
+      (multiple-value-bind (a b) (segment-points situation segment)
+        (let ((d (mapcar (lambda (q p) `(- ,q ,p)) (impact-point situation b) (impact-point situation a))))
+          `(<= ,(ames.geometry:dot d d) 0)))))
+
 (defun register-closing-impact-templates (kb)
   "Register in KB the template functions of a rope piece closing at an impact."
   (register-template kb 'closing-piece-rate #'closing-piece-rate
-                     :documentation "The rate of a closing piece's length just before or after the impact."))
+                     :documentation "The rate of a closing piece's length just before or after the impact.")
+  (register-template kb 'impact-piece-closed #'impact-piece-closed
+                     :documentation "A piece is closed at its pulley at the impact, not by it.")
+  (register-template kb 'held-piece-at-impact
+                     (lambda (situation segment)
+                       (refuse-closed-piece situation segment "an impact while it holds its body there (its direction undefined)"))
+                     :documentation "Signals UNMODELLED-SITUATION: an impact with a piece held at its pulley."))
+
+(defcomponent held-piece-at-a-later-impact (:knowledge-base *impacts*)
+  "A piece held closed at its pulley since an earlier state has no direction for the
+rope's jerk at a later impact (and its pin's impulse is not modelled): refused, named."
+  (:arguments (?segment :entity rope-segment :where (:within-one-body nil)))
+  (:activation (impact-piece-closed ?segment))
+  (:equations (= (held-piece-at-impact ?segment) 0)))
 
 (register-closing-impact-templates *impacts*)
 
