@@ -164,3 +164,22 @@ the piece, not answered."
                        (ames:ames-error (c) c))))
       (is (typep condition 'ames.kb:unmodelled-situation))
       (is (mentions-name-p "SEGMENT-1" (ames.base::ames-error-datum condition))))))
+
+(test held-piece-at-a-later-impact-is-refused-named
+  "The weight held at its pulley (as in WEIGHT-STOPS-AT-ITS-PULLEY-AND-IS-HELD-THERE, g =
+39/4, m1 = 5/2, m2 = 7/4: held from t = 2 sqrt(34/39) ~ 1.87) when a ball dropped 20
+above a floor lands (t = sqrt(40 / g) ~ 2.03): the rope at that impact has a piece with
+no direction. Refused, naming the piece, not a division by zero nor an answer."
+  (with-fixture simulator-bridge ()
+    (let ((condition (handler-case
+                         (progn (ames::simulate
+                                 (scenario-of-text
+                                  (incline-pulley-text
+                                   "later-impact" :parameters "" :m1 "5/2" :m2 "7/4" :g "39/4" :states 4
+                                   :extra "(body floor :fixed t :shape (polygon (8 -60) (12 -60) (12 -50) (8 -50)))
+                                           (body ball :mass 1 :position (10 -30) :velocity (0 0) :shape point)"))
+                                 :bridge bridge)
+                                nil)
+                       (ames:ames-error (c) c))))
+      (is (typep condition 'ames.kb:unmodelled-situation))
+      (is (mentions-name-p "SEGMENT-1" (ames.base::ames-error-datum condition))))))
