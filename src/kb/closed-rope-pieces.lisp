@@ -21,12 +21,13 @@
 ;;;; pulley pushes along the piece with P >= 0 and the rope pulls with T, so F = (P - T) u
 ;;;; for the piece's direction u either way: consistent when |F| <= T (P = T -+ |F|). The
 ;;;; state ends when F.F would exceed T^2, (:leaves-pulley ROPE A B): the piece would
-;;;; open from rest along a direction nothing gives (not modelled: the next state's
-;;;; refusal names the piece); the rope's slackening ends it as ropes.lisp says. A closed
-;;;; piece at a rotating body (its point pinned is a hinge), two closed pieces on one rope,
-;;;; a rope slack with a closed piece, and a closed piece at a later impact are not
-;;;; modelled: refused, named. After a stop with restitution the piece opens again along
-;;;; its ends' relative velocity (spans.lisp's :SEPARATING mode).
+;;;; open from rest along a direction nothing gives (not modelled: the refusal names the
+;;;; piece, at once or in the next state). A closed piece at a rotating body (its point
+;;;; pinned is a hinge) and a piece held at a later impact are refused, named. A rope with
+;;;; a closed piece is never slack (ROPE-MAY-SLACKEN): its tension turning negative, or
+;;;; two pieces of one rope closed at once, leave no consistent model (the run stops,
+;;;; not modelled). After a stop with restitution the piece opens again along its ends'
+;;;; relative velocity (spans.lisp's :SEPARATING mode).
 ;;;;
 ;;;; The rope component reads its length at a state's start with the piece at zero length
 ;;;; counted as such: the belief (rope-start ROPE :zero-piece S) names it (NIL: none).
