@@ -173,10 +173,15 @@ A rotating body at the piece's end (its point pinned: a hinge) is refused, named
 (defun closing-piece-direction (situation segment)
   "The unit vector along SEGMENT, from its :FROM point toward its :TO point, in the limit
 as it closed: minus the relative velocity of its :TO body from its :FROM body just
-before, over its size. A rotating body at an end is refused, named."
-  (let ((rotating (piece-end-rotating-p situation segment)))
-    (when rotating
-      (refuse-closed-piece situation segment "a rotating body striking a pulley by its point")))
+before, over its size. A rotating body at an end, and positions known only as numbers
+(the end of a state integrated numerically), are refused, named."
+  (when (piece-end-rotating-p situation segment)
+    (refuse-closed-piece situation segment "a rotating body striking a pulley by its point"))
+  (multiple-value-bind (a b) (segment-points situation segment)
+    ;; the end of a state integrated numerically: the body is at its pulley only to
+    ;; round-off, and the next state could not tell the piece closed
+    (when (some #'floatp (alexandria:flatten (list (impact-point situation a) (impact-point situation b))))
+      (refuse-closed-piece situation segment "a closing found with numbers (the body at its pulley only to round-off)")))
   (multiple-value-bind (a b) (segment-points situation segment)
     (let* ((v (mapcar (lambda (q p) `(- ,q ,p))
                       (entity-property (entity-named situation (point-body b)) :velocity '(0 0))
