@@ -139,9 +139,8 @@ third law gives the pull at its far end. A piece closed at its pulley, which has
 (defun impact-segment-direction (situation segment)
   "The unit vector along SEGMENT (from its :from point to its :to point) at the impact;
 for a piece whose closing is the impact (its entity :REACHED ROPE-PIECE-CLOSING, zero
-length: closed-rope-pieces.lisp), the limit of
-that vector as it closed: minus its ends' relative velocity just before, over its size
-(closed-rope-pieces.lisp)."
+length), the limit of that vector as it closed: minus its ends' relative velocity just
+before, over its size (closed-rope-pieces.lisp)."
   (if (eq (entity-property (entity-named situation segment) :reached) 'rope-piece-closing)
       (closing-piece-direction situation segment)
       (multiple-value-bind (a b) (segment-points situation segment)
