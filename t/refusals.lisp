@@ -7,8 +7,8 @@
 ;;;; - a zero written with nested radicals simplifies (factor divided by zero: raised ramp);
 ;;;; - a spring pair drifting into a third block: the earliest root of t + sin(2t)/2 = 6
 ;;;;   has no closed form, and is found with numbers;
-;;;; - a weight pulled up into its pulley: the state ends there and the next is refused (it
-;;;;   passed through the pulley);
+;;;; - a weight pulled up into its pulley: the state ends there (it passed through the
+;;;;   pulley), and the weight is held at it (closed-rope-pieces.lisp);
 ;;;; - issue 20's leftovers: a disc falling onto a block's corner (a sign() Maxima refused as
 ;;;;   imaginary), the undecided sliding direction on a belt said over the parameters.
 ;;;;
@@ -141,27 +141,28 @@ double precision, and the state ends with the second block exactly against the t
   "An 8-15-17 incline; the particle (m1 = 9/4, m1 sin a = 135/68 > m2 = 1) slides down and
 the weight, hanging 1/2 below the pulley, rises into it.")
 
-(test weight-pulled-into-its-pulley-is-refused-not-passed-through
+(test weight-pulled-into-its-pulley-stops-there-not-passed-through
   "The Atwood machine on the incline accelerates at a = g (m1 sin a - m2)/(m1 + m2) =
 1809/884; the weight, 1/2 below its pulley, reaches it after sqrt(2 (1/2) / a) = sqrt(884/1809):
-the first state ends there (it went on through the pulley), and the run stops as not
-modelled (a body caught at a pulley), not with an answer."
+the first state ends there (it went on through the pulley, then was refused), with the
+weight striking its pulley (closed-rope-pieces.lisp); the next state holds it there at
+rest (t/closing-at-pulley.lisp checks the impact's figures)."
   (with-fixture simulator-bridge ()
-    (let* ((states '())
-           (condition (handler-case
-                          (let ((ames.simulator:*state-hook* (lambda (history state)
-                                                     (declare (ignore history))
-                                                     (push state states))))
-                            (ames::simulate (scenario-of-text *weight-into-pulley*) :bridge bridge)
-                            nil)
-                        (ames:ames-error (c) c))))
-      (is (typep condition 'ames.kb:unmodelled-situation))
-      (is (= 1 (length states)))
+    (let* ((history (ames::simulate (scenario-of-text *weight-into-pulley*) :bridge bridge))
+           (states (ames::history-states history)))
+      (is (= 2 (length states)))
       (let* ((g 27/4) (m1 9/4) (m2 1) (sin-a 15/17)
              (a (/ (* g (- (* m1 sin-a) m2)) (+ m1 m2))))
         (is (= a 1809/884))
         (is-same bridge "the time the weight reaches the pulley"
-                 (ames:state-duration (first states)) `(sqrt ,(/ (* 2 1/2) a)))))))
+                 (ames:state-duration (first states)) `(sqrt ,(/ (* 2 1/2) a)))
+        (is (eq :strikes-pulley (first (ames:state-end-event (first states)))))
+        (is-same-vector bridge "the weight at its pulley"
+                        (position-of (ames:state-final-positions (first states)) "WEIGHT") '(10 75/4))
+        (when (second states)
+          (is-same-vector bridge "the weight held there"
+                          (position-of (ames::state-accelerations (second states)) "WEIGHT") '(0 0))
+          (is (eq :forever (ames:state-duration (second states)))))))))
 
 (defparameter *disc-onto-block-corner*
   "(scenario disc-onto-block-corner \"A disc falls onto the top corner of a block.\"

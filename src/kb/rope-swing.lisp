@@ -29,7 +29,8 @@ is on a fixed body and whose other end is on a free body."
                              :where (:rope ?rope :from (?body1 ?p1) :to (?body2 ?p2) :within-one-body nil))
                    (,fixed-body :entity body :where (:fixed t))
                    (,free-body :entity body :where (:fixed nil :driven nil)))
-       (:activation (:believes (taut ?rope)))
+       ;; a piece closed at its pulley has no span (closed-rope-pieces.lisp): no swing
+       (:activation (:believes (taut ?rope)) (:believes (span ?segment :from ?_ :to ?_)))
        (:mode :counter-clockwise
         (:entry (> (swing-rate (?body1 ?p1) (?body2 ?p2)) 0))
         (:transition :to :clockwise :when (< (swing-rate (?body1 ?p1) (?body2 ?p2)) 0)

@@ -55,49 +55,60 @@
                        (sum-over-segments situation rope (lambda (s) `(span-acceleration ,s))))
                      :documentation "The second derivative of a rope's length.")
   (register-template kb 'rope-slack-now
-                     (lambda (situation rope sense)
+                     (lambda (situation rope sense zero)
                        `(- (rope-length ,rope)
                            ,(sum-over-segments
                              situation rope
                              (lambda (s)
-                               (if (wound-segment-p situation s)
-                                   (wound-piece-length-now situation s sense)
-                                   (multiple-value-bind (a b) (segment-points situation s)
-                                     (ames.geometry:vector-length (span-difference situation a b 'pos))))))))
+                               (cond ((wound-segment-p situation s)
+                                      (wound-piece-length-now situation s sense))
+                                     ((eq s zero) 0)
+                                     (t (multiple-value-bind (a b) (segment-points situation s)
+                                          (ames.geometry:vector-length (span-difference situation a b 'pos)))))))))
                      :documentation "L minus the rope's length, from the positions (and the
-angle of a disc it is wound on, turning the way SENSE says: see wound-ropes.lisp).")
+angle of a disc it is wound on, turning the way SENSE says: see wound-ropes.lisp); the
+piece ZERO (or NIL), of zero length at the state's start, counts 0 (closed-rope-pieces.lisp).")
   (register-template kb 'rope-rate-now
-                     (lambda (situation rope sense)
+                     (lambda (situation rope sense zero)
                        (sum-over-segments
                         situation rope
                         (lambda (s)
-                          (if (wound-segment-p situation s)
-                              (wound-piece-rate-now situation s sense)
-                              (multiple-value-bind (a b) (segment-points situation s)
-                                (let ((d (span-difference situation a b 'pos)))
-                                  `(/ ,(ames.geometry:dot d (span-difference situation a b 'vel)) ,(ames.geometry:vector-length d))))))))
-                     :documentation "The rate of the rope's length, from the positions and velocities."))
+                          (cond ((wound-segment-p situation s)
+                                 (wound-piece-rate-now situation s sense))
+                                ((eq s zero) (zero-piece-rate-now situation s))
+                                (t (multiple-value-bind (a b) (segment-points situation s)
+                                     (let ((d (span-difference situation a b 'pos)))
+                                       `(/ ,(ames.geometry:dot d (span-difference situation a b 'vel)) ,(ames.geometry:vector-length d)))))))))
+                     :documentation "The rate of the rope's length, from the positions and
+velocities; the piece ZERO (or NIL), of zero length at the state's start, opens at its
+ends' relative speed (0 when it is closed: closed-rope-pieces.lisp)."))
 
 (register-rope-templates *mechanics*)
 
 (defcomponent rope-segment-span (:knowledge-base *mechanics*)
-  "Each straight piece of a rope is a span."
+  "Each straight piece of a rope is a span, but one closed at its pulley (zero length
+and its ends at rest relative to each other at the state's start: a span with no
+direction; closed-rope-pieces.lisp holds it)."
   (:arguments (?segment :entity rope-segment :where (:from ?a :to ?b)))
+  (:activation (> (+ (span-start-length-squared ?a ?b) (span-start-speed-squared ?a ?b)) 0))
   (:assert (span ?segment :from ?a :to ?b)))
 
 (defcomponent taut-or-slack-rope (:knowledge-base *mechanics*)
   "A massless inextensible rope is taut (its length held at L by whatever tension that
 needs, never negative) or slack (no tension, shorter than L). Its winding SENSE (0 for a
-rope wound on no disc, see wound-ropes.lisp) says how a disc it is wound on pays it out."
+rope wound on no disc, see wound-ropes.lisp) says how a disc it is wound on pays it out;
+its ZERO piece, the one at zero length at the state's start (a body at its pulley), or
+NIL, how its length is read then (closed-rope-pieces.lisp)."
   (:arguments (?rope :entity rope)
-              (?sense :belief (rope-winding ?rope :sense ?sense)))
+              (?sense :belief (rope-winding ?rope :sense ?sense))
+              (?zero :belief (rope-start ?rope :zero-piece ?zero)))
   (:mode :slack
-   (:entry :always)
+   (:entry (rope-may-slacken ?zero))
    (:assert (reported :forces (:tension ?rope 0)))
    (:transition :to :taut :when (> (rope-span-length ?rope) (rope-length ?rope))
                 :event (:tightens ?rope) :impact (:tightens ?rope)))
   (:mode :taut
-   (:entry (= (rope-slack-now ?rope ?sense) 0) (= (rope-rate-now ?rope ?sense) 0))
+   (:entry (= (rope-slack-now ?rope ?sense ?zero) 0) (= (rope-rate-now ?rope ?sense ?zero) 0))
    (:assert (taut ?rope)
             (reported :forces (:tension ?rope (tension ?rope))))
    (:equations (= (rope-span-acceleration ?rope) 0))
@@ -106,9 +117,11 @@ rope wound on no disc, see wound-ropes.lisp) says how a disc it is wound on pays
 (defcomponent rope-tension (:knowledge-base *mechanics*)
   "A taut rope's segment pulls the bodies at its two ends toward each other with the
 rope's tension (the same all along a frictionless rope over massless pulleys); Newton's
-third law gives the pull at its far end."
+third law gives the pull at its far end. A piece closed at its pulley, which has no span
+(no direction), pulls with no tension: the pulley holds its body (closed-rope-pieces.lisp)."
   (:arguments (?segment :entity rope-segment
-                        :where (:rope ?rope :from (?body1 ?_) :to (?body2 ?_) :within-one-body nil)))
+                        :where (:rope ?rope :from (?body1 ?_) :to (?body2 ?_) :within-one-body nil))
+              (?a :belief (span ?segment :from ?a :to ?_)))
   (:activation (:believes (taut ?rope)))
   (:assert (force (tension ?segment ?body1) :type tension :from ?body2 :on ?body1 :contact ?segment)
            (force (tension ?segment ?body2) :type tension :from ?body1 :on ?body2 :contact ?segment))
@@ -124,10 +137,15 @@ third law gives the pull at its far end."
           (point-offset point)))
 
 (defun impact-segment-direction (situation segment)
-  "The unit vector along SEGMENT (from its :from point to its :to point) at the impact."
-  (multiple-value-bind (a b) (segment-points situation segment)
-    (let ((d (mapcar (lambda (q p) `(- ,q ,p)) (impact-point situation b) (impact-point situation a))))
-      (mapcar (lambda (x) `(/ ,x ,(ames.geometry:vector-length d))) d))))
+  "The unit vector along SEGMENT (from its :from point to its :to point) at the impact;
+for a piece whose closing is the impact (its entity :REACHED ROPE-PIECE-CLOSING, zero
+length), the limit of that vector as it closed: minus its ends' relative velocity just
+before, over its size (closed-rope-pieces.lisp)."
+  (if (eq (entity-property (entity-named situation segment) :reached) 'rope-piece-closing)
+      (closing-piece-direction situation segment)
+      (multiple-value-bind (a b) (segment-points situation segment)
+        (let ((d (mapcar (lambda (q p) `(- ,q ,p)) (impact-point situation b) (impact-point situation a))))
+          (mapcar (lambda (x) `(/ ,x ,(ames.geometry:vector-length d))) d)))))
 
 (defun register-rope-impact-templates (kb)
   "Register in KB the template functions of ropes at an impact."
@@ -227,9 +245,18 @@ segment is a WOUND-ROPE-SEGMENT. The same in a state and at an impact."
                                         (and (eq (first from) (first to)) (list :within-one-body t)))))))
 
 (defun rope-impact-entities (scenario)
-  "The entities of SCENARIO's ropes at an impact: the same as in a state (ROPE-ENTITIES);
-a rope wound on a disc jerks as wound-ropes.lisp says."
-  (rope-entities scenario))
+  "The entities of SCENARIO's ropes at an impact: those of a state (ROPE-ENTITIES), each
+straight piece with the :RESTITUTION of its two ends' bodies (a body striking its pulley:
+closed-rope-pieces.lisp); a rope wound on a disc jerks as wound-ropes.lisp says."
+  (mapcar (lambda (entity)
+            (if (eq (first entity) 'rope-segment)
+                (append entity
+                        (list :restitution
+                              (ames.scenario:scenario-restitution
+                               scenario (point-body (getf (cddr entity) :from))
+                               (point-body (getf (cddr entity) :to)))))
+                entity))
+          (rope-entities scenario)))
 
 (defun segment-phrases (scenario)
   "An alist rope segment entity -> its phrase (\"rope, piece 1\") for SCENARIO's ropes."
@@ -249,19 +276,25 @@ rope and pulley clauses)."
   (:event :tightens :words "~A becomes taut")
   (:event :rope-piece-closes
    :words "~A closes up between ~A and ~A (a body reaches its pulley), or that piece has turned a right angle")
+  (:event :strikes-pulley
+   :words "~A and ~A meet with a speed at the pulley between them: the rope's piece closes up")
+  (:event :leaves-pulley :words "~A's piece between ~A and ~A would open from rest: the pulley no longer holds the body")
+  (:force :pulley-hold :names 2 :words "hold of ~A's pulley on ~A")
+  (:impulse :pulley-stop :names 2 :words "impulse of the pulley stop between ~A and ~A")
   (:quantity :tension :force :tension))
 
 ;;; A taut rope's piece closing up: a body reaching its pulley
 
 (defun caught-at-pulley (situation segment)
   "Signal UNMODELLED-SITUATION: SEGMENT, a piece of a taut rope, has closed up (the body
-at one end reached the point at the other, its pulley). What follows (the body caught
-at the pulley, the rope jerked) is not modelled."
+at one end reached the point at the other, its pulley) with no impact to stop it: at
+zero speed, or at the end of a state integrated numerically (no rate to call it an
+impact). What follows is not modelled."
   (let ((entity (entity-named situation segment)))
     (multiple-value-bind (a b) (segment-points situation segment)
       (error 'unmodelled-situation
              :datum segment
-             :detail (format nil "The piece of rope ~(~A~) between ~(~A~) and ~(~A~) closes up: a body reaches the pulley its rope runs over (or the piece turns past a right angle); a body caught at a pulley is not modelled."
+             :detail (format nil "The piece of rope ~(~A~) between ~(~A~) and ~(~A~) closes up with no impact modelled to stop it (reached at zero speed, or at the end of a state integrated numerically): a body reaches the pulley its rope runs over (or the piece turns past a right angle); what follows is not modelled."
                              (entity-property entity :rope) (point-body a) (point-body b))))))
 
 (register-template *mechanics* 'rope-piece-caught #'caught-at-pulley
@@ -270,16 +303,27 @@ at the pulley, the rope jerked) is not modelled."
 (defcomponent rope-piece-closing (:knowledge-base *mechanics*)
   "A taut rope's straight piece shortens to nothing when the body at one end reaches the
 point at the other (a weight pulled up into its pulley). Its length is watched along its
-starting direction, (B - A).u0, which changes sign there (the distance |B - A| only
-touches zero) while the piece keeps its direction (its span's fixed direction, the only
-motion in which it can close up): the event (:rope-piece-closes ROPE A B) ends the
-state, and the next state, which would need the body caught at the pulley, is not
-modelled (an honest stop, not the body passing through the pulley). A piece that turns
-(a pendulum swinging on it) keeps its length, and its projection on its starting
-direction changing sign is no closing."
+starting direction, (B - A).u0 (or, opening from zero length, along its ends' relative
+velocity), which changes sign there (the distance |B - A| only touches zero) while the
+piece keeps its direction (its span's fixed direction, the only motion in which it can
+close up): the event (:rope-piece-closes ROPE A B) ends the state; reached with a speed,
+it is an impact, (:strikes-pulley A B): the pulley stops the body
+(closed-rope-pieces.lisp), the rope is jerked, and a piece stopped dead is held at its
+pulley in the next state. Closed otherwise (at zero speed, or at the end of a state
+integrated numerically), the next state is not modelled (an honest stop, not the body
+passing through the pulley). A piece that turns (a pendulum
+swinging on it) keeps its length, and its projection on its starting direction changing
+sign is no closing."
   (:arguments (?segment :entity rope-segment
                         :where (:rope ?rope :from (?body1 ?_) :to (?body2 ?_) :within-one-body nil))
               (?opening :belief (aligned-span ?segment :from ?a :to ?b :opening ?opening)))
-  (:activation (:believes (taut ?rope)) (<= (line-span-length ?a ?b ?opening) 0)
-               (:event (:rope-piece-closes ?rope ?body1 ?body2)))
-  (:equations (= (rope-piece-caught ?segment) 0)))
+  (:activation (:believes (taut ?rope)))
+  (:mode :apart
+   (:entry (>= (line-span-length ?a ?b ?opening) 0))
+   (:transition :to :closed :when (< (line-span-length ?a ?b ?opening) 0)
+                :event (:rope-piece-closes ?rope ?body1 ?body2)
+                :impact (:strikes-pulley ?body1 ?body2)))
+  ;; never at a state's start: the length along the line starts at |d0| >= 0
+  (:mode :closed
+   (:entry (< (line-span-length ?a ?b ?opening) 0))
+   (:equations (= (rope-piece-caught ?segment) 0))))

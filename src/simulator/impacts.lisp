@@ -35,11 +35,31 @@ off the foot of a slope onto the ground, bouncing up)."
                     (sign-is run (normal-approach run other) :negative :zero)))
              (touching-alternatives run contact))))
 
-(defun impact-entities (run contacts)
+(defun reached-names (reached)
+  "An alist name -> component: the names in the instances of the conditions of the
+REACHED candidates, each with the component whose condition it is (the head of the
+instance's key): what the impact is the reaching of."
+  (loop for candidate in reached
+        for condition = (candidate-condition candidate)
+        for key = (and condition (ames.engine:termination-condition-instance condition))
+        when (consp key)
+          append (mapcar (lambda (name) (cons name (first key))) (alexandria:flatten (rest key)))))
+
+(defun marked-reached (entities names)
+  "ENTITIES, each (KIND NAME . PLIST), with :REACHED C added to those the knowledge base
+makes of the scenario's clauses whose NAME the alist NAMES (see REACHED-NAMES) gives the
+component C of: whose condition's reaching the impact is (a rope's piece closing up)."
+  (mapcar (lambda (entity)
+            (let ((entry (assoc (second entity) names)))
+              (if entry (append entity (list :reached (cdr entry))) entity)))
+          entities))
+
+(defun impact-entities (run contacts &optional reached)
   "The situation of an impact (see src/kb/impacts.lisp): the bodies with their positions
 and velocities just before, each of CONTACTS with its outward normal there
 (AMES.KB:TOUCHING-CONTACT-ENTITY), and what the phenomena make of their clauses for an
-impact (AMES.KB:IMPACT-ENTITIES-OF: the ropes)."
+impact (AMES.KB:IMPACT-ENTITIES-OF: the ropes), those the REACHED candidates' conditions
+name marked :REACHED with their component (MARKED-REACHED)."
   (let ((scenario (run-scenario run)))
     (append
      (mapcar (lambda (body)
@@ -59,7 +79,7 @@ impact (AMES.KB:IMPACT-ENTITIES-OF: the ropes)."
                                                         (corner-now run name `(sin (ames.kb:angle ,name))))
                                             :angular-velocity (body-angular-velocity run name)))))))
              (scenario-bodies scenario))
-     (ames.kb:impact-entities-of scenario)
+     (marked-reached (ames.kb:impact-entities-of scenario) (reached-names reached))
      (touching-corner-entities run (remove-if-not (lambda (entry) (member (first entry) contacts))
                                                   (run-corner-contacts run)))
      (mapcar (lambda (contact)
@@ -179,7 +199,7 @@ impact (:CONTACTS, :IMPULSES, :ENERGY-LOST, :VELOCITIES-BEFORE, :VELOCITIES-AFTE
 :CHOICES). Signals what the consistency search signals."
   (let* ((contacts (append (touching-contacts run) (mapcar #'first (touching-corners run reached))))
          (decider (impact-decider run))
-         (situation (ames.engine:make-situation (impact-entities run contacts) :data run))
+         (situation (ames.engine:make-situation (impact-entities run contacts reached) :data run))
          (model (ames.engine:build-model (ames.engine:make-engine (ames.kb:impact-knowledge-base))
                                          situation :decider decider)))
     (call-with-model

@@ -89,15 +89,24 @@ CHECK-INCREMENTAL."
       (declare (ignore model))
       (push (ames.engine:transition-report-rederived-count report) (run-rederived run)))
     (when impulsive
-      (let ((stale (ames.engine:stale-activation-changes (run-model run) :decider (state-decider run))))
-        (when stale
-          (ames.engine:apply-transition (run-model run) stale :decider (state-decider run))))
-      (let ((stale (ames.engine:stale-mode-changes (run-model run) :decider (state-decider run))))
-        (when stale
-          (ames.engine:apply-transition (run-model run) stale :decider (state-decider run))))
-      (sum-zeno-sequence run state))
+      (apply-stale-changes run)
+      (sum-zeno-sequence run state)
+      (when (state-accumulation state)
+        ;; the run goes on from the series' limit, at rest: what that decides
+        (apply-stale-changes run)))
     (when check-incremental
       (ames.engine:check-incremental (run-model run)))))
+
+(defun apply-stale-changes (run)
+  "Apply to RUN's model the activations and then the modes the current start decides
+anew (after an impact, the new velocities: AMES.ENGINE:STALE-ACTIVATION-CHANGES and
+STALE-MODE-CHANGES)."
+  (let ((stale (ames.engine:stale-activation-changes (run-model run) :decider (state-decider run))))
+    (when stale
+      (ames.engine:apply-transition (run-model run) stale :decider (state-decider run))))
+  (let ((stale (ames.engine:stale-mode-changes (run-model run) :decider (state-decider run))))
+    (when stale
+      (ames.engine:apply-transition (run-model run) stale :decider (state-decider run)))))
 
 (defun depends-on-motion-p (x)
   "True when the expression (or list of expressions) X has TAU or a state quantity (a
