@@ -74,13 +74,13 @@ by consistency)."
    (:entry (> (slip-speed ?contact) 0))
    (:assert (reported :forces (:friction ?body1 ?body2 (friction-force ?contact) :mode :sliding)))
    (:equations (= (friction-force ?contact) (- (* ?mu-k (normal-force ?contact)))))
-   (:transition :to :static :when (< (slip-speed ?contact) 0)
+   (:transition :to :static :when (<= (slip-speed ?contact) 0)
                 :event (:stops-sliding ?body1 ?body2)))
   (:mode :sliding-backward
    (:entry (< (slip-speed ?contact) 0))
    (:assert (reported :forces (:friction ?body1 ?body2 (friction-force ?contact) :mode :sliding)))
    (:equations (= (friction-force ?contact) (* ?mu-k (normal-force ?contact))))
-   (:transition :to :static :when (> (slip-speed ?contact) 0)
+   (:transition :to :static :when (>= (slip-speed ?contact) 0)
                 :event (:stops-sliding ?body1 ?body2))))
 
 (defcomponent corner-friction (:knowledge-base *mechanics*)
@@ -110,13 +110,13 @@ as RESTING-FACE-FRICTION says."
    (:entry (> (corner-slip-speed ?contact) 0))
    (:assert (reported :forces (:friction ?body1 ?body2 (friction-force ?contact) :mode :sliding)))
    (:equations (= (friction-force ?contact) (- (* ?mu-k (normal-force ?contact)))))
-   (:transition :to :static :when (< (corner-slip-speed ?contact) 0)
+   (:transition :to :static :when (<= (corner-slip-speed ?contact) 0)
                 :event (:stops-sliding ?body1 ?body2)))
   (:mode :sliding-backward
    (:entry (< (corner-slip-speed ?contact) 0))
    (:assert (reported :forces (:friction ?body1 ?body2 (friction-force ?contact) :mode :sliding)))
    (:equations (= (friction-force ?contact) (* ?mu-k (normal-force ?contact))))
-   (:transition :to :static :when (> (corner-slip-speed ?contact) 0)
+   (:transition :to :static :when (>= (corner-slip-speed ?contact) 0)
                 :event (:stops-sliding ?body1 ?body2))))
 
 (defcomponent resting-face-friction (:knowledge-base *mechanics*)
