@@ -183,3 +183,30 @@ no direction. Refused, naming the piece, not a division by zero nor an answer."
                        (ames:ames-error (c) c))))
       (is (typep condition 'ames.kb:unmodelled-situation))
       (is (mentions-name-p "SEGMENT-1" (ames.base::ames-error-datum condition))))))
+
+(test a-held-body-on-a-rough-incline-is-not-sliding-at-rest
+  "With friction (mu_s = 1/5, mu_k = 1/10, m1 = 5/2, m2 = 1, g = 10, sin a = 4/5) the
+particle slides down under kinetic friction -mu_k N = -3/2 (N = m1 g cos a = 15) until
+the weight strikes its pulley at t = sqrt(14/17). Held there at rest, static friction F
+and the tension T share m1 g sin a = 20 in a way the model does not determine (T + F =
+20 with |F| <= 3): the run may refuse that state, but no state reports sliding friction
+on the particle at rest (it did, as kinetic -3/2 with T = 37/2)."
+  (with-fixture simulator-bridge ()
+    (let* ((scenario (scenario-of-text
+                      (incline-pulley-text "rough-held" :parameters "" :g "10" :m1 "5/2" :m2 "1"
+                                           :extra "(friction particle incline :static 1/5 :kinetic 1/10)")))
+           (history (handler-case (simulate-stopping-when-ambiguous scenario bridge)
+                      (ames::ames-error () nil)))
+           (states (if history (ames::history-states history) '())))
+      (when history
+        (let ((slide (first states)))
+          (is (not (null slide)))
+          (when slide
+            (is-same bridge "the strike's time" (ames::state-duration slide) '(sqrt 14/17))
+            (check-friction bridge slide "PARTICLE" "INCLINE" :sliding -3/2)))
+        (dolist (state (rest states))
+          (let ((entry (friction-entry state "PARTICLE" "INCLINE"))
+                (velocity (per-body (ames::state-final-velocities state) "PARTICLE")))
+            (is (not (and entry (eq :sliding (getf (cddddr entry) :mode))
+                          (equal velocity '(0 0))))
+                "sliding friction on the particle at rest: ~S" entry)))))))
