@@ -183,9 +183,14 @@ with the floor's collision; the witness: the collision alone)."
 
 (test a-face-handing-over-to-another-at-once-agrees
   "AMES's leaving of the slope's foot and its zero-duration state ending with the floor's
-collision agree with the witness's one collision at that instant; the leaving is not
+collision agree with the witness's one collision at that instant (#225, and #504 at its
+fourth state); the leaving is not
 accepted when AMES's next state does not end with the witness's event then (a collision
 with the other piece instead), nor when that state is missing."
+  (is (eq :agree (ames.witness:comparison-verdict
+                  (compare-kept (commented-answers
+                                 (asdf:system-relative-pathname
+                                  "ames" "witness/disagreements/witness-handover-terrain-2029-504.lisp"))))))
   (let ((answers (terrain-2029-225)))
     (is (eq :agree (ames.witness:comparison-verdict (compare-kept answers))))
     (let* ((ames (copy-tree (getf answers :ames)))
