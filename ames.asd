@@ -396,6 +396,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "fact-remainders")
                (:file "zero-folding")
                (:file "fork-pruning")
+               (:file "fork-bounds")
                (:file "approximate-starts")
                (:file "witness-curved")
                (:file "witness-crosscheck")

@@ -1,0 +1,51 @@
+;;;; t/fork-bounds.lisp -- the bound of a run's tree (src/simulator/branching.lisp, issue 23).
+;;;;
+;;;; The depth bound counts the states at which a path forks, not its forks: the forks
+;;;; nested within one state's analysis (its choice search's facts, then the order of its
+;;;; events) split one finite set of questions, and a pushed block's textbook tipping state
+;;;; is three of them deep (it tips; its front edge does not slide back; nor forward), its
+;;;; end a fourth (its torques balance before or after its centre passes over the edge).
+;;;; Those count against *FORKS-PER-STATE-LIMIT*; a fork at a later state counts one more
+;;;; level against *BRANCH-DEPTH-LIMIT*, and the branch count bounds everything.
+
+(in-package #:ames.tests)
+
+(def-suite fork-bounds :in all-tests
+  :description "The tree's bound: forking states per path, forks nested within a state.")
+
+(in-suite fork-bounds)
+
+(defun room-after-forks (indices &optional (alternatives 2))
+  "The plist *BRANCHING* holds below forks at the states INDICES (from the root), each
+with ALTERNATIVES branches."
+  (let ((ames.simulator::*branching* nil))
+    (dolist (index indices ames.simulator::*branching*)
+      (setf ames.simulator::*branching*
+            (ames.simulator::nested-branching index (make-list alternatives))))))
+
+(defun room-p (indices index)
+  "Whether a path below forks at INDICES may fork again at the state INDEX."
+  (let ((ames.simulator::*branching* (room-after-forks indices)))
+    (ames.simulator::branch-room-p index)))
+
+(test forks-within-one-state-count-once-toward-the-depth
+  "Four forks at state 0 (the pushed block's: tips, lower and upper friction limit of its
+front edge, the order of its end angles) stay one forking state deep; a fifth there is
+refused, a fork at the next state is one more level, and a third forking state is
+refused, as is any fork once the branch count is full."
+  (let ((ames.simulator::*forks-per-state-limit* 4)
+        (ames.simulator::*branch-depth-limit* 2)
+        (ames.simulator::*branch-limit* 24))
+    (is (room-p '() 0))
+    (is (= 1 (getf (room-after-forks '(0 0 0)) :depth)))
+    (is (= 3 (getf (room-after-forks '(0 0 0)) :nested)))
+    (is (room-p '(0 0 0) 0) "the fourth fork within state 0")
+    (is (not (room-p '(0 0 0 0) 0)) "a fifth fork within state 0")
+    (is (room-p '(0 0 0 0) 1) "a fork at state 1 after four at state 0")
+    (is (= 2 (getf (room-after-forks '(0 0 1)) :depth)))
+    (is (= 1 (getf (room-after-forks '(0 0 1)) :nested)))
+    (is (room-p '(0 1) 1))
+    (is (not (room-p '(0 1) 2)) "a third forking state")
+    ;; the count of branches on the path: three forks of 7 (21) leave no room under 24
+    (let ((ames.simulator::*branching* (room-after-forks '(0 0 0) 7)))
+      (is (not (ames.simulator::branch-room-p 0))))))
