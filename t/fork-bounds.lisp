@@ -6,7 +6,8 @@
 ;;;; is three of them deep (it tips; its front edge does not slide back; nor forward), its
 ;;;; end a fourth (its torques balance before or after its centre passes over the edge).
 ;;;; Those count against *FORKS-PER-STATE-LIMIT*; a fork at a later state counts one more
-;;;; level against *BRANCH-DEPTH-LIMIT*, and the branch count bounds everything.
+;;;; level against *BRANCH-DEPTH-LIMIT*, and the count of the whole tree's branches (each
+;;;; one simulated) bounds everything.
 
 (in-package #:ames.tests)
 
@@ -48,4 +49,14 @@ refused, as is any fork once the branch count is full."
     (is (not (room-p '(0 1) 2)) "a third forking state")
     ;; the count of branches on the path: three forks of 7 (21) leave no room under 24
     (let ((ames.simulator::*branching* (room-after-forks '(0 0 0) 7)))
-      (is (not (ames.simulator::branch-room-p 0))))))
+      (is (not (ames.simulator::branch-room-p 0))))
+    ;; and of the whole tree: a branch whose forks grew the tree to 22 branches leaves
+    ;; its sibling (3 on its own path) no room
+    (let ((root (room-after-forks '(0) 3)))
+      (let ((ames.simulator::*branching* root))
+        (is (ames.simulator::branch-room-p 0))
+        (let ((ames.simulator::*branching* (ames.simulator::nested-branching 0 (make-list 10))))
+          (ames.simulator::nested-branching 1 (make-list 9))))
+      (let ((ames.simulator::*branching* root))
+        (is (= 3 (getf root :count)))
+        (is (not (ames.simulator::branch-room-p 0)) "the sibling, after the tree grew to 22")))))

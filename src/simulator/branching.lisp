@@ -24,7 +24,8 @@
 (in-package #:ames.simulator)
 
 (defparameter *branch-limit* 24
-  "The most branches one run's tree may hold.")
+  "The most branches one run's tree may hold (the whole tree's, each simulated: a fork
+is refused when its branches could take the tree past it).")
 
 (defparameter *branch-depth-limit* 2
   "The most states on one path from the root of a run's tree at which the run forks.
@@ -47,10 +48,12 @@ so the nesting within one state ends with its questions; this bound only caps it
 
 (defun branch-room-p (&optional index)
   "True when the current tree may still fork at the state INDEX (at a state not forked
-yet on the current path when INDEX is NIL): the branch count is under *BRANCH-LIMIT*,
-and either INDEX is the state of the path's last fork and its nested forks are under
-*FORKS-PER-STATE-LIMIT*, or the forking states are under *BRANCH-DEPTH-LIMIT*."
-  (let ((count (getf *branching* :count 0)) (depth (getf *branching* :depth 0)))
+yet on the current path when INDEX is NIL): the branches of the whole tree so far are
+under *BRANCH-LIMIT*, and either INDEX is the state of the path's last fork and its
+nested forks are under *FORKS-PER-STATE-LIMIT*, or the forking states are under
+*BRANCH-DEPTH-LIMIT*."
+  (let ((count (max (getf *branching* :count 0) (first (getf *branching* :tree '(0)))))
+        (depth (getf *branching* :depth 0)))
     (and (< (+ count 3) *branch-limit*)
          (if (and index (eql index (getf *branching* :state)))
              (< (getf *branching* :nested 0) *forks-per-state-limit*)
@@ -58,10 +61,15 @@ and either INDEX is the state of the path's last fork and its nested forks are u
 
 (defun nested-branching (index alternatives)
   "The plist *BRANCHING* holds for the branches of a fork at the state INDEX with
-ALTERNATIVES: the count grows by their number; the depth counts the forking states of
-the path (a fork at the state of the path's last fork nests within it, :NESTED)."
-  (let ((same-state (and *branching* (eql index (getf *branching* :state)))))
+ALTERNATIVES: the path's count grows by their number, and so does the whole tree's
+(:TREE, one cell shared by every branch, so that a branch's forks leave less room to
+the branches grown after it); the depth counts the forking states of the path (a fork
+at the state of the path's last fork nests within it, :NESTED)."
+  (let ((same-state (and *branching* (eql index (getf *branching* :state))))
+        (tree (or (getf *branching* :tree) (list 0))))
+    (incf (first tree) (length alternatives))
     (list :count (+ (getf *branching* :count 0) (length alternatives))
+          :tree tree
           :depth (if same-state (getf *branching* :depth 0) (1+ (getf *branching* :depth 0)))
           :state index
           :nested (if same-state (1+ (getf *branching* :nested 0)) 1)

@@ -18,8 +18,9 @@ values: 0, or a continued branch's start (see CONTINUE-BRANCH), or NIL when unkn
 
 (defvar *branching* nil
   "The current run's tree while it grows (see branching.lisp): a plist (:COUNT branches
-so far :DEPTH forking states on the current path :STATE the index of its last fork
-:NESTED forks nested at that state :EXTRA-FACTS facts of the current branch
+so far on the current path :TREE a cell holding the whole tree's :DEPTH forking states
+on the current path :STATE the index of its last fork :NESTED forks nested at that
+state :EXTRA-FACTS facts of the current branch
 [:BOUND-REACHED true when the last fork refused for the tree's bound]), or NIL at the
 root.")
 
