@@ -220,11 +220,14 @@ Returns true, or NIL when CONDITION cannot be branched on (its missing fact is n
 inequality over the parameters, the tree is full, or a fork on this path already assumed
 that fact: see ASSUMED-ON-THIS-PATH-P)."
   (let ((fact (core-fact run (ambiguous-transition-missing-fact condition))))
-    (when *branching* (setf (getf *branching* :bound-reached) nil))
+    (when *branching*
+      ;; why the fork is refused, for the branch's failure (GROW-BRANCH)
+      (setf (getf *branching* :refusal)
+            (cond ((not (branchable-fact-p fact)) :not-branchable)
+                  ((assumed-on-this-path-p fact) :assumed)
+                  ((not (branch-room-p index)) :bound))))
     (when (and (branchable-fact-p fact) (not (assumed-on-this-path-p fact))
-               (or (branch-room-p index)
-                   ;; the bound, not the path's assumptions, leaves it ambiguous
-                   (progn (when *branching* (setf (getf *branching* :bound-reached) t)) nil)))
+               (branch-room-p index))
       (let* ((alternatives (fork-alternatives run fact))
              (values (history-parameter-values history))
              (selected (selected-alternative run alternatives values))
@@ -312,9 +315,11 @@ starts under the values (see NUMERIC-CLOCK); its states from the fork on, as (:A
                       (ambiguous-transition (condition)
                         (setf outcome :ambiguous
                               failure (format nil "~A; the missing fact: ~A"
-                                              (if (getf *branching* :bound-reached)
-                                                  "the tree's bound is reached"
-                                                  "a fact this path already assumed does not decide it")
+                                              (case (getf *branching* :refusal)
+                                                (:bound "the tree's bound is reached")
+                                                (:not-branchable
+                                                 "the question is no inequality over the parameters that a fork could assume")
+                                                (t "a fact this path already assumed does not decide it"))
                                               (let ((*print-pretty* nil) (*print-case* :downcase))
                                                 (princ-to-string
                                                  (ambiguous-transition-missing-fact condition)))))

@@ -21,7 +21,7 @@ values: 0, or a continued branch's start (see CONTINUE-BRANCH), or NIL when unkn
 so far on the current path :TREE a cell holding the whole tree's :DEPTH forking states
 on the current path :STATE the index of its last fork :NESTED forks nested at that
 state :EXTRA-FACTS facts of the current branch
-[:BOUND-REACHED true when the last fork refused for the tree's bound]), or NIL at the
+[:REFUSAL why the last fork was refused: :BOUND, :ASSUMED or :NOT-BRANCHABLE]), or NIL at the
 root.")
 
 (defclass run ()
