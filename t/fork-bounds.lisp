@@ -5,8 +5,10 @@
 ;;;; events) split one finite set of questions, and a pushed block's textbook tipping state
 ;;;; is three of them deep (it tips; its front edge does not slide back; nor forward), its
 ;;;; end a fourth (its torques balance before or after its centre passes over the edge).
-;;;; Those count against *FORKS-PER-STATE-LIMIT*; a fork at a later state counts one more
-;;;; level against *BRANCH-DEPTH-LIMIT*, and the count of the whole tree's branches (each
+;;;; Those count against *FORKS-PER-STATE-LIMIT* at the path's first forking state; a fork
+;;;; at a later state counts one more level against *BRANCH-DEPTH-LIMIT* and forks once
+;;;; (the thesis's corner: B rises or falls at t = 0, then a fork at state 1, whose nested
+;;;; fact stays at the bound, as before), and the count of the whole tree's branches (each
 ;;;; one simulated) bounds everything.
 
 (in-package #:ames.tests)
@@ -45,7 +47,8 @@ refused, as is any fork once the branch count is full."
     (is (room-p '(0 0 0 0) 1) "a fork at state 1 after four at state 0")
     (is (= 2 (getf (room-after-forks '(0 0 1)) :depth)))
     (is (= 1 (getf (room-after-forks '(0 0 1)) :nested)))
-    (is (room-p '(0 1) 1))
+    (is (not (room-p '(0 1) 1)) "a second fork at a later forking state (the corner's)")
+    (is (not (room-p '(0 0 1) 1)))
     (is (not (room-p '(0 1) 2)) "a third forking state")
     ;; the count of branches on the path: three forks of 7 (21) leave no room under 24
     (let ((ames.simulator::*branching* (room-after-forks '(0 0 0) 7)))

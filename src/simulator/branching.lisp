@@ -16,10 +16,10 @@
 ;;;; :NOT-SIMULATED) unless (simulate :all-branches t) or --all-branches asks for all.
 ;;;; A fork is not a period of motion: it takes the index of the state it splits, which
 ;;;; the branches' first states keep, and queries count no fork (`(end 0)` is the end of
-;;;; the first period of motion). The tree is bounded: *BRANCH-LIMIT* branches,
-;;;; *BRANCH-DEPTH-LIMIT* forking states on a path and *FORKS-PER-STATE-LIMIT* forks nested
-;;;; within one state's analysis; a branch beyond the bound stops at its ambiguity,
-;;;; and the history says so.
+;;;; the first period of motion). The tree is bounded: *BRANCH-LIMIT* branches in all,
+;;;; *BRANCH-DEPTH-LIMIT* forking states on a path, and *FORKS-PER-STATE-LIMIT* forks nested
+;;;; within the first of them (one at each later one); a branch beyond the bound stops at
+;;;; its ambiguity, and the history says so.
 
 (in-package #:ames.simulator)
 
@@ -32,31 +32,34 @@ is refused when its branches could take the tree past it).")
 Each branch is simulated anew from the start (or from its fork), so a deeper tree costs
 a run per branch; a state that forks after a forked state mostly forks on a fact the
 earlier fork should have decided, and a motion that forks at every state (a bounce after
-a bounce, each on a new fact) would never end. Forks nested within the analysis of one
-state count once here, and against *FORKS-PER-STATE-LIMIT*.")
+a bounce, each on a new fact) would never end. A later forking state forks once; the
+first one may nest forks, up to *FORKS-PER-STATE-LIMIT*.")
 
 (defparameter *forks-per-state-limit* 4
-  "The most forks nested on one path within the analysis of one state. One state's
-analysis asks finitely many questions: which contacts hold and in which friction mode
-(the choice search's consistency facts: a normal force's sign, each side of a static
-friction limit), then which event ends the state first. Where the assumptions leave
-several undecided, each is a genuine split of the motion (a block pushed hard tips or
-slides flat; tipping, its front edge sticks or slides back or forward; the tipping ends
-where its torques balance or where its centre passes over its edge: four nested facts),
-and a fact once assumed is never forked on again on that path (ASSUMED-ON-THIS-PATH-P),
-so the nesting within one state ends with its questions; this bound only caps it.")
+  "The most forks nested on one path within the analysis of the first state at which it
+forks. That state's analysis is the problem's own case analysis, as a textbook does it
+before any motion: which contacts hold and in which friction mode (the choice search's
+consistency facts: a normal force's sign, each side of a static friction limit), then
+which event ends the state first. Where the assumptions leave several undecided, each is
+a genuine split of the motion (a block pushed hard tips or slides flat; tipping, its
+front edge sticks, or slides back or forward; the tipping ends where its torques balance
+or where its centre passes over its edge: four nested facts), and a fact once assumed is
+never forked on again on that path (ASSUMED-ON-THIS-PATH-P), so the nesting ends with the
+state's questions; this bound only caps it. A state reached after a fork and a period of
+motion forks once (*BRANCH-DEPTH-LIMIT*): its nested questions are mostly facts an
+earlier fork left open, and the tree would multiply at each.")
 
 (defun branch-room-p (&optional index)
   "True when the current tree may still fork at the state INDEX (at a state not forked
 yet on the current path when INDEX is NIL): the branches of the whole tree so far are
-under *BRANCH-LIMIT*, and either INDEX is the state of the path's last fork and its
-nested forks are under *FORKS-PER-STATE-LIMIT*, or the forking states are under
-*BRANCH-DEPTH-LIMIT*."
+under *BRANCH-LIMIT*, and either INDEX is the state of the path's last fork, the first
+at which the path forks, and the forks nested there are under *FORKS-PER-STATE-LIMIT*,
+or INDEX is another state and the path's forking states are under *BRANCH-DEPTH-LIMIT*."
   (let ((count (max (getf *branching* :count 0) (first (getf *branching* :tree '(0)))))
         (depth (getf *branching* :depth 0)))
     (and (< (+ count 3) *branch-limit*)
          (if (and index (eql index (getf *branching* :state)))
-             (< (getf *branching* :nested 0) *forks-per-state-limit*)
+             (and (= depth 1) (< (getf *branching* :nested 0) *forks-per-state-limit*))
              (< depth *branch-depth-limit*)))))
 
 (defun nested-branching (index alternatives)
