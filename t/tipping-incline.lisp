@@ -37,9 +37,11 @@ textbook's angular acceleration at the start."
              (is (= 1 (length groups)))
              (is (not (null path)) "no rotation path: ~S" (mapcar #'ames.simulator::group-kind groups))
              (when path
-               (let* ((height (lambda (angle) `(- (* (/ k 2) (cos ,angle)) (* (/ w 2) (sin ,angle)))))
-                      (expected (x `(/ (* 6 g (- ,(funcall height '(- a)) ,(funcall height s)))
-                                       (+ (expt w 2) (expt k 2)))))
+               (let* ((w (x 'w)) (k (x 'k)) (g (x 'g)) (a (x 'a))
+                      ;; the centre's height above the edge at the angle ANGLE
+                      (height (lambda (angle) `(- (* (/ ,k 2) (cos ,angle)) (* (/ ,w 2) (sin ,angle)))))
+                      (expected `(/ (* 6 ,g (- ,(funcall height `(- ,a)) ,(funcall height s)))
+                                    (+ (expt ,w 2) (expt ,k 2))))
                       (speed-squared (ames.simulator::group-speed-squared path)))
                  (is-same bridge "omega^2 along the angle (the energy about the edge)"
                           speed-squared expected)
