@@ -321,7 +321,8 @@ starts under the values (see NUMERIC-CLOCK); its states from the fork on, as (:A
                                               (case (getf *branching* :refusal)
                                                 (:bound "the tree's bound is reached")
                                                 (:not-branchable
-                                                 "the question is no inequality over the parameters that a fork could assume")
+                                                 (concatenate 'string "the question is no inequality over"
+                                                              " the parameters that a fork could assume"))
                                                 (t "a fact this path already assumed does not decide it"))
                                               (let ((*print-pretty* nil) (*print-case* :downcase))
                                                 (princ-to-string

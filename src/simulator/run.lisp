@@ -20,9 +20,8 @@ values: 0, or a continued branch's start (see CONTINUE-BRANCH), or NIL when unkn
   "The current run's tree while it grows (see branching.lisp): a plist (:COUNT branches
 so far on the current path :TREE a cell holding the whole tree's :DEPTH forking states
 on the current path :STATE the index of its last fork :NESTED forks nested at that
-state :EXTRA-FACTS facts of the current branch
-[:REFUSAL why the last fork was refused: :BOUND, :ASSUMED or :NOT-BRANCHABLE]), or NIL at the
-root.")
+state :EXTRA-FACTS facts of the current branch [:REFUSAL why the last fork was refused:
+:BOUND, :ASSUMED or :NOT-BRANCHABLE]), or NIL at the root.")
 
 (defclass run ()
   ((scenario :initarg :scenario :reader run-scenario)
