@@ -242,6 +242,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "simulate")
                  (:file "state-numbers")
                  (:file "branching")
+                 (:file "rootless-ends")
                  (:file "quantities")
                  (:file "simplest-conditions")
                  (:file "fork-continuation")
