@@ -1,4 +1,5 @@
-;;;; t/fork-bounds.lisp -- the bound of a run's tree (src/simulator/branching.lisp, issue 23).
+;;;; t/fork-bounds.lisp -- the bound of a run's tree (src/simulator/branching.lisp, issue 23),
+;;;; and a state whose end is a root without closed form (src/simulator/rootless-ends.lisp).
 ;;;;
 ;;;; The depth bound counts the states at which a path forks, not its forks: the forks
 ;;;; nested within one state's analysis (its choice search's facts, then the order of its
@@ -63,3 +64,39 @@ refused, as is any fork once the branch count is full."
       (let ((ames.simulator::*branching* root))
         (is (= 3 (getf root :count)))
         (is (not (ames.simulator::branch-room-p 0)) "the sibling, after the tree grew to 22")))))
+
+;;; A state's end at a root without closed form (src/simulator/rootless-ends.lisp)
+
+(defun rootless-ambiguity (state)
+  "The ambiguity of STATE's end at the root of a normal force along its angle, a root
+with no closed form: the missing fact (:ROOTS-OF (= N 0))."
+  (make-condition 'ames.simulator::ambiguous-transition
+                  :missing-fact '(:roots-of (= (+ (* 3 (cos s) (sin s)) (cos s) -1/2) 0))
+                  :state state))
+
+(test a-state-ending-at-a-root-without-closed-form-is-kept-undecided
+  "Without numbers, a state whose end is a root without closed form is appended to the
+history, undecided, its duration waiting for values; with values (the root is then
+searched with numbers), or for a missing inequality, or for another state, it is not."
+  (let* ((scenario (ames:parse-scenario
+                    '(scenario s "x" (parameters (g :positive)) (gravity g)
+                      (body b :mass 1 :shape (circle 1) :position (0 0) :velocity (0 0)))))
+         (without (make-instance 'ames.simulator::run :bridge nil :values '() :scenario scenario))
+         (with (make-instance 'ames.simulator::run :bridge nil :values '((g . 10)) :scenario scenario)))
+    (flet ((fresh () (make-instance 'ames.simulator::simulation-history :scenario scenario))
+           (state () (make-instance 'ames.simulator::qualitative-state :index 0)))
+      (let ((history (fresh)) (state (state)))
+        (is (ames.simulator::note-rootless-end without history 0 (rootless-ambiguity state)))
+        (is (equal (list state) (ames.simulator::history-states history)))
+        (is (eq :undecided (ames.simulator::history-outcome history)))
+        (is (eq :undecided (ames.simulator::state-end-event state)))
+        (is (equal '(:no-closed-form :needs :parameter-values) (ames.simulator::state-duration state))))
+      (let ((history (fresh)))
+        (is (not (ames.simulator::note-rootless-end with history 0 (rootless-ambiguity (state)))))
+        (is (not (ames.simulator::note-rootless-end without history 1 (rootless-ambiguity (state)))))
+        (is (not (ames.simulator::note-rootless-end
+                  without history 0
+                  (make-condition 'ames.simulator::ambiguous-transition
+                                  :missing-fact '(> g 1) :state (state)))))
+        (is (null (ames.simulator::history-states history)))
+        (is (eq :complete (ames.simulator::history-outcome history)))))))
