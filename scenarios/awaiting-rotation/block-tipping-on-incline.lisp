@@ -8,6 +8,10 @@
 ;;;; it turns about its downhill edge, at the start with the angular acceleration
 ;;;; -m g ((k/2) sin a - (w/2) cos a) / I_edge (clockwise), I_edge = m (w^2 + k^2) / 3 the
 ;;;; inertia about that edge and m g ((k/2) sin a - (w/2) cos a) the torque of its weight.
+;;;; Its edge sticks as it starts to tip when the friction it needs there, m g ((4 w^2 + k^2)
+;;;; sin a + 3 w k cos a) / (4 (w^2 + k^2)) up the slope, is within mu times the normal
+;;;; force, m g ((w^2 + 4 k^2) cos a + 3 w k sin a) / (4 (w^2 + k^2)): assumed, as the
+;;;; textbook's "rough enough" (mu > tan a alone does not give it).
 
 (scenario block-tipping-on-incline
   "A tall block on a rough incline tips over its downhill edge rather than sliding."
@@ -16,7 +20,10 @@
               ;; (< w h): the block must fit on the slope (w <= h / sin a) for its two
               ;; bottom corners to be proven on it at the start
               (w :positive (< w h) (:value 1/5)) (k :positive (> k (/ w (tan a))) (< k h) (:value 1))
-              (mu :positive (> mu (tan a)) (:value 1)))
+              (mu :positive (> mu (tan a))
+                  (> mu (/ (+ (* (+ (* 4 w w) (* k k)) (sin a)) (* 3 w k (cos a)))
+                           (+ (* (+ (* w w) (* 4 k k)) (cos a)) (* 3 w k (sin a)))))
+                  (:value 1)))
   (gravity g)
   (body incline :fixed t :shape (polygon (0 0) ((/ h (tan a)) 0) (0 h)))
   (body block :mass m :inertia :uniform :angle (- a)

@@ -17,6 +17,11 @@
 ;;;; while tipping (DECIDE combines the criterion with P > mu m g). Pushed low and hard
 ;;;; (-y P > (w/2 + (k/2) mu) m g, y < 0) the block would rock back onto its back edge
 ;;;; instead: the flat block's front normal force is the run's second branch fact.
+;;;; Where it tips, symbolically, the front edge's lower and upper static friction limits
+;;;; are the next two forks and the order of two angles the fourth (all in the first
+;;;; state's analysis); with the edge sticking it turns about it with
+;;;; alpha = (m g w/2 - (y + k/2) P) / I_edge at the start, I_edge = m (w^2 + k^2) / 3, its
+;;;; end (the edge sliding or lifting, roots along the angle) found only with values.
 
 (scenario pushed-block-slides
   "A block pushed near its base slides along the rough floor."

@@ -16,24 +16,67 @@
 ;;;; :NOT-SIMULATED) unless (simulate :all-branches t) or --all-branches asks for all.
 ;;;; A fork is not a period of motion: it takes the index of the state it splits, which
 ;;;; the branches' first states keep, and queries count no fork (`(end 0)` is the end of
-;;;; the first period of motion). The tree is bounded: *BRANCH-LIMIT* branches and
-;;;; *BRANCH-DEPTH-LIMIT* nested forks; a branch beyond the bound stops at its ambiguity,
-;;;; and the history says so.
+;;;; the first period of motion). The tree is bounded: *BRANCH-LIMIT* branches in all,
+;;;; *BRANCH-DEPTH-LIMIT* forking states on a path, and *FORKS-PER-STATE-LIMIT* forks nested
+;;;; within the first of them (one at each later one); a branch beyond the bound stops at
+;;;; its ambiguity, and the history says so.
 
 (in-package #:ames.simulator)
 
 (defparameter *branch-limit* 24
-  "The most branches one run's tree may hold.")
+  "The most branches one run's tree may hold (the whole tree's, each simulated: a fork
+is refused when its branches could take the tree past it).")
 
 (defparameter *branch-depth-limit* 2
-  "The most forks on one path from the root of a run's tree. Each branch is simulated
-anew from the start, so a deeper tree costs a run per branch; a fork nested in a fork is
-mostly on a fact the outer one should have decided.")
+  "The most states on one path from the root of a run's tree at which the run forks.
+Each branch is simulated anew from the start (or from its fork), so a deeper tree costs
+a run per branch; a state that forks after a forked state mostly forks on a fact the
+earlier fork should have decided, and a motion that forks at every state (a bounce after
+a bounce, each on a new fact) would never end. A later forking state forks once; the
+first one may nest forks, up to *FORKS-PER-STATE-LIMIT*.")
 
-(defun branch-room-p ()
-  "True when the current tree may still fork."
-  (let ((count (getf *branching* :count 0)) (depth (getf *branching* :depth 0)))
-    (and (< depth *branch-depth-limit*) (< (+ count 3) *branch-limit*))))
+(defparameter *forks-per-state-limit* 4
+  "The most forks nested on one path within the analysis of the first state at which it
+forks. That state's analysis is the problem's own case analysis, as a textbook does it
+before any motion: which contacts hold and in which friction mode (the choice search's
+consistency facts: a normal force's sign, each side of a static friction limit), then
+which event ends the state first. Where the assumptions leave several undecided, each is
+a genuine split of the motion (a block pushed hard tips or slides flat; tipping, its
+front edge sticks, or slides back or forward; the tipping ends where its torques balance
+or where its centre passes over its edge: four nested facts), and a fact once assumed is
+never forked on again on that path (ASSUMED-ON-THIS-PATH-P), so the nesting ends with the
+state's questions; this bound only caps it. A state reached after a fork and a period of
+motion forks once (*BRANCH-DEPTH-LIMIT*): its nested questions are mostly facts an
+earlier fork left open, and the tree would multiply at each.")
+
+(defun branch-room-p (&optional index)
+  "True when the current tree may still fork at the state INDEX (at a state not forked
+yet on the current path when INDEX is NIL): the branches of the whole tree so far are
+under *BRANCH-LIMIT*, and either INDEX is the state of the path's last fork, the first
+at which the path forks, and the forks nested there are under *FORKS-PER-STATE-LIMIT*,
+or INDEX is another state and the path's forking states are under *BRANCH-DEPTH-LIMIT*."
+  (let ((count (max (getf *branching* :count 0) (first (getf *branching* :tree '(0)))))
+        (depth (getf *branching* :depth 0)))
+    (and (< (+ count 3) *branch-limit*)
+         (if (and index (eql index (getf *branching* :state)))
+             (and (= depth 1) (< (getf *branching* :nested 0) *forks-per-state-limit*))
+             (< depth *branch-depth-limit*)))))
+
+(defun nested-branching (index alternatives)
+  "The plist *BRANCHING* holds for the branches of a fork at the state INDEX with
+ALTERNATIVES: the path's count grows by their number, and so does the whole tree's
+(:TREE, one cell shared by every branch, so that a branch's forks leave less room to
+the branches grown after it); the depth counts the forking states of the path (a fork
+at the state of the path's last fork nests within it, :NESTED)."
+  (let ((same-state (and *branching* (eql index (getf *branching* :state))))
+        (tree (or (getf *branching* :tree) (list 0))))
+    (incf (first tree) (length alternatives))
+    (list :count (+ (getf *branching* :count 0) (length alternatives))
+          :tree tree
+          :depth (if same-state (getf *branching* :depth 0) (1+ (getf *branching* :depth 0)))
+          :state index
+          :nested (if same-state (1+ (getf *branching* :nested 0)) 1)
+          :extra-facts (getf *branching* :extra-facts))))
 
 (defun negated-fact (fact)
   "The strict opposite of the inequality FACT (X > Y gives X < Y): the boundary is a
@@ -197,7 +240,14 @@ Returns true, or NIL when CONDITION cannot be branched on (its missing fact is n
 inequality over the parameters, the tree is full, or a fork on this path already assumed
 that fact: see ASSUMED-ON-THIS-PATH-P)."
   (let ((fact (core-fact run (ambiguous-transition-missing-fact condition))))
-    (when (and (branchable-fact-p fact) (branch-room-p) (not (assumed-on-this-path-p fact)))
+    (when *branching*
+      ;; why the fork is refused, for the branch's failure (GROW-BRANCH)
+      (setf (getf *branching* :refusal)
+            (cond ((not (branchable-fact-p fact)) :not-branchable)
+                  ((assumed-on-this-path-p fact) :assumed)
+                  ((not (branch-room-p index)) :bound))))
+    (when (and (branchable-fact-p fact) (not (assumed-on-this-path-p fact))
+               (branch-room-p index))
       (let* ((alternatives (fork-alternatives run fact))
              (values (history-parameter-values history))
              (selected (selected-alternative run alternatives values))
@@ -220,9 +270,7 @@ that fact: see ASSUMED-ON-THIS-PATH-P)."
         ;; branch assumes the fact that the facts in force imply
         (when alternatives
           (setf (state-branches fork)
-                (let ((*branching* (list :count (+ (getf *branching* :count 0) (length alternatives))
-                                         :depth (1+ (getf *branching* :depth 0))
-                                         :extra-facts (getf *branching* :extra-facts))))
+                (let ((*branching* (nested-branching index alternatives)))
                   (mapcar (lambda (alternative)
                             (cond
                               ((getf alternative :unsolved)
@@ -299,9 +347,12 @@ starts under the values (see NUMERIC-CLOCK); its states from the fork on, as (:A
                       (ambiguous-transition (condition)
                         (setf outcome :ambiguous
                               failure (format nil "~A; the missing fact: ~A"
-                                              (if (branch-room-p)
-                                                  "a fact this path already assumed does not decide it"
-                                                  "the tree's bound is reached")
+                                              (case (getf *branching* :refusal)
+                                                (:bound "the tree's bound is reached")
+                                                (:not-branchable
+                                                 (concatenate 'string "the question is no inequality over"
+                                                              " the parameters that a fork could assume"))
+                                                (t "a fact this path already assumed does not decide it"))
                                               (let ((*print-pretty* nil) (*print-case* :downcase))
                                                 (princ-to-string
                                                  (ambiguous-transition-missing-fact condition)))))

@@ -18,8 +18,10 @@ values: 0, or a continued branch's start (see CONTINUE-BRANCH), or NIL when unkn
 
 (defvar *branching* nil
   "The current run's tree while it grows (see branching.lisp): a plist (:COUNT branches
-so far :DEPTH forks on the current path :EXTRA-FACTS facts of the current branch), or
-NIL at the root.")
+so far on the current path :TREE a cell holding the whole tree's :DEPTH forking states
+on the current path :STATE the index of its last fork :NESTED forks nested at that
+state :EXTRA-FACTS facts of the current branch [:REFUSAL why the last fork was refused:
+:BOUND, :ASSUMED or :NOT-BRANCHABLE]), or NIL at the root.")
 
 (defclass run ()
   ((scenario :initarg :scenario :reader run-scenario)

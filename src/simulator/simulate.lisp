@@ -183,6 +183,9 @@ noted in the history) for the rest of the run."
                            (run-states run history index limit check-incremental)))))
                    (let ((fact (fact-from-values run (core-fact run (ambiguous-transition-missing-fact condition))
                                                  (history-parameter-values history))))
+                     (when (and (null fact) (note-rootless-end run history index condition))
+                       ;; a state's end at a root without closed form, no numbers
+                       (return-from run-states))
                      (when (or (null fact)
                                (member fact (getf (history-notes history) :assumed)
                                        :key (lambda (entry) (getf entry :fact)) :test #'equal)
