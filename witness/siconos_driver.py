@@ -294,6 +294,15 @@ def simulate(model):
         else:
             driver = Driver(model)
         t, qs, vs = driver.run()
+        if (driver.truncated or "").startswith("rope ") and not model.get("springs"):
+            # a rope piece turned (or closed): the exact rope (siconos_ropes.py) from the start
+            from siconos_ropes import turning_rope_driver
+            try:
+                exact = turning_rope_driver(model)
+                t, qs, vs = exact.run()
+                driver = exact
+            except Unsupported:
+                pass    # the linear rope's run, cut where it turned
     except Unsupported as e:
         print("(:status :unsupported :message %s)" % sx_string(str(e)))
         return

@@ -1,0 +1,314 @@
+"""siconos_ropes.py -- ropes whose pieces turn, for the witness's event-driven drivers.
+
+siconos_lines.Rope is linear in the positions: exact while every piece keeps the direction
+of its start (a rope over pulleys with vertical pieces, or one along an incline). A piece
+that turns (a hanging weight that swings, a particle pulled off the end of its incline
+and swinging below the pulley) needs the rope's length constraint itself,
+
+    g(q) = L - sum_j |P_{j+1} - P_j| >= 0,
+
+P_j the rope's points (a free body's position plus its offset, the body translating, or a
+fixed point: a pulley), with Newton's law (e = 0: the rope jerks taut plastically). It is
+a Siconos LagrangianScleronomousR written here, as siconos_arcs.py's circles are: h, its
+Jacobian -sum_j (u_{j-1} - u_j) over each point's body (u_j the unit vector of piece j)
+and the Jacobian's time derivative (u_j' = (d_j' - u_j (u_j . d_j')) / |d_j|), which the
+acceleration-level LCP needs. Its closing is (:tightens ROPE ROPE), its opening
+(:slackens ROPE ROPE).
+
+A piece that closes at its pulley (the body at its end reaching the pulley's point, the
+piece's length 0) is a second unilateral relation, PieceContact: the piece's length
+measured along its direction at the last output step, (P_{j+1} - P_j) . u >= 0 (its
+length while the piece keeps that direction, and of the other sign once the body would
+pass through the pulley, so that Lsodar's root finding, a change of sign, sees the
+closing), with Newton's law and the restitution of the body and the pulley's body:
+(:collision BODY HOLDER), or (:contact BODY HOLDER) with no approach speed. Where a piece
+shrinks to a length below PIECE_FLOOR other than by closing straight, the run is cut
+(the witness does not follow a rope whose piece has no direction).
+"""
+
+import numpy as np
+import siconos.kernel as sk
+
+from siconos_forces import split
+from siconos_lines import LineLeft, point_position
+
+PIECE_FLOOR = 1e-9   # a piece shorter than this has no direction to speak of
+
+
+class ExactRope:
+    """An inextensible rope through points, straight between them, its length constraint
+    exact (see the module). The driver asks for GAP before RATE (as for a circle)."""
+
+    kinds = {"close": ":tightens", "open": ":slackens"}
+
+    def __init__(self, spec, n_bodies):
+        self.name, self.length, self.points = spec["name"], float(spec["length"]), spec["points"]
+        self.e = float(spec.get("restitution", 0.0))
+        self.n_bodies = n_bodies
+        self.last_q = None
+        self.closed = None      # a piece seen with no length (see CHECK)
+
+    def positions(self, qs):
+        return [point_position(p, qs) for p in self.points]
+
+    def units(self, qs):
+        """The pieces' vectors d_j and unit vectors u_j at QS."""
+        ps = self.positions(qs)
+        ds = [b - a for a, b in zip(ps, ps[1:])]
+        lengths = [float(np.linalg.norm(d)) for d in ds]
+        return ds, lengths
+
+    def gap(self, qs):
+        self.last_q = [np.array(q, dtype=float) for q in qs]
+        _, lengths = self.units(qs)
+        return self.length - sum(lengths)
+
+    def rate(self, vs):
+        jac, _ = self.rows(np.concatenate(self.last_q), np.concatenate(vs))
+        return float(np.dot(jac, np.concatenate(vs)))
+
+    def rows(self, q, qdot):
+        """The Jacobian of the gap over every coordinate, and its time derivative."""
+        qs, vs = split(q, self.n_bodies), split(qdot, self.n_bodies)
+        ds, lengths = self.units(qs)
+        pv = [np.zeros(2) if p.get("body") is None else vs[p["body"]] for p in self.points]
+        us, udots = [], []
+        for j, (d, length) in enumerate(zip(ds, lengths)):
+            if length <= PIECE_FLOOR:   # no direction: CHECK cuts the run at the next step
+                self.closed = j
+                us.append(np.zeros(2))
+                udots.append(np.zeros(2))
+                continue
+            u = d / length
+            ddot = pv[j + 1] - pv[j]
+            us.append(u)
+            udots.append((ddot - u * float(np.dot(u, ddot))) / length)
+        m = len(us)
+        jac, djac = np.zeros(2 * self.n_bodies), np.zeros(2 * self.n_bodies)
+        for j, p in enumerate(self.points):
+            if p.get("body") is None:
+                continue
+            c = (us[j - 1] if j > 0 else 0.0) - (us[j] if j < m else 0.0)
+            cdot = (udots[j - 1] if j > 0 else 0.0) - (udots[j] if j < m else 0.0)
+            k = p["body"]
+            jac[2 * k:2 * k + 2] -= c
+            djac[2 * k:2 * k + 2] -= cdot
+        return jac, djac
+
+    def relation(self):
+        return RowsRelation(self)
+
+    def restitution(self, model, bodies):
+        return self.e
+
+    def names(self, bodies):
+        return (self.name, self.name)
+
+    def covers(self, qs):
+        return True
+
+    def active(self, qs, vs):
+        return True
+
+    def margins(self, qs):
+        return (1.0, 1.0)
+
+    def check(self, qs):
+        """Cut the run (LineLeft) once a piece has had no length: it has no direction."""
+        _, lengths = self.units(qs)
+        if self.closed is not None or min(lengths) <= PIECE_FLOOR:
+            raise LineLeft("rope %s (piece %d) closes to no length: the witness does not follow "
+                           "a piece with no direction" % (self.name, self.closed if self.closed
+                                                           is not None else lengths.index(min(lengths))))
+
+
+class RowsRelation(sk.LagrangianScleronomousR):
+    """A relation whose gap, Jacobian and its derivative a contact computes (GAP and ROWS)."""
+
+    def __init__(self, contact):
+        sk.LagrangianScleronomousR.__init__(self)
+        self.contact = contact
+        self.n = contact.n_bodies
+        self.setJachqPtr(np.zeros((1, 2 * self.n)))
+        self.qdot = np.zeros(2 * self.n)
+
+    def computeh(self, q, z, y):
+        y[0] = self.contact.gap(split(q, self.n))
+
+    def computeJachq(self, q, z):
+        jac, _ = self.contact.rows(np.array(q, dtype=float), self.qdot)
+        self.jachq()[0, :] = jac
+
+    def computeDotJachq(self, q, z, qdot):
+        self.qdot = np.array(qdot, dtype=float)
+        _, djac = self.contact.rows(np.array(q, dtype=float), self.qdot)
+        self.dotJachq()[0, :] = djac
+
+
+class PieceContact:
+    """Piece J of a rope, between a fixed pulley and a free body's point, closing at the
+    pulley: its length along its direction U at the last step (see the module), a
+    unilateral relation with Newton's law. OTHER is the free body, HOLDER the name of the
+    pulley's body."""
+
+    kinds = {"close": ":rope-piece-closes", "open": ":rope-piece-opens"}
+
+    def __init__(self, rope_spec, j, holder, model, bodies, qs):
+        points = rope_spec["points"]
+        a, b = points[j], points[j + 1]
+        self.fixed, self.free = (a, b) if a.get("body") is None else (b, a)
+        self.other = self.free["body"]
+        self.holder = holder
+        self.rope, self.piece = rope_spec["name"], j
+        self.n_bodies = len(bodies)
+        self.owner = None       # held by a fixed body (the driver's corner rules read this)
+        self.u = None
+        self.last_q = None
+        self.refresh(qs)
+
+    def vector(self, qs):
+        """From the pulley to the body's point."""
+        return point_position(self.free, qs) - point_position(self.fixed, qs)
+
+    def refresh(self, qs):
+        """Take the piece's direction at QS (while it has one)."""
+        d = self.vector(qs)
+        length = float(np.linalg.norm(d))
+        if length > 1e-6:
+            self.u = d / length
+
+    def gap(self, qs):
+        self.last_q = [np.array(q, dtype=float) for q in qs]
+        return float(np.dot(self.vector(qs), self.u))
+
+    def rate(self, vs):
+        return float(np.dot(vs[self.other], self.u))
+
+    def rows(self, q, qdot):
+        jac = np.zeros(2 * self.n_bodies)
+        jac[2 * self.other:2 * self.other + 2] = self.u
+        return jac, np.zeros(2 * self.n_bodies)
+
+    def relation(self):
+        return RowsRelation(self)
+
+    def restitution(self, model, bodies):
+        from siconos_contacts import restitution
+        return restitution(model, bodies[self.other].name, self.holder)
+
+    def names(self, bodies):
+        return (bodies[self.other].name, self.holder)
+
+    def covers(self, qs):
+        return True
+
+    def active(self, qs, vs):
+        return True
+
+    def margins(self, qs):
+        return (1.0, 1.0)
+
+    def check(self, qs):
+        self.refresh(qs)
+
+
+def piece_contacts(model, bodies, qs):
+    """The pieces of MODEL's ropes that may close at a pulley: a piece between a fixed point
+    that has a holder (the pulley's body, "holder" in the rope's point) and a free body's
+    point."""
+    out = []
+    for spec in model.get("ropes", []):
+        points = spec["points"]
+        for j, (a, b) in enumerate(zip(points, points[1:])):
+            fixed = [p for p in (a, b) if p.get("body") is None]
+            if len(fixed) == 1 and fixed[0].get("holder") and len(fixed) < 2:
+                out.append(PieceContact(spec, j, fixed[0]["holder"], model, bodies, qs))
+    return out
+
+
+def swing_piece(rope, j):
+    """The free end of ROPE's piece J when the piece runs from a fixed point to a free
+    body's point (a swing), else None."""
+    a, b = rope.points[j], rope.points[j + 1]
+    if a.get("body") is None and b.get("body") is not None:
+        return b
+    if b.get("body") is None and a.get("body") is not None:
+        return a
+    return None
+
+
+def swing_rate(rope, j, qs, vs):
+    """(B - A) x (B' - A') of ROPE's piece J (A fixed): its angle's rate times its length
+    squared."""
+    free = swing_piece(rope, j)
+    fixed = rope.points[j] if free is rope.points[j + 1] else rope.points[j + 1]
+    d = point_position(free, qs) - point_position(fixed, qs)
+    w = vs[free["body"]]
+    return float(d[0] * w[1] - d[1] * w[0])
+
+
+def turning_rope_driver(model):
+    """The event-driven driver (siconos_arcs.ArcDriver: turning points, samples, nonlinear
+    relations) with MODEL's ropes exact and their pieces' closings at pulleys; used where a
+    rope of the linear driver turned (siconos_driver.simulate)."""
+    from siconos_arcs import ArcDriver
+    from siconos_contacts import Unsupported
+
+    class TurningRopeDriver(ArcDriver):
+        def __init__(self, model):
+            ArcDriver.__init__(self, model)
+            linear = set(self.ropes)
+            qs = [b.q.copy() for b in self.bodies]
+            n = len(self.bodies)
+            self.ropes = [ExactRope(spec, n) for spec in model.get("ropes", [])] + \
+                piece_contacts(model, self.bodies, qs)
+            self.contacts = [c for c in self.contacts if c not in linear] + self.ropes
+            self.scheme = "curved"     # nonlinear relations: the comparator's tolerance for them
+            self.swings = [(rope, j) for rope in self.ropes if isinstance(rope, ExactRope)
+                           for j in range(len(rope.points) - 1) if swing_piece(rope, j)]
+
+        def observe(self, t0, q0, v0, t1, q1, v1, until):
+            """The samples in (t0, until], and the turning points of the swings: where a taut
+            piece from a fixed point to a free body's point changes the sense it turns in
+            (its angle's rate, d x d', changes sign: AMES's (:turns BODY)). A body's velocity
+            reversing is no event here (a weight that rises and falls back on a rope)."""
+            while self.sample_times and self.sample_times[0] <= until:
+                ts = self.sample_times.pop(0)
+                if ts >= t0:
+                    qs, vs = self.interpolate(t0, q0, v0, t1, q1, v1, ts)
+                    self.samples.append({"time": ts, "q": qs, "v": vs})
+            for rope, j in self.swings:
+                if abs(rope.gap(q0)) > 1e-7 or abs(rope.gap(q1)) > 1e-7:
+                    continue
+                s0, s1 = swing_rate(rope, j, q0, v0), swing_rate(rope, j, q1, v1)
+                if not (s0 * s1 < 0 and min(abs(s0), abs(s1)) > 1e-12):
+                    continue
+                lo, hi = t0, t1
+                for _ in range(200):
+                    mid = 0.5 * (lo + hi)
+                    qm, vm = self.interpolate(t0, q0, v0, t1, q1, v1, mid)
+                    if (swing_rate(rope, j, qm, vm) > 0) == (s0 > 0):
+                        lo = mid
+                    else:
+                        hi = mid
+                    if hi - lo <= 1e-15 * max(1.0, abs(hi)):
+                        break
+                tm = 0.5 * (lo + hi)
+                if tm <= until:
+                    qm, vm = self.interpolate(t0, q0, v0, t1, q1, v1, tm)
+                    name = self.bodies[swing_piece(rope, j)["body"]].name
+                    self.record(tm, [(":turns", name, name)], qm, vm, vm)
+
+        def record(self, t, pairs, qs, vs, after, speed=0.0):
+            # a piece's relation is its length only along its last direction: a closing
+            # recorded away from the pulley is a body passing by it, which is not modelled
+            for c in self.ropes:
+                if isinstance(c, PieceContact) and \
+                        (":rope-piece-closes",) + c.names(self.bodies) in [tuple(p) for p in pairs] and \
+                        float(np.linalg.norm(c.vector(qs))) > 1e-6:
+                    raise Unsupported("%s passes by the pulley of rope %s (piece %d) at %g m "
+                                      "from it" % (self.bodies[c.other].name, c.rope, c.piece,
+                                                   float(np.linalg.norm(c.vector(qs)))))
+            ArcDriver.record(self, t, pairs, qs, vs, after, speed)
+
+    return TurningRopeDriver(model)
