@@ -33,6 +33,7 @@ from siconos_forces import split
 from siconos_lines import LineLeft, point_position
 
 PIECE_FLOOR = 1e-9   # a piece shorter than this has no direction to speak of
+TOL_ED = 1e-9        # the gap below 0 Siconos's event-driven scheme lets a relation drift to
 
 
 class ExactRope:
@@ -46,7 +47,7 @@ class ExactRope:
         self.e = float(spec.get("restitution", 0.0))
         self.n_bodies = n_bodies
         self.last_q = None
-        self.closed = None      # a piece seen with no length (see CHECK)
+        self.directions = {}    # each piece's last direction, while it had a length (CHECK)
 
     def positions(self, qs):
         return [point_position(p, qs) for p in self.points]
@@ -74,9 +75,11 @@ class ExactRope:
         pv = [np.zeros(2) if p.get("body") is None else vs[p["body"]] for p in self.points]
         us, udots = [], []
         for j, (d, length) in enumerate(zip(ds, lengths)):
-            if length <= PIECE_FLOOR:   # no direction: CHECK cuts the run at the next step
-                self.closed = j
-                us.append(np.zeros(2))
+            if length <= PIECE_FLOOR:
+                # no direction: the piece's last one (Lsodar evaluates the state where a
+                # piece closes at its pulley, PieceContact's root); CHECK says when the run
+                # cannot go on
+                us.append(self.directions.get(j, np.zeros(2)))
                 udots.append(np.zeros(2))
                 continue
             u = d / length
@@ -114,12 +117,19 @@ class ExactRope:
         return (1.0, 1.0)
 
     def check(self, qs):
-        """Cut the run (LineLeft) once a piece has had no length: it has no direction."""
-        _, lengths = self.units(qs)
-        if self.closed is not None or min(lengths) <= PIECE_FLOOR:
-            raise LineLeft("rope %s (piece %d) closes to no length: the witness does not follow "
-                           "a piece with no direction" % (self.name, self.closed if self.closed
-                                                           is not None else lengths.index(min(lengths))))
+        """Cut the run (LineLeft) where a piece that no PieceContact watches has no length
+        (between two free bodies): it has no direction."""
+        ds, lengths = self.units(qs)
+        for j, length in enumerate(lengths):
+            # the last direction of an accepted state (never of Lsodar's trial states,
+            # which may pass a pulley before its root is found)
+            if length > 1e-6:
+                self.directions[j] = ds[j] / length
+            a, b = self.points[j], self.points[j + 1]
+            watched = [p for p in (a, b) if p.get("body") is None and p.get("holder")]
+            if length <= PIECE_FLOOR and not watched:
+                raise LineLeft("rope %s (piece %d) closes to no length: the witness does not "
+                               "follow a piece with no direction" % (self.name, j))
 
 
 class RowsRelation(sk.LagrangianScleronomousR):
@@ -164,6 +174,7 @@ class PieceContact:
         self.owner = None       # held by a fixed body (the driver's corner rules read this)
         self.u = None
         self.last_q = None
+        self.closed = False     # the piece has reached its pulley (see CHECK)
         self.refresh(qs)
 
     def vector(self, qs):
@@ -209,6 +220,14 @@ class PieceContact:
         return (1.0, 1.0)
 
     def check(self, qs):
+        """Take the piece's direction at QS; cut the run (LineLeft) at the step after the
+        one where it reached its pulley (that closing is recorded by then): the witness
+        does not follow a body held at a pulley."""
+        if self.closed:
+            raise LineLeft("rope %s (piece %d) closed at its pulley on %s: the witness does not "
+                           "follow a body held at a pulley" % (self.rope, self.piece, self.holder))
+        if float(np.linalg.norm(self.vector(qs))) <= 1e-6:
+            self.closed = True
         self.refresh(qs)
 
 
@@ -251,10 +270,21 @@ def turning_rope_driver(model):
     """The event-driven driver (siconos_arcs.ArcDriver: turning points, samples, nonlinear
     relations) with MODEL's ropes exact and their pieces' closings at pulleys; used where a
     rope of the linear driver turned (siconos_driver.simulate)."""
-    from siconos_arcs import ArcDriver
+    from siconos_arcs import ArcDriver, ArcSegment
     from siconos_contacts import Unsupported
 
+    class RopeSegment(ArcSegment):
+        """An ArcSegment that lets a taut rope's gap drift by TOL_ED (Siconos stops at a gap
+        below -2.2e-12 otherwise: Lsodar keeps a nonlinear relation at the acceleration level
+        only, and the rope's length drifts by round-off over a swing)."""
+
+        def __init__(self, *args, **kwargs):
+            ArcSegment.__init__(self, *args, **kwargs)
+            self.sim.setToleranceED(TOL_ED)
+
     class TurningRopeDriver(ArcDriver):
+        segment_class = RopeSegment
+
         def __init__(self, model):
             ArcDriver.__init__(self, model)
             linear = set(self.ropes)
