@@ -300,6 +300,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "compare-first-order")
                  (:file "compare-time-limit")
                  (:file "compare-slow-impacts")
+                 (:file "compare-grazes")
                  (:file "refine")
                  (:file "generate")
                  (:file "generate-curved")

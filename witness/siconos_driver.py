@@ -83,13 +83,14 @@ from siconos_contacts import (LOOK_AHEAD, Body, Contact, Unsupported, hermite,  
                               make_contacts, onto_contacts, pair_names, restitution)
 from siconos_segment import Segment, lagrangian_system  # noqa: E402,F401
 from siconos_extents import Extents  # noqa: E402
+from siconos_grazes import Trace  # noqa: E402  (least gaps near given times: grazes)
 from siconos_sexp import print_answer, sx_number, sx_states, sx_string, sx_vec  # noqa: E402,F401
 
 TOL = 1e-8          # gap / speed tolerance (lengths and speeds are O(1) in the models)
 MAX_EVENTS = 200000  # nonsmooth events in one segment (micro-rebounds of resting contacts with e = 1 too)
 
 
-class Driver(Extents):
+class Driver(Extents, Trace):
     segment_class = Segment   # the kind of Siconos model built for each segment
 
     def __init__(self, model):
@@ -163,6 +164,7 @@ class Driver(Extents):
         if leaving and t0 > 0:
             self.record(t0, [(":leaves",) + pair_names(c, self.bodies) for c in leaving], qs, vs, vs)
         resting = {c for c in active if self.touching(c, qs, vs)}
+        self.trace(t0, qs, vs)
         seg = self.segment_class(self.model, self.bodies, active, t0, qs, vs, self.t_end, self.dt,
                                  self.springs, resting)
         tp, qp, vp = t0, qs, vs
@@ -214,10 +216,13 @@ class Driver(Extents):
                 if not pairs:
                     raise
                 self.record(t1, pairs, q1, v1, after, speed)
+                self.trace(t1, q1, v1)
                 self.impacted, self.impact_time = closed, t1
                 self.in_contact = {c for c in active if self.touching(c, q1, after)}
                 return t1, q1, after
             q2, v2 = seg.state()
+            self.trace(t1, q1, v1)
+            self.trace(t1, q2, v2)
             pairs = []
             if ns:
                 pairs, speed, closed = self.closures(active, q1, v1, v2)

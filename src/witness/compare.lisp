@@ -279,6 +279,8 @@ bumper turns within one state of closed forms in time)."
   (unless (eq (event-kind event) :turns)
     (loop while (and (walk-events walk) (turns-only-p (first (walk-events walk))))
           do (pop (walk-events walk))))
+  (when (check-graze walk numeric event end) ; compare-grazes.lisp: a contact at no approach speed
+    (return-from compare-event-state))
   (check-witnessable walk event)
   (check-seeable-impact walk event)     ; compare-slow-impacts.lisp
   (unless (walk-events walk)
