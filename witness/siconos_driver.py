@@ -285,6 +285,13 @@ def main():
 
 def simulate(model):
     """Simulate MODEL (a decoded model description) and print the s-expression answer."""
+    if model.get("gap_probe"):   # a pair's gap along a given motion (siconos_probe_gaps.py)
+        from siconos_probe_gaps import probe_gaps
+        try:
+            print(probe_gaps(model))
+        except Exception as e:
+            print("(:status :error :message %s)" % sx_string("%s: %s" % (type(e).__name__, e)))
+        return
     if model.get("hinges") or any("inertia" in b for b in model.get("bodies", [])):
         from siconos_rotation import main_rotation   # bodies that turn: 3 degrees of freedom
         main_rotation(model)

@@ -86,3 +86,94 @@ disagreement ends the comparison."
       (setf (walk-events walk) events
             (walk-time walk) end)
       t)))
+
+;;; A strike of the first-order witness where AMES's path clears the pair by less than the
+;;; witness's resolution
+;;;
+;;; Moreau-Jean time stepping knows a body's state to O(h V) (h its step, V the speed of the
+;;; body's points): a face that clears a fixed corner by 11 micrometres on AMES's exact
+;;; flight (seed 2027 rod-ledge #773) is struck by the witness at every step it can take.
+;;; Where the refined comparison still disagrees, and the witness strikes a pair during a
+;;; state that AMES does not end with that pair's event, AMES's least gap of that pair over
+;;; the state is computed (the witness's own gap functions along AMES's closed forms,
+;;; sampled: witness/siconos_probe_gaps.py, an upper bound of the least gap). When it is
+;;; positive and below the resolution 20 h V (the comparator's first-order tolerance, 20
+;;; steps), the verdict is :UNSUPPORTED with both figures; otherwise the disagreement stays.
+
+(defparameter +strike-samples+ 800 "The samples of AMES's motion over a state.")
+
+(defun state-motion (state model values)
+  "AMES's motion over STATE as the gap probe's samples: ((T ((X Y THETA VX VY OMEGA) per
+free body of MODEL)) ...), or NIL when a closed form has no value (a state integrated
+numerically)."
+  (let* ((numbers (state-numbers state values))
+         (start (getf numbers :start)) (duration (getf numbers :duration))
+         (names (loop for body in (rest (cdr (assoc "bodies" model :test #'equal)))
+                      collect (cdr (assoc "name" body :test #'equal)))))
+    (unless (and (realp start) (realp duration) (plusp duration))
+      (return-from state-motion nil))
+    (flet ((entry (key name) (second (find name (getf state key) :key #'first :test (lambda (n s) (name= s n))))))
+      (loop for k from 0 to +strike-samples+
+            for elapsed = (* duration (/ k +strike-samples+))
+            for bindings = (acons 'tau elapsed values)
+            collect (list (+ start elapsed)
+                          (loop for name in names
+                                collect (mapcar (lambda (x)
+                                                  (let ((value (and x (expression-value (canonical-expression x) bindings))))
+                                                    (cond ((realp value) (coerce value 'double-float))
+                                                          ((null x) 0d0)
+                                                          (t (return-from state-motion nil)))))
+                                                (append (or (entry :positions name) '(nil nil))
+                                                        (list (entry :angles name))
+                                                        (or (entry :velocities name) '(nil nil))
+                                                        (list (entry :angular-velocities name))))))))))
+
+(defun witness-strike (state witness values)
+  "The witness's first collision pair (:COLLISION A B) within AMES's STATE (after its start
+by more than 2.5 steps, before its end by more than that) that is not AMES's end event, and
+its time; NIL when none."
+  (let* ((numbers (state-numbers state values))
+         (start (getf numbers :start)) (end (and (realp (getf numbers :duration)) (+ start (getf numbers :duration))))
+         (margin (* 2.5d0 (or (witness-step witness) 0))))
+    (when (and (realp start) end)
+      (loop for event in (witness-events witness)
+            for time = (getf event :time)
+            when (and (> time (+ start margin)) (< time (- end margin)))
+              do (let ((pair (find :collision (getf event :pairs) :key #'first)))
+                   (when (and pair (not (event-matches-p (getf state :end-event) (list :pairs (list pair)))))
+                     (return (values pair time))))))))
+
+(defun gap-probe-entry (pair motion)
+  "The model's entry asking the witness for the gap of PAIR ((:COLLISION A B)) along
+MOTION (STATE-MOTION's samples)."
+  (flet ((sample (entry)
+           (destructuring-bind (time bodies) entry
+             (list :array time (cons :array (mapcar (lambda (b) (cons :array b)) bodies))))))
+    (list (cons "gap_probe"
+                (list (cons "pair" (list :array (second pair) (third pair)))
+                      (cons "motion" (cons :array (mapcar #'sample motion))))))))
+
+(defun strike-below-resolution (comparison answer model witness values run)
+  "COMPARISON made :UNSUPPORTED when it is a disagreement of a first-order WITNESS whose
+strike of a pair within the failing state AMES's path clears by a positive gap below the
+witness's resolution (see above); else COMPARISON. RUN runs the witness on a model."
+  (let* ((step (witness-step witness))
+         (index (first (car (last (comparison-rows comparison)))))
+         (state (find index (ames-path (getf answer :states)) :key (lambda (s) (getf s :index)))))
+    (unless (and (eq (comparison-verdict comparison) :ames-wrong) step state)
+      (return-from strike-below-resolution comparison))
+    (multiple-value-bind (pair time) (witness-strike state witness values)
+      (let ((motion (and pair (state-motion state model values))))
+        (unless motion
+          (return-from strike-below-resolution comparison))
+        (let ((probe (funcall run (append model (gap-probe-entry pair motion)) :timeout 120)))
+          (let* ((gap (getf probe :least-gap)) (speed (getf probe :speed))
+                 (resolution (and (realp speed) (* 20 step (max 1 speed)))))
+            (if (and (eq (witness-status probe) :ok) (realp gap) resolution (< 0 gap resolution))
+                (make-comparison
+                 :unsupported
+                 (format nil "state ~D: the witness strikes ~A ~A at ~,6F s; AMES's least gap of that pair over the state is ~,3E m (at ~,6F s, positive), below the witness's resolution ~,3E m (20 steps of ~A s at ~,3F m/s): a graze the witness cannot resolve (the comparison: ~A)"
+                         index (second pair) (third pair) time gap (getf probe :at) resolution
+                         (coerce step 'single-float) speed (comparison-reason comparison))
+                 (comparison-rows comparison))
+                comparison)))))))
