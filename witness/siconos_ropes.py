@@ -33,6 +33,8 @@ from siconos_forces import split
 from siconos_lines import LineLeft, point_position
 
 PIECE_FLOOR = 1e-9   # a piece shorter than this has no direction to speak of
+HELD = 1e-6          # a piece shorter than this is closed: its body held at the pulley
+ACROSS = 1e-9        # how far a held body may drift across its piece's direction
 TOL_ED = 1e-9        # the gap below 0 Siconos's event-driven scheme lets a relation drift to
 
 
@@ -175,7 +177,13 @@ class PieceContact:
         self.u = None
         self.last_q = None
         self.closed = False     # the piece has reached its pulley (see CHECK)
+        self.free_name = bodies[self.other].name
         self.refresh(qs)
+
+    @property
+    def n(self):
+        """The direction in which the body's moving opens the piece (as a face's normal)."""
+        return self.u
 
     def vector(self, qs):
         """From the pulley to the body's point."""
@@ -220,14 +228,26 @@ class PieceContact:
         return (1.0, 1.0)
 
     def check(self, qs):
-        """Take the piece's direction at QS; cut the run (LineLeft) at the step after the
-        one where it reached its pulley (that closing is recorded by then): the witness
-        does not follow a body held at a pulley."""
-        if self.closed:
-            raise LineLeft("rope %s (piece %d) closed at its pulley on %s: the witness does not "
-                           "follow a body held at a pulley" % (self.rope, self.piece, self.holder))
-        if float(np.linalg.norm(self.vector(qs))) <= 1e-6:
+        """Take the piece's direction at QS (while it has a length). A body held at its
+        pulley (the piece closed: its length under HELD) is followed while it stays there:
+        the piece's relation holds it along the piece's last direction only, so the run is
+        cut (LineLeft) where it drifts across that direction (by ACROSS: a force across the
+        piece, which a pin at the pulley would hold) or leaves the pulley (the piece opening
+        again from no length has no direction)."""
+        d = self.vector(qs)
+        length = float(np.linalg.norm(d))
+        if length <= HELD:
+            across = float(np.linalg.norm(d - self.u * float(np.dot(d, self.u))))
+            if across > ACROSS:
+                raise LineLeft("%s, held at the pulley of rope %s (piece %d) on %s, is pulled "
+                               "across the piece: the witness holds it along the piece only"
+                               % (self.free_name, self.rope, self.piece, self.holder))
             self.closed = True
+            return
+        if self.closed:
+            raise LineLeft("%s leaves the pulley of rope %s (piece %d) on %s: the witness does "
+                           "not follow a piece opening from no length" % (self.free_name, self.rope,
+                                                                           self.piece, self.holder))
         self.refresh(qs)
 
 
