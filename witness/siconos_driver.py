@@ -38,9 +38,16 @@ The model (every number a float, in one fixed frame, y up):
 
 Springs and ropes are linear in the positions as long as each keeps the direction of its
 start (a spring along a line, a rope's pieces vertical or along an incline): the driver
-checks that at every step and answers :unsupported when one turns. A rope is the
+checks that at every step and cuts its run (:truncated) when one turns. A rope is the
 unilateral constraint L - (sum of its pieces) >= 0 with Newton's law e = 0: its closing is
-(:tightens ROPE ROPE), its opening (:slackens ROPE ROPE).
+(:tightens ROPE ROPE), its opening (:slackens ROPE ROPE). Where a rope's piece turns (or
+closes at its pulley), the model is simulated again from the start with the rope's length
+constraint exact and each piece's closing at its pulley a unilateral relation
+(siconos_ropes.py: the swings' turning points (:turns BODY BODY), (:rope-piece-closes BODY
+HOLDER)). At the times the model asks for ("samples"), the driver reports its state and
+the least gaps of the pairs near zero (siconos_grazes.py: contacts reached with no
+approach speed, which Lsodar's root finding cannot see); a model with "gap_probe" asks
+for a pair's gap along a given motion instead (siconos_probe_gaps.py).
 
 A model with a rotating body (an "inertia") or a hinge is simulated by siconos_rotation.py
 (three degrees of freedom per body, Moreau-Jean time stepping; see there). Models with arcs

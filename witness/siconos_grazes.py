@@ -31,6 +31,9 @@ class Trace:
     """The driver's recorded states (a mixin of siconos_driver.Driver)."""
 
     def trace(self, t, qs, vs):
+        """Record the state (T QS VS), when the model asks for states at given times."""
+        if not self.model.get("samples"):
+            return
         if not hasattr(self, "trajectory"):
             self.trajectory = []
         self.trajectory.append((float(t), [np.array(q, dtype=float) for q in qs],

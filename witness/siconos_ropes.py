@@ -21,9 +21,12 @@ measured along its direction at the last output step, (P_{j+1} - P_j) . u >= 0 (
 length while the piece keeps that direction, and of the other sign once the body would
 pass through the pulley, so that Lsodar's root finding, a change of sign, sees the
 closing), with Newton's law and the restitution of the body and the pulley's body:
-(:collision BODY HOLDER), or (:contact BODY HOLDER) with no approach speed. Where a piece
-shrinks to a length below PIECE_FLOOR other than by closing straight, the run is cut
-(the witness does not follow a rope whose piece has no direction).
+(:rope-piece-closes BODY HOLDER) where it closes with an approach speed (HOLDER the
+pulley's body; a closing recorded away from the pulley, a body passing by it, is
+unsupported). The body is then held at the pulley along the piece's last direction, the
+rope's piece of no length keeping that direction: followed while the body stays there
+(CHECK cuts the run where it drifts across the piece, which a pin would hold, or leaves
+the pulley). A piece between two free bodies that shrinks to no length cuts the run.
 """
 
 import numpy as np
