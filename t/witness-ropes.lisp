@@ -168,3 +168,36 @@ lower end; the speed of its points 1 (no turning)."
       (is (near 3/4 (getf probe :least-gap) 1d-12))
       (is (near 1 (getf probe :at) 1d-12))
       (is (near 1 (getf probe :speed) 1d-12)))))
+
+(test witness-strike-below-resolution
+  "Seed 2027 rod-ledge #773 from its kept answers: the first-order witness (step 6.25e-5 s)
+strikes the ledge at 0.494 s where AMES's exact flight clears the ledge's edge by
+1.137e-5 m (Maxima, 40 digits): AMES's least gap along its own closed forms, sampled, is
+that to 1 %, positive and below the witness's resolution (20 steps at the speed of the
+rod's points): unsupported, both figures said. With a step a thousand times finer the
+resolution is under the gap and the disagreement stays."
+  (with-siconos
+    (let* ((path (asdf:system-relative-pathname "ames" "witness/disagreements/witness-wrong-rod-ledge-2027-773.lisp"))
+           (answers (commented-answers path))
+           (scenario (first (ames.scenario:read-scenario-file path)))
+           (values (ames.scenario:run-parameter-values scenario :numeric t))
+           (witness (getf answers :witness))
+           (t-end (getf (ames.witness:witness-end witness) :time))
+           (model (ames.witness:scenario-model scenario values t-end))
+           (comparison (ames.witness:compare-results (getf answers :ames) witness values :t-end t-end)))
+      (is (eq :ames-wrong (ames.witness:comparison-verdict comparison)))
+      (let* ((state (second (ames.witness:ames-path (getf (getf answers :ames) :states))))
+             (probe (ames.witness:run-witness
+                     (append model (ames.witness::gap-probe-entry
+                                    '(:collision "rod" "ledge")
+                                    (ames.witness::state-motion state model values)))))
+             (graze (ames.witness::strike-below-resolution comparison (getf answers :ames) model witness
+                                                           values #'ames.witness:run-witness)))
+        (is (< 1.137d-5 (getf probe :least-gap) (* 1.01 1.137d-5)))
+        (is (near 0.49597d0 (getf probe :at) 1d-3))
+        (is (eq :unsupported (ames.witness:comparison-verdict graze)))
+        (is (search "below the witness's resolution" (ames.witness:comparison-reason graze)))
+        (let* ((finer (list* :step 6.25d-8 witness))
+               (kept (ames.witness::strike-below-resolution comparison (getf answers :ames) model finer
+                                                            values #'ames.witness:run-witness)))
+          (is (eq :ames-wrong (ames.witness:comparison-verdict kept))))))))

@@ -172,7 +172,7 @@ witness's resolution (see above); else COMPARISON. RUN runs the witness on a mod
             (if (and (eq (witness-status probe) :ok) (realp gap) resolution (< 0 gap resolution))
                 (make-comparison
                  :unsupported
-                 (format nil "state ~D: the witness strikes ~A ~A at ~,6F s; AMES's least gap of that pair over the state is ~,3E m (at ~,6F s, positive), below the witness's resolution ~,3E m (20 steps of ~A s at ~,3F m/s): a graze the witness cannot resolve (the comparison: ~A)"
+                 (format nil "state ~D: the witness strikes ~A ~A at ~,6F s; AMES's least gap of that pair over the state is ~,3,,,,,'eE m (at ~,6F s, positive), below the witness's resolution ~,3,,,,,'eE m (20 steps of ~A s at ~,3F m/s): a graze the witness cannot resolve (the comparison: ~A)"
                          index (second pair) (third pair) time gap (getf probe :at) resolution
                          (coerce step 'single-float) speed (comparison-reason comparison))
                  (comparison-rows comparison))
