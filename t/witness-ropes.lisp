@@ -174,7 +174,7 @@ lower end; the speed of its points 1 (no turning)."
 strikes the ledge at 0.494 s where AMES's exact flight clears the ledge's edge by
 1.137e-5 m (Maxima, 40 digits): AMES's least gap along its own closed forms, sampled, is
 that to 1 %, positive and below the witness's resolution (20 steps at the speed of the
-rod's points): unsupported, both figures said. With a step a thousand times finer the
+rod's points): unsupported, both figures said. With a step ten thousand times finer the
 resolution is under the gap and the disagreement stays."
   (with-siconos
     (let* ((path (asdf:system-relative-pathname "ames" "witness/disagreements/witness-wrong-rod-ledge-2027-773.lisp"))
@@ -197,7 +197,7 @@ resolution is under the gap and the disagreement stays."
         (is (near 0.49597d0 (getf probe :at) 1d-3))
         (is (eq :unsupported (ames.witness:comparison-verdict graze)))
         (is (search "below the witness's resolution" (ames.witness:comparison-reason graze)))
-        (let* ((finer (list* :step 6.25d-8 witness))
+        (let* ((finer (list* :step 6.25d-9 witness))
                (kept (ames.witness::strike-below-resolution comparison (getf answers :ames) model finer
                                                             values #'ames.witness:run-witness)))
           (is (eq :ames-wrong (ames.witness:comparison-verdict kept))))))))
