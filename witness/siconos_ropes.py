@@ -289,6 +289,14 @@ def swing_rate(rope, j, qs, vs):
     return float(d[0] * w[1] - d[1] * w[0])
 
 
+def swing_noise(rope, j, qs, vs):
+    """The round-off of ROPE's piece J's swing rate at (QS VS): 1e-10 |d| max(1, |v|)."""
+    free = swing_piece(rope, j)
+    fixed = rope.points[j] if free is rope.points[j + 1] else rope.points[j + 1]
+    d = point_position(free, qs) - point_position(fixed, qs)
+    return 1e-10 * float(np.linalg.norm(d)) * max(1.0, float(np.linalg.norm(vs[free["body"]])))
+
+
 def turning_rope_driver(model):
     """The event-driven driver (siconos_arcs.ArcDriver: turning points, samples, nonlinear
     relations) with MODEL's ropes exact and their pieces' closings at pulleys; used where a
@@ -317,8 +325,37 @@ def turning_rope_driver(model):
                 piece_contacts(model, self.bodies, qs)
             self.contacts = [c for c in self.contacts if c not in linear] + self.ropes
             self.scheme = "curved"     # nonlinear relations: the comparator's tolerance for them
+            self.swing_sense = {}
             self.swings = [(rope, j) for rope in self.ropes if isinstance(rope, ExactRope)
                            for j in range(len(rope.points) - 1) if swing_piece(rope, j)]
+
+        def segment(self, t0, qs, vs):
+            return ArcDriver.segment(self, t0, *self.onto_ropes(qs, vs))
+
+        def onto_ropes(self, qs, vs):
+            """QS and VS with each taut rope (its gap and rate within round-off, 1e-6) put back
+            on its length and its rate to 0, mass-weighted along its gradient: a model rebuilt
+            from a state interpolated between output steps (an extent crossed) would find the
+            rope a little open or opening and let it slacken for an instant."""
+            n = len(self.bodies)
+            inverse = np.array([1.0 / b.mass for b in self.bodies for _ in (0, 1)])
+            q, v = np.concatenate(qs), np.concatenate(vs)
+            for rope in self.ropes:
+                if not isinstance(rope, ExactRope):
+                    continue
+                for _ in range(2):
+                    gap = rope.gap(split(q, n))
+                    jac, _ = rope.rows(q, v)
+                    w = float(np.dot(jac * inverse, jac))
+                    if abs(gap) > 1e-6 or w <= 0:
+                        break
+                    q = q - gap * inverse * jac / w
+                jac, _ = rope.rows(q, v)
+                w = float(np.dot(jac * inverse, jac))
+                rate = float(np.dot(jac, v))
+                if abs(rope.gap(split(q, n))) <= 1e-9 and abs(rate) <= 1e-6 and w > 0:
+                    v = v - rate * inverse * jac / w
+            return split(q, n), split(v, n)
 
         def observe(self, t0, q0, v0, t1, q1, v1, until):
             """The samples in (t0, until], and the turning points of the swings: where a taut
@@ -332,9 +369,21 @@ def turning_rope_driver(model):
                     self.samples.append({"time": ts, "q": qs, "v": vs})
             for rope, j in self.swings:
                 if abs(rope.gap(q0)) > 1e-7 or abs(rope.gap(q1)) > 1e-7:
+                    self.swing_sense.pop((id(rope), j), None)   # slack: no swing
                     continue
                 s0, s1 = swing_rate(rope, j, q0, v0), swing_rate(rope, j, q1, v1)
-                if not (s0 * s1 < 0 and min(abs(s0), abs(s1)) > 1e-12):
+                # the sense of a swing is its rate's sign where the rate is more than
+                # round-off (a piece along a slope or hanging still has none): a turn is a
+                # change of that sense, not of the round-off's sign
+                if abs(s1) <= swing_noise(rope, j, q1, v1):
+                    continue
+                last = self.swing_sense.get((id(rope), j))
+                self.swing_sense[(id(rope), j)] = s1 > 0
+                if last is None or last == (s1 > 0):
+                    continue
+                if s0 * s1 >= 0:     # the rate crossed 0 within round-off of T0
+                    name = self.bodies[swing_piece(rope, j)["body"]].name
+                    self.record(t0, [(":turns", name, name)], q0, v0, v0)
                     continue
                 lo, hi = t0, t1
                 for _ in range(200):
