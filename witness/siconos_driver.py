@@ -43,7 +43,7 @@ unilateral constraint L - (sum of its pieces) >= 0 with Newton's law e = 0: its 
 (:tightens ROPE ROPE), its opening (:slackens ROPE ROPE). Where a rope's piece turns (or
 closes at its pulley), the model is simulated again from the start with the rope's length
 constraint exact and each piece's closing at its pulley a unilateral relation
-(siconos_ropes.py: the swings' turning points (:turns BODY BODY), (:rope-piece-closes BODY
+(siconos_ropes.py, siconos_rope_driver.py: the swings' turning points (:turns BODY BODY), (:rope-piece-closes BODY
 HOLDER)). At the times the model asks for ("samples"), the driver reports its state and
 the least gaps of the pairs near zero (siconos_grazes.py: contacts reached with no
 approach speed, which Lsodar's root finding cannot see); a model with "gap_probe" asks
@@ -315,7 +315,7 @@ def simulate(model):
         t, qs, vs = driver.run()
         if (driver.truncated or "").startswith("rope ") and not model.get("springs"):
             # a rope piece turned (or closed): the exact rope (siconos_ropes.py) from the start
-            from siconos_ropes import turning_rope_driver
+            from siconos_rope_driver import turning_rope_driver
             try:
                 exact = turning_rope_driver(model)
                 t, qs, vs = exact.run()
