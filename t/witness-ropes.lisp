@@ -60,7 +60,7 @@ speed sqrt(2 g L (1 - cos 60)) at the bottom: its speed at the end by energy."
 m1 = 5/2 on a 3-4-5 incline (sin a = 4/5) pulls m2 = 7/4, 1 below the pulley, up into it
 after t = sqrt(2 (m1 + m2) / ((m1 sin a - m2) g)), at speed a t, a = (m1 sin a - m2) g /
 (m1 + m2); the pulley stops it plastically (restitution 0) and the rope the particle: both
-at rest after (:rope-piece-closes weight incline), and at rest to the end, the weight held
+at rest after (:strikes-pulley weight incline), and at rest to the end, the weight held
 at the pulley along its vertical piece."
   (with-siconos
     (let* ((g 39/4) (acc (/ (* (- (* 5/2 4/5) 7/4) g) (+ 5/2 7/4)))
@@ -69,8 +69,8 @@ at the pulley along its vertical piece."
                                  (asdf:system-relative-pathname
                                   "ames" "witness/disagreements/refused-incline-pulley-piece-closes.lisp"))
                                 2.5d0))
-           (event (witness-pair-event answer :rope-piece-closes)))
-      (is (equal '(:rope-piece-closes "weight" "incline") (first (getf event :pairs))))
+           (event (witness-pair-event answer :strikes-pulley)))
+      (is (equal '(:strikes-pulley "weight" "incline") (first (getf event :pairs))))
       (is (near time (getf event :time) 1d-9))
       (is (near (* acc time) (second (entry-of "weight" (getf event :velocities))) 1d-9))
       (is (near 45/16 (first (entry-of "weight" (getf event :positions))) 1d-12))

@@ -43,7 +43,7 @@ unilateral constraint L - (sum of its pieces) >= 0 with Newton's law e = 0: its 
 (:tightens ROPE ROPE), its opening (:slackens ROPE ROPE). Where a rope's piece turns (or
 closes at its pulley), the model is simulated again from the start with the rope's length
 constraint exact and each piece's closing at its pulley a unilateral relation
-(siconos_ropes.py, siconos_rope_driver.py: the swings' turning points (:turns BODY BODY), (:rope-piece-closes BODY
+(siconos_ropes.py, siconos_rope_driver.py: the swings' turning points (:turns BODY BODY), (:strikes-pulley BODY
 HOLDER)). At the times the model asks for ("samples"), the driver reports its state and
 the least gaps of the pairs near zero (siconos_grazes.py: contacts reached with no
 approach speed, which Lsodar's root finding cannot see); a model with "gap_probe" asks

@@ -163,7 +163,7 @@ def turning_rope_driver(model):
             # recorded away from the pulley is a body passing by it, which is not modelled
             for c in self.ropes:
                 if isinstance(c, PieceContact) and \
-                        (":rope-piece-closes",) + c.names(self.bodies) in [tuple(p) for p in pairs] and \
+                        (c.kinds["close"],) + c.names(self.bodies) in [tuple(p) for p in pairs] and \
                         float(np.linalg.norm(c.vector(qs))) > 1e-6:
                     raise Unsupported("%s passes by the pulley of rope %s (piece %d) at %g m "
                                       "from it" % (self.bodies[c.other].name, c.rope, c.piece,

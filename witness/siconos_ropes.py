@@ -21,7 +21,9 @@ measured along its direction at the last output step, (P_{j+1} - P_j) . u >= 0 (
 length while the piece keeps that direction, and of the other sign once the body would
 pass through the pulley, so that Lsodar's root finding, a change of sign, sees the
 closing), with Newton's law and the restitution of the body and the pulley's body:
-(:rope-piece-closes BODY HOLDER) where it closes with an approach speed (HOLDER the
+(:strikes-pulley BODY HOLDER) where it closes with an approach speed (AMES's impact of a
+piece closing, src/kb/ropes.lisp; AMES's (:rope-piece-closes ROPE HOLDER BODY) matches it too;
+HOLDER the
 pulley's body; a closing recorded away from the pulley, a body passing by it, is
 unsupported). The body is then held at the pulley along the piece's last direction, the
 rope's piece of no length keeping that direction: followed while the body stays there
@@ -166,7 +168,7 @@ class PieceContact:
     unilateral relation with Newton's law. OTHER is the free body, HOLDER the name of the
     pulley's body."""
 
-    kinds = {"close": ":rope-piece-closes", "open": ":rope-piece-opens"}
+    kinds = {"close": ":strikes-pulley", "open": ":leaves-pulley"}
 
     def __init__(self, rope_spec, j, holder, model, bodies, qs):
         points = rope_spec["points"]

@@ -71,12 +71,14 @@ the values set side by side: (STATE WHAT AMES WITNESS DIFFERENCE OK)."
     (:leaves (eq witness-kind :leaves))
     (:lift-off (member witness-kind '(:lift-off :leaves)))
     (:turns (eq witness-kind :turns))
-    ((:tightens :slackens :stops-sliding :starts-sliding :rope-piece-closes) (eq witness-kind ames-kind))
+    ((:tightens :slackens :stops-sliding :starts-sliding) (eq witness-kind ames-kind))
+    ;; a rope's piece closing at its pulley: with a speed, AMES's impact (:strikes-pulley)
+    ((:rope-piece-closes :strikes-pulley) (eq witness-kind :strikes-pulley))
     (t nil)))
 
 (defparameter +witnessed-events+
   '(:collision :contact :leaves :lift-off :tightens :slackens :stops-sliding :starts-sliding :turns
-    :rope-piece-closes)
+    :rope-piece-closes :strikes-pulley)
   "The kinds of end events the witness reports.")
 
 (defun event-head (event)
@@ -85,7 +87,8 @@ the values set side by side: (STATE WHAT AMES WITNESS DIFFERENCE OK)."
 
 (defun event-pair-names (event)
   "The names of EVENT the witness names in its pair: a piece of rope closing at its pulley,
-(:ROPE-PIECE-CLOSES ROPE HOLDER BODY), is the witness's (:ROPE-PIECE-CLOSES BODY HOLDER)."
+(:ROPE-PIECE-CLOSES ROPE HOLDER BODY) or, with a speed, (:STRIKES-PULLEY HOLDER BODY), is
+the witness's (:STRIKES-PULLEY BODY HOLDER)."
   (let ((names (rest (event-head event))))
     (if (eq (event-kind event) :rope-piece-closes) (rest names) names)))
 

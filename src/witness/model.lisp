@@ -143,7 +143,7 @@ offset, or a fixed body's point in the world."
                                               collect (append (model-point scenario body where values)
                                                               (and wound '(("wound" . :true)))
                                                               ;; a fixed point's body: a piece closing there
-                                                              ;; is (:rope-piece-closes ROPE HOLDER BODY)
+                                                              ;; is (:strikes-pulley HOLDER BODY)
                                                               (and (scenario-body-fixed-p (find-scenario-body body scenario))
                                                                    `(("holder" . ,(string-downcase body)))))))))))
 

@@ -48,8 +48,8 @@
 ;;;; Witness side done (witness helper, session 7: witness/siconos_ropes.py): where the linear
 ;;;; rope's piece would pass its pulley, the witness runs the exact rope with each piece's
 ;;;; length at a pulley a unilateral relation (Newton's law, the pair's restitution) and reports
-;;;; (:rope-piece-closes weight incline), which the comparator matches with AMES's
-;;;; (:rope-piece-closes line incline weight); here at t = 1.8673991237 s, both bodies at rest
+;;;; (:strikes-pulley weight incline), which the comparator matches with AMES's
+;;;; (:rope-piece-closes line incline weight) or (:strikes-pulley incline weight); here at t = 1.8673991237 s, both bodies at rest
 ;;;; after, held so (the weight along its vertical piece) to the end (t/witness-ropes.lisp).
 ;;;; Run: bin/ames run witness/disagreements/refused-incline-pulley-piece-closes.lisp
 
