@@ -38,9 +38,16 @@ The model (every number a float, in one fixed frame, y up):
 
 Springs and ropes are linear in the positions as long as each keeps the direction of its
 start (a spring along a line, a rope's pieces vertical or along an incline): the driver
-checks that at every step and answers :unsupported when one turns. A rope is the
+checks that at every step and cuts its run (:truncated) when one turns. A rope is the
 unilateral constraint L - (sum of its pieces) >= 0 with Newton's law e = 0: its closing is
-(:tightens ROPE ROPE), its opening (:slackens ROPE ROPE).
+(:tightens ROPE ROPE), its opening (:slackens ROPE ROPE). Where a rope's piece turns (or
+closes at its pulley), the model is simulated again from the start with the rope's length
+constraint exact and each piece's closing at its pulley a unilateral relation
+(siconos_ropes.py, siconos_rope_driver.py: the swings' turning points (:turns BODY BODY), (:strikes-pulley BODY
+HOLDER)). At the times the model asks for ("samples"), the driver reports its state and
+the least gaps of the pairs near zero (siconos_grazes.py: contacts reached with no
+approach speed, which Lsodar's root finding cannot see); a model with "gap_probe" asks
+for a pair's gap along a given motion instead (siconos_probe_gaps.py).
 
 A model with a rotating body (an "inertia") or a hinge is simulated by siconos_rotation.py
 (three degrees of freedom per body, Moreau-Jean time stepping; see there). Models with arcs
@@ -83,13 +90,14 @@ from siconos_contacts import (LOOK_AHEAD, Body, Contact, Unsupported, hermite,  
                               make_contacts, onto_contacts, pair_names, restitution)
 from siconos_segment import Segment, lagrangian_system  # noqa: E402,F401
 from siconos_extents import Extents  # noqa: E402
+from siconos_grazes import Trace  # noqa: E402  (least gaps near given times: grazes)
 from siconos_sexp import print_answer, sx_number, sx_states, sx_string, sx_vec  # noqa: E402,F401
 
 TOL = 1e-8          # gap / speed tolerance (lengths and speeds are O(1) in the models)
 MAX_EVENTS = 200000  # nonsmooth events in one segment (micro-rebounds of resting contacts with e = 1 too)
 
 
-class Driver(Extents):
+class Driver(Extents, Trace):
     segment_class = Segment   # the kind of Siconos model built for each segment
 
     def __init__(self, model):
@@ -163,6 +171,7 @@ class Driver(Extents):
         if leaving and t0 > 0:
             self.record(t0, [(":leaves",) + pair_names(c, self.bodies) for c in leaving], qs, vs, vs)
         resting = {c for c in active if self.touching(c, qs, vs)}
+        self.trace(t0, qs, vs)
         seg = self.segment_class(self.model, self.bodies, active, t0, qs, vs, self.t_end, self.dt,
                                  self.springs, resting)
         tp, qp, vp = t0, qs, vs
@@ -214,10 +223,13 @@ class Driver(Extents):
                 if not pairs:
                     raise
                 self.record(t1, pairs, q1, v1, after, speed)
+                self.trace(t1, q1, v1)
                 self.impacted, self.impact_time = closed, t1
                 self.in_contact = {c for c in active if self.touching(c, q1, after)}
                 return t1, q1, after
             q2, v2 = seg.state()
+            self.trace(t1, q1, v1)
+            self.trace(t1, q2, v2)
             pairs = []
             if ns:
                 pairs, speed, closed = self.closures(active, q1, v1, v2)
@@ -280,6 +292,13 @@ def main():
 
 def simulate(model):
     """Simulate MODEL (a decoded model description) and print the s-expression answer."""
+    if model.get("gap_probe"):   # a pair's gap along a given motion (siconos_probe_gaps.py)
+        from siconos_probe_gaps import probe_gaps
+        try:
+            print(probe_gaps(model))
+        except Exception as e:
+            print("(:status :error :message %s)" % sx_string("%s: %s" % (type(e).__name__, e)))
+        return
     if model.get("hinges") or any("inertia" in b for b in model.get("bodies", [])):
         from siconos_rotation import main_rotation   # bodies that turn: 3 degrees of freedom
         main_rotation(model)
@@ -294,6 +313,15 @@ def simulate(model):
         else:
             driver = Driver(model)
         t, qs, vs = driver.run()
+        if (driver.truncated or "").startswith("rope ") and not model.get("springs"):
+            # a rope piece turned (or closed): the exact rope (siconos_ropes.py) from the start
+            from siconos_rope_driver import turning_rope_driver
+            try:
+                exact = turning_rope_driver(model)
+                t, qs, vs = exact.run()
+                driver = exact
+            except Unsupported:
+                pass    # the linear rope's run, cut where it turned
     except Unsupported as e:
         print("(:status :unsupported :message %s)" % sx_string(str(e)))
         return

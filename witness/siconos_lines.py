@@ -3,7 +3,7 @@
 Both are linear in the positions as long as each keeps the direction of its start (a
 spring along its line, a rope's pieces straight between fixed pulleys and along the
 directions they started with); CHECK raises LineLeft when one turns, and the driver cuts
-its run there. A point is {"body": INDEX, "offset": [X, Y]} (a free body's point, own
+its run there (a rope's turn: the run is made again with the exact rope, siconos_ropes.py). A point is {"body": INDEX, "offset": [X, Y]} (a free body's point, own
 frame) or {"point": [X, Y]} (fixed).
 """
 

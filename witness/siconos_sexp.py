@@ -40,6 +40,15 @@ def print_answer(driver, t, qs, vs):
             "(:time %s :positions %s :velocities %s)" % (
                 sx_number(s["time"]), sx_states(names, s["q"], 0), sx_states(names, s["v"], 0))
             for s in driver.samples))
+    grazes = driver.grazes(driver.model.get("samples", [])) if hasattr(driver, "grazes") else []
+    if grazes:   # siconos_grazes.py
+        out.append(" :grazes (%s)" % " ".join(
+            "(:time %s :positions %s :velocities %s :pairs (%s))" % (
+                sx_number(t), sx_states(names, q, 0), sx_states(names, v, 0),
+                " ".join("(%s %s %s %s %s)" % (sx_string(a), sx_string(b), sx_number(g),
+                                               sx_number(at), sx_number(rate))
+                         for a, b, g, at, rate in pairs))
+            for t, q, v, pairs in grazes))
     out.append(" :end (:time %s :positions %s :velocities %s))" % (
         sx_number(t), sx_states(names, qs, 0), sx_states(names, vs, 0)))
     print("\n".join(out))

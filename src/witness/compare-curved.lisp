@@ -50,12 +50,14 @@ under VALUES; NIL when it has none."
 (defun witness-sample-times (ames values)
   "The times at which the witness should report the state for AMES's last state (its
 answer AMES): a few in the first period of a periodic state, a few in the first half
-second of another state along a path; NIL otherwise."
+second of another state along a path; and the ends of the states that end with a
+contact reached with no approach speed (compare-grazes.lisp)."
   (let* ((state (car (last (ames-path (getf ames :states)))))
          (start (and state (getf (state-numbers state values) :start))))
-    (when (and state (realp start) (path-state-p state))
-      (let ((span (or (state-period state values) 1/2)))
-        (mapcar (lambda (f) (+ start (* f span))) '(1/10 1/4 2/5 3/5 4/5 19/20))))))
+    (append (graze-times ames values)
+            (when (and state (realp start) (path-state-p state))
+              (let ((span (or (state-period state values) 1/2)))
+                (mapcar (lambda (f) (+ start (* f span))) '(1/10 1/4 2/5 3/5 4/5 19/20)))))))
 
 (defun witness-horizon-extra (ames values)
   "How much longer than usual the witness runs for AMES's answer: a period and a bit

@@ -72,20 +72,30 @@ the values set side by side: (STATE WHAT AMES WITNESS DIFFERENCE OK)."
     (:lift-off (member witness-kind '(:lift-off :leaves)))
     (:turns (eq witness-kind :turns))
     ((:tightens :slackens :stops-sliding :starts-sliding) (eq witness-kind ames-kind))
+    ;; a rope's piece closing at its pulley: with a speed, AMES's impact (:strikes-pulley)
+    ((:rope-piece-closes :strikes-pulley) (eq witness-kind :strikes-pulley))
     (t nil)))
 
 (defparameter +witnessed-events+
-  '(:collision :contact :leaves :lift-off :tightens :slackens :stops-sliding :starts-sliding :turns)
+  '(:collision :contact :leaves :lift-off :tightens :slackens :stops-sliding :starts-sliding :turns
+    :rope-piece-closes :strikes-pulley)
   "The kinds of end events the witness reports.")
 
 (defun event-head (event)
   "EVENT's kind and the names that follow it (one or two), without its keyword data."
   (cons (first event) (loop for x in (rest event) until (keywordp x) collect x)))
 
+(defun event-pair-names (event)
+  "The names of EVENT the witness names in its pair: a piece of rope closing at its pulley,
+(:ROPE-PIECE-CLOSES ROPE HOLDER BODY) or, with a speed, (:STRIKES-PULLEY HOLDER BODY), is
+the witness's (:STRIKES-PULLEY BODY HOLDER)."
+  (let ((names (rest (event-head event))))
+    (if (eq (event-kind event) :rope-piece-closes) (rest names) names)))
+
 (defun event-matches-p (ames-event witness-event)
   "True when the witness's event has a pair of AMES's event's kind and names (a rope's
 event names the rope once, the witness twice)."
-  (destructuring-bind (kind &rest names) (event-head ames-event)
+  (let ((kind (event-kind ames-event)) (names (event-pair-names ames-event)))
     (some (lambda (pair)
             (destructuring-bind (wkind x y) pair
               (and (witness-kind-matches-p kind wkind)
@@ -272,6 +282,8 @@ bumper turns within one state of closed forms in time)."
   (unless (eq (event-kind event) :turns)
     (loop while (and (walk-events walk) (turns-only-p (first (walk-events walk))))
           do (pop (walk-events walk))))
+  (when (check-graze walk numeric event end) ; compare-grazes.lisp: a contact at no approach speed
+    (return-from compare-event-state))
   (check-witnessable walk event)
   (check-seeable-impact walk event)     ; compare-slow-impacts.lisp
   (unless (walk-events walk)

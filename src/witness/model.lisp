@@ -141,7 +141,11 @@ offset, or a fixed body's point in the world."
                                                               (and (eq point (car (last through)))
                                                                    (member :last (scenario-rope-wound-ends rope))))
                                               collect (append (model-point scenario body where values)
-                                                              (and wound '(("wound" . :true))))))))))
+                                                              (and wound '(("wound" . :true)))
+                                                              ;; a fixed point's body: a piece closing there
+                                                              ;; is (:strikes-pulley HOLDER BODY)
+                                                              (and (scenario-body-fixed-p (find-scenario-body body scenario))
+                                                                   `(("holder" . ,(string-downcase body)))))))))))
 
 (defun scenario-model (scenario values t-end &key samples)
   "The witness's model (an alist for MODEL-JSON) of the validated SCENARIO with the

@@ -45,6 +45,12 @@
 ;;;;    is "unsupported" (the witness does not model it: seed 2027 #135); for an agreement
 ;;;;    the witness needs the piece's length (B - A).u0 >= 0 as a unilateral relation with
 ;;;;    Newton's law (siconos_lines.py, linear in the positions while the piece keeps u0).
+;;;; Witness side done (witness helper, session 7: witness/siconos_ropes.py): where the linear
+;;;; rope's piece would pass its pulley, the witness runs the exact rope with each piece's
+;;;; length at a pulley a unilateral relation (Newton's law, the pair's restitution) and reports
+;;;; (:strikes-pulley weight incline), which the comparator matches with AMES's
+;;;; (:rope-piece-closes line incline weight) or (:strikes-pulley incline weight); here at t = 1.8673991237 s, both bodies at rest
+;;;; after, held so (the weight along its vertical piece) to the end (t/witness-ropes.lisp).
 ;;;; Run: bin/ames run witness/disagreements/refused-incline-pulley-piece-closes.lisp
 
 (scenario incline-pulley-1 "A particle on an incline pulled over a pulley by a hanging mass."

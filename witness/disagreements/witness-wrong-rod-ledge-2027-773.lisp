@@ -16,6 +16,11 @@
 ;;;; do (not built): where AMES's least gap of a pair over a state is below the witness's
 ;;;; resolution at its step, call a witness strike of that pair "unsupported", with the
 ;;;; clearance as the reason.
+;;;; Done (witness helper, session 7: src/witness/compare-grazes.lisp): the verdict is now
+;;;; "unsupported: ... AMES's least gap of that pair over the state is 1.143e-5 m (at 0.495914 s,
+;;;; positive), below the witness's resolution 1.176e-2 m (20 steps of 6.25e-5 s at 9.409 m/s)",
+;;;; the gap sampled along AMES's closed forms with the witness's own gap functions
+;;;; (witness/siconos_probe_gaps.py); t/witness-ropes.lisp checks it from the answers kept here.
 ;;;; Run: bin/ames check witness/disagreements/witness-wrong-rod-ledge-2027-773.lisp --numeric
 
 (scenario rod-ledge-773 "A rod or a block falls across the edge of a ledge." (gravity 23/2)
