@@ -108,6 +108,7 @@ sin, cos or tan, radcan only when it has radicals, logarithms or exponentials (o
 they equal the ratsimp one)."
   (let* ((candidates (mlist-items
                       (maxima-request bridge (simplest-form-request form) :datum expression)))
+         (original (exact-constant-original bridge form))
          (best nil)
          (reference :unset))
     (dolist (candidate candidates)
@@ -116,10 +117,30 @@ they equal the ratsimp one)."
         (when (eq reference :unset)
           (setf reference (and translated (constant-number translated))))
         (when (and translated
-                   (same-number-p reference translated)
+                   (if original
+                       (exactly-same-number-p original translated)
+                       (same-number-p reference translated))
                    (or (null best) (< (expression-size translated) (expression-size best))))
           (setf best translated))))
-    (or best (real-form bridge form expression) (from-mx bridge (first candidates)))))
+    (or best original (real-form bridge form expression) (from-mx bridge (first candidates)))))
+
+(defun exact-constant-original (bridge form)
+  "FORM, as sent, in prefix algebra when it is a constant of numbers and radicals whose
+value exact interval arithmetic bounds (EXACT-CONSTANT-SIGN answers); else NIL."
+  (let ((expression (handler-case (from-mx bridge form)
+                      (untranslatable-result () nil))))
+    (and expression (consp expression)
+         (null (expression-variables expression))
+         (exact-constant-sign expression :precisions '(64 256))
+         expression)))
+
+(defun exactly-same-number-p (original candidate)
+  "True unless exact interval arithmetic tells CANDIDATE's value (a simplification of
+the constant ORIGINAL) from ORIGINAL's, or cannot bound it (a square root of a negative,
+a name): the guard of SAME-NUMBER-P, for constants of numbers and radicals whose terms
+cancel beyond a double's digits (there ratsimp, factor and radcan were seen to give
+three different values for one root; a double tells none of them apart)."
+  (member (exact-constant-sign (list '- candidate original)) '(:zero :near-zero)))
 
 (defun constant-number (expression)
   "EXPRESSION's value as a double when it is a real number written without names (only
