@@ -121,14 +121,16 @@ Maxima compares exactly as it always did)."
              (= (length relation) 3)
              (not (and (rationalp (second relation)) (rationalp (third relation))))
              (null (expression-variables relation)))
-    (let ((d (interval-value `(- ,(second relation) ,(third relation)) '())))
-      (when d
-        (let ((sign (cond ((> (car d) 0d0) :positive) ((< (cdr d) 0d0) :negative))))
-          (when sign
+    (let* ((difference `(- ,(second relation) ,(third relation)))
+           (d (interval-value difference '())))
+      (let ((sign (or (and d (cond ((> (car d) 0d0) :positive) ((< (cdr d) 0d0) :negative)))
+                      ;; terms cancelling beyond a double's digits: over exact rationals
+                      (find (exact-constant-sign difference) '(:positive :negative)))))
+        (when sign
             (if (ecase (first relation)
                   ((> >=) (eq sign :positive))
                   ((< <=) (eq sign :negative))
                   (= nil)
                   (/= t))
                 :true
-                :false)))))))
+                :false))))))

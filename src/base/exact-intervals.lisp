@@ -69,15 +69,20 @@
                  (cons 0 (max p1 p2))
                  (cons (min p1 p2) (max p1 p2)))))))
 
-(defun exact-interval (expression precision)
+(defun exact-interval (expression precision &optional bindings)
   "An interval (LOW . HIGH) of rationals holding the value of the constant EXPRESSION
 (numbers, + - * /, integer and rational powers, sqrt: the prefix algebra's radicals),
-each root bounded to PRECISION bits. NIL when EXPRESSION has anything else (a name, a
-function, PI), a root of an interval reaching below 0 or a division by one holding 0
-at this precision."
+each root bounded to PRECISION bits, the names and terms bound in the alist BINDINGS
+taking their (real) values exactly. NIL when EXPRESSION has anything else (an unbound
+name, a function, PI), a root of an interval reaching below 0 or a division by one
+holding 0 at this precision."
   (labels ((value (x)
              (cond ((rationalp x) (cons x x))
                    ((floatp x) (let ((r (rational x))) (cons r r)))
+                   ((and bindings (or (variable-symbol-p x) (quantity-term-p x)))
+                    (let ((entry (assoc x bindings :test #'equal)))
+                      (and entry (realp (cdr entry)) (finite-real-p (cdr entry))
+                           (value (rational (cdr entry))))))
                    ((not (and (consp x) (alexandria:proper-list-p x) (rest x))) nil)
                    (t (let ((parts (mapcar #'value (rest x))))
                         (and (every #'identity parts) (operation (first x) parts (rest x)))))))
@@ -117,3 +122,36 @@ constant of numbers and radicals (see EXACT-INTERVAL)."
           (cond ((plusp (car interval)) (return :positive))
                 ((minusp (cdr interval)) (return :negative))
                 ((= 0 (car interval) (cdr interval)) (return :zero))))))))
+
+;;; Accurate doubles of ill-conditioned constants
+
+(defparameter *accurate-value-precisions* '(64 128 256 512 1024 2048 4096)
+  "The precisions ACCURATE-VALUE tries in turn.")
+
+(defun big-number-p (expression)
+  "True when EXPRESSION holds a rational whose numerator or denominator has more than
+53 bits (more than a double holds): where sums of such terms times radicals cancel, a
+double evaluation is noise (see the file header)."
+  (if (consp expression)
+      (some #'big-number-p (rest expression))
+      (and (rationalp expression)
+           (or (> (integer-length (numerator expression)) 53)
+               (> (integer-length (denominator expression)) 53)))))
+
+(defun accurate-value (expression &optional bindings)
+  "EXPRESSION's value (under BINDINGS, as EXPRESSION-VALUE takes them) as a double
+correct to about its last bit, from exact intervals (EXACT-INTERVAL) narrowed until
+their width is below 2^-55 of their size; the midpoint of the narrowest when none
+is (a value too near 0 to tell better). NIL when EXPRESSION has no exact interval (a
+function, PI) or its value is beyond a double."
+  (let ((best nil))
+    (dolist (precision *accurate-value-precisions*)
+      (let ((interval (exact-interval expression precision bindings)))
+        (when interval
+          (setf best interval)
+          (when (<= (- (cdr interval) (car interval))
+                    (* (expt 2 -55) (max (abs (car interval)) (abs (cdr interval)))))
+            (return)))))
+    (and best
+         (handler-case (float (/ (+ (car best) (cdr best)) 2) 1d0)
+           (arithmetic-error () nil)))))
