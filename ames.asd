@@ -404,6 +404,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "witness-hinged")
                (:file "witness-refusals")
                (:file "witness-refusals-roots")
+               (:file "exact-radicals")
                (:file "leftward-arcs")
                (:file "trust-fresh")
                (:file "trust-fresh-impacts")

@@ -22,19 +22,8 @@
 (defparameter *exact-sign-precisions* '(64 256 1024 4096)
   "The precisions (bits of each root's bounds) EXACT-CONSTANT-SIGN tries in turn.")
 
-(defun integer-root (n k)
-  "The largest integer whose K-th power is at most the non-negative integer N."
-  (if (= k 2)
-      (isqrt n)
-      (let ((low 0) (high (ash 1 (1+ (ceiling (integer-length n) k)))))
-        ;; invariant: low^k <= n < high^k
-        (loop while (> (- high low) 1)
-              do (let ((middle (ash (+ low high) -1)))
-                   (if (<= (expt middle k) n) (setf low middle) (setf high middle))))
-        low)))
-
 (defun root-bounds (r k precision)
-  "Rationals LOW <= R^(1/K) <= HIGH for the non-negative rational R, HIGH - LOW about
+  "(INTEGER-ROOT, evaluation.lisp, gives the integer part.) Rationals LOW <= R^(1/K) <= HIGH for the non-negative rational R, HIGH - LOW about
 2^-PRECISION of the root's size: (values LOW HIGH)."
   (if (zerop r)
       (values 0 0)
