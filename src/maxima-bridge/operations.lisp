@@ -140,7 +140,8 @@ the constant ORIGINAL) from ORIGINAL's, or cannot bound it (a square root of a n
 a name): the guard of SAME-NUMBER-P, for constants of numbers and radicals whose terms
 cancel beyond a double's digits (there ratsimp, factor and radcan were seen to give
 three different values for one root; a double tells none of them apart)."
-  (member (exact-constant-sign (list '- candidate original)) '(:zero :near-zero)))
+  (member (exact-constant-sign (list '- candidate original) :precisions '(64 1024))
+          '(:zero :near-zero)))
 
 (defun constant-number (expression)
   "EXPRESSION's value as a double when it is a real number written without names (only
