@@ -60,7 +60,7 @@
 
 (defun exact-interval (expression precision &optional bindings)
   "An interval (LOW . HIGH) of rationals holding the value of the constant EXPRESSION
-(numbers, + - * /, integer and rational powers, sqrt: the prefix algebra's radicals),
+(numbers, + - * /, integer and rational powers p/q with |p|, q <= 64, sqrt: the prefix algebra's radicals),
 each root bounded to PRECISION bits, the names and terms bound in the alist BINDINGS
 taking their (real) values exactly. NIL when EXPRESSION has anything else (an unbound
 name, a function, PI), a root of an interval reaching below 0 or a division by one
@@ -89,8 +89,10 @@ holding 0 at this precision."
                (sqrt (and (null (rest parts)) (interval-root (first parts) 2 precision)))
                (expt (let ((n (second operands)))
                        (cond ((/= (length parts) 2) nil)
+                             ;; a large power is left to doubles: its exact bounds grow
+                             ((not (and (rationalp n) (<= (abs (numerator n)) 64))) nil)
                              ((integerp n) (exact-interval-power (first parts) n))
-                             ((and (rationalp n) (<= (denominator n) 64))
+                             ((<= (denominator n) 64)
                               (let ((root (interval-root (first parts) (denominator n) precision)))
                                 (and root (exact-interval-power root (numerator n))))))))
                (t nil))))
