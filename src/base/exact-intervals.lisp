@@ -60,9 +60,9 @@
 
 (defun exact-interval (expression precision &optional bindings)
   "An interval (LOW . HIGH) of rationals holding the value of the constant EXPRESSION
-(numbers, + - * /, integer and rational powers p/q with |p|, q <= 64, sqrt: the prefix algebra's radicals),
-each root bounded to PRECISION bits, the names and terms bound in the alist BINDINGS
-taking their (real) values exactly. NIL when EXPRESSION has anything else (an unbound
+(numbers, + - * /, powers p/q with |p| and q at most 64, sqrt: the prefix algebra's
+radicals), each root bounded to PRECISION bits, the names and terms bound in the alist
+BINDINGS taking their (real) values exactly. NIL when EXPRESSION has anything else (an unbound
 name, a function, PI), a root of an interval reaching below 0 or a division by one
 holding 0 at this precision."
   (labels ((value (x)
