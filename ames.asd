@@ -25,7 +25,8 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "algebra")
                  (:file "special-functions")
                  (:file "limits")
-                 (:file "evaluation")))
+                 (:file "evaluation")
+                 (:file "exact-intervals")))
    (:module "maxima-bridge" :pathname "src/maxima-bridge/" :serial t
     :depends-on ("base")
     :components ((:file "package")
@@ -413,6 +414,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "witness-refusals")
                (:file "witness-refusals-roots")
                (:file "witness-ropes")
+               (:file "exact-radicals")
                (:file "leftward-arcs")
                (:file "trust-fresh")
                (:file "trust-fresh-impacts")

@@ -114,21 +114,24 @@ parameters taking their values from BINDINGS (an alist name -> real)."
 
 (defun constant-relation-by-intervals (relation)
   "The truth of RELATION, (OP LHS RHS) with OP among < <= > >= = /= over numbers and PI
-alone, when the interval of LHS - RHS excludes 0: :TRUE or :FALSE; NIL otherwise (a name
-in it, an interval holding 0, a form without an interval, and two rational sides, which
-Maxima compares exactly as it always did)."
+alone, when the interval of LHS - RHS excludes 0 (in doubles, else over exact rationals:
+EXACT-CONSTANT-SIGN, for terms that cancel beyond a double's digits): :TRUE or :FALSE;
+NIL otherwise (a name in it, an interval holding 0, a form without an interval, and two
+rational sides, which Maxima compares exactly as it always did)."
   (when (and (consp relation) (member (first relation) '(< <= > >= = /=))
              (= (length relation) 3)
              (not (and (rationalp (second relation)) (rationalp (third relation))))
              (null (expression-variables relation)))
-    (let ((d (interval-value `(- ,(second relation) ,(third relation)) '())))
-      (when d
-        (let ((sign (cond ((> (car d) 0d0) :positive) ((< (cdr d) 0d0) :negative))))
-          (when sign
-            (if (ecase (first relation)
-                  ((> >=) (eq sign :positive))
-                  ((< <=) (eq sign :negative))
-                  (= nil)
-                  (/= t))
-                :true
-                :false)))))))
+    (let* ((difference `(- ,(second relation) ,(third relation)))
+           (d (interval-value difference '())))
+      (let ((sign (or (and d (cond ((> (car d) 0d0) :positive) ((< (cdr d) 0d0) :negative)))
+                      ;; terms cancelling beyond a double's digits: over exact rationals
+                      (find (exact-constant-sign difference) '(:positive :negative)))))
+        (when sign
+          (if (ecase (first relation)
+                ((> >=) (eq sign :positive))
+                ((< <=) (eq sign :negative))
+                (= nil)
+                (/= t))
+              :true
+              :false))))))

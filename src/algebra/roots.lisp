@@ -194,13 +194,41 @@ is not zero when l1 > l2 > 0, which Maxima's sign() does not see)."
 (defun real-square-root (search radicand)
   "The square root of the root form RADICAND, written so that Maxima's simplifier does
 not turn it into the imaginary unit (see REAL-SQUARE-ROOT-FORM): RADICAND in rational
-form, its numerator and denominator both negated when the numerator is proven negative."
+form, its numerator and denominator both negated when the numerator is proven negative.
+A constant radicand (numbers and radicals) whose numerator or denominator a double
+cannot sign is written sqrt(N D)/|D| instead (CONSTANT-SQUARE-ROOT)."
   (let ((bridge (search-bridge search))
         (datum (search-expression search)))
     (multiple-value-bind (rational numerator) (rational-radicand bridge radicand :datum datum)
-      (real-square-root-form bridge rational numerator
-                             (equal (sign-pattern-of search numerator '((:negative))) '(:negative))
-                             :datum datum))))
+      (or (constant-square-root search rational numerator)
+          (real-square-root-form bridge rational numerator
+                                 (equal (sign-pattern-of search numerator '((:negative))) '(:negative))
+                                 :datum datum)))))
+
+(defun constant-square-root (search rational numerator)
+  "The square root of the constant root form RATIONAL (numerator NUMERATOR) written
+sqrt(N D)/|D| (CLEARED-SQUARE-ROOT-FORM), when its denominator D is a constant of
+numbers and radicals whose sign EXACT-CONSTANT-SIGN proves, and N or D is zero to a
+double's round-off (ZERO-TO-ROUND-OFF-P); else NIL. Maxima decides
+the sign of such a constant by a float, and where its terms cancel beyond a double's
+digits it took both N and D of a positive radicand for positive when both were negative,
+and wrote sqrt(N/D) with %i (terrain 2028 #70): a sum under the root gives its
+simplifier no factor to split."
+  (let* ((bridge (search-bridge search))
+         (datum (search-expression search))
+         (expression (handler-case (root-form-expression bridge numerator)
+                       (untranslatable-result () nil))))
+    (when (and expression (null (expression-variables expression)))
+      (let* ((denominator (radicand-denominator bridge rational :datum datum))
+             (bottom (handler-case (root-form-expression bridge denominator)
+                       (untranslatable-result () nil)))
+             (sign (and bottom (exact-constant-sign bottom))))
+        ;; only where a double cannot tell a sign (elsewhere Maxima's is right, and the
+        ;; usual form is kept)
+        (when (and (member sign '(:positive :negative))
+                   (or (zero-to-round-off-p expression) (zero-to-round-off-p bottom)))
+          (cleared-square-root-form bridge numerator denominator (eq sign :negative)
+                                    :datum datum))))))
 
 (defun quadratic-earliest-root (search coefficients form offset-variable)
   "c0 + c1 s + c2 s^2 = 0, through the product P = c0/c2 and sum S = -c1/c2 of the roots

@@ -42,7 +42,7 @@ argument's scale; else the size of the value. NIL when a value is not real."
                               (denominators (mapcar #'size (rest arguments))))
                           (and numerator (every (lambda (d) (and d (plusp d))) denominators)
                                (/ numerator (product-of denominators)))))
-                     (sqrt (let ((s (scale (first arguments)))) (and s (sqrt s))))
+                     (sqrt (let ((s (scale (first arguments)))) (and s (sqrt (float s 1d0)))))
                      (expt (let ((exponent (expression-value (second arguments) bindings))
                                  (base (scale (first arguments))))
                              (if (and (realp exponent) (>= exponent 0) base)
@@ -70,10 +70,13 @@ not real or is exact (a rational is its own sign)."
 
 (defun constant-zero-signs (bridge expression)
   "For a constant EXPRESSION (no variables) whose double value is zero to round-off
-(ZERO-TO-ROUND-OFF-P): (:ZERO) when it is proven exactly zero (EXACTLY-ZERO-P), else
-all three signs (the float's sign is no proof). NIL when EXPRESSION has variables or
-is clear of round-off, which Maxima's sign() decides."
+(ZERO-TO-ROUND-OFF-P): its sign when exact interval arithmetic proves it
+(EXACT-CONSTANT-SIGN: numbers and radicals whose terms cancel far beyond a double's
+digits), (:ZERO) when it is proven exactly zero (EXACTLY-ZERO-P), else all three signs
+(the float's sign is no proof). NIL when EXPRESSION has variables or is clear of
+round-off, which Maxima's sign() decides."
   (when (and (null (expression-variables expression)) (zero-to-round-off-p expression))
-    (if (exactly-zero-p bridge expression)
-        (list :zero)
-        (list :positive :negative :zero))))
+    (let ((exact (exact-constant-sign expression)))
+      (cond ((member exact '(:positive :negative :zero)) (list exact))
+            ((exactly-zero-p bridge expression) (list :zero))
+            (t (list :positive :negative :zero))))))

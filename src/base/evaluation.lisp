@@ -147,7 +147,10 @@ computed exactly from rationals: with + - * /, integer powers (of at most
 +LARGEST-EXACT-POWER-BITS+ bits), and roots or rational powers whose value is rational,
 such as (sqrt 9/4) = 3/2 or (expt 8 2/3) = 4. Otherwise VALUE is a double-float: every
 float in EXPRESSION or BINDINGS is taken as a double-float, and PI and the transcendental
-functions are computed in double precision.
+functions are computed in double precision. An inexact value of an expression holding
+numbers beyond a double's 53 bits is taken from exact intervals instead
+(ACCURATE-VALUE, exact-intervals.lisp) where they bound it: its terms may cancel far
+beyond a double's digits.
 
 EXACTP is true when VALUE is a rational, and when EXPRESSION is itself a number or a
 bound variable or term (its value is then taken as given, float or not).
@@ -192,6 +195,9 @@ run in progress passes during the evaluation."
                    (t (give-up)))))
     (handler-case
         (let ((result (value expression 0)))
+          ;; big exact numbers times radicals may cancel beyond a double's digits
+          (when (and (floatp result) (big-number-p expression))
+            (setf result (or (accurate-value expression bindings) result)))
           (values result (or (rationalp result)
                              (realp expression)
                              (variable-symbol-p expression)

@@ -37,6 +37,7 @@ bridge translates the algebra to anything else.")
    #:check-expression #:valid-expression-p #:finite-real-p
    ;; numeric values of constant expressions
    #:expression-value #:rational-root
+   #:exact-interval #:exact-constant-sign #:accurate-value #:big-number-p
    ;; special functions: operators of the algebra, and their numeric values
    #:elliptic-f #:elliptic-k #:elliptic-e #:jacobi-sn #:jacobi-cn #:jacobi-dn #:jacobi-am
    #:gamma-function

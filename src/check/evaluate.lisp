@@ -35,6 +35,16 @@ a number to. DATUM is the offending form."))
     (asin (lambda (a) (if (<= -1 a 1) (asin a) (invalid))))
     (acos (lambda (a) (if (<= -1 a 1) (acos a) (invalid))))))
 
+(defun accurate-constant (x)
+  "The value of X as a double when X is a constant form (no names) holding numbers
+beyond a double's 53 bits, from exact intervals (ACCURATE-VALUE): a root's
+coefficients of 60 digits times radicals cancel far beyond a double's digits, and
+evaluated in doubles gave a position of 8 for one of 0.296. NIL otherwise."
+  (and (consp x) (not (quantity-term-p x))
+       (big-number-p x)
+       (null (expression-variables x))
+       (accurate-value x)))
+
 (defun compile-numeric (expression variables)
   "A function of a simple-vector of doubles (the values of VARIABLES, symbols or quantity
 terms, in order) returning EXPRESSION's value as a double, or signalling ARITHMETIC-ERROR
@@ -45,6 +55,8 @@ this evaluator does not know."
                (cond (index (lambda (v) (svref v index)))
                      ((realp x) (let ((d (coerce x 'double-float))) (lambda (v) (declare (ignore v)) d)))
                      ((eq x 'pi) (lambda (v) (declare (ignore v)) pi))
+                     ((accurate-constant x)
+                      (let ((d (accurate-constant x))) (lambda (v) (declare (ignore v)) d)))
                      ((or (atom x) (quantity-term-p x))
                       (error 'unevaluable :datum x :detail "The self-check has no value for this name."))
                      (t (operation (first x) (mapcar #'build (rest x)) x)))))

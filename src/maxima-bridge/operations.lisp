@@ -105,9 +105,12 @@ ratsimp() gives (seen on every simplification of the test suite and the scenario
 trigsimp, ratsimp after trigsimp, factor after ratsimp and radcan (the first of equal
 size wins), each computed once in one round trip; the trigsimp ones only when FORM has
 sin, cos or tan, radcan only when it has radicals, logarithms or exponentials (otherwise
-they equal the ratsimp one)."
+they equal the ratsimp one). A constant of numbers and radicals is compared with FORM
+over exact intervals (EXACTLY-SAME-NUMBER-P), and is FORM itself when no simplification
+keeps its value."
   (let* ((candidates (mlist-items
                       (maxima-request bridge (simplest-form-request form) :datum expression)))
+         (original (exact-constant-original bridge form))
          (best nil)
          (reference :unset))
     (dolist (candidate candidates)
@@ -116,10 +119,33 @@ they equal the ratsimp one)."
         (when (eq reference :unset)
           (setf reference (and translated (constant-number translated))))
         (when (and translated
-                   (same-number-p reference translated)
+                   (if original
+                       (exactly-same-number-p original translated)
+                       (same-number-p reference translated))
                    (or (null best) (< (expression-size translated) (expression-size best))))
           (setf best translated))))
-    (or best (real-form bridge form expression) (from-mx bridge (first candidates)))))
+    (or best original (real-form bridge form expression) (from-mx bridge (first candidates)))))
+
+(defun exact-constant-original (bridge form)
+  "FORM, as sent, in prefix algebra when it is a constant of numbers and radicals whose
+value exact interval arithmetic bounds (EXACT-CONSTANT-SIGN answers); else NIL."
+  (let ((expression (handler-case (from-mx bridge form)
+                      (untranslatable-result () nil))))
+    (and expression (consp expression)
+         (null (expression-variables expression))
+         (exact-constant-sign expression :precisions '(64 256))
+         expression)))
+
+(defun exactly-same-number-p (original candidate)
+  "True unless exact interval arithmetic tells CANDIDATE's value (a simplification of
+the constant ORIGINAL) from ORIGINAL's, or cannot bound it (a square root of a negative,
+a name): the guard of SAME-NUMBER-P, for constants of numbers and radicals whose terms
+cancel beyond a double's digits, where a double tells nothing apart (radcan() wrote a
+root of a quadratic, 0.2928, as a form worth 0.5298, with %i; Maxima's own bfloat() at
+60 digits put the root and its ratsimp(), factor() and radcan() forms at 2.37, 2.37,
+1.05 and 0.89)."
+  (member (exact-constant-sign (list '- candidate original) :precisions '(64 1024))
+          '(:zero :near-zero)))
 
 (defun constant-number (expression)
   "EXPRESSION's value as a double when it is a real number written without names (only

@@ -37,6 +37,7 @@ layer above, AMES.ALGEBRA: it asks through the exported operations only.")
    #:offset-polynomial #:square-free-polynomial #:numeric-root-form-p #:complex-root-form-p #:root-form-signs #:root-form-imaginary-part
    #:root-form-expression #:root-at-offset #:linear-root-offset #:vieta-forms
    #:root-form-sum #:root-form-difference #:rational-radicand #:real-square-root-form
+   #:radicand-denominator #:cleared-square-root-form
    #:solved-root-offsets #:real-root-offsets
    ;; what the translation accepts, for the algebra's checks (translation.lisp, assumptions.lisp)
    #:check-translatable #:subject-p #:negate-condition

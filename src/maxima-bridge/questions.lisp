@@ -36,10 +36,37 @@ when FORM has no sin, cos or tan, for which trigsimp gives the same form, slower
   "SIGNS (a list of :POSITIVE :NEGATIVE :ZERO) narrowed by Maxima's sign ANSWER."
   (if (symbolp answer) (intersection signs (sign-set answer)) signs))
 
+(defun exact-form-signs (bridge form)
+  "The signs of the Maxima FORM when it is a constant of numbers and radicals, proven
+without Maxima (EXACT-CONSTANT-SIGN, over exact rationals): (:POSITIVE), (:NEGATIVE) or
+(:ZERO); :NEAR-ZERO when no precision tells it from 0; NIL when FORM is no such constant
+(names, functions, %pi, %i), which sign() decides. Maxima's sign() of such a constant is
+a float's sign, noise where its terms cancel (see src/base/exact-intervals.lisp)."
+  (let ((expression (handler-case (from-mx bridge form)
+                      (untranslatable-result () nil))))
+    (when (and expression (consp expression) (null (expression-variables expression)))
+      (let ((sign (exact-constant-sign expression)))
+        (if (member sign '(:positive :negative :zero)) (list sign) sign)))))
+
+(defun guarded-signs (exact signs)
+  "SIGNS (Maxima's sign() of a constant) in the light of EXACT, its EXACT-FORM-SIGNS:
+the proven sign when there is one; for a constant too near 0 to tell, (:ZERO) when
+sign() says so, else any sign (sign()'s float is no proof); SIGNS when EXACT is NIL."
+  (cond ((listp exact) (or exact signs))
+        ((equal signs '(:zero)) signs)
+        (t (list :positive :negative :zero))))
+
 (defun forms-signs (bridge forms &key datum)
   "For each of the real Maxima FORMS, the signs (:POSITIVE :NEGATIVE :ZERO) it may have
 under the current assumptions: the intersection of what sign() says of its forms (see
 SIGN-REQUESTS). One round trip."
+  (let ((exact (mapcar (lambda (form) (exact-form-signs bridge form)) forms)))
+    (if (every #'consp exact)
+        exact
+        (mapcar #'guarded-signs exact (forms-signs-in-maxima bridge forms :datum datum)))))
+
+(defun forms-signs-in-maxima (bridge forms &key datum)
+  "FORMS-SIGNS by Maxima's sign() alone. One round trip."
   (let* ((count (length (sign-requests 0)))
          (requests (mapcan #'sign-requests forms))
          (answers (let ((answers (imaginary-as-unknown
@@ -75,6 +102,14 @@ narrow the signs (an empty intersection would mean contradictory answers). When 
 first answer does not settle it, the other requests missing from the cache are sent in
 one round trip (see PREFETCH-REQUESTS), with the requests ALSO (Maxima forms the caller
 will likely ask next)."
+  (let ((exact (exact-form-signs bridge form)))
+    (if (consp exact)
+        exact
+        (guarded-signs exact (form-signs-in-maxima bridge form :datum datum :enough enough
+                                                                :also also)))))
+
+(defun form-signs-in-maxima (bridge form &key datum (enough (constantly nil)) also)
+  "FORM-SIGNS by Maxima's sign() alone."
   (let ((signs (list :positive :negative :zero))
         (requests (sign-requests form)))
     (dolist (request requests signs)

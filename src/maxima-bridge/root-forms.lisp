@@ -111,6 +111,23 @@ denominator are both negated and expanded first."
              rational)
          (mform +rat+ 1 2)))
 
+(defun radicand-denominator (bridge rational &key datum)
+  "The denominator of the root form RATIONAL (from RATIONAL-RADICAND). One request (denom)."
+  (maxima-request bridge (mcall "$DENOM" rational) :datum datum))
+
+(defun cleared-square-root-form (bridge numerator denominator denominator-negative-p &key datum)
+  "The square root of NUMERATOR/DENOMINATOR (root forms, their quotient proven
+non-negative) written sqrt(N D) / |D|, N D expanded into one sum: the radicand is no
+product that Maxima's simplifier could split into square roots of factors it takes for
+negative (sqrt(N/D) = sqrt(N D)/|D| whenever N/D >= 0). DENOMINATOR-NEGATIVE-P says
+which of D and -D is |D|; it must be proven (for a constant, exactly: Maxima's sign() of
+one is a float's). One request (expand)."
+  (mquotient (mform +mexpt+
+                    (maxima-request bridge (mcall "$EXPAND" (mform +mtimes+ numerator denominator))
+                                    :datum datum)
+                    (mform +rat+ 1 2))
+             (if denominator-negative-p (mform +mtimes+ -1 denominator) denominator)))
+
 (defun solved-root-offsets (bridge form offset-variable &key datum)
   "The roots solve() finds of FORM = 0 in OFFSET-VARIABLE (root forms):
   (values EXPLICIT COUNT), EXPLICIT the root forms of the solutions given explicitly
