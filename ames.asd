@@ -68,6 +68,8 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "quick-signs")
                  (:file "sturm")
                  (:file "truth")
+                 (:file "atan-orders")
+                 (:file "radical-cases")
                  (:file "imaginary-radicands")
                  (:file "inverse-angles")
                  (:file "half-angles")
