@@ -396,6 +396,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "ledge-impacts")
                (:file "tipping-criterion")
                (:file "fact-remainders")
+               (:file "atan-orders")
                (:file "zero-folding")
                (:file "fork-pruning")
                (:file "approximate-starts")

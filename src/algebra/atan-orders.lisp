@@ -94,10 +94,24 @@ when it is not of that form (through +, -, products and quotients by rationals).
 
 ;;; The span of an angle made of multiples of pi and inverse tangents
 
-(defun angle-span (prover angle)
+(defun quarter-span (prover y sign)
+  "The span of atan(Y), Y of the strict SIGN (+1, -1), in units of pi, narrowed to one
+side of +-pi/4 where Y against +-1 is proven: (values LO HI LO-OPEN HI-OPEN)."
+  (let ((bridge (prover-bridge prover)))
+    (if (= sign 1)
+        (cond ((holds-p bridge `(> ,y 1)) (values 1/4 1/2 t t))
+              ((holds-p bridge `(>= ,y 1)) (values 1/4 1/2 nil t))
+              ((holds-p bridge `(< ,y 1)) (values 0 1/4 t t))
+              ((holds-p bridge `(<= ,y 1)) (values 0 1/4 t nil))
+              (t (values 0 1/2 t t)))
+        (multiple-value-bind (lo hi lo-open hi-open) (quarter-span prover `(- ,y) 1)
+          (values (- hi) (- lo) hi-open lo-open)))))
+
+(defun angle-span (prover angle &key refine)
   "The span of ANGLE in units of pi, (values LO HI LO-OPEN HI-OPEN), for ANGLE made of
 rationals times pi, 0 and one-argument inverse tangents (through +, -, rational
-products and quotients); NIL when ANGLE is not of that form."
+products and quotients); NIL when ANGLE is not of that form. REFINE narrows each
+inverse tangent's span to one side of +-pi/4 where the facts decide it (QUARTER-SPAN)."
   (labels ((span (x)
              (cond ((eql x 0) (values 0 0 nil nil))
                    ((eq x 'pi) (values 1 1 nil nil))
@@ -106,8 +120,10 @@ products and quotients); NIL when ANGLE is not of that form."
                         (case (expression-operator x)
                           (atan (unless (= 1 (length arguments)) (throw 'no-span nil))
                            (let ((signs (expression-signs prover (first arguments))))
-                             (cond ((only-signs-p signs :positive) (values 0 1/2 t t))
-                                   ((only-signs-p signs :negative) (values -1/2 0 t t))
+                             (cond ((only-signs-p signs :positive)
+                                    (if refine (quarter-span prover (first arguments) 1) (values 0 1/2 t t)))
+                                   ((only-signs-p signs :negative)
+                                    (if refine (quarter-span prover (first arguments) -1) (values -1/2 0 t t)))
                                    ((only-signs-p signs :positive :zero) (values 0 1/2 nil t))
                                    ((only-signs-p signs :negative :zero) (values -1/2 0 t nil))
                                    (t (values -1/2 1/2 t t)))))
@@ -141,7 +157,7 @@ products and quotients); NIL when ANGLE is not of that form."
 
 (defun exact-angle-tangent (prover angle lo hi)
   "tan(ANGLE) written exactly, for ANGLE whose span (LO HI, in units of pi) lies within
-(-1/2, 1/2): a constant q pi of *EXACT-TANGENTS*, or +-atan(Y) + n pi/2 (tan = +-Y for n
+the open (-1/2, 1/2): a constant q pi of *EXACT-TANGENTS*, or +-atan(Y) + n pi/2 (tan = +-Y for n
 even, -+1/Y for n odd); NIL otherwise."
   (if (= lo hi)
       (exact-tangent lo)
@@ -155,14 +171,24 @@ even, -+1/Y for n odd); NIL otherwise."
 
 (defun atan-above-verdict (prover x angle strict)
   "The truth of atan(X) > ANGLE (STRICT) or atan(X) >= ANGLE, ANGLE of a span (see
-ANGLE-SPAN): :TRUE, :FALSE or :UNKNOWN, by the cases of this file's header."
-  (multiple-value-bind (lo hi lo-open hi-open) (angle-span prover angle)
+ANGLE-SPAN): :TRUE, :FALSE or :UNKNOWN, by the cases of this file's header; with the
+inverse tangents' spans narrowed (QUARTER-SPAN) when their crude spans leave it open."
+  (let ((verdict (atan-above-verdict-in-span prover x angle strict nil)))
+    (if (eq verdict :unknown)
+        (atan-above-verdict-in-span prover x angle strict t)
+        verdict)))
+
+(defun atan-above-verdict-in-span (prover x angle strict refine)
+  "ATAN-ABOVE-VERDICT with the span of ANGLE (ANGLE-SPAN, REFINE)."
+  (multiple-value-bind (lo hi lo-open hi-open) (angle-span prover angle :refine refine)
     (let ((bridge (prover-bridge prover))
           (operator (if strict '> '>=)))
       (cond ((null lo) :unknown)
             ((<= hi -1/2) :true)
             ((>= lo 1/2) :false)
-            ((let ((tangent (and (> lo -1/2) (< hi 1/2) (exact-angle-tangent prover angle lo hi))))
+            ((let ((tangent (and (or (> lo -1/2) (and (= lo -1/2) lo-open))
+                                 (or (< hi 1/2) (and (= hi 1/2) hi-open))
+                                 (exact-angle-tangent prover angle lo hi))))
                (and tangent
                     (let ((verdict (decide bridge (list operator x tangent))))
                       (and (not (eq verdict :unknown)) verdict)))))
