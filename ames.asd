@@ -130,7 +130,8 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "decisions")
                  (:file "refresh")
                  (:file "transitions")
-                 (:file "choices")))
+                 (:file "choices")
+                 (:file "held-entries")))
    (:module "kb" :pathname "src/kb/" :serial t
     :depends-on ("engine" "geometry" "scenario")
     :components ((:file "package")
@@ -236,6 +237,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "angle-intervals")
                  (:file "corner-snapping")
                  (:file "flat-corner-snapping")
+                 (:file "circle-snapping")
                  (:file "approximate-starts")
                  (:file "pending-candidates")
                  (:file "end-values")

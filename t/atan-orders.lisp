@@ -55,6 +55,9 @@ against the centre's rise m g ((k/2)(cos s - 1) - (w/2) sin s) (Maxima)."
        (is (eq :true (decided b facts `(> ,s (- (atan (/ k w)) pi)))))
        (is (eq :false (decided b facts `(<= ,s (- (atan (/ k w)) pi)))))
        (is (eq :true (decided b facts `(< ,s 0))))
+       ;; the centre is not past the edge at s*: its offset from the edge, -(w cos s* + k
+       ;; sin s*)/2, is negative (linear in sin and cos of 2 atan(T): times 1 + T^2)
+       (is (eq :true (decided b facts `(> (+ (* w (cos ,s)) (* k (sin ,s))) 0))))
        ;; the same through the half angle: (sqrt(w^2 + k^2) + w)/k > 1, so its atan is above
        ;; pi/4 and atan(T) > -pi/4 is above minus it
        (is (eq :false (decided b facts `(< (+ (atan ,tt) (atan (/ (+ (sqrt (+ (expt w 2) (expt k 2))) w) k))) 0))))))))

@@ -229,3 +229,87 @@ decided through tan (see this file's header); :UNKNOWN when no such atan(X) deci
 (defun negated-verdict (verdict)
   "The verdict on the negation of a relation whose verdict is VERDICT."
   (ecase verdict (:true :false) (:false :true) (:unknown :unknown)))
+
+;;; sin and cos of 2 atan(u) (or atan(u)) in a relation linear in them
+
+(defun kernel-coefficient-parts (expression kernel)
+  "EXPRESSION as c KERNEL + R with c and R free of KERNEL (through +, -, products with
+one factor holding KERNEL, quotients by expressions free of it): (values c R), c
+possibly 0; NIL when it is not of that form."
+  (labels ((parts (x)
+             (cond ((equal x kernel) (values 1 0))
+                   ((not (occurs-p kernel x)) (values 0 x))
+                   ((not (consp x)) (throw 'not-linear nil))
+                   (t (let ((arguments (expression-arguments x)))
+                        (case (expression-operator x)
+                          (+ (let ((cs '()) (rs '()))
+                               (dolist (a arguments)
+                                 (multiple-value-bind (ca ra) (parts a)
+                                   (push ca cs) (push ra rs)))
+                               (values (cons '+ (nreverse cs)) (cons '+ (nreverse rs)))))
+                          (- (if (null (rest arguments))
+                                 (multiple-value-bind (c r) (parts (first arguments))
+                                   (values (list '- c) (list '- r)))
+                                 (parts (list '+ (first arguments)
+                                              (list '- (cons '+ (rest arguments)))))))
+                          (* (let ((holding (remove-if-not (lambda (a) (occurs-p kernel a)) arguments))
+                                   (others (remove-if (lambda (a) (occurs-p kernel a)) arguments)))
+                               (unless (= 1 (length holding)) (throw 'not-linear nil))
+                               (multiple-value-bind (c r) (parts (first holding))
+                                 (values (list* '* c others) (list* '* r others)))))
+                          (/ (unless (and (= 2 (length arguments)) (not (occurs-p kernel (second arguments))))
+                               (throw 'not-linear nil))
+                           (multiple-value-bind (c r) (parts (first arguments))
+                             (values (list '/ c (second arguments)) (list '/ r (second arguments)))))
+                          (t (throw 'not-linear nil))))))))
+    (catch 'not-linear
+      (parts expression))))
+
+(defun inverse-tangent-angles (expression)
+  "The arguments u of the (sin A) and (cos A) of EXPRESSION whose A is atan(u) or
+2 atan(u) (as (* 2 (atan u))), each once, with the multiple: a list of (N U)."
+  (let ((found '()))
+    (labels ((walk (x)
+               (when (and (consp x) (not (quantity-term-p x)))
+                 (when (member (expression-operator x) '(sin cos))
+                   (let ((angle (second x)))
+                     (cond ((and (consp angle) (eq (first angle) 'atan) (= 2 (length angle)))
+                            (pushnew (list 1 (second angle)) found :test #'equal))
+                           ((and (consp angle) (eq (first angle) '*) (= 3 (length angle))
+                                 (eql 2 (second angle)) (consp (third angle))
+                                 (eq (first (third angle)) 'atan) (= 2 (length (third angle))))
+                            (pushnew (list 2 (second (third angle))) found :test #'equal)))))
+                 (mapc #'walk (expression-arguments x)))))
+      (walk expression))
+    found))
+
+(defun decide-by-half-angle-tangent (prover relation)
+  "Reasoning step: RELATION (< <= > >=) whose difference is linear in sin A and cos A, A =
+2 atan(u) (or atan(u)), with coefficients free of them, multiplied by 1 + u^2 (or
+sqrt(1 + u^2)), positive: c0 + c1 cos A + c2 sin A becomes c0 (1 + u^2) + c1 (1 - u^2) +
+2 c2 u (c0 sqrt(1 + u^2) + c1 + c2 u), compact and algebraic in u, decided in place. The
+expansion of step 7 (inverse-angles.lisp) writes the same expanded, often far larger
+than the relation. :UNKNOWN when no such angle makes the relation linear."
+  (let ((operator (expression-operator relation))
+        (difference (relation-difference relation)))
+    (if (not (member operator '(< <= > >=)))
+        :unknown
+        (dolist (angle (inverse-tangent-angles relation) :unknown)
+          (destructuring-bind (n u) angle
+            (let* ((a (if (= n 1) `(atan ,u) `(* 2 (atan ,u))))
+                   (cosine `(cos ,a)) (sine `(sin ,a)))
+              (multiple-value-bind (c1 rest) (kernel-coefficient-parts difference cosine)
+                (multiple-value-bind (c2 c0) (and c1 (kernel-coefficient-parts rest sine))
+                  (when (and c2 (not (occurs-p cosine c1)) (not (occurs-p sine c1))
+                             (not (occurs-p sine c2)) (not (occurs-p cosine c0)))
+                    (let* ((square `(+ 1 (expt ,u 2)))
+                           (rewritten
+                             (if (= n 2)
+                                 `(+ (* ,c0 ,square) (* ,c1 (- 1 (expt ,u 2))) (* 2 ,c2 ,u))
+                                 `(+ (* ,c0 (sqrt ,square)) ,c1 (* ,c2 ,u))))
+                           ;; an equivalent relation, decided in place (at the depth of
+                           ;; this one: DECIDE's bounds on nesting would cut the proofs it
+                           ;; needs, such as a radicand's sign by convexity)
+                           (verdict (decide-relation (prover-bridge prover) (list operator rewritten 0))))
+                      (unless (eq verdict :unknown)
+                        (return verdict))))))))))))

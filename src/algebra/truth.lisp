@@ -21,7 +21,9 @@
 ;;;;   9. half angles: sin, cos and tan of a plain angle written in t = tan(x/2)
 ;;;;      (half-angles.lisp);
 ;;;;  (4b, after monotonicity) an inverse tangent against an angle of multiples of pi and
-;;;;      inverse tangents, compared through tan (atan-orders.lisp).
+;;;;      inverse tangents, compared through tan (atan-orders.lisp);
+;;;;  (0, first) a relation linear in sin and cos of 2 atan(u) multiplied by 1 + u^2, an
+;;;;      equivalent algebraic relation decided in its place (atan-orders.lisp).
 ;;;; Every step is an equivalence or a sound relaxation, so a :TRUE or :FALSE it finds is
 ;;;; proven; a step that cannot apply answers :UNKNOWN. Steps ask DECIDE about smaller or
 ;;;; rewritten relations; DECIDE stops a question that is already under way, and
@@ -293,7 +295,7 @@ by its CDR."
           (t expression))))
 
 (defparameter *reasoning-steps*
-  '(decide-by-quarter-turns decide-by-signed-parts decide-by-common-factors
+  '(decide-by-half-angle-tangent decide-by-quarter-turns decide-by-signed-parts decide-by-common-factors
     decide-by-monotonicity decide-by-atan-order decide-by-squares decide-by-angle-substitution
     decide-by-inverse-angle-expansion decide-by-polar-angles decide-by-half-angles)
   "The steps of DECIDE-BY-REASONING, in the order they are tried.")
