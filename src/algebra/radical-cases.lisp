@@ -16,9 +16,10 @@
 ;;;; and c's proven strict sign gives the sign of the difference. Sound: each case is an
 ;;;; equivalence of real numbers (A > 0 makes the root real), and an extra fact that
 ;;;; contradicts the facts in force makes its case vacuous. The case's gap is factored and
-;;;; each factor's sign proven from the facts in force, or from the case's fact and a
+;;;; each factor's sign found by the rules of signs, or from the case's fact and a
 ;;;; remainder of proven sign (fact-remainders.lisp; not by DECIDE under the fact, whose
-;;;; depth bounds would cut it when the question is itself nested). Tried after the reasoning of
+;;;; depth bounds would cut it when the question is itself nested, and which costs much on
+;;;; every relation with a root); only A > 0 is asked of DECIDE, last. Tried after the reasoning of
 ;;;; truth.lisp, on small relations; it does not recurse into itself.
 
 (in-package #:ames.algebra)
@@ -29,18 +30,12 @@
 (defparameter *largest-relation-for-radical-cases* 400
   "The largest relation (EXPRESSION-SIZE) DECIDE-BY-RADICAL-CASES works on.")
 
-(defun proven-strict-sign (bridge x)
-  "+1 when X > 0 is proven under the facts in force, -1 when X < 0 is, else NIL."
-  (cond ((numberp x) (and (/= x 0) (if (plusp x) 1 -1)))
-        ((holds-p bridge (list '> x 0)) 1)
-        ((holds-p bridge (list '< x 0)) -1)))
-
-(defun holds-under-p (bridge fact relation)
-  "True when RELATION is proven under the facts in force and FACT; also when FACT
-contradicts the facts in force (the case is vacuous)."
-  (handler-case (call-with-assumptions bridge (list fact) (lambda () (holds-p bridge relation)))
-    (inconsistent-assumptions () t)
-    (maxima-error () nil)))
+(defun cheap-strict-sign (bridge x)
+  "+1 or -1 when the rules of signs (with Maxima's sign() on the leaves:
+EXPRESSION-SIGNS) give X one strict sign, else NIL. Far cheaper than DECIDE."
+  (let ((signs (expression-signs (prover-for bridge) x)))
+    (cond ((equal signs '(:positive)) 1)
+          ((equal signs '(:negative)) -1))))
 
 (defun product-factors (expression)
   "EXPRESSION as a product: (values SIGN FACTORS), SIGN +1 or -1 from its numbers and
@@ -59,41 +54,54 @@ negations, FACTORS the rest (powers kept whole); NIL for a zero number."
     (values sign (nreverse factors))))
 
 (defun factor-sign-under (bridge factor fact)
-  "The strict sign (+1, -1) of FACTOR under the facts in force, or under them and FACT
-by FACT and a remainder of proven sign (fact-remainders.lisp); NIL when not proven. A
-power FACTOR^n counts as FACTOR n times."
+  "The strict sign (+1, -1) of FACTOR by the rules of signs, or under the facts in force
+and FACT by FACT and a remainder of proven sign (fact-remainders.lisp); NIL when not
+proven. A power FACTOR^n counts as FACTOR n times."
   (if (and (consp factor) (eq (expression-operator factor) 'expt) (integerp (third factor))
            (plusp (third factor)))
       (let ((base (factor-sign-under bridge (second factor) fact)))
         (and base (expt base (third factor))))
-      (or (proven-strict-sign bridge factor)
-          (and (goal-proven-by-one-fact-p bridge factor t (list fact)) 1)
-          (and (goal-proven-by-one-fact-p bridge `(- ,factor) t (list fact)) -1))))
+      (or (cheap-strict-sign bridge factor)
+          (and fact (goal-proven-by-one-fact-p bridge factor t (list fact)) 1)
+          (and fact (goal-proven-by-one-fact-p bridge `(- ,factor) t (list fact)) -1))))
 
-(defun positive-under-p (bridge gap fact)
-  "True when GAP > 0 is proven under the facts in force and FACT: GAP factored, each
-factor's strict sign proven (FACTOR-SIGN-UNDER), or else DECIDE under FACT."
-  (let ((factored (handler-case (simplify bridge gap :strategy :full)
+(defun factored-sign (bridge x fact)
+  "The strict sign of X from its factors' (FACTOR-SIGN-UNDER, FACT or NIL), or NIL."
+  (let ((factored (handler-case (simplify bridge x :strategy :full)
                     ((or maxima-error untranslatable-result) () nil))))
-    (or (and factored
-             (multiple-value-bind (sign factors) (product-factors factored)
-               (and sign
-                    (let ((signs (mapcar (lambda (f) (factor-sign-under bridge f fact)) factors)))
-                      (and (notany #'null signs)
-                           (= 1 (apply #'* sign signs)))))))
-        (holds-under-p bridge fact `(> ,gap 0)))))
+    (when factored
+      (multiple-value-bind (sign factors) (product-factors factored)
+        (when sign
+          (let ((signs (mapcar (lambda (f) (factor-sign-under bridge f fact)) factors)))
+            (and (notany #'null signs) (apply #'* sign signs))))))))
 
-(defun radical-numerator-sign (bridge a b radicand)
+(defun strict-of (signs)
+  "+1 or -1 for the sign sets (:POSITIVE) and (:NEGATIVE), else NIL."
+  (cond ((equal signs '(:positive)) 1)
+        ((equal signs '(:negative)) -1)))
+
+(defun radical-numerator-sign (bridge a b radicand part-signs)
   "The strict sign (+1 or -1) of a + b sqrt(A), A = RADICAND, found by cases on the sign
-of a (see this file's header), or NIL."
-  (let ((s (proven-strict-sign bridge b)))
-    (when (and s (holds-p bridge (list '> radicand 0)))
-      (let ((gap `(- (* (expt ,b 2) ,radicand) (expt ,a 2)))
-            ;; s a < 0: a against the side b sqrt(A) is on
-            (against (if (= s 1) `(< ,a 0) `(> ,a 0))))
-        (cond ((positive-under-p bridge gap against) s)
-              ((and (holds-p bridge against) (holds-p bridge `(< ,gap 0))) (- s))
-              (t nil))))))
+of a (see this file's header), or NIL. PART-SIGNS are sign() of a, b, b^2 A - a^2, A and
+the denominator (SQUARE-ROOT-PART-SIGNS, asked already by RADICAL-SIGNS). Only the
+radicand's sign is asked of DECIDE (its proof may need DECIDE's costlier strategies),
+last, where the rest is settled."
+  (destructuring-bind (a-signs b-signs gap-signs radicand-signs denominator-signs) part-signs
+    (declare (ignore denominator-signs))
+    (let ((s (strict-of b-signs)))
+      (when s
+        (let* ((gap `(- (* (expt ,b 2) ,radicand) (expt ,a 2)))
+               ;; s a < 0: a against the side b sqrt(A) is on
+               (against (if (= s 1) `(< ,a 0) `(> ,a 0)))
+               (a-sign (strict-of a-signs))
+               (sign (cond ((eql a-sign s) s)
+                           ((and (eql a-sign (- s)) (eql -1 (strict-of gap-signs))) (- s))
+                           ((eql a-sign (- s)) nil)
+                           ((eql 1 (factored-sign bridge gap against)) s))))
+          (and sign
+               (or (member radicand-signs '((:positive)) :test #'equal)
+                   (holds-p bridge (list '> radicand 0)))
+               sign))))))
 
 (defun decide-by-radical-cases (bridge relation)
   "RELATION (< <= > >=) whose sides differ by (a + b sqrt(A)) / c, decided from the
@@ -110,9 +118,15 @@ strict signs of the numerator (found by cases, RADICAL-NUMERATOR-SIGN) and of c;
               (handler-case (square-root-parts bridge (relation-lhs relation) (relation-rhs relation)
                                                :datum relation)
                 (maxima-error () nil))
-            (let* ((numerator-sign (and radicand (radical-numerator-sign bridge a b radicand)))
-                   (denominator-sign (and numerator-sign (proven-strict-sign bridge denominator))))
-              (if (null denominator-sign)
+            (declare (ignore denominator))
+            (let* ((part-signs (and radicand
+                                    (handler-case (square-root-part-signs bridge (relation-lhs relation)
+                                                                          (relation-rhs relation) :datum relation)
+                                      (maxima-error () nil))))
+                   (denominator-sign (and part-signs (strict-of (fifth part-signs))))
+                   (numerator-sign (and denominator-sign
+                                        (radical-numerator-sign bridge a b radicand part-signs))))
+              (if (null numerator-sign)
                   :unknown
                   (relation-verdict operator
                                     (if (plusp (* numerator-sign denominator-sign))
