@@ -13,7 +13,7 @@
 ;;;; c1 free of the motion, c1 a number) holds the body on the circle about (a, b) of radius
 ;;;; r = -c0/c1. The body is put on it at a rational point: with u the axis direction
 ;;;; nearest to the body's direction d from the centre and v = u turned a right angle,
-;;;; t = rationalized (d.v)/(|d| + d.u) (|t| <= tan(pi/8)), the point
+;;;; t = (d.v)/(|d| + d.u) as the simplest rational within 1e-12 (|t| <= tan(pi/8)), the point
 ;;;; (a, b) + r ((1 - t^2) u + 2 t v) / (1 + t^2) is exactly on the circle, within the
 ;;;; tolerance of where the integration left it (else the body stays put). Its velocity
 ;;;; loses its exact radial part, and where a fired event's condition is linear in that
@@ -74,7 +74,7 @@ the fixed bodies' positions put in from POSITIONS, reads c0 + c1 sqrt((x - a)^2 
          (z (ames.maxima:keyed-auxiliary-variable bridge (list :circle-kernel) "CIRCLE-ROOT"))
          (linear (ames.maxima:call-or-nil
                   (lambda () (ames.maxima:polynomial-coefficients-in
-                              bridge (substitute-expressions (list (cons kernel z)) held) z))))
+                              bridge (ames.algebra:substitute-subexpressions (list (cons kernel z)) held) z))))
          (radicand (second kernel)))
     (when (and (= 2 (length linear)) (numberp (second linear)) (/= 0 (second linear))
                (null (motion-terms (first linear))))
@@ -92,6 +92,22 @@ the fixed bodies' positions put in from POSITIONS, reads c0 + c1 sqrt((x - a)^2 
                         bridge radicand `(+ (expt (- ,x ,(first center)) 2) (expt (- ,y ,(second center)) 2))))
               (values body center radius))))))))
 
+(defparameter *circle-point-precision* 1d-12
+  "How near the rational half-angle tangent of a point put on a circle is to the double
+it stands for: the simplest rational within it keeps the point's numbers short.")
+
+(defun simplest-rational-within (x epsilon)
+  "The first convergent p/q of the continued fraction of the double X with |X - p/q| <=
+EPSILON (the exact rational of X at worst)."
+  (let ((exact (rational x)) (p0 0) (q0 1) (p1 1) (q1 0) (rest (rational x)))
+    (loop
+      (let* ((a (floor rest))
+             (p2 (+ (* a p1) p0)) (q2 (+ (* a q1) q0)))
+        (setf p0 p1 q0 q1 p1 p2 q1 q2)
+        (when (or (<= (abs (- exact (/ p1 q1))) epsilon) (= rest a))
+          (return (/ p1 q1)))
+        (setf rest (/ 1 (- rest a)))))))
+
 (defun rational-unit-toward (dx dy)
   "A unit vector with rational components near the direction (DX DY) (doubles, not both
 zero): the rational point of the file header, as a list (UX UY)."
@@ -101,7 +117,8 @@ zero): the rational point of the file header, as a list (UX UY)."
          (v (list (- (second u)) (first u)))
          (along (+ (* dx (first u)) (* dy (second u))))
          (across (+ (* dx (first v)) (* dy (second v))))
-         (tt (rationalize (/ across (+ (sqrt (+ (* dx dx) (* dy dy))) along))))
+         (tt (simplest-rational-within (/ across (+ (sqrt (+ (* dx dx) (* dy dy))) along))
+                                       *circle-point-precision*))
          (scale (/ 1 (+ 1 (* tt tt)))))
     (list (* scale (+ (* (- 1 (* tt tt)) (first u)) (* 2 tt (first v))))
           (* scale (+ (* (- 1 (* tt tt)) (second u)) (* 2 tt (second v)))))))
