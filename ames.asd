@@ -399,6 +399,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "tipping-criterion")
                (:file "fact-remainders")
                (:file "atan-orders")
+               (:file "rope-pendulum")
                (:file "zero-folding")
                (:file "fork-pruning")
                (:file "approximate-starts")
