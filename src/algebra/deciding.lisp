@@ -125,7 +125,8 @@ finds it."
   "The truth of RELATION, whose sides are LHS and RHS, that is() did not decide: by the
 opposite relation, the signs of the difference of its sides (after clearing a square
 root), equivalence (for = and /=, unless HOLDS, a point where the sides differ, was
-seen), what a physicist knows, the order substitution, two bounds combined
+seen), what a physicist knows, one square root by cases on the sign beside it
+(radical-cases.lisp), the order substitution, two bounds combined
 (combined-bounds.lisp) and concavity between two bounds (convex-bounds.lisp); :UNKNOWN when none decides it."
   (let* ((operator (expression-operator relation))
          (equation (member operator '(= /=)))
@@ -154,6 +155,8 @@ seen), what a physicist knows, the order substitution, two bounds combined
         (setf verdict (if (eq operator '=) :true :false)))
       (when (eq verdict :unknown)
         (setf verdict (decide-by-reasoning bridge relation)))
+      (when (eq verdict :unknown)
+        (setf verdict (decide-by-radical-cases bridge relation)))
       (when (eq verdict :unknown)
         (setf verdict (decide-by-order-substitution bridge relation)))
       (when (eq verdict :unknown)

@@ -19,7 +19,11 @@
 ;;;;   8. polar angles: atan2(y, x) with y of known sign written pi/2 - atan(x/y) or
 ;;;;      -pi/2 - atan(x/y) (inverse-angles.lisp);
 ;;;;   9. half angles: sin, cos and tan of a plain angle written in t = tan(x/2)
-;;;;      (half-angles.lisp).
+;;;;      (half-angles.lisp);
+;;;;  (4b, after monotonicity) an inverse tangent against an angle of multiples of pi and
+;;;;      inverse tangents, compared through tan (atan-orders.lisp);
+;;;;  (0, first) a relation linear in sin and cos of 2 atan(u) multiplied by 1 + u^2, an
+;;;;      equivalent algebraic relation decided in its place (atan-orders.lisp).
 ;;;; Every step is an equivalence or a sound relaxation, so a :TRUE or :FALSE it finds is
 ;;;; proven; a step that cannot apply answers :UNKNOWN. Steps ask DECIDE about smaller or
 ;;;; rewritten relations; DECIDE stops a question that is already under way, and
@@ -291,8 +295,8 @@ by its CDR."
           (t expression))))
 
 (defparameter *reasoning-steps*
-  '(decide-by-quarter-turns decide-by-signed-parts decide-by-common-factors
-    decide-by-monotonicity decide-by-squares decide-by-angle-substitution
+  '(decide-by-half-angle-tangent decide-by-quarter-turns decide-by-signed-parts decide-by-common-factors
+    decide-by-monotonicity decide-by-atan-order decide-by-squares decide-by-angle-substitution
     decide-by-inverse-angle-expansion decide-by-polar-angles decide-by-half-angles
     decide-by-one-angle-cells)
   "The steps of DECIDE-BY-REASONING, in the order they are tried.")

@@ -9,7 +9,8 @@
 ;;;;     curve) are compared with the integration at several times, the final positions
 ;;;;     and velocities at the end (relative 1e-8, with an absolute floor near zero: 1e-11
 ;;;;     of the largest such value in the state; for the velocities of a state at rest to
-;;;;     double precision, of the largest position over the span: COMPARISON-SCALE);
+;;;;     double precision, of the largest position over the span; for a state integrated
+;;;;     numerically, at least its integrator's error per step: COMPARISON-SCALE);
 ;;;;   - every termination condition's event function is evaluated on the grid: none may
 ;;;;     fire before the claimed end, and one that names the claimed end event must fire
 ;;;;     at the claimed time;
@@ -111,19 +112,25 @@ NIL (and a reason) when its start has no value."
   "A state whose velocities, over its whole span, move no body by more than this part of
 its coordinates is at rest to double precision: its velocities are round-off.")
 
-(defun comparison-scale (setup samples what)
+(defun comparison-scale (setup samples what &optional state)
   "The absolute floor near zero of the comparison of positions or velocities (WHAT):
 1e-3 of the largest such value. When the state is at rest to double precision (see
 *REST-ROUND-OFF*: the start values of an equilibrium, rounded to doubles, drift by
 round-off), a velocity's floor is the largest position over the span: a velocity below
-it moves no body beyond the tolerance of the positions."
+it moves no body beyond the tolerance of the positions. A STATE integrated numerically
+(no closed form) claims its values only to its integrator's absolute error per step,
+*NUMERIC-TOLERANCE* times (1 + the largest value): a value that crosses zero there (a
+velocity at a turning point) is compared with at least that floor."
   (let ((scale (motion-scale setup samples what))
         (span (- (car (car (last samples))) (car (first samples)))))
     (when (and (eq what :velocity) (plusp span))
       (let ((positions (motion-scale setup samples :position)))
         (when (< (* scale span) (* *rest-round-off* positions))
           (setf scale (/ positions span)))))
-    (* 1d-3 (max 1d-9 scale))))
+    (max (* 1d-3 (max 1d-9 scale))
+         (if (and state (state-numeric-trajectory state))
+             (/ (* *numeric-tolerance* (+ 1 scale)) *relative-tolerance*)
+             0d0))))
 
 (defun closed-motion (setup body motion)
   "BODY's reported MOTION (position or velocity) as two expressions the setup can
@@ -154,7 +161,7 @@ grid SAMPLES: for each body and coordinate, the worst time."
   (let ((failures '()) (stride (max 1 (floor (1- (length samples)) *comparison-points*))))
     (loop for (what reported) in (list (list :position (state-positions state))
                                        (list :velocity (state-velocities state)))
-          for scale = (comparison-scale setup samples what)
+          for scale = (comparison-scale setup samples what state)
           do (loop for (body) in (getf (setup-model setup) :bodies)
                    for closed = (closed-motion setup body (body-entry reported body))
                    when closed
@@ -214,7 +221,7 @@ of SAMPLES."
   (let ((failures '()) (end (car (car (last samples)))) (y (cdr (car (last samples)))))
     (loop for (what finals) in (list (list :position (state-final-positions state))
                                      (list :velocity (state-final-velocities state)))
-          for scale = (comparison-scale setup samples what)
+          for scale = (comparison-scale setup samples what state)
           do (loop for (body) in (getf (setup-model setup) :bodies)
                    for final = (body-entry finals body)
                    when final

@@ -43,6 +43,8 @@ function, so the engine never talks to Maxima itself.")
    #:choice-point #:choice-point-p #:choice-point-instance #:choice-point-kind
    #:choice-point-options #:choice-point-current #:choice-point-relations
    #:model-choice-points #:choice-change #:stale-activation-changes #:stale-mode-changes
+   ;; the equalities the current modes hold (held-entries.lisp)
+   #:held-entry-equations
    ;; transitions and the incremental check
    #:apply-transition #:transition-report #:transition-report-changes
    #:transition-report-rederived #:transition-report-rederived-count

@@ -31,7 +31,7 @@ layer above, AMES.ALGEBRA: it asks through the exported operations only.")
    ;; the questions the deciding algebra asks (questions.lisp)
    #:maxima-is #:maxima-is-opposite #:maxima-signs #:maxima-difference-signs
    #:prefetch-opposite-and-signs #:prefetch-requests #:*prefetch-signs* #:fact-sign-requests
-   #:maxima-fact-signs #:square-root-part-signs #:ratsimp-with-sines #:cached-answer #:cache-answer #:assumption-key
+   #:maxima-fact-signs #:square-root-part-signs #:square-root-parts #:ratsimp-with-sines #:cached-answer #:cache-answer #:assumption-key
    #:weaker-assumption-keys
    ;; the requests of the earliest-root search, over opaque root forms (root-forms.lisp)
    #:offset-polynomial #:square-free-polynomial #:numeric-root-form-p #:complex-root-form-p #:root-form-signs #:root-form-imaginary-part

@@ -227,6 +227,22 @@ in maxima-server-functions.lisp), then their signs."
                                  (mform +mexpt+ a 2))))
           (forms-signs bridge (list a b gap radicand denominator) :datum datum))))))
 
+(defun square-root-parts (bridge lhs rhs &key datum)
+  "LHS - RHS (prefix) written as (a + b sqrt(A)) / c, as SQUARE-ROOT-PART-SIGNS finds it
+(one square root in the numerator, which is linear in it): (values a b A c), prefix. NIL
+when no square root is there or the numerator is not linear in it, or a part leaves the
+algebra. One round trip."
+  (let ((parts (mlist-items (maxima-request bridge (mcall "$AMES_SQUARE_ROOT_PARTS"
+                                                          (mdifference (to-mx bridge lhs)
+                                                                       (to-mx bridge rhs)))
+                                            :datum datum))))
+    (when (= (length parts) 5)
+      (destructuring-bind (numerator denominator kernel a b) parts
+        (declare (ignore numerator))
+        (handler-case (values (from-mx bridge a) (from-mx bridge b)
+                              (from-mx bridge (second kernel)) (from-mx bridge denominator))
+          (untranslatable-result () nil))))))
+
 ;;; The cache of verdicts
 
 (defun cached-answer (bridge key &key (count t))

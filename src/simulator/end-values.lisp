@@ -8,18 +8,21 @@
   "Every body's position (WHAT :POS) or velocity (:VEL) when the state ends at FIRED. A
 numerically integrated body's end position is put exactly on the contacts FIRED reaches
 (SNAP-ONTO-CONTACTS: the event's bisection leaves it a round-off, 1e-18, through the
-face, and the next state would not find the contact), and a rotating body's corners on the
+face, and the next state would not find the contact), a body held on a circle exactly on
+it, moving along it (SNAP-ONTO-HELD-CIRCLES), and a rotating body's corners on the
 faces they touch, and its velocity along them (SNAP-CORNERS-ONTO-FACES and
 SNAP-CORNER-VELOCITIES)."
   (let ((values (unsnapped-final-values run groups fired what)))
     (cond ((notany (lambda (group) (eq (group-kind group) :numeric)) groups) values)
           ((eq what :pos)
-           (let ((values (snap-onto-contacts run values fired))) ; numeric-roots.lisp
+           (let ((values (snap-onto-held-circles ; circle-snapping.lisp
+                          run (snap-onto-contacts run values fired)))) ; numeric-roots.lisp
              (if (run-rotations run)
                  (snap-corners-onto-faces run values ; corner-snapping.lisp
                                           (rotation-final-values run groups fired 'ames.kb:angle) fired)
                  values)))
-          ((null (run-rotations run)) values)
+          ((null (run-rotations run))
+           (snap-velocities-onto-held-circles run values (final-values run groups fired :pos)))
           (t (snap-corner-velocities run values (final-values run groups fired :pos)
                                      (rotation-final-values run groups fired 'ames.kb:angle)
                                      (rotation-final-values run groups fired 'ames.kb:angvel) fired)))))

@@ -22,6 +22,7 @@ knowledge base's (package AMES.KB).")
    ;; a state's notes, one slot each (history.lisp)
    #:state-numbers #:state-accumulation #:state-impact #:state-end-arc-length
    #:state-numeric-trajectory #:state-simultaneous-events #:state-periodic
+   #:*numeric-tolerance* ; the numeric integrator's error per step, for the self-check's floors
    #:state-undecided-detail #:state-path-coordinates #:state-line-coordinates
    #:state-missing-fact #:state-fork-p #:state-reported-sections #:state-contact-points
    ;; rotating bodies (rotation.lisp)
