@@ -234,6 +234,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "angle-intervals")
                  (:file "corner-snapping")
                  (:file "flat-corner-snapping")
+                 (:file "flush-corner-snapping")
                  (:file "approximate-starts")
                  (:file "pending-candidates")
                  (:file "end-values")

@@ -284,10 +284,4 @@ an impact; NIL for another condition, or a meeting at no clear speed (a contact)
                  (let ((rate (/ (- g1 g0) (* 2 epsilon))))
                    (and (< rate -1d-6) (rational-of rate)))))))
       (cond ((gap-relation-contact relation) (approach))
-            ((and (guarded-relation-parts relation) (approach))
-             ;; a corner reached at a clear speed (guarded-meetings.lisp): its impact, from
-             ;; positions rounded off the corners held through the state (they are not put
-             ;; back onto their faces as a shape contact is), would be guessed: refused
-             (error 'unsupported-situation
-                    :datum (condition-event condition nil)
-                    :detail "A corner is reached at a speed at the end of a state integrated numerically; its impact from the numbers' positions is not modelled yet."))))))
+            ((guarded-relation-parts relation) (approach))))))
