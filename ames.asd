@@ -240,6 +240,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "end-values")
                  (:file "states")
                  (:file "impacts")
+                 (:file "held-contacts")
                  (:file "simulate")
                  (:file "state-numbers")
                  (:file "branching")

@@ -43,6 +43,7 @@ function, so the engine never talks to Maxima itself.")
    #:choice-point #:choice-point-p #:choice-point-instance #:choice-point-kind
    #:choice-point-options #:choice-point-current #:choice-point-relations
    #:model-choice-points #:choice-change #:stale-activation-changes #:stale-mode-changes
+   #:unsettled-active-instances
    ;; transitions and the incremental check
    #:apply-transition #:transition-report #:transition-report-changes
    #:transition-report-rederived #:transition-report-rederived-count
