@@ -391,6 +391,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "rotation-corners")
                (:file "hinged-swing")
                (:file "rocking-block")
+               (:file "corner-strikes")
                (:file "rotating-impacts")
                (:file "tipping")
                (:file "ledge-impacts")
