@@ -284,4 +284,8 @@ an impact; NIL for another condition, or a meeting at no clear speed (a contact)
                  (let ((rate (/ (- g1 g0) (* 2 epsilon))))
                    (and (< rate -1d-6) (rational-of rate)))))))
       (cond ((gap-relation-contact relation) (approach))
+            ;; a corner reached at a clear speed (guarded-meetings.lisp): its impact is
+            ;; resolved from the state's end put back exactly on the contacts held through
+            ;; it (corner-snapping.lisp and its neighbours), or refused where one is not
+            ;; (held-contacts.lisp)
             ((guarded-relation-parts relation) (approach))))))
