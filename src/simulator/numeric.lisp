@@ -264,8 +264,31 @@ records each numeric group's end state and samples."
       (let ((condition (nth index owners)))
         (if condition
             (let ((rate (numeric-approach-rate (nth index events) rates state time condition)))
+              (when (and rate (corner-at-face-end-p run solved groups terms condition state time))
+                (error 'unsupported-situation
+                       :datum (condition-event condition nil)
+                       :detail "A corner is reached at a speed at the end of a state integrated numerically exactly at an end of the face (where the face beyond that end may take it over); its impact there is not modelled yet."))
               (list (make-candidate condition (condition-event condition rate) time :rate rate)))
             '())))))
+
+(defun corner-at-face-end-p (run solved groups terms condition state time)
+  "True when CONDITION is a corner's guarded meeting (guarded-meetings.lisp) whose place
+along the face is, in STATE at TIME, within round-off (1e-9) of one of the face's ends:
+a corner reaching a face at its very end, where the neighbouring face may hold it."
+  (let ((meeting (and (guarded-relation-parts (ames.engine:termination-condition-relation condition))
+                      (relation-meeting run solved (ames.engine:termination-condition-relation condition))))
+        (symbols (append (mapcar #'state-symbol terms) (list 'tau)))
+        (vector (concatenate 'simple-vector state (vector time))))
+    (and meeting
+         (loop for r in (ames.geometry:meeting-extent meeting)
+               thereis (and (not (eq (first r) 'or))
+                            (let ((value (safe-value (numeric-function
+                                                   (numeric-expression run groups
+                                                                       (over-state-terms run solved (extent-margin r))
+                                                                       terms)
+                                                   symbols)
+                                                  vector)))
+                              (and value (<= (abs value) 1d-9))))))))
 
 (defun numeric-approach-rate (event rates state time condition)
   "The rate (exact, from the double) at which the contact of CONDITION, whose event
