@@ -154,7 +154,7 @@ and nothing that fails at an admissible point."
 ;;; off 0 by the integration's round-off, is moved to 0 exactly and its centre to the
 ;;; height k/2 = 1, where both bottom corners are on the floor. An angle further off than
 ;;; the tolerance, or one corner only near the floor, is left as it is. (The run itself
-;;; still stops where that corner strikes the floor at a speed: src/simulator/numeric.lisp.)
+;;; goes on past that corner's strike: t/corner-strikes.lisp.)
 
 (defparameter *frictionless-rocking-block*
   "(scenario frictionless-rocking-block

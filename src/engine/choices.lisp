@@ -120,6 +120,22 @@ choice is the caller's to settle)."
                   ((and (eq verdict :true) (not (instance-active-p instance)))
                    (push (list :activate (instance-key instance)) changes)))))))))
 
+(defun unsettled-active-instances (model &key (decider (model-decider model)))
+  "The keys of the active, qualified instances whose activation DECIDER now answers :FALSE
+or :UNKNOWN: a contact held through a state that, where that state ends, is no longer
+shown to touch (its gap off zero by a round-off, or undecided)."
+  (loop for instance in (model-instances model)
+        for templates = (component-activation-relations (instance-component instance))
+        when (and templates (instance-activation-node instance) (instance-qualified-p instance)
+                  (instance-active-p instance)
+                  (member (conjunction-answer model
+                                              (mapcar (lambda (template)
+                                                        (expanded-relation model instance template))
+                                                      templates)
+                                              (make-hash-table :test #'equal) decider)
+                          '(:false :unknown)))
+          collect (instance-key instance)))
+
 (defun stale-mode-changes (model &key (decider (model-decider model)))
   "The changes that move every active instance whose current mode's entry conditions
 DECIDER now answers :FALSE into the first mode whose entry conditions it answers :TRUE

@@ -45,6 +45,7 @@ function, so the engine never talks to Maxima itself.")
    #:model-choice-points #:choice-change #:stale-activation-changes #:stale-mode-changes
    ;; the equalities the current modes hold (held-entries.lisp)
    #:held-entry-equations
+   #:unsettled-active-instances
    ;; transitions and the incremental check
    #:apply-transition #:transition-report #:transition-report-changes
    #:transition-report-rederived #:transition-report-rederived-count

@@ -65,8 +65,9 @@ is identically 0."
 (defun flat-corner-angle (run body theta position fired)
   "The angle theta* that puts two of BODY's corners near one face (within the tolerance,
 at POSITION and THETA) exactly flat on it (see the file header), or NIL when there are
-no such two corners, or theta* is further from THETA than the tolerance. Second value:
-D'(theta*), the rate of the two gaps' difference per unit angle (a double)."
+no such two corners, or theta* is further from THETA than the tolerance; a body's face
+flush with a fixed face, a corner of each on the other's, likewise (FLUSH-CORNER-ANGLE).
+Second value: D'(theta*), the rate of the two gaps' difference per unit angle (a double)."
   (multiple-value-bind (conditions tolerance gaps)
       (corner-snap-conditions run body theta position (leaving-contacts fired))
     (declare (ignore conditions tolerance))
@@ -83,7 +84,8 @@ D'(theta*), the rate of the two gaps' difference per unit angle (a double)."
                                                       (ames.geometry:differentiate difference 'snap-angle)))))
                          (when (and slope (/= slope 0d0))
                            (return-from flat-corner-angle (values angle slope))))))))))
-    nil))
+    ;; a corner of each body on the other's face: flush-corner-snapping.lisp
+    (flush-corner-angle run body theta position gaps)))
 
 (defun snap-flat-rotation (run group body head value fired)
   "VALUE, BODY's angle (HEAD ANGLE) or angular velocity (ANGVEL) at the end of its

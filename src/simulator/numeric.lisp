@@ -264,8 +264,31 @@ records each numeric group's end state and samples."
       (let ((condition (nth index owners)))
         (if condition
             (let ((rate (numeric-approach-rate (nth index events) rates state time condition)))
+              (when (and rate (corner-at-face-end-p run solved groups terms condition state time))
+                (error 'unsupported-situation
+                       :datum (condition-event condition nil)
+                       :detail "A corner is reached at a speed at the end of a state integrated numerically exactly at an end of the face (where the face beyond that end may take it over); its impact there is not modelled yet."))
               (list (make-candidate condition (condition-event condition rate) time :rate rate)))
             '())))))
+
+(defun corner-at-face-end-p (run solved groups terms condition state time)
+  "True when CONDITION is a corner's guarded meeting (guarded-meetings.lisp) whose place
+along the face is, in STATE at TIME, within round-off (1e-9) of one of the face's ends:
+a corner reaching a face at its very end, where the neighbouring face may hold it."
+  (let ((meeting (and (guarded-relation-parts (ames.engine:termination-condition-relation condition))
+                      (relation-meeting run solved (ames.engine:termination-condition-relation condition))))
+        (symbols (append (mapcar #'state-symbol terms) (list 'tau)))
+        (vector (concatenate 'simple-vector state (vector time))))
+    (and meeting
+         (loop for r in (ames.geometry:meeting-extent meeting)
+               thereis (and (not (eq (first r) 'or))
+                            (let ((value (safe-value (numeric-function
+                                                   (numeric-expression run groups
+                                                                       (over-state-terms run solved (extent-margin r))
+                                                                       terms)
+                                                   symbols)
+                                                  vector)))
+                              (and value (<= (abs value) 1d-9))))))))
 
 (defun numeric-approach-rate (event rates state time condition)
   "The rate (exact, from the double) at which the contact of CONDITION, whose event
@@ -284,10 +307,8 @@ an impact; NIL for another condition, or a meeting at no clear speed (a contact)
                  (let ((rate (/ (- g1 g0) (* 2 epsilon))))
                    (and (< rate -1d-6) (rational-of rate)))))))
       (cond ((gap-relation-contact relation) (approach))
-            ((and (guarded-relation-parts relation) (approach))
-             ;; a corner reached at a clear speed (guarded-meetings.lisp): its impact, from
-             ;; positions rounded off the corners held through the state (they are not put
-             ;; back onto their faces as a shape contact is), would be guessed: refused
-             (error 'unsupported-situation
-                    :datum (condition-event condition nil)
-                    :detail "A corner is reached at a speed at the end of a state integrated numerically; its impact from the numbers' positions is not modelled yet."))))))
+            ;; a corner reached at a clear speed (guarded-meetings.lisp): its impact is
+            ;; resolved from the state's end put back exactly on the contacts held through
+            ;; it (corner-snapping.lisp and its neighbours), or refused where one is not
+            ;; (held-contacts.lisp)
+            ((guarded-relation-parts relation) (approach))))))

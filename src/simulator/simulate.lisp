@@ -71,6 +71,7 @@ CHECK-INCREMENTAL."
                                (mapcar #'candidate-change (set-difference fired impulsive))
                                :test #'equal))))
     (when impulsive
+      (check-held-contacts-at-impact run state fired) ; held-contacts.lisp
       (multiple-value-bind (after impact) (resolve-impact run impulsive)
         (setf (run-velocities run) after
               (run-rotations run) (impact-rotations run impact)
