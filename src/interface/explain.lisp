@@ -40,11 +40,19 @@ people (\"rope, piece 1\"): AMES.KB:ENTITY-PHRASES-OF."
   (ames.kb:entity-phrases-of scenario))
 
 (defun entity-text (x)
-  "A body, contact, segment or other name in an explanation, without package or colon."
+  "A body, contact, segment or other name in an explanation, without package or colon; a
+list (an instance's key) with the entities in it by their phrases."
   (cond ((and (symbolp x) (assoc x *contact-names*)) (format nil "[~A]" (cdr (assoc x *contact-names*))))
         ((keywordp x) (string-downcase (substitute #\Space #\- (symbol-name x))))
         ((symbolp x) (string-downcase (symbol-name x)))
+        ((consp x) (format nil "(~{~A~^ ~})" (mapcar #'entity-text x)))
         (t (string-downcase (princ-to-string x)))))
+
+(defun mentions-entity-p (x)
+  "True when X holds, at any depth, an entity named in *CONTACT-NAMES*."
+  (if (consp x)
+      (some #'mentions-entity-p x)
+      (and (symbolp x) (assoc x *contact-names*) t)))
 
 (defparameter *term-words* '(("PATH-POSITION" . "s") ("ARC-LENGTH" . "s"))
   "Quantity terms an explanation writes by the letter the reports use: the arc length
@@ -70,7 +78,7 @@ acc_x(particle), a contact entity by its bodies."
 anything else as written, lower case."
   (let ((*package* (find-package '#:ames-scenario)) (*print-case* :downcase))
     (cond ((and (consp x) (keywordp (first x)) *explain-presenter*
-                (notany (lambda (item) (assoc item *contact-names*)) (rest x)))
+                (not (mentions-entity-p (rest x))))
            (ames.report:event-text *explain-presenter* x *explained-state*))
           ((and (consp x) (keywordp (first x)))
            (format nil "~(~A~)~{ ~A~}" (keyword-words (first x))

@@ -245,7 +245,7 @@ dead); without one the body must not pass through the pulley."
   (:arguments (?segment :entity rope-segment
                         :where (:reached rope-piece-closing :from (?body1 ?_) :to (?body2 ?_))))
   (:activation (approaching-after ?segment)
-               (:event (:pulley-stop ?body1 ?body2)))
+               (:event (:impulse ?body1 ?body2)))
   (:deactivation (:when (< (stop-impulse ?segment) 0) :event (:would-pull ?body1 ?body2)))
   ;; paired by their own :contact key (the rope's pulls along the piece have theirs)
   (:assert (impulse (pulley-stop ?segment ?body2) :from ?body1 :on ?body2 :contact (stop ?segment))

@@ -320,10 +320,10 @@ sign is no closing."
   (:activation (:believes (taut ?rope)))
   (:mode :apart
    (:entry (>= (line-span-length ?a ?b ?opening) 0))
-   (:transition :to :closed :when (< (line-span-length ?a ?b ?opening) 0)
+   (:transition :to :closed-up :when (< (line-span-length ?a ?b ?opening) 0)
                 :event (:rope-piece-closes ?rope ?body1 ?body2)
                 :impact (:strikes-pulley ?body1 ?body2)))
   ;; never at a state's start: the length along the line starts at |d0| >= 0
-  (:mode :closed
+  (:mode :closed-up
    (:entry (< (line-span-length ?a ?b ?opening) 0))
    (:equations (= (rope-piece-caught ?segment) 0))))
