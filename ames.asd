@@ -250,6 +250,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "held-contacts")
                  (:file "simulate")
                  (:file "state-numbers")
+                 (:file "fork-boundaries")
                  (:file "branching")
                  (:file "rootless-ends")
                  (:file "quantities")
