@@ -1,4 +1,9 @@
 ;;;; refused-incline-pulley-piece-closes.lisp -- a refusal make crosscheck finds in the
+;;;; Now modelled (2026-11-26, seventh landing): AMES ends state 0 with (:strikes-pulley
+;;;; incline weight), stops the weight dead at the pulley (e = 0), jerks the rope, and holds
+;;;; both bodies at rest for ever (src/kb/closed-rope-pieces.lisp); the witness models the
+;;;; closing too, and `bin/ames check` agrees. The name and the notes below are the record
+;;;; of the refusal it was (t/witness-ropes.lisp reads this file).
 ;;;; incline-pulley family (seed 31: 13 of 40 alike, #1 here; the other two refusals of that
 ;;;; run were the self-check's integrator crawling, fixed: src/check/integrate.lisp).
 ;;;; A particle (m1 = 5/2) on a 3-4-5 incline (sin a = 4/5) pulls a weight (m2 = 7/4)

@@ -1,0 +1,48 @@
+;;;; witness-failed-rough-floor-2029-725 -- a disagreement found by the witness (make crosscheck).
+;;;; verdict: witness-failed
+;;;; reason: the witness's server gave no answer within 120 s
+;;;; Run: bin/ames check witness/disagreements/witness-failed-rough-floor-2029-725.lisp --numeric
+
+(scenario rough-floor-725 "A block slides on a rough floor." (gravity 12) (restitution 1/2)
+ (body floor :fixed t :shape (half-plane (1 0) (0 0)))
+ (body block :mass 1 :position (0 0) :velocity (15/4 0) :shape (polygon (0 0) (1 0) (1 1) (0 1)))
+ (friction block floor :static 3/20) (simulate :states 3))
+
+
+;; AMES's answer:
+;;   (:SCENARIO AMES-SCENARIO::ROUGH-FLOOR-725 :STATES
+;;    ((:INDEX 0 :START 0 :DURATION 25/12 :CONTACTS
+;;      ((AMES-SCENARIO::BLOCK AMES-SCENARIO::FLOOR :FEATURE (:EDGE 0 :OF AMES-SCENARIO::FLOOR)
+;;        :OBSERVER-FEATURE (:EDGE 0 :OF AMES-SCENARIO::BLOCK)))
+;;      :ACCELERATIONS ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BLOCK (-9/5 0))) :FORCES
+;;      ((:FRICTION AMES-SCENARIO::BLOCK AMES-SCENARIO::FLOOR 9/5 :MODE :SLIDING)
+;;       (:GRAVITY AMES-SCENARIO::BLOCK (0 -12)) (:NORMAL AMES-SCENARIO::BLOCK AMES-SCENARIO::FLOOR 12))
+;;      :POSITIONS
+;;      ((AMES-SCENARIO::FLOOR (0 0))
+;;       (AMES-SCENARIO::BLOCK ((- (/ (* 3 AMES.BASE:TAU (- (* 6 AMES.BASE:TAU) 25)) 20)) 0)))
+;;      :VELOCITIES
+;;      ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BLOCK ((- (/ (- (* 36 AMES.BASE:TAU) 75) 20)) 0)))
+;;      :INITIAL-VELOCITIES ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BLOCK (15/4 0))) :END-EVENT
+;;      (:STOPS-SLIDING AMES-SCENARIO::BLOCK AMES-SCENARIO::FLOOR) :FINAL-POSITIONS
+;;      ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BLOCK (125/32 0))) :FINAL-VELOCITIES
+;;      ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BLOCK (0 0))) :ENERGY
+;;      ((:KINETIC AMES-SCENARIO::BLOCK (/ (* 9 (EXPT (- (* 12 AMES.BASE:TAU) 25) 2)) 800))
+;;       (:POTENTIAL (:GRAVITY AMES-SCENARIO::BLOCK) 0))
+;;      :MOMENTUM ((:MOMENTUM AMES-SCENARIO::BLOCK ((- (/ (- (* 36 AMES.BASE:TAU) 75) 20)) 0))))
+;;     (:INDEX 1 :START 25/12 :DURATION :FOREVER :CONTACTS
+;;      ((AMES-SCENARIO::BLOCK AMES-SCENARIO::FLOOR :FEATURE (:EDGE 0 :OF AMES-SCENARIO::FLOOR)
+;;        :OBSERVER-FEATURE (:EDGE 0 :OF AMES-SCENARIO::BLOCK)))
+;;      :ACCELERATIONS ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BLOCK (0 0))) :FORCES
+;;      ((:FRICTION AMES-SCENARIO::BLOCK AMES-SCENARIO::FLOOR 0 :MODE :STATIC)
+;;       (:GRAVITY AMES-SCENARIO::BLOCK (0 -12)) (:NORMAL AMES-SCENARIO::BLOCK AMES-SCENARIO::FLOOR 12))
+;;      :POSITIONS ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BLOCK (125/32 0))) :VELOCITIES
+;;      ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BLOCK (0 0))) :INITIAL-VELOCITIES
+;;      ((AMES-SCENARIO::FLOOR (0 0)) (AMES-SCENARIO::BLOCK (0 0))) :END-EVENT :NONE :FINAL-POSITIONS
+;;      NIL :FINAL-VELOCITIES NIL :ENERGY
+;;      ((:KINETIC AMES-SCENARIO::BLOCK 0) (:POTENTIAL (:GRAVITY AMES-SCENARIO::BLOCK) 0)) :MOMENTUM
+;;      ((:MOMENTUM AMES-SCENARIO::BLOCK (0 0)))))
+;;    :OUTCOME :COMPLETE :ANSWERS NIL :SELF-CHECK
+;;    (:CHECKED (0 1) :UNCHECKED NIL :NUMBERS (0 0) :EQUATIONS (56 56) :FAILURES NIL))
+
+;; witness's answer:
+;;   (:STATUS :ERROR :MESSAGE "the witness's server gave no answer within 120 s")
