@@ -23,17 +23,10 @@ its impact, the contacts it leaves, a face put flush with a face.")
 (in-suite corner-strikes)
 
 (defparameter *rocking-block-two-strikes*
-  "(scenario frictionless-rocking-block
-     \"The rocking block of scenarios/block-rocking-on-an-edge.lisp on a frictionless floor.\"
-     (gravity 981/100)
-     (body floor :fixed t :shape (half-plane (1 0) (0 0)))
-     (body block :mass 1 :inertia :uniform :position (0 1)
-                 :velocity ((sqrt 11772/10000) (/ (sqrt 11772/10000) 2))
-                 :angular-velocity (- (sqrt 11772/10000))
-                 :shape (polygon (-1/2 -1) (1/2 -1) (1/2 1) (-1/2 1)))
-     (simulate :states 2))"
-  "The rocking block set turning about its right edge on a frictionless floor, for two
-states: back onto its face, then on its left edge.")
+  (cl-ppcre:regex-replace "\\(simulate :states 1\\)" *frictionless-rocking-block*
+                          "(simulate :states 2)")
+  "The rocking block of t/rocking-block.lisp set turning about its right edge on a
+frictionless floor, for two states: back onto its face, then on its left edge.")
 
 (defun normal-force-count (state)
   "How many normal forces act in STATE (each held corner gives one)."
