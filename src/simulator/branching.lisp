@@ -23,6 +23,11 @@
 
 (in-package #:ames.simulator)
 
+(defvar *unfinished-branch* nil
+  "NIL, or a cell bound by GROW-BRANCH: CONTINUE-BRANCH sets its car to the branch's
+SIMULATION-HISTORY (its finished states, their numbers added) when a refusal stops the
+branch, before the condition unwinds.")
+
 (defparameter *branch-limit* 24
   "The most branches one run's tree may hold (the whole tree's, each simulated: a fork
 is refused when its branches could take the tree past it).")
@@ -249,7 +254,9 @@ starts under the values (see NUMERIC-CLOCK); its states from the fork on, as (:A
   (let* ((facts (append (getf *branching* :extra-facts) (getf alternative :facts)))
          (failure nil)
          (outcome :failed)
-         (history (let ((*branching* (list* :extra-facts facts *branching*)))
+         (unfinished (list nil))
+         (history (let ((*branching* (list* :extra-facts facts *branching*))
+                        (*unfinished-branch* unfinished))
                     (handler-case
                         ;; the values satisfy the selected branch's fact only: in the
                         ;; others they would settle facts against the branch's own
@@ -282,7 +289,8 @@ starts under the values (see NUMERIC-CLOCK); its states from the fork on, as (:A
                         ;; parameter substituted at a boundary, cannot be checked) does not
                         ;; lose the others
                         (setf failure (failure-text condition))
-                        nil))))
+                        ;; the states it finished before a refusal (KEEP-UNFINISHED-BRANCH)
+                        (first unfinished)))))
          (states (and history
                       (remove-if (lambda (state) (< (state-index state) index))
                                  (history-states history)))))

@@ -48,11 +48,25 @@ from the start prints), or NIL."
       (let ((duration (numeric-duration bridge state values)))
         (setf clock (and clock (realp duration) (+ clock duration)))))))
 
+;;; A branch that the knowledge base stops (a state it has no model for: UNMODELLED-SITUATION,
+;;; UNSUPPORTED-SITUATION) keeps the states it finished before: what a physicist reads is how
+;;; far the motion is known (the lighter mass of an Atwood machine rising to its pulley),
+;;; then why it stops there.
+
+(defun keep-unfinished-branch (history bridge clock)
+  "Store HISTORY, the states a refused branch finished, in *UNFINISHED-BRANCH* with their
+numbers from CLOCK (ANALYSE-HISTORY); nothing when it has no state or that analysis fails."
+  (when (and *unfinished-branch* (history-states history))
+    (setf (history-outcome history) :failed)
+    (when (ignore-errors (analyse-history history bridge clock) t)
+      (setf (car *unfinished-branch*) history))))
+
 (defun continue-branch (run index facts values check-incremental clock)
   "The SIMULATION-HISTORY of a branch that continues RUN from its fork at state INDEX
 with FACTS (the branch's own, besides those already in force) assumed and the parameter
 VALUES (or NIL); its states are those from INDEX on, its numbers starting at CLOCK (see
-NUMERIC-CLOCK). Signals as SIMULATE-CHECKED does."
+NUMERIC-CLOCK). Signals as SIMULATE-CHECKED does; a refusal first leaves the states
+finished in *UNFINISHED-BRANCH* (KEEP-UNFINISHED-BRANCH)."
   (let* ((scenario (run-scenario run))
          (bridge (run-bridge run))
          (history (make-instance 'simulation-history :scenario scenario
@@ -61,7 +75,11 @@ NUMERIC-CLOCK). Signals as SIMULATE-CHECKED does."
          (branch nil))
     (ames.maxima:with-assumptions (bridge facts)
       (restart-case
-          (handler-bind ((ames.engine:undecided-relation #'undecided-to-ambiguity))
+          (handler-bind ((ames.engine:undecided-relation #'undecided-to-ambiguity)
+                         ((or ames.kb:unmodelled-situation unsupported-situation)
+                           (lambda (condition)
+                             (declare (ignore condition))
+                             (keep-unfinished-branch history bridge clock))))
             (setf branch (rebuild-run-model (branch-run run values)))
             (let ((*history-clock* clock))
               (run-states branch history index limit check-incremental)))
