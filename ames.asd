@@ -390,6 +390,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "drag")
                (:file "wound-ropes")
                (:file "wound-rope-slack")
+               (:file "wound-rope-unfinished")
                (:file "sinusoid-phases")
                (:file "failure-classes")
                (:file "rest-in-contact")

@@ -1,0 +1,75 @@
+;;;; t/wound-rope-unfinished.lisp -- a branch the knowledge base stops keeps the states it
+;;;; finished (issue 23): the massive-pulley Atwood machine whose lighter mass climbs to the
+;;;; pulley after the heavier one lands.
+;;;;
+;;;; Expected results (textbook; scenarios/atwood-massive-pulley.lisp's header), with
+;;;; K = I + (m1 + m2) R^2, v = R sqrt(2 (m1 - m2) g h / K) the landing speed and
+;;;; a = m2 g R^2 / (I + m2 R^2) m2's deceleration after the landing: with the pulley
+;;;; below m2's highest point (top = 11/5 under the scenario's other values, the apex
+;;;; 2.3), m2 and the pulley turn on together on the taut right rope (tension
+;;;; m2 I g / (I + m2 R^2), the left rope slack) until m2 reaches the pulley's rim at the
+;;;; rope's tangent point (R, top), at the speed sqrt(v^2 - 2 a (top - 3 h / 2)), after
+;;;; (v - that speed) / a. What follows (m2 carried round the rim, its rope wound in to
+;;;; nothing) is not modelled: the branch ends failed, its first state kept, and the run
+;;;; does not exit 0.
+
+(in-package #:ames.tests)
+
+(def-suite wound-rope-unfinished :in all-tests
+  :description "A branch stopped by a refusal keeps its finished states: m2 rising to the massive pulley.")
+
+(in-suite wound-rope-unfinished)
+
+(defun massive-atwood-climb-expectations (x)
+  "The textbook results of m2's climb to the pulley after the landing, a plist over the
+scenario's parameters (X maps this file's symbols to them)."
+  (let* ((k '(+ i (* (+ m1 m2) (expt big-r 2))))
+         (v `(* big-r (sqrt (/ (* 2 (- m1 m2) g h) ,k))))
+         (a '(/ (* m2 g (expt big-r 2)) (+ i (* m2 (expt big-r 2)))))
+         (arrival `(sqrt (- (expt ,v 2) (* 2 ,a (- top (/ (* 3 h) 2)))))))
+    (list :a (funcall x `(- ,a))
+          :tension (funcall x '(/ (* m2 i g) (+ i (* m2 (expt big-r 2)))))
+          :arrival (funcall x arrival)
+          :duration (funcall x `(/ (- ,v ,arrival) ,a)))))
+
+(test massive-pulley-m2-climbs-to-the-pulley
+  "Under values that put the pulley below m2's highest point the selected branch is
+stopped by a refusal past m2's arrival at the rim; it keeps its finished state, whose
+formulas are the textbook's (Maxima-checked), and the run is not complete."
+  (with-fixture simulator-bridge ()
+    (let* ((scenario (scenario-named "atwood-massive-pulley"))
+           (history (ames:run-scenario scenario :bridge bridge :numeric t
+                                                :settings '(("top" . 11/5))))
+           (fork (second (ames::history-states history)))
+           (branch (find-if (lambda (b) (getf b :selected)) (and fork (ames::state-branches fork))))
+           (states (getf branch :states))
+           (expected (massive-atwood-climb-expectations
+                      (lambda (form) (in-scenario-terms scenario form)))))
+      (is (not (null branch)) "the values select a branch")
+      (is (eq :failed (getf branch :outcome)) "the branch stops at a refusal: ~S" (getf branch :outcome))
+      (is (stringp (getf branch :failure)) "and says why")
+      (is (not (eq :complete (ames::history-outcome history))))
+      (is (= 1 (length states)) "the finished state is kept: ~S" states)
+      (when (= 1 (length states))
+        (let ((climb (first states)))
+          (is (eql 0 (search '(:contact "LIGHT" "PULLEY")
+                             (event-names (ames::state-end-event climb)) :test #'equal))
+              "m2 reaches the pulley: ~S" (ames::state-end-event climb))
+          (call-with-scenario-facts
+           bridge scenario
+           (lambda ()
+             (ames.maxima:with-assumptions (bridge (list (getf branch :assume)))
+               (is-same bridge "m2 slowed by its weight alone"
+                        (second (per-body (ames::state-accelerations climb) "LIGHT"))
+                        (getf expected :a))
+               (is-same bridge "the right rope's tension"
+                        (car (last (force-entry climb :tension "RIGHT"))) (getf expected :tension))
+               (is-same bridge "the left rope slack" (car (last (force-entry climb :tension "LEFT"))) 0)
+               (is-same bridge "m2 reaches the rim after (v - v_top) / a"
+                        (ames::state-duration climb) (getf expected :duration))
+               (is-same bridge "at the rope's tangent point"
+                        (second (per-body (ames.simulator::state-final-positions climb) "LIGHT"))
+                        (in-scenario-terms scenario 'top))
+               (is-same bridge "at the speed v^2 - 2 a (top - 3 h / 2) gives"
+                        (second (per-body (ames.simulator::state-final-velocities climb) "LIGHT"))
+                        (getf expected :arrival))))))))))
