@@ -15,8 +15,15 @@
 ;;;; highest point, 3 h / 2 + (m1 - m2) h (I + m2 R^2) / (m2 (I + (m1 + m2) R^2)), below
 ;;;; top or not. Below it (the values), m2 stops after v / a, falls back, and the slack
 ;;;; rope is taut again when the pulley is back at its angle of the landing: a plastic jerk
-;;;; lifts m1, the angular momentum about the axle kept, at v (I + m2 R^2) / (I + (m1 + m2) R^2).
-;;;; (m2 climbing to the pulley, its rope wound in to nothing, is not modelled.)
+;;;; lifts m1, the angular momentum about the axle kept, at v (I + m2 R^2) / (I + (m1 + m2) R^2)
+;;;; (the run's third state ends there, with the jerk; with more states m1 then rises
+;;;; h (I + m2 R^2)^2 / (I + (m1 + m2) R^2)^2, both ropes taut). Above it (e.g. --set
+;;;; top=11/5) m2 reaches the pulley's rim at the rope's tangent point (R, top), at the
+;;;; speed sqrt(v^2 - 2 a (top - 3 h / 2)): that state is reported, and what follows, m2
+;;;; carried round the rim on its rope wound in to nothing, is not modelled (the branch
+;;;; ends failed, the run exits 3). The boundary, the highest point at top exactly, is
+;;;; listed unsimulated. Under the values the run exits 0, its self-check passing (the
+;;;; witness integrates the wound ropes, the slack one too).
 
 (scenario atwood-massive-pulley
   "An Atwood machine over a disc pulley of inertia I."
