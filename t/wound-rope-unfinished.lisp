@@ -73,3 +73,38 @@ formulas are the textbook's (Maxima-checked), and the run is not complete."
                (is-same bridge "at the speed v^2 - 2 a (top - 3 h / 2) gives"
                         (second (per-body (ames.simulator::state-final-velocities climb) "LIGHT"))
                         (getf expected :arrival))))))))))
+
+(test massive-pulley-m1-lifted-after-the-jerk
+  "Past the jerk that takes up the slack left rope (the fourth state, the values'
+branch): both ropes taut again, m1 rises from the floor at v' = v (I + m2 R^2) / K
+slowed by a = (m1 - m2) g R^2 / K, the tensions the first state's, and stops after v'/a
+at h (I + m2 R^2)^2 / K^2 (v'^2 / (2 a)); formulas Maxima-checked."
+  (with-fixture simulator-bridge ()
+    (let* ((scenario (scenario-named-with-states "atwood-massive-pulley" 4))
+           (history (ames:run-scenario scenario :bridge bridge :numeric t))
+           (fork (second (ames::history-states history)))
+           (branch (find-if (lambda (b) (getf b :selected)) (and fork (ames::state-branches fork))))
+           (lifted (third (getf branch :states))))
+      (flet ((x (form) (in-scenario-terms scenario form)))
+        (let* ((k '(+ i (* (+ m1 m2) (expt big-r 2))))
+               (a (x `(/ (* (- m1 m2) g (expt big-r 2)) ,k)))
+               (speed (x `(/ (* big-r (sqrt (/ (* 2 (- m1 m2) g h) ,k)) (+ i (* m2 (expt big-r 2)))) ,k))))
+          (is (not (null lifted)) "the branch's third state: ~S" (getf branch :states))
+          (when lifted
+            (is (equal '(:turns "PULLEY") (event-names (ames::state-end-event lifted))))
+            (call-with-scenario-facts
+             bridge scenario
+             (lambda ()
+               (ames.maxima:with-assumptions (bridge (list (getf branch :assume)))
+                 (is-same bridge "m1 slowed as in the first state"
+                          (second (per-body (ames::state-accelerations lifted) "HEAVY")) `(- ,a))
+                 (is-same bridge "the left rope's tension m1 (I + 2 m2 R^2) g / K"
+                          (car (last (force-entry lifted :tension "LEFT")))
+                          (x `(/ (* m1 (+ i (* 2 m2 (expt big-r 2))) g) ,k)))
+                 (is-same bridge "the right rope's tension m2 (I + 2 m1 R^2) g / K"
+                          (car (last (force-entry lifted :tension "RIGHT")))
+                          (x `(/ (* m2 (+ i (* 2 m1 (expt big-r 2))) g) ,k)))
+                 (is-same bridge "m1 stops after v' / a" (ames::state-duration lifted) `(/ ,speed ,a))
+                 (is-same bridge "at h (I + m2 R^2)^2 / K^2"
+                          (second (per-body (ames.simulator::state-final-positions lifted) "HEAVY"))
+                          (x `(/ (* h (expt (+ i (* m2 (expt big-r 2))) 2)) (expt ,k 2))))))))))))
