@@ -107,4 +107,4 @@ at h (I + m2 R^2)^2 / K^2 (v'^2 / (2 a)); formulas Maxima-checked."
                  (is-same bridge "m1 stops after v' / a" (ames::state-duration lifted) `(/ ,speed ,a))
                  (is-same bridge "at h (I + m2 R^2)^2 / K^2"
                           (second (per-body (ames.simulator::state-final-positions lifted) "HEAVY"))
-                          (x `(/ (* h (expt (+ i (* m2 (expt big-r 2))) 2)) (expt ,k 2))))))))))))
+                          (x `(/ (* h (expt (+ i (* m2 (expt big-r 2))) 2)) (expt ,k 2)))))))))))))

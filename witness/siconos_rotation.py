@@ -238,16 +238,18 @@ class RotationDriver(Events):
         self.ds.fExt()[:] = f
 
     def refresh(self, q, v, lams=None):
-        """The relations linearised at Q again; for those that did not act in the last step
-        (no impulse in LAMS), their outputs y = C q + e, y' = C V set from them: Moreau-Jean
-        decides which relations are active in the coming step from these outputs, which
-        Siconos 4.4 leaves stale for an interaction that was not active."""
+        """The relations linearised at Q again; for the contacts and ropes that did not act
+        in the last step (no impulse in LAMS), their outputs y = C q + e, y' = C V set from
+        them: Moreau-Jean decides which relations are active in the coming step from these
+        outputs, which Siconos 4.4 leaves stale for an interaction that was not active (a
+        slack rope's stale gap, about 0, kept it active: turning back, the pulley of an
+        Atwood machine whose mass had landed was jerked at once, far from taut)."""
         for k, (r, inter) in enumerate(zip(self.relations, self.inters)):
             if isinstance(r, Contact) and lams is not None:
                 r.update_front(q, v, lams[k][0] > 0)
             if isinstance(r, (Contact, Hinge)):
                 r.refresh(q)
-            if lams is not None and isinstance(r, Contact) and not lams[k][0] > 0:
+            if lams is not None and isinstance(r, (Contact, Rope)) and not lams[k][0] > 0:
                 C, e = r.rows_at(q)
                 inter.y(0)[:] = C.dot(q) + e
                 inter.y(1)[:] = C.dot(v)
