@@ -108,3 +108,31 @@ at h (I + m2 R^2)^2 / K^2 (v'^2 / (2 a)); formulas Maxima-checked."
                  (is-same bridge "at h (I + m2 R^2)^2 / K^2"
                           (second (per-body (ames.simulator::state-final-positions lifted) "HEAVY"))
                           (x `(/ (* h (expt (+ i (* m2 (expt big-r 2))) 2)) (expt ,k 2)))))))))))))
+
+(test witness-massive-pulley-turns-back-slack
+  "The witness (Siconos) past the landing: m2 and the pulley turn on together, the left
+rope slack, and turn back; the left rope is taut again (:tightens) only when the pulley
+is back at its angle of the landing, at t = sqrt(2 h / a0) + 2 v / a1 (a0 = (m1 - m2) g
+R^2 / K, v = a0 sqrt(2 h / a0), a1 = m2 g R^2 / (I + m2 R^2)), m2 falling at v there.
+Once, a slack rope's stale output kept it active in Moreau-Jean's index set and the
+pulley was jerked as soon as it turned back."
+  (with-siconos
+    (multiple-value-bind (answer values) (rotation-witness "atwood-massive-pulley" 1.9d0)
+      (flet ((v (name) (value-of-parameter values name)))
+        (let* ((g (v "g")) (m1 (v "m1")) (m2 (v "m2")) (i (v "i")) (r (v "big-r")) (h (v "h"))
+               (k (+ i (* (+ m1 m2) r r)))
+               (a0 (/ (* (- m1 m2) g r r) k))
+               (landing (sqrt (/ (* 2 h) a0)))
+               (speed (* a0 landing))
+               (a1 (/ (* m2 g r r) (+ i (* m2 r r))))
+               (jerk (find-if (lambda (e)
+                                (and (> (getf e :time) (+ landing 0.01d0))
+                                     (find :tightens (getf e :pairs) :key #'first)))
+                              (ames.witness:witness-events answer))))
+          (is (eq :ok (ames.witness:witness-status answer)))
+          (is (not (null jerk)) "the left rope taut again: ~S" (ames.witness:witness-events answer))
+          (when jerk
+            (is (relatively-near (+ landing (/ (* 2 speed) a1)) (getf jerk :time) 5d-3)
+                "at ~F, expected ~F" (getf jerk :time) (+ landing (/ (* 2 speed) a1)))
+            (is (relatively-near (* 3/2 h) (second (state-entry jerk :positions "light")) 1d-2))
+            (is (relatively-near (- speed) (second (state-entry jerk :velocities "light")) 1d-2))))))))
