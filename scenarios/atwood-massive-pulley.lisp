@@ -22,8 +22,8 @@
 ;;;; speed sqrt(v^2 - 2 a (top - 3 h / 2)): that state is reported, and what follows, m2
 ;;;; carried round the rim on its rope wound in to nothing, is not modelled (the branch
 ;;;; ends failed, the run exits 3). The boundary, the highest point at top exactly, is
-;;;; listed unsimulated. Under the values the run exits 0, its self-check passing (the
-;;;; witness integrates the wound ropes, the slack one too).
+;;;; listed unsimulated. Under the values the run exits 0, its self-check passing, and the
+;;;; witness (bin/ames check --numeric, Siconos) agrees on the three states.
 
 (scenario atwood-massive-pulley
   "An Atwood machine over a disc pulley of inertia I."
