@@ -75,7 +75,10 @@ finished in *UNFINISHED-BRANCH* (KEEP-UNFINISHED-BRANCH)."
          (branch nil))
     (ames.maxima:with-assumptions (bridge facts)
       (restart-case
-          (handler-bind ((ames.engine:undecided-relation #'undecided-to-ambiguity)
+          (handler-bind ((ames.engine:undecided-relation
+                           ;; over the state's starting values, as the root's run says it
+                           ;; (SIMULATE-WORLD-ONCE): NIL while the model is rebuilt
+                           (lambda (condition) (undecided-to-ambiguity condition branch)))
                          ((or ames.kb:unmodelled-situation unsupported-situation)
                            (lambda (condition)
                              (declare (ignore condition))
