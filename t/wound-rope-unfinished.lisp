@@ -12,6 +12,10 @@
 ;;;; (v - that speed) / a. What follows (m2 carried round the rim, its rope wound in to
 ;;;; nothing) is not modelled: the branch ends failed, its first state kept, and the run
 ;;;; does not exit 0.
+;;;; Also here: past the jerk that takes up the slack rope (the values' branch, a fourth
+;;;; state) m1 rises at v' = v (I + m2 R^2) / K slowed by a0 = (m1 - m2) g R^2 / K to
+;;;; h (I + m2 R^2)^2 / K^2; and the witness (Siconos) turns the pulley back with the left
+;;;; rope slack, taut again only at the landing's angle, after sqrt(2 h / a0) + 2 v / a.
 
 (in-package #:ames.tests)
 
