@@ -208,6 +208,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "choice")
                  (:file "choice-preferences")
                  (:file "choice-subsets")
+                 (:file "indeterminate-forces")
                  (:file "choice-clusters")
                  (:file "frozen-rotation")
                  (:file "integrators")

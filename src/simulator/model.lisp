@@ -138,17 +138,23 @@ order), each definition's expression with the later ones' values substituted."
         (setf (gethash (car definition) table) value)
         (push (cons (car definition) value) values)))))
 
-(defun solve-model (run model)
-  "Solve MODEL's equations for every unknown quantity in terms of the parameters and
-the state variables. Returns a SOLVED-MODEL whose rates and initial values are filled
-in. Signals UNSOLVABLE-MODEL."
+(defun model-system (run model)
+  "MODEL's equations as SOLVE-MODEL solves them, and their unknowns: (values EQUATIONS
+UNKNOWNS STATE DERIVATIVES), STATE the state terms, DERIVATIVES the alist state term ->
+rate term (MODEL-DERIVATIVES)."
   (let* ((derivatives (model-derivatives model))
          (state (mapcar #'car derivatives))
          (equations (without-idle-path-terms
                      (mapcar (lambda (e) (with-initial-positions run e))
                              (ames.engine:model-equations model))
-                     state))
-         (unknowns (equation-unknowns equations state)))
+                     state)))
+    (values equations (equation-unknowns equations state) state derivatives)))
+
+(defun solve-model (run model)
+  "Solve MODEL's equations for every unknown quantity in terms of the parameters and
+the state variables. Returns a SOLVED-MODEL whose rates and initial values are filled
+in. Signals UNSOLVABLE-MODEL."
+  (multiple-value-bind (equations unknowns state derivatives) (model-system run model)
     (multiple-value-bind (compact definitions) (eliminate-definitions equations unknowns)
       (let* ((compact (remove-if (lambda (equation) (identity-p run equation)) compact))
              (remaining (equation-unknowns compact state))
