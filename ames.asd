@@ -242,6 +242,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "corner-snapping")
                  (:file "flat-corner-snapping")
                  (:file "circle-snapping")
+                 (:file "turning-point-snapping")
                  (:file "flush-corner-snapping")
                  (:file "approximate-starts")
                  (:file "pending-candidates")
