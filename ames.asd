@@ -407,6 +407,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "hinged-swing")
                (:file "rocking-block")
                (:file "corner-strikes")
+               (:file "edge-starts")
                (:file "rotating-impacts")
                (:file "tipping")
                (:file "ledge-impacts")
