@@ -233,6 +233,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "rolling-path")
                  (:file "corners")
                  (:file "oscillation")
+                 (:file "face-end-corners")
                  (:file "numeric")
                  (:file "earliest")
                  (:file "numeric-round-off")

@@ -1,0 +1,106 @@
+;;;; src/simulator/face-end-corners.lisp -- a corner that reaches a fixed body's face exactly
+;;;; at the face's end, at a speed, at the end of a numerically integrated state.
+;;;;
+;;;; A corner of a rotating body that crosses the line of a fixed face at one of its ends
+;;;; meets the fixed body's vertex there, where the adjoining face begins. Locally the
+;;;; fixed body (convex there) is the intersection of the two faces' half-planes: the
+;;;; corner enters it only if it moves inside both lines. With g1 the reached face's gap
+;;;; (closing at the speed found, r1 < 0) and g2 the adjoining face's (0 at the vertex),
+;;;; of rate r2 there:
+;;;;   r2 = 0 -- the corner moves along the adjoining face's line: it enters no solid, it
+;;;;             slides onto the adjoining face at no normal speed (a block sliding flat
+;;;;             on a ledge whose far corner comes onto the ledge's top at its edge). No
+;;;;             impact: the meeting is a touching reached at no speed, and the next
+;;;;             state's start settles which face holds the corner (choice.lisp: at a
+;;;;             corner that is not concave it enters only inside every face);
+;;;;   r2 < 0 -- it moves inside both: a corner strikes the vertex, whose normal is
+;;;;             undefined: refused, named;
+;;;;   r2 > 0 -- it passes outside the adjoining face: it misses the reached face beyond
+;;;;             its end, but the search stopped there: refused, named.
+;;;; The corner is not the only feature there: the fixed body's vertex meets the rotating
+;;;; body's faces at the corner (a block's leading face sliding into a wedge's toe strikes
+;;;; it while its corner runs along the wedge's base). So the slide is taken only when no
+;;;; other corner contact of the two bodies that touches there (gap zero to round-off) is
+;;;; closing; else refused.
+;;;; "r2 = 0" is judged to the round-off of the integration (1e-9, relative to the
+;;;; approach speed), as CORNER-AT-FACE-END-P judges the place. The adjoining face is the
+;;;; corner contact of the same corner on the same fixed body whose gap is zero there
+;;;; (to 1e-9): the corner contacts (corners.lisp) name the rotating body's feature and
+;;;; the fixed body's face.
+
+(in-package #:ames.simulator)
+
+(defparameter *face-end-round-off* 1d-9
+  "How near zero (relative to the approach speed, at least 1) a gap and its rate at a
+face's end are judged zero: the numeric integration's round-off.")
+
+(defun condition-corner-contact (run condition)
+  "The entry (NAME OBSERVER OBSTACLE . GEOMETRY) of RUN's corner contact that the
+termination CONDITION's instance names, or NIL."
+  (let ((entries (run-corner-contacts run)))
+    (labels ((walk (x)
+               (cond ((and x (symbolp x)) (assoc x entries))
+                     ((consp x) (or (walk (car x)) (walk (cdr x)))))))
+      (walk (ames.engine:termination-condition-instance condition)))))
+
+(defun adjoining-corner-contacts (run entry)
+  "The corner contacts of the same corner of ENTRY's rotating body on other faces of the
+same fixed body."
+  (destructuring-bind (name observer obstacle . geometry) entry
+    (loop for other in (run-corner-contacts run)
+          for (other-name other-observer other-obstacle . other-geometry) = other
+          when (and (not (eq other-name name)) (eq other-observer observer) (eq other-obstacle obstacle)
+                    (eq (ames.geometry:rotating-contact-kind other-geometry)
+                        (ames.geometry:rotating-contact-kind geometry))
+                    (equal (ames.geometry:rotating-contact-feature other-geometry)
+                           (ames.geometry:rotating-contact-feature geometry))
+                    (not (equal (ames.geometry:rotating-contact-other-feature other-geometry)
+                                (ames.geometry:rotating-contact-other-feature geometry))))
+            collect other)))
+
+(defun numeric-gap-and-rate (run solved groups terms gap rates state time)
+  "The value and the rate (central difference along RATES) of GAP (over state terms) in
+the numeric STATE at TIME: two doubles, or NIL."
+  (let* ((symbols (append (mapcar #'state-symbol terms) (list 'tau)))
+         (f (numeric-function (numeric-expression run groups (over-state-terms run solved gap) terms)
+                              symbols))
+         (epsilon 1d-7)
+         (velocity (funcall rates state)))
+    (flet ((at (sign)
+             (safe-value f (concatenate 'simple-vector
+                                        (map 'simple-vector (lambda (y d) (+ y (* sign epsilon d))) state velocity)
+                                        (vector (+ time (* sign epsilon)))))))
+      (let ((value (at 0)) (ahead (at 1)) (behind (at -1)))
+        (and value ahead behind (values value (/ (- ahead behind) (* 2 epsilon))))))))
+
+(defun pair-corner-contacts (run entry)
+  "The corner contacts other than ENTRY between ENTRY's two bodies (either kind: the
+rotating body's corners on the fixed faces, the fixed corners on its faces)."
+  (destructuring-bind (name observer obstacle . geometry) entry
+    (declare (ignore geometry))
+    (loop for other in (run-corner-contacts run)
+          for (other-name other-observer other-obstacle) = other
+          when (and (not (eq other-name name)) (eq other-observer observer) (eq other-obstacle obstacle))
+            collect other)))
+
+(defun face-end-verdict (run solved groups terms condition rate rates state time)
+  "How the corner of CONDITION's meeting, reached at the speed RATE (< 0) exactly at an
+end of its face, goes on (see the file header): :SLIDES-ON (onto the adjoining face, no
+impact), :STRIKES (the adjoining face closes too, or another corner contact of the two
+bodies touching there closes: a fixed corner on the rotating body's face), or NIL (the
+adjoining face is not found, or the corner passes beside it)."
+  (let ((entry (condition-corner-contact run condition))
+        (tolerance (* *face-end-round-off* (max 1d0 (abs rate))))
+        (adjoining-slides nil))
+    (when entry
+      (let ((adjoining (adjoining-corner-contacts run entry)))
+        (dolist (other (pair-corner-contacts run entry))
+          (multiple-value-bind (gap speed)
+              (numeric-gap-and-rate run solved groups terms
+                                    (ames.geometry:rotating-contact-gap (cdddr other))
+                                    rates state time)
+            (when (and gap (<= (abs gap) tolerance))
+              (cond ((< speed (- tolerance)) (return-from face-end-verdict :strikes))
+                    ((and (<= (abs speed) tolerance) (member other adjoining :test #'eq))
+                     (setf adjoining-slides t))))))
+        (and adjoining-slides :slides-on)))))
