@@ -7,7 +7,9 @@
 ;;;; corner enters it only if it moves inside both lines. With g1 the reached face's gap
 ;;;; (closing at the speed found, r1 < 0) and g2 the adjoining face's (0 at the vertex),
 ;;;; of rate r2 there:
-;;;;   r2 = 0 -- the corner moves along the adjoining face's line: it enters no solid, it
+;;;;   r2 = 0 -- the corner moves along the adjoining face's line, into that face's extent
+;;;;             (so the vertex is convex: at a concave one, a floor meeting a wall, it
+;;;;             would be leaving the floor's end for the wall): it enters no solid, it
 ;;;;             slides onto the adjoining face at no normal speed (a block sliding flat
 ;;;;             on a ledge whose far corner comes onto the ledge's top at its edge). No
 ;;;;             impact: the meeting is a touching reached at no speed, and the next
@@ -58,12 +60,23 @@ same fixed body."
                                 (ames.geometry:rotating-contact-other-feature geometry))))
             collect other)))
 
+(defun numeric-of-state (run solved groups terms expression)
+  "EXPRESSION (over state terms) as a numeric function of the state vector and time."
+  (numeric-function (numeric-expression run groups (over-state-terms run solved expression) terms)
+                    (append (mapcar #'state-symbol terms) (list 'tau))))
+
+(defun numeric-point (run solved groups terms point state time)
+  "The contact POINT (two expressions over state terms) in the numeric STATE at TIME:
+a list of two doubles, or NIL."
+  (let* ((vector (concatenate 'simple-vector state (vector time)))
+         (values (mapcar (lambda (x) (safe-value (numeric-of-state run solved groups terms x) vector))
+                         point)))
+    (and (every #'realp values) values)))
+
 (defun numeric-gap-and-rate (run solved groups terms gap rates state time)
   "The value and the rate (central difference along RATES) of GAP (over state terms) in
 the numeric STATE at TIME: two doubles, or NIL."
-  (let* ((symbols (append (mapcar #'state-symbol terms) (list 'tau)))
-         (f (numeric-function (numeric-expression run groups (over-state-terms run solved gap) terms)
-                              symbols))
+  (let* ((f (numeric-of-state run solved groups terms gap))
          (epsilon 1d-7)
          (velocity (funcall rates state)))
     (flet ((at (sign)
@@ -83,6 +96,32 @@ rotating body's corners on the fixed faces, the fixed corners on its faces)."
           when (and (not (eq other-name name)) (eq other-observer observer) (eq other-obstacle obstacle))
             collect other)))
 
+(defun touching-at-the-corner (run solved groups terms entry state time tolerance)
+  "PAIR-CORNER-CONTACTS of ENTRY whose contact point is, in STATE at TIME, ENTRY's own
+(to TOLERANCE): the features that meet where the corner meets the face's end (a corner
+crossing a face's line far past its end is elsewhere)."
+  (let ((here (numeric-point run solved groups terms
+                             (ames.geometry:rotating-contact-point (cdddr entry)) state time)))
+    (when here
+      (remove-if-not (lambda (other)
+                       (let ((there (numeric-point run solved groups terms
+                                                   (ames.geometry:rotating-contact-point (cdddr other))
+                                                   state time)))
+                         (and there (every (lambda (a b) (<= (abs (- a b)) tolerance)) here there))))
+                     (pair-corner-contacts run entry)))))
+
+(defun enters-extent-p (run solved groups terms entry rates state time tolerance)
+  "True when the corner of the corner contact ENTRY moves into its face's extent: every
+end it is at (its margin zero to TOLERANCE) it leaves inward (the margin's rate above
+TOLERANCE). At a convex vertex of the fixed body the corner sliding along the adjoining
+face comes onto it from past its end; at a concave one (a floor meeting a wall) it
+would leave that face toward the wall, which it strikes."
+  (every (lambda (relation)
+           (multiple-value-bind (margin speed)
+               (numeric-gap-and-rate run solved groups terms (extent-margin relation) rates state time)
+             (and margin (or (> (abs margin) tolerance) (> speed tolerance)))))
+         (ames.geometry:contact-extent-relations (cdddr entry))))
+
 (defun face-end-verdict (run solved groups terms condition rate rates state time)
   "How the corner of CONDITION's meeting, reached at the speed RATE (< 0) exactly at an
 end of its face, goes on (see the file header): :SLIDES-ON (onto the adjoining face, no
@@ -94,13 +133,14 @@ adjoining face is not found, or the corner passes beside it)."
         (adjoining-slides nil))
     (when entry
       (let ((adjoining (adjoining-corner-contacts run entry)))
-        (dolist (other (pair-corner-contacts run entry))
+        (dolist (other (touching-at-the-corner run solved groups terms entry state time tolerance))
           (multiple-value-bind (gap speed)
               (numeric-gap-and-rate run solved groups terms
                                     (ames.geometry:rotating-contact-gap (cdddr other))
                                     rates state time)
             (when (and gap (<= (abs gap) tolerance))
               (cond ((< speed (- tolerance)) (return-from face-end-verdict :strikes))
-                    ((and (<= (abs speed) tolerance) (member other adjoining :test #'eq))
+                    ((and (<= (abs speed) tolerance) (member other adjoining :test #'eq)
+                          (enters-extent-p run solved groups terms other rates state time tolerance))
                      (setf adjoining-slides t))))))
         (and adjoining-slides :slides-on)))))

@@ -39,8 +39,12 @@ forces share a load: its equations leave one unknown free (a body held by more s
 than the equations fix). DATUM names the bodies; LOWER and UPPER bound the free unknown
 where the exit conditions give bounds (empty lists when they do not)."))
 
-(defparameter *indeterminate-tries* 12
-  "The most unknowns STATICALLY-INDETERMINATE-REST leaves free in turn, per assignment.")
+(defparameter *indeterminate-tries* 24
+  "The most solves (one unknown left free each) STATICALLY-INDETERMINATE-TRIAL spends on
+one start, over all its assignments: a refusal's cost stays bounded.")
+
+(defvar *tries-left* 0
+  "The solves STATICALLY-INDETERMINATE-TRIAL has left (see *INDETERMINATE-TRIES*).")
 
 (defun rate-terms (derivatives)
   "The rate terms of DERIVATIVES (alist state term -> rate term)."
@@ -85,8 +89,9 @@ fixed, some forces are not); NIL otherwise."
         (loop for free in (reported-first (remove-if (lambda (u) (member u rates :test #'equal))
                                                      remaining)
                                           (reported-force-terms model))
-              repeat *indeterminate-tries*
-              do (let ((values (solution-with-free run compact remaining definitions free)))
+              while (plusp *tries-left*)
+              do (decf *tries-left*)
+                 (let ((values (solution-with-free run compact remaining definitions free)))
                    (when (and values
                               (every (lambda (u) (or (equal u free) (assoc u values :test #'equal)))
                                      unknowns)
@@ -220,10 +225,11 @@ or NIL when it is no such rest."
   "Among TRIALS (none consistent), the STATICALLY-INDETERMINATE condition of the first
 assignment whose model had no unique solution and is such a rest (the model is left in
 that assignment), or NIL."
-  (dolist (trial trials)
-    (when (find :unsolvable (trial-notes trial) :key (lambda (note) (and (consp note) (first note))))
-      (apply-assignment run points (trial-assignment trial))
-      (let ((refusal (handler-case (indeterminate-refusal run (run-model run))
-                       ;; a model this analysis cannot read: the generic refusal stands
-                       (ames-error () nil))))
-        (when refusal (return refusal))))))
+  (let ((*tries-left* *indeterminate-tries*))
+    (dolist (trial trials)
+      (when (find :unsolvable (trial-notes trial) :key (lambda (note) (and (consp note) (first note))))
+        (apply-assignment run points (trial-assignment trial))
+        (let ((refusal (handler-case (indeterminate-refusal run (run-model run))
+                         ;; a model this analysis cannot read: the generic refusal stands
+                         (ames-error () nil))))
+          (when refusal (return refusal)))))))
