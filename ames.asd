@@ -200,6 +200,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "structure")
                  (:file "zero-folding")
                  (:file "model")
+                 (:file "exact-series")
                  (:file "elimination")
                  (:file "one-sided-series")
                  (:file "term-lookups")

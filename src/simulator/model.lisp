@@ -268,7 +268,11 @@ derivative at a time, and memoized. Where a derivative cannot be evaluated at th
 \(0/0: |v| v at rest), the one-sided series for TAU > 0 (ONE-SIDED-SERIES) is taken."
   (let ((entry (or (gethash expression (solved-model-series solved))
                    (setf (gethash expression (solved-model-series solved))
-                         (list '() expression 1)))))
+                         ;; all exact numbers: power series (exact-series.lisp)
+                         (let ((exact (exact-series-coefficients solved expression (1+ *series-order*))))
+                           (if exact (list exact :exact 1) (list '() expression 1)))))))
+    (when (and (eq (second entry) :exact) (< (length (first entry)) count))
+      (setf (first entry) '() (second entry) expression (third entry) 1))
     (flet ((one-sided (condition)
              ;; no derivative at the start: the series for tau > 0, or CONDITION again
              (setf (first entry) (or (one-sided-series run solved expression count)
