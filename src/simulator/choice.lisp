@@ -135,13 +135,15 @@ contacts among POINTS count when they are penetrated."
           (multiple-value-bind (verdict fact)
               (if contact
                   (penetrates-at-once run solved contact active)
-                  (fires-at-once run solved
+                  (multiple-value-call #'corner-verdict-at-vertex
+                   run solved key
+                   (fires-at-once run solved
                                  ;; the whole activation condition: a corner on a face's
                                  ;; line exactly at the face's end (decided within it at the
                                  ;; start) enters only if it does not move out of the face
                                  (or (activation-relation run key)
                                      (let ((relations (ames.engine:choice-point-relations point)))
-                                       (if (rest relations) (cons 'and relations) (first relations))))))
+                                       (if (rest relations) (cons 'and relations) (first relations)))))))
             (unless (eq verdict :false)
               (push (list key verdict fact (list :penetrates contact)) violations))))
         (when (and (eq (ames.engine:choice-point-kind point) :activation)

@@ -144,3 +144,61 @@ adjoining face is not found, or the corner passes beside it)."
                           (enters-extent-p run solved groups terms other rates state time tolerance))
                      (setf adjoining-slides t))))))
         (and adjoining-slides :slides-on)))))
+
+;;; A corner at a fixed body's convex vertex at the start of a state
+
+(defun convex-vertex-partners (run name)
+  "The corner contacts of the same corner as the :VERTEX-ON-FACE corner contact NAME, on
+the other faces of the same fixed body, touching now at the same vertex with it, where
+that vertex is convex (the fixed body there the intersection of the two faces'
+half-planes: going from the vertex into the partner's face is going inside NAME's face's
+line, n1 . t2 < 0, decided)."
+  (let ((entry (assoc name (run-corner-contacts run))))
+    (when (and entry (eq (ames.geometry:rotating-contact-kind (cdddr entry)) :vertex-on-face)
+               (touching-now-p run (second entry) (cdddr entry)))
+      (loop for other in (adjoining-corner-contacts run entry)
+            for geometry = (cdddr other)
+            when (and (touching-now-p run (second other) geometry)
+                      (eq :true (decide run `(< ,(into-face-dot run entry other) 0))))
+              collect other))))
+
+(defun into-face-dot (run entry other)
+  "n1 . t2: ENTRY's face's outward normal against the direction from the vertex into
+OTHER's face (its tangent when the vertex is OTHER's face's start, else minus it), at
+the start of the state (see CONVEX-VERTEX-PARTNERS)."
+  (let* ((body (second entry))
+         (now (lambda (x)
+                (substitute-expressions
+                 (list (cons `(ames.kb:pos ,body :x) (first (body-position run body)))
+                       (cons `(ames.kb:pos ,body :y) (second (body-position run body)))
+                       (cons `(ames.kb:angle ,body) (body-angle run body)))
+                 x)))
+         (g1 (cdddr entry)) (g2 (cdddr other))
+         (at-start (holds run `(= ,(funcall now (ames.geometry:rotating-contact-place g2)) 0)))
+         (tangent (ames.geometry:rotating-contact-tangent g2))
+         (into (if at-start tangent (ames.geometry:vneg tangent))))
+    (tidy run (funcall now (ames.geometry:dot (ames.geometry:rotating-contact-normal g1) into)))))
+
+(defun enters-beside-convex-vertex-p (run solved key)
+  "True when the inactive corner contact instance KEY, whose touching holds just after
+the start, has its corner at a convex vertex of the fixed body (CONVEX-VERTEX-PARTNERS)
+with a partner face whose gap does not turn negative at once: the corner goes inside
+KEY's face's line beside the fixed body, along or outside the partner face, and enters
+no solid (a block's corner sliding off the edge of a ledge's vertical side onto its
+top). Such a corner does not penetrate; as a shape contact's touching alternatives
+\(choice.lisp, PENETRATES-AT-ONCE): it enters only inside every face there."
+  (let ((name (find-if (lambda (x) (and (symbolp x) (assoc x (run-corner-contacts run))))
+                       (if (consp key) key (list key)))))
+    (and name
+         (some (lambda (partner)
+                 (eq :false (goes-negative-at-once
+                             run solved (ames.geometry:rotating-contact-gap (cdddr partner)))))
+               (convex-vertex-partners run name)))))
+
+(defun corner-verdict-at-vertex (run solved key verdict &optional fact)
+  "VERDICT (and FACT) of whether the inactive instance KEY's touching holds just after
+the start, as the choice search takes it: :FALSE instead of :TRUE for a corner that
+goes beside a convex vertex (ENTERS-BESIDE-CONVEX-VERTEX-P)."
+  (if (and (eq verdict :true) (enters-beside-convex-vertex-p run solved key))
+      :false
+      (values verdict fact)))
