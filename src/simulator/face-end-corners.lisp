@@ -132,7 +132,7 @@ adjoining face is not found, or the corner passes beside it)."
         (tolerance (* *face-end-round-off* (max 1d0 (abs rate))))
         (adjoining-slides nil))
     (when entry
-      (let ((adjoining (adjoining-corner-contacts run entry)))
+      (let ((adjoining (same-corner-contacts run entry)))
         (dolist (other (touching-at-the-corner run solved groups terms entry state time tolerance))
           (multiple-value-bind (gap speed)
               (numeric-gap-and-rate run solved groups terms
@@ -202,3 +202,69 @@ goes beside a convex vertex (ENTERS-BESIDE-CONVEX-VERTEX-P)."
   (if (and (eq verdict :true) (enters-beside-convex-vertex-p run solved key))
       :false
       (values verdict fact)))
+
+;;; The same meeting in closed form (guarded-meetings.lisp)
+
+(defun shared-corner-feature (geometry)
+  "The corner a corner contact's GEOMETRY is about: the rotating body's vertex (FEATURE)
+for :VERTEX-ON-FACE, the fixed body's (OTHER-FEATURE) for :FACE-ON-VERTEX."
+  (if (eq (ames.geometry:rotating-contact-kind geometry) :vertex-on-face)
+      (ames.geometry:rotating-contact-feature geometry)
+      (ames.geometry:rotating-contact-other-feature geometry)))
+
+(defun same-corner-contacts (run entry)
+  "The pair's other corner contacts of ENTRY's kind about the same corner (on other
+faces): the faces adjoining at that corner, whichever body has it."
+  (let ((geometry (cdddr entry)))
+    (remove-if-not (lambda (other)
+                     (let ((g (cdddr other)))
+                       (and (eq (ames.geometry:rotating-contact-kind g)
+                                (ames.geometry:rotating-contact-kind geometry))
+                            (equal (shared-corner-feature g) (shared-corner-feature geometry)))))
+                   (pair-corner-contacts run entry))))
+
+(defun at-face-end-p (run guards at)
+  "True when one of GUARDS (extent relations) holds with equality where AT puts it:
+the meeting is exactly at an end of the face."
+  (some (lambda (guard)
+          (and (member (first guard) '(<= >= < >))
+               (eq :true (decide run `(= ,(funcall at (extent-margin guard)) 0)))))
+        guards))
+
+(defun closed-form-face-end-verdict (run entry over-time time)
+  "FACE-END-VERDICT for a closed-form motion (OVER-TIME gives an expression over state
+terms as a function of TAU) at TIME, decided exactly: :SLIDES-ON, :STRIKES or NIL."
+  (let ((adjoining (same-corner-contacts run entry))
+        (point (ames.geometry:rotating-contact-point (cdddr entry)))
+        (slides nil))
+    (flet ((at (x) (tidy run (at-time (funcall over-time x) time)))
+           (rate (x) (tidy run (at-time (time-derivative (funcall over-time x)) time))))
+      (dolist (other (pair-corner-contacts run entry) (and slides :slides-on))
+        (let ((g (cdddr other)))
+          (when (and (eq :true (decide run `(= ,(at (ames.geometry:rotating-contact-gap g)) 0)))
+                     (every (lambda (a b) (eq :true (decide run `(= ,(at `(- ,a ,b)) 0))))
+                            (ames.geometry:rotating-contact-point g) point))
+            (let ((speed (rate (ames.geometry:rotating-contact-gap g))))
+              (case (decide run `(= ,speed 0))
+                (:true (when (and (member other adjoining :test #'eq)
+                                  (every (lambda (relation)
+                                           (let ((margin (extent-margin relation)))
+                                             (or (not (eq :true (decide run `(= ,(at margin) 0))))
+                                                 (eq :true (decide run `(> ,(rate margin) 0))))))
+                                         (ames.geometry:contact-extent-relations g)))
+                         (setf slides t)))
+                (t (return :strikes))))))))))
+
+(defun closed-form-face-end (run condition guards at over-time time rate)
+  "The answer (values :AT TIME RATE) of a guarded meeting of CONDITION that holds at TIME
+with GUARDS (AT puts an expression there): as it is, unless the corner meets the face
+exactly at its end; there, at RATE 0 (a touching, no impact) when it slides onto the
+adjoining face (FACE-END-VERDICT's reasoning, decided exactly), else refused: main took
+such a meeting for an impact on the face, and a block sliding flat off a ledge's edge
+got an upward velocity from it."
+  (let ((entry (condition-corner-contact run condition)))
+    (cond ((or (null entry) (not (at-face-end-p run guards at))) (values :at time rate))
+          ((eq (closed-form-face-end-verdict run entry over-time time) :slides-on) (values :at time 0))
+          (t (error 'unsupported-situation
+                    :datum (condition-event condition nil)
+                    :detail "A corner meets a face exactly at the face's end, moving into the adjoining face too (or beside it): a corner striking the other body's vertex is not modelled.")))))
