@@ -154,6 +154,8 @@ that vertex is convex (the fixed body there the intersection of the two faces'
 half-planes: going from the vertex into the partner's face is going inside NAME's face's
 line, n1 . t2 < 0, decided)."
   (let ((entry (assoc name (run-corner-contacts run))))
+    ;; (a fixed corner at the rotating body's vertex, leaving one face for the other,
+    ;; is not taken here: its inactive touchings then fire at once, state after state)
     (when (and entry (eq (ames.geometry:rotating-contact-kind (cdddr entry)) :vertex-on-face)
                (touching-now-p run (second entry) (cdddr entry)))
       (loop for other in (adjoining-corner-contacts run entry)
