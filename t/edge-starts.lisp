@@ -151,3 +151,84 @@ statically indeterminate, naming the particle, the tension ranging over [17, 23]
         (is (equal '("PARTICLE") (mapcar #'string (ames.simulator:indeterminate-bodies refusal))))
         (is-same-range bridge (share-range refusal "TENSION") 17 23)
         (is-same-range bridge (share-range refusal "FRICTION-FORCE") -3 3)))))
+
+;;; Local series by exact power series (src/simulator/exact-series.lisp)
+
+(defun exact-series-of (rates initial expression)
+  "The five Taylor coefficients of EXPRESSION at the start of a state with RATES and
+INITIAL values (alists over state terms), by exact power series."
+  (let ((solved (ames.simulator::%make-solved-model :rates rates :initial initial
+                                                    :state (mapcar #'car initial))))
+    (ames.simulator::exact-series-coefficients solved expression 5)))
+
+(test exact-series-give-textbook-taylor-coefficients
+  "The pendulum theta'' = -sin theta from theta = 0 at unit rate: theta = tau - tau^3/6
++ O(tau^5) (theta''' = -cos theta theta' = -1, theta'''' = 0), so sin theta = tau -
+tau^3/3 + O(tau^5); the oscillator x'' = -x from (1, 0): cos tau = 1 - tau^2/2 +
+tau^4/24; x' = 1/(1 + x) from 0: x = sqrt(1 + 2 tau) - 1 = tau - tau^2/2 + tau^3/2 -
+5 tau^4/8 (binomial series). A symbolic parameter gives NIL (the symbolic route)."
+  (let ((theta '(ames.kb:angle b)) (omega '(ames.kb:angvel b))
+        (x '(ames.kb:pos b :x)) (v '(ames.kb:vel b :x)))
+    (let ((pendulum (list (cons theta omega) (cons omega `(- (sin ,theta))))))
+      (is (equal '(0 1 0 -1/6 0) (exact-series-of pendulum (list (cons theta 0) (cons omega 1)) theta)))
+      (is (equal '(0 1 0 -1/3 0)
+                 (exact-series-of pendulum (list (cons theta 0) (cons omega 1)) `(sin ,theta)))))
+    (is (equal '(1 0 -1/2 0 1/24)
+               (exact-series-of (list (cons x v) (cons v `(- ,x))) (list (cons x 1) (cons v 0)) x)))
+    (is (equal '(0 1 -1/2 1/2 -5/8)
+               (exact-series-of (list (cons x `(/ 1 (+ 1 ,x)))) (list (cons x 0)) x)))
+    (is (null (exact-series-of (list (cons x v) (cons v '(- g))) (list (cons x 1) (cons v 0)) x)))))
+
+;;; A corner at the end of a face (src/simulator/face-end-corners.lisp)
+
+(defparameter *block-leaving-a-ledge*
+  "(scenario block-leaving-a-ledge \"A block sliding flat off the far edge of a ledge.\" (gravity 10)
+     (body floor :fixed t :shape (half-plane (1 -1/2) (0 -1/2)))
+     (body ledge :fixed t :shape (polygon (-5 -1/2) (0 -1/2) (0 0) (-5 0)))
+     (body block :mass 7/4 :inertia :uniform :shape (polygon (-7/8 -7/8) (7/8 -7/8) (7/8 7/8) (-7/8 7/8))
+           :position (-3 7/8) :angle 0 :velocity (-1/4 0))
+     (restitution 0) (simulate :states 1))"
+  "A block (side 7/4) sliding flat at 1/4 on a frictionless ledge toward its far edge.")
+
+(test a-block-sliding-off-a-ledges-edge-strikes-nothing
+  "The block slides flat at 1/4 (normal forces m g / 2 = 35/4 at each corner) until its
+trailing corner reaches the ledge's far edge at x = -5, after (3 + 7/8 - 5 + ...)/...:
+9/8 at 1/4, t = 9/2; there its corner leaves the top and the ledge's corner comes onto
+its bottom face, moving along it: no impact (main reported a collision giving the block
+an upward velocity 3/32 and a spin 3/28). The end velocity is (-1/4, 0), no spin."
+  (with-fixture simulator-bridge ()
+    (let* ((history (simulate-stopping-when-ambiguous (scenario-of-text *block-leaving-a-ledge*) bridge))
+           (state (first (ames:history-states history))))
+      (is (not (null state)))
+      (when state
+        (is-same bridge "the slide's time" (ames::state-duration state) 9/2)
+        (is (not (member :impulse (alexandria:ensure-list (ames::state-end-event state))))
+            "an impact: ~S" (ames::state-end-event state))
+        (is (equal '(-1/4 0) (per-body (ames::state-final-velocities state) "BLOCK")))
+        (is (eql 0 (per-body (ames::state-final-angular-velocities state) "BLOCK")))))))
+
+(test (a-corner-comes-onto-a-ledges-top-at-its-edge :suite long-checks)
+  "Block-step seed 2031 #30 (the crosscheck's refusal): a block lands flat on a ledge
+overhanging its edge, then slides back at 1/4; its overhanging corner reaches the line
+of the ledge's side exactly at the ledge's top corner after (7/8 - (7 + 2 sqrt 5)/40) /
+(1/4) = (28 - 2 sqrt 5)/10, moving along the ledge's top: it comes onto the top (a
+touching, no impact), at (-7/8, 7/8) with velocity (-1/4, 0), then slides on flat (13 to
+the far edge). Before, refused as a corner reaching a face's end at a speed. (About a
+minute.)"
+  (with-fixture simulator-bridge ()
+    (let* ((text (let ((*package* (find-package '#:ames-scenario)))
+                   (ames::crosscheck-scenario-text :block-step 2031 30)))
+           (history (ames:run-scenario (first (ames:read-scenarios-from-string text))
+                                       :numeric t :bridge bridge))
+           (states (ames:history-states history)))
+      (is (= 3 (length states)))
+      (when (= 3 (length states))
+        (destructuring-bind (fall slide flat) states
+          (declare (ignore fall))
+          (is (< (abs (- (expression-value (ames::state-duration slide))
+                         (expression-value '(/ (- 28 (* 2 (sqrt 5))) 10))))
+                 1d-9))
+          (is (not (member :impulse (alexandria:ensure-list (ames::state-end-event slide)))))
+          (is (equal '(-7/8 7/8) (per-body (ames::state-final-positions slide) "BLOCK")))
+          (is (equal '(-1/4 0) (per-body (ames::state-final-velocities slide) "BLOCK")))
+          (is-same bridge "the flat slide's time" (ames::state-duration flat) 13))))))
