@@ -105,7 +105,9 @@ fixed, some forces are not); NIL otherwise."
 (defun at-start (run values expression)
   "EXPRESSION with the model's VALUES and the state terms' values at the start put in."
   (let* ((expression (with-initial-positions run (substitute-expressions values expression)))
-         (state (remove-if-not (lambda (term) (member (first term) '(ames.kb:pos ames.kb:vel)))
+         (state (remove-if-not (lambda (term)
+                                 (member (first term) '(ames.kb:pos ames.kb:vel ames.kb:angle ames.kb:angvel
+                                                        ames.kb:path-position ames.kb:path-speed)))
                                (remove-if-not #'quantity-term-p (expression-variables expression)))))
     (tidy run (substitute-expressions
                (mapcar (lambda (term) (cons term (initial-state-value run term))) state)
