@@ -85,6 +85,9 @@ AMBIGUOUS-TRANSITION or UNSOLVABLE-MODEL."
                     :datum fact :missing-fact fact
                     :candidates (mapcar #'trial-assignment undecided)
                     :detail "start of a state (which contacts and modes hold)")))
-          (t (error 'unsolvable-model
-                    :datum (mapcar #'trial-assignment trials)
-                    :detail "No set of contacts and modes is consistent at the start of the state.")))))
+          ;; a model with a family of solutions fixing the motion: said as such
+          ;; (indeterminate-forces.lisp)
+          (t (error (or (and points (statically-indeterminate-trial run trials points))
+                        (make-condition 'unsolvable-model
+                                        :datum (mapcar #'trial-assignment trials)
+                                        :detail "No set of contacts and modes is consistent at the start of the state.")))))))

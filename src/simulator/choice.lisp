@@ -135,13 +135,15 @@ contacts among POINTS count when they are penetrated."
           (multiple-value-bind (verdict fact)
               (if contact
                   (penetrates-at-once run solved contact active)
-                  (fires-at-once run solved
+                  (multiple-value-call #'corner-verdict-at-vertex
+                   run solved key
+                   (fires-at-once run solved
                                  ;; the whole activation condition: a corner on a face's
                                  ;; line exactly at the face's end (decided within it at the
                                  ;; start) enters only if it does not move out of the face
                                  (or (activation-relation run key)
                                      (let ((relations (ames.engine:choice-point-relations point)))
-                                       (if (rest relations) (cons 'and relations) (first relations))))))
+                                       (if (rest relations) (cons 'and relations) (first relations)))))))
             (unless (eq verdict :false)
               (push (list key verdict fact (list :penetrates contact)) violations))))
         (when (and (eq (ames.engine:choice-point-kind point) :activation)
@@ -200,9 +202,14 @@ along) plus the inactive touching contacts grazed all along (gap identically zer
   "Among VIOLATIONS (see IMMEDIATE-VIOLATIONS), a mode's exit that surely holds at once
 for an instance whose mode is no choice among POINTS: that instance leaves its mode at
 once (a stay of no duration), so the transition's change is applied before the state
-starts. Returns the change, or NIL."
+starts. Returns the change, or NIL. A mode point with one option is no choice either: a
+stale mode whose only possible successor is judged at the instant of the start (a rope
+piece at rest can only keep its direction there, its entry to turning needs a rate), and
+whose exit, judged by the local series just after the start, surely holds (it turns at
+once, the body accelerating across it): the exit's transition is taken."
   (let ((modal (loop for point in points
-                     when (eq (ames.engine:choice-point-kind point) :mode)
+                     when (and (eq (ames.engine:choice-point-kind point) :mode)
+                               (rest (ames.engine:choice-point-options point)))
                        collect (ames.engine:choice-point-instance point))))
     (loop for (key verdict nil nil condition) in violations
           when (and (eq verdict :true) condition
@@ -216,12 +223,20 @@ starts. Returns the change, or NIL."
         when (and (consp note) (eq (first note) :leaves-mode)) collect (second note)))
 
 (defun undo-forced-changes (run trial)
-  "Put back the modes that TRIAL's forced exits changed (of the instances still active)."
+  "Put back the modes that TRIAL's forced exits changed (of the instances still active).
+An instance among TRIAL's choice points (a one-option point, see FORCED-EXIT) gets back
+in TRIAL's assignment the option it was forced out of: the assignment is applied, then
+its forced changes (SETTLE-POINTS)."
   (let ((undo (loop for (nil key nil from nil to) in (reverse (forced-changes trial))
                     collect (list :mode key :from to :to from))))
     (dolist (change undo)
       (when (mode-change-applies-p run change)
-        (ames.engine:apply-transition (run-model run) (list change) :decider (run-decider run))))))
+        (ames.engine:apply-transition (run-model run) (list change) :decider (run-decider run)))
+      (let ((entry (assoc (second change) (trial-assignment trial) :test #'equal)))
+        (when entry
+          (setf (trial-assignment trial)
+                (substitute (cons (car entry) (getf (cddr change) :to)) entry
+                            (trial-assignment trial))))))))
 
 (defun pivot (run points lone)
   "From the current model, flip the LONE activation points by Murty's least-index rule

@@ -17,11 +17,12 @@
 ;;;; (a, b) + r ((1 - t^2) u + 2 t v) / (1 + t^2) is exactly on the circle, within the
 ;;;; tolerance of where the integration left it (else the body stays put). Its velocity
 ;;;; loses its exact radial part (the rope's rate then exactly zero), its part along the
-;;;; circle written as a short rational (to 1e-9 of itself). At a turning point
-;;;; the part along the circle is left as the integration gave it (1e-11): set to 0, the
-;;;; next state's start at rest finds no consistent set of modes (the rope piece's turning
-;;;; mode needs a rate; its fixed direction's exit fires at once and is taken as a
-;;;; violation there, unlike at the run's start) -- not solved here.
+;;;; circle written as a short rational (to 1e-9 of itself), or, where the event that
+;;;; ended the state fixes it, the speed at which that event holds exactly: 0 at a turning
+;;;; point (turning-point-snapping.lisp). The next state then starts at rest exactly; its
+;;;; rope piece can only keep its direction at that instant, and that mode's exit, judged
+;;;; by the local series after the start, fires at once: the piece turns from the start
+;;;; (choice.lisp's FORCED-EXIT).
 
 (in-package #:ames.simulator)
 
@@ -163,10 +164,12 @@ the circle already (an exact closed form stays as it is)."
         (when point
           (setf positions (substitute (list body point) (assoc body positions) positions)))))))
 
-(defun velocity-on-circle (run body center radius positions velocities)
+(defun velocity-on-circle (run body center radius positions velocities &optional fired)
   "BODY's velocity among VELOCITIES moved onto the circle about CENTER of RADIUS it is
 held on at POSITIONS (see SNAP-VELOCITIES-ONTO-HELD-CIRCLES), or NIL when its position
-is not a rational point of it, or the correction is beyond the tolerance."
+is not a rational point of it, or the correction is beyond the tolerance. Its speed
+along the circle is the one at which a FIRED candidate's event holds exactly, where
+there is one (turning-point-snapping.lisp)."
   (let* ((at (second (assoc body positions)))
          (v (second (assoc body velocities)))
          (vn (mapcar (lambda (c) (snap-number run c)) v))
@@ -177,21 +180,23 @@ is not a rational point of it, or the correction is beyond the tolerance."
              (tangent (list (- (second unit)) (first unit)))
              (along (+ (* (first v) (first tangent)) (* (second v) (second tangent))))
              ;; the speed along the circle as a short rational, to 1e-9 of itself
-             (short (if (zerop along)
-                        0
-                        (simplest-rational-within (float along 1d0) (* 1d-9 (abs along)))))
+             (short (cond ((event-speed-on-circle run body tangent positions velocities fired along))
+                          ((zerop along) 0)
+                          (t (simplest-rational-within (float along 1d0) (* 1d-9 (abs along))))))
              (speed (max 1d0 (abs (first vn)) (abs (second vn)))))
         (when (<= (abs radial) (* *circle-snap-tolerance* speed))
           (list (* short (first tangent)) (* short (second tangent))))))))
 
-(defun snap-velocities-onto-held-circles (run velocities positions)
+(defun snap-velocities-onto-held-circles (run velocities positions &optional fired)
   "VELOCITIES with each body held on a circle at POSITIONS (snapped) moving along it: its
 radial part removed exactly, so that the next state finds the circle's rate exactly
 zero. (At a turning point the part along the circle is the integration's round-off,
 with the sign of the swing to come; it is kept, and the next state starts swinging that
-way.) A body whose correction is beyond the tolerance keeps its velocity."
+way, unless the event that ended the state, FIRED, fixes it: exactly 0 at a turning
+point, turning-point-snapping.lisp.) A body whose correction is beyond the tolerance
+keeps its velocity."
   (dolist (circle (held-circles run positions) velocities)
     (destructuring-bind (body center radius) circle
-      (let ((snapped (velocity-on-circle run body center radius positions velocities)))
+      (let ((snapped (velocity-on-circle run body center radius positions velocities fired)))
         (when snapped
           (setf velocities (substitute (list body snapped) (assoc body velocities) velocities)))))))

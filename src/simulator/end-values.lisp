@@ -22,7 +22,7 @@ SNAP-CORNER-VELOCITIES)."
                                           (rotation-final-values run groups fired 'ames.kb:angle) fired)
                  values)))
           ((null (run-rotations run))
-           (snap-velocities-onto-held-circles run values (final-values run groups fired :pos)))
+           (snap-velocities-onto-held-circles run values (final-values run groups fired :pos) fired))
           (t (snap-corner-velocities run values (final-values run groups fired :pos)
                                      (rotation-final-values run groups fired 'ames.kb:angle)
                                      (rotation-final-values run groups fired 'ames.kb:angvel) fired)))))

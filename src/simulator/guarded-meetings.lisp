@@ -87,7 +87,10 @@ search goes on to the next closing, up to four."
                    (return-from guarded-relation-time-and-rate (values status time rate)))
                  (multiple-value-bind (verdict fact) (guards-verdict run guards (funcall at-tau time))
                    (case verdict
-                     (:true (return-from guarded-relation-time-and-rate (values :at time rate)))
+                     ;; exactly at the face's end: the corner meets a vertex (face-end-corners.lisp)
+                     (:true (return-from guarded-relation-time-and-rate
+                              (closed-form-face-end run condition guards (funcall at-tau time)
+                                                    over-time time rate)))
                      (:unknown (return-from guarded-relation-time-and-rate (values :unknown fact)))))
                  (multiple-value-setq (status time rate) (next-closing run g time)))
         (values :unknown `(:meets-beyond-the-first-roots (= ,g 0)))))))

@@ -138,17 +138,23 @@ order), each definition's expression with the later ones' values substituted."
         (setf (gethash (car definition) table) value)
         (push (cons (car definition) value) values)))))
 
-(defun solve-model (run model)
-  "Solve MODEL's equations for every unknown quantity in terms of the parameters and
-the state variables. Returns a SOLVED-MODEL whose rates and initial values are filled
-in. Signals UNSOLVABLE-MODEL."
+(defun model-system (run model)
+  "MODEL's equations as SOLVE-MODEL solves them, and their unknowns: (values EQUATIONS
+UNKNOWNS STATE DERIVATIVES), STATE the state terms, DERIVATIVES the alist state term ->
+rate term (MODEL-DERIVATIVES)."
   (let* ((derivatives (model-derivatives model))
          (state (mapcar #'car derivatives))
          (equations (without-idle-path-terms
                      (mapcar (lambda (e) (with-initial-positions run e))
                              (ames.engine:model-equations model))
-                     state))
-         (unknowns (equation-unknowns equations state)))
+                     state)))
+    (values equations (equation-unknowns equations state) state derivatives)))
+
+(defun solve-model (run model)
+  "Solve MODEL's equations for every unknown quantity in terms of the parameters and
+the state variables. Returns a SOLVED-MODEL whose rates and initial values are filled
+in. Signals UNSOLVABLE-MODEL."
+  (multiple-value-bind (equations unknowns state derivatives) (model-system run model)
     (multiple-value-bind (compact definitions) (eliminate-definitions equations unknowns)
       (let* ((compact (remove-if (lambda (equation) (identity-p run equation)) compact))
              (remaining (equation-unknowns compact state))
@@ -262,7 +268,11 @@ derivative at a time, and memoized. Where a derivative cannot be evaluated at th
 \(0/0: |v| v at rest), the one-sided series for TAU > 0 (ONE-SIDED-SERIES) is taken."
   (let ((entry (or (gethash expression (solved-model-series solved))
                    (setf (gethash expression (solved-model-series solved))
-                         (list '() expression 1)))))
+                         ;; all exact numbers: power series (exact-series.lisp)
+                         (let ((exact (exact-series-coefficients solved expression (1+ *series-order*))))
+                           (if exact (list exact :exact 1) (list '() expression 1)))))))
+    (when (and (eq (second entry) :exact) (< (length (first entry)) count))
+      (setf (first entry) '() (second entry) expression (third entry) 1))
     (flet ((one-sided (condition)
              ;; no derivative at the start: the series for tau > 0, or CONDITION again
              (setf (first entry) (or (one-sided-series run solved expression count)
@@ -290,10 +300,41 @@ SERIES-COEFFICIENTS to COUNT coefficients, one derivative at a time."
                (setf (first entry) (append coefficients (list c))
                      (third entry) factorial
                      (second entry) (if (< k *series-order*)
-                                        (without-zeros
-                                         `(+ ,(ames.geometry:differentiate derivative 'tau)
-                                             ,(time-derivative-in solved derivative)))
+                                        (compact-derivative
+                                         run (without-zeros
+                                              `(+ ,(ames.geometry:differentiate derivative 'tau)
+                                                  ,(time-derivative-in solved derivative))))
                                         derivative))))))
+
+(defparameter *series-derivative-growth* 50
+  "How many times the expression size limit (AMES.BASE:LIMITS-EXPRESSION-SIZE, in conses
+here) a local series' next derivative may reach before the run is refused as over its
+budget (COMPACT-DERIVATIVE).")
+
+(defun size-beyond-p (expression size)
+  "True when EXPRESSION has more than SIZE conses (counted no further)."
+  (let ((count 0))
+    (labels ((walk (x)
+               (when (consp x)
+                 (when (> (incf count) size) (return-from size-beyond-p t))
+                 (walk (car x)) (walk (cdr x)))))
+      (walk expression)
+      nil)))
+
+(defun compact-derivative (run derivative)
+  "DERIVATIVE, a local series' next time derivative, after checking its size: each
+differentiation by the chain rule multiplies the size of the unsimplified expression (a
+block flush with a ledge's edge, its rates over the sine and cosine of its angle, grew
+from 1,500 to 1,800,000 conses in three steps and the next step exhausted the heap).
+Beyond *SERIES-DERIVATIVE-GROWTH* times the expression size limit, BUDGET-EXCEEDED (its
+quantity :EXPRESSION-SIZE) refuses the run instead; simplifying it in Maxima there
+outlasts Maxima's time limit."
+  (declare (ignore run))
+  (let* ((size (limits-expression-size (current-limits)))
+         (limit (and size (* *series-derivative-growth* size))))
+    (when (and limit (size-beyond-p derivative limit))
+      (check-expression-size (1+ limit) :local-series-derivative)))
+  derivative)
 
 (defun local-series (run solved expression)
   "The Taylor coefficients (C0 C1 ... Cn), n = *SERIES-ORDER*, of EXPRESSION at the start

@@ -265,9 +265,14 @@ records each numeric group's end state and samples."
         (if condition
             (let ((rate (numeric-approach-rate (nth index events) rates state time condition)))
               (when (and rate (corner-at-face-end-p run solved groups terms condition state time))
-                (error 'unsupported-situation
-                       :datum (condition-event condition nil)
-                       :detail "A corner is reached at a speed at the end of a state integrated numerically exactly at an end of the face (where the face beyond that end may take it over); its impact there is not modelled yet."))
+                ;; the corner meets the fixed body's vertex: along the adjoining face it
+                ;; slides onto it, no impact (face-end-corners.lisp)
+                (if (eq (face-end-verdict run solved groups terms condition rate rates state time)
+                        :slides-on)
+                    (setf rate nil)
+                    (error 'unsupported-situation
+                           :datum (condition-event condition nil)
+                           :detail "A corner is reached at a speed at the end of a state integrated numerically exactly at an end of the face, moving into the adjoining face too (or beside it): a corner striking the fixed body's vertex is not modelled.")))
               (list (make-candidate condition (condition-event condition rate) time :rate rate)))
             '())))))
 

@@ -12,6 +12,8 @@ knowledge base's (package AMES.KB).")
    #:simulation-error #:ambiguous-transition #:ambiguous-transition-candidates
    #:ambiguous-transition-missing-fact #:ambiguous-transition-state
    #:unsolvable-model #:unsupported-situation
+   #:statically-indeterminate #:indeterminate-bodies #:indeterminate-free #:indeterminate-shares
+   #:indeterminate-lower #:indeterminate-upper
    #:simulation-history #:history-scenario #:history-states #:history-outcome #:history-leaf-outcomes
    #:history-notes #:history-rederived #:history-parameter-values #:history-answers
    #:unanswerable
