@@ -208,7 +208,7 @@ number N counts periods of motion, never a fork."
 (defun state-at-time (bridge states time)
   "The state of STATES in which the global TIME falls, and the local time there, as
 decided under the assumptions in BRIDGE; signals UNANSWERABLE when it is not decided."
-  (dolist (state states (unanswerable "the run does not reach t = ~A" time))
+  (dolist (state states (run-end-at-time bridge states time))
     (let ((start (state-start state)) (duration (state-duration state)))
       (unless (closed-form-p start) (unanswerable "a state's start has no closed form"))
       (when (eq (ames.algebra:decide bridge `(>= ,time ,start)) :true)
@@ -217,6 +217,18 @@ decided under the assumptions in BRIDGE; signals UNANSWERABLE when it is not dec
               (t (case (ames.algebra:decide bridge `(< ,time (+ ,start ,duration)))
                    (:true (return (values state `(- ,time ,start))))
                    (:unknown (unanswerable "whether t = ~A falls in state ~D is not decided" time (state-index state))))))))))
+
+(defun run-end-at-time (bridge states time)
+  "The last period of motion of STATES and its local end when the global TIME is decided
+to be the instant the run stops (a time limit, the last state's end): a value there is
+the final state's; else signals UNANSWERABLE."
+  (let ((last (find-if-not #'fork-state-p states :from-end t)))
+    (when last
+      (let ((start (state-start last)) (duration (state-duration last)))
+        (when (and (closed-form-p start) (closed-form-p duration)
+                   (eq (ames.algebra:decide bridge `(= ,time (+ ,start ,duration))) :true))
+          (return-from run-end-at-time (values last duration)))))
+    (unanswerable "the run does not reach t = ~A" time)))
 
 (defun value-at (bridge scenario states quantity when)
   "QUANTITY (a query's) at WHEN among STATES, simplified."
