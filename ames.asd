@@ -73,6 +73,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "radical-cases")
                  (:file "imaginary-radicands")
                  (:file "inverse-angles")
+                 (:file "principal-angles")
                  (:file "half-angles")
                  (:file "one-angle-cells")
                  (:file "values")
