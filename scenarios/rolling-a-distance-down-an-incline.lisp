@@ -58,4 +58,4 @@
   (query speed-down-d (value (speed ball) :at (reaches (y ball) (- (* r (cos a)) (* d (sin a))))))
   (query kinetic-at-1 (value (kinetic-energy ball) :at 1))
   (query angular-momentum-at-1 (value (angular-momentum ball) :at 1))
-  (simulate :states 1 :until 1))
+  (simulate :states 1))
