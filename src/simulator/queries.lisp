@@ -34,6 +34,21 @@ the fork state)."
                                                  (getf branch :outcome)))))))))
     (paths (history-states history) '() (history-outcome history))))
 
+(defun unsimulated-branch-reason (history facts)
+  "Why the branch that ends the path assuming FACTS (a list, the last the branch's own)
+of HISTORY's tree was listed unsimulated, when its fork says (a boundary no parameter is
+solved for: its :FAILURE), else NIL (the values rule it out)."
+  (let ((fact (car (last facts))))
+    (labels ((search-states (states)
+               (dolist (state states)
+                 (dolist (branch (state-branches state))
+                   (when (and (equal (getf branch :assume) fact) (null (getf branch :states))
+                              (getf branch :failure))
+                     (return-from unsimulated-branch-reason (getf branch :failure)))
+                   (search-states (getf branch :states))))))
+      (search-states (history-states history))
+      nil)))
+
 (defun event-matches-p (pattern event)
   "True when the printed EVENT begins with PATTERN, names compared by name. An event
 between two bodies matches with the bodies in either order: (:leaves block cart) is the
@@ -340,7 +355,10 @@ the scenario's assumptions."
                                  (handler-case
                                      (ames.maxima:with-assumptions (bridge (and assume facts))
                                        (when (eq outcome :not-simulated)
-                                         (unanswerable "the values rule this branch out, and it is not simulated (--all-branches simulates it)"))
+                                         (let ((why (unsimulated-branch-reason history facts)))
+                                           (if why
+                                               (unanswerable "~A" why)
+                                               (unanswerable "the values rule this branch out, and it is not simulated (--all-branches simulates it)"))))
                                        (let ((value (answer-question bridge scenario question facts
                                                                      outcome states paths)))
                                          (when (and (not (member (first question) '(:prove :parameter)))
