@@ -258,6 +258,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "simplest-conditions")
                  (:file "fork-continuation")
                  (:file "implied-facts")
+                 (:file "start-values")
                  (:file "queries")
                  (:file "query-proofs")
                  (:file "questions")

@@ -182,7 +182,9 @@ the conservative sources; the work of an external force is not in it)."
 (defun quantity-in (scenario state form)
   "FORM, a query's quantity (an expression over quantity forms), in STATE over TAU."
   (cond ((and (consp form) (keywordp (first form)))
-         (let ((value (quantity-expression scenario state form)))
+         (let ((value (if *known-terms*
+                          (substitute-expressions *known-terms* (quantity-expression scenario state form))
+                          (quantity-expression scenario state form))))
            (when (mentions-unknown-p value)
              (unanswerable "state ~D's motion has no closed form" (state-index state)))
            value))
@@ -250,7 +252,8 @@ the final state's; else signals UNANSWERABLE."
   (multiple-value-bind (state at) (if (eq (first when) :reaches)
                                       (reaches-point bridge scenario states (second when) (third when))
                                       (resolve-when bridge states when))
-    (let ((value (quantity-in scenario state quantity)))
+    (let ((value (let ((*known-terms* (known-terms-at scenario states state at)))
+                   (quantity-in scenario state quantity))))
       (simplified bridge (if (vector-p* value)
                              (mapcar (lambda (x) (at-point x state at)) value)
                              (at-point value state at))))))
