@@ -358,3 +358,36 @@ boundary branches, whose facts no parameter is solved for from, say so in their 
       (dolist (entry (ames::history-answers history))
         (when (eq :unanswered (second entry))
           (is (not (search "values" (getf (cddr entry) :reason))) "~S" entry))))))
+
+;;; The instant of release where the motion has no closed form
+
+(test rods-answered-at-the-instant-of-release
+  "A rod released tilted b on a smooth floor: at release N = m g/(1 + 3 sin^2 b), alpha =
+-6 g sin b/(l (1 + 3 sin^2 b)), the centre's acceleration -3 g sin^2 b/(1 + 3 sin^2 b),
+though its motion has no closed form (these were refused); with values it lands flat at
+sqrt(3 g l cos b/4). A free rod pushed at its end by f: alpha = 6 f/(m l), a = f/m at the
+start; with values, at its end omega^2 = 12 f sin(theta)/(m l) (the energy integral)."
+  (with-fixture simulator-bridge ()
+    (let ((rod (named-scenario "rods-set-moving-by-a-push-or-a-fall" "rod-released-tilted-on-a-smooth-floor"))
+          (free (named-scenario "rods-set-moving-by-a-push-or-a-fall" "free-rod-pushed-at-one-end")))
+      (check-answers bridge rod (ames:simulate rod :bridge bridge)
+                     '(("FLOOR-PUSH-AT-RELEASE" (/ (* m g) (+ 1 (* 3 (expt (sin b) 2)))))
+                       ("ALPHA-AT-RELEASE" (- (/ (* 6 g (sin b)) (* l (+ 1 (* 3 (expt (sin b) 2)))))))
+                       ("FALL-AT-RELEASE" (- (/ (* 3 g (expt (sin b) 2)) (+ 1 (* 3 (expt (sin b) 2))))))))
+      (check-answers bridge free (ames:simulate free :bridge bridge)
+                     '(("ALPHA-AT-START" (/ (* 6 f) (* m l)))
+                       ("ACCELERATION-AT-START" (0 (/ f m)))))
+      (let* ((values (scenario-values rod))
+             (state (first (ames::history-states (ames:simulate rod :bridge bridge :parameter-values values))))
+             (vy (numeric-under bridge (second (per-body (ames::state-final-velocities state) "ROD")) values)))
+        (is (near-p vy (- (numeric-under bridge (in-scenario-terms rod '(sqrt (* 3/4 g l (cos b)))) values)) 1d-6)
+            "landing at ~A" vy))
+      (let* ((values (scenario-values free))
+             (state (first (ames::history-states (ames:simulate free :bridge bridge :parameter-values values))))
+             (theta (numeric-under bridge (rotation-entry (ames.simulator::state-final-angles state) "ROD") values))
+             (omega (numeric-under bridge (rotation-entry (ames.simulator:state-final-angular-velocities state) "ROD")
+                                   values)))
+        (is (near-p (* omega omega)
+                    (* (sin theta) (numeric-under bridge (in-scenario-terms free '(/ (* 12 f) (* m l))) values))
+                    1d-6)
+            "omega ~A at theta ~A" omega theta)))))
