@@ -35,14 +35,15 @@ slipping, balls launched with spin, physical pendulums, a ladder from 45 degrees
 
 (defun check-answers (bridge scenario history expected)
   "Check each (NAME FORM) of EXPECTED: HISTORY's answer NAME is FORM (over SCENARIO's
-parameters, Maxima-checked under its assumptions); a vector FORM is a list of two."
+parameters, Maxima-checked under its assumptions); a vector FORM is a list of two
+expressions, the first no operator."
   (call-with-scenario-facts
    bridge scenario
    (lambda ()
      (loop for (name form) in expected
            for actual = (answer-expression history name)
            for wanted = (in-scenario-terms scenario form)
-           do (if (and (consp form) (consp (first form)) (= 2 (length form)))
+           do (if (and (consp form) (not (symbolp (first form))) (= 2 (length form)))
                   (is-same-vector bridge name actual wanted)
                   (is-same bridge name actual wanted))))))
 
