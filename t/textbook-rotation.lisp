@@ -392,3 +392,29 @@ start; with values, at its end omega^2 = 12 f sin(theta)/(m l) (the energy integ
                     (* (sin theta) (numeric-under bridge (in-scenario-terms free '(/ (* 12 f) (* m l))) values))
                     1d-6)
             "omega ~A at theta ~A" omega theta)))))
+
+;;; A disc rolled up an incline: extrema over a state that never ends
+
+(test disc-rolled-up-an-incline-rises-three-quarters-v0-squared-over-g
+  "The disc rolling at v0 up the incline: one state with friction m g sin a/3 down the
+slope and alpha = (2/3) g sin a/r; it stops after 3 v0/(2 g sin a), its centre's greatest
+height r cos a + 3 v0^2/(4 g) (a maximum over a state that never ends, refused before),
+its least speed 0; its greatest speed is refused (it grows without bound); its angular
+momentum about the origin is 0 when it stops."
+  (with-fixture simulator-bridge ()
+    (let* ((scenario (named-scenario "disc-rolled-up-an-incline" "disc-rolled-up-an-incline")))
+      (multiple-value-bind (history states) (run-of scenario bridge)
+        (is (= 1 (length states)))
+        (let ((state (first states)))
+          (call-with-scenario-facts
+           bridge scenario
+           (lambda ()
+             (check-friction bridge state "DISC" "SLOPE" :static (in-scenario-terms scenario '(- (* 1/3 m g (sin a)))))
+             (is-same bridge "alpha" (rotation-entry (ames.simulator:state-angular-accelerations state) "DISC")
+                      (in-scenario-terms scenario '(/ (* 2 g (sin a)) (* 3 r)))))))
+        (check-answers bridge scenario history
+                       '(("STOPS-AT" (/ (* 3 v0) (* 2 g (sin a))))
+                         ("HIGHEST" (+ (* r (cos a)) (/ (* 3 v0 v0) (* 4 g))))
+                         ("SLOWEST" 0)
+                         ("ANGULAR-MOMENTUM-THEN" 0)))
+        (is (eq :unanswered (answer-expression history "FASTEST")))))))
