@@ -202,7 +202,9 @@ hinge (-3 m g sin b cos b/4, m g (1 + 3 sin^2 b)/4) (the start of a state along 
 period 4 sqrt(2 l/(3 g)) K((1 - sin b)/2), also twice the quadrature. The disc hinged at
 its rim: period 4 sqrt(3 r/(2 g)) K(sin^2(b/2)) (2 pi sqrt(3 r/(2 g)) for small b), at the
 bottom omega = -2 sqrt(g (1 - cos b)/(3 r)) (its far turning point comes as
--2 atan(tan b), decided past -b)."
+-2 atan(tan b), decided past -b). The rod nudged at w0 from upright turns over and over:
+omega^2 = w0^2 + 3 g/l horizontal, w0^2 + 6 g/l at the bottom, the hinge 4 m g + m l w0^2/2
+there (reaches along an angle that never turns back, refused before)."
   (with-fixture simulator-bridge ()
     (let* ((rod (named-scenario "rod-and-disc-pendulums" "rod-hinged-released-at-an-angle"))
            (disc (named-scenario "rod-and-disc-pendulums" "disc-hinged-at-its-rim"))
@@ -215,6 +217,11 @@ bottom omega = -2 sqrt(g (1 - cos b)/(3 r)) (its far turning point comes as
                        ("HINGE-AT-RELEASE" ((- (* 3/4 m g (sin b) (cos b))) (* 1/4 m g (+ 1 (* 3 (expt (sin b) 2))))))))
       (check-answers bridge disc disc-history
                      '(("OMEGA-AT-BOTTOM" (- (* 2 (sqrt (/ (* g (- 1 (cos b))) (* 3 r))))))))
+      (let ((upright (named-scenario "rod-and-disc-pendulums" "rod-nudged-from-upright")))
+        (check-answers bridge upright (run-of upright bridge)
+                       '(("OMEGA-HORIZONTAL" (sqrt (+ (* w0 w0) (/ (* 3 g) l))))
+                         ("OMEGA-BOTTOM" (sqrt (+ (* w0 w0) (/ (* 6 g) l))))
+                         ("HINGE-BOTTOM" (+ (* 4 m g) (* 1/2 m l w0 w0))))))
       (flet ((period-of (history) (getf (ames::state-periodic (first (ames::history-states history))) :period)))
         (let* ((values (scenario-values rod))
                (period (numeric-under bridge (period-of rod-history) values))
