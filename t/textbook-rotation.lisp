@@ -425,3 +425,27 @@ momentum about the origin is 0 when it stops."
                          ("SLOWEST" 0)
                          ("ANGULAR-MOMENTUM-THEN" 0)))
         (is (eq :unanswered (answer-expression history "FASTEST")))))))
+
+;;; Rolling into a wall
+
+(test rolling-bodies-bounce-off-a-wall-and-roll-back
+  "A disc and a solid ball rolling at v0 into a smooth wall (e = 1): the wall's impulse 2 m
+v0 reverses the velocity and leaves the spin; they slide and roll back at -v0 (m r^2 -
+I)/(m r^2 + I), -v0/3 after 2 v0/(3 mu g) and -(3/7) v0 after 4 v0/(7 mu g); the numbers
+printed are the formulas' values."
+  (with-fixture simulator-bridge ()
+    (loop for (name k) in '(("ROLLING-DISC-BOUNCES-OFF-A-WALL" 1/2) ("ROLLING-BALL-BOUNCES-OFF-A-WALL" 2/5))
+          for scenario = (named-scenario "rolling-bodies-bounce-off-a-wall" name)
+          for expected = `(("ROLLS-BACK-AT" (- (* v0 ,(/ (- 1 k) (+ 1 k)))))
+                           ("SLIDES-FOR" (/ (* ,(/ 2 (+ 1 k)) v0) (* mu g))))
+          do (multiple-value-bind (history states) (run-of scenario bridge)
+               (is (= 3 (length states)))
+               (is (equal '(:collision) (list (first (ames::state-end-event (first states))))))
+               (call-with-scenario-facts
+                bridge scenario
+                (lambda ()
+                  (is-same bridge "impulse" (getf (cdddr (ames::state-end-event (first states))) :impulse)
+                           (in-scenario-terms scenario '(* 2 m v0)))))
+               (check-answers bridge scenario history expected)
+               (check-numbers bridge scenario (run-of scenario bridge :parameter-values (scenario-values scenario))
+                              expected)))))
