@@ -437,7 +437,7 @@ printed are the formulas' values."
     (loop for (name k) in '(("ROLLING-DISC-BOUNCES-OFF-A-WALL" 1/2) ("ROLLING-BALL-BOUNCES-OFF-A-WALL" 2/5))
           for scenario = (named-scenario "rolling-bodies-bounce-off-a-wall" name)
           for expected = `(("ROLLS-BACK-AT" (- (* v0 ,(/ (- 1 k) (+ 1 k)))))
-                           ("SLIDES-FOR" (/ (* ,(/ 2 (+ 1 k)) v0) (* mu g))))
+                           ("SLIDES-FOR" (/ (* ,(/ (* 2 k) (+ 1 k)) v0) (* mu g))))
           do (multiple-value-bind (history states) (run-of scenario bridge)
                (is (= 3 (length states)))
                (is (equal '(:collision) (list (first (ames::state-end-event (first states))))))
