@@ -17,17 +17,17 @@ slipping, balls launched with spin, physical pendulums, a ladder from 45 degrees
 
 (in-suite textbook-rotation)
 
-(defun answer-entry (history name)
+(defun textbook-answer-entry (history name)
   "HISTORY's answer entry (NAME VALUE [:numeric N] ...) to the query NAME."
   (assoc name (ames::history-answers history) :test #'same-name-p*))
 
 (defun answer-expression (history name)
   "HISTORY's closed-form answer to the query NAME (or :UNANSWERED)."
-  (second (answer-entry history name)))
+  (second (textbook-answer-entry history name)))
 
 (defun answer-number (history name)
   "The number printed beside HISTORY's answer to the query NAME, or NIL."
-  (getf (cddr (answer-entry history name)) :numeric))
+  (getf (cddr (textbook-answer-entry history name)) :numeric))
 
 (defun scenario-values (scenario)
   "SCENARIO's (:value N) defaults, as an alist for the numeric helpers."
