@@ -330,37 +330,40 @@ spool rolling), or NIL."
           return states))
 
 (test spool-rolls-pulled-by-a-hanging-weight
-  "The spool rolling (the branch the values select): a = M g R (R + r)/(I + m R^2 + M (R +
-r)^2), the weight falling at a (1 + r/R), alpha = -a/R, T = M g (I + m R^2)/(I + m R^2 + M
-(R + r)^2), at the table's edge after sqrt(2 l/a); the printed tension is its value. The
-boundary branches, whose facts no parameter is solved for from, say so in their answers
-(they used to say the values ruled them out, in a run without values too)."
+  "The spool rolling (the branch the values select), its string leaving the top (r) or the
+bottom (-r) of its axle: a = M g R (R + r)/(I + m R^2 + M (R + r)^2), the weight falling at
+a (1 + r/R), alpha = -a/R, T = M g (I + m R^2)/(I + m R^2 + M (R + r)^2), at the table's
+edge after sqrt(2 l/a); the printed tension is its value. The boundary branches, whose
+facts no parameter is solved for from, say so in their answers (they used to say the
+values ruled them out, in a run without values too)."
   (with-fixture simulator-bridge ()
-    (let* ((scenario (named-scenario "spool-pulled-by-a-hanging-weight" "spool-pulled-by-a-hanging-weight"))
-           (values (scenario-values scenario))
-           (history (ames:simulate scenario :bridge bridge :parameter-values values))
-           (state (car (last (rolling-path-states history)))))
-      (is (not (null state)) "no rolling branch")
-      (when state
-        (flet ((x (form) (in-scenario-terms scenario form)))
-          (let* ((d '(+ i (* m big-r big-r) (* big-m (expt (+ big-r r) 2))))
-                 (a `(/ (* big-m g big-r (+ big-r r)) ,d)))
-            (call-with-scenario-facts
-             bridge scenario
-             (lambda ()
-               (is-same-vector bridge "spool" (per-body (ames::state-accelerations state) "SPOOL") (list (x a) 0))
-               (is-same-vector bridge "weight" (per-body (ames::state-accelerations state) "WEIGHT")
-                               (list 0 (x `(- (* ,a (+ 1 (/ r big-r)))))))
-               (is-same bridge "alpha" (rotation-entry (ames.simulator:state-angular-accelerations state) "SPOOL")
-                        (x `(- (/ ,a big-r))))
-               (is-same bridge "tension" (third (find :tension (ames::state-forces-of state) :key #'first))
-                        (x `(/ (* big-m g (+ i (* m big-r big-r))) ,d)))
-               (is-same bridge "to the edge" (ames::state-duration state) (x `(sqrt (/ (* 2 l) ,a))))))
-            (let ((printed (find-if (lambda (entry) (getf (cddr entry) :numeric))
-                                    (remove "TENSION" (ames::history-answers history)
-                                            :key #'first :test-not #'same-name-p*))))
-              (is (near-p (getf (cddr printed) :numeric)
-                          (numeric-under bridge (x `(/ (* big-m g (+ i (* m big-r big-r))) ,d)) values) 1d-6)))))))
+    (loop for (name side) in '(("SPOOL-PULLED-BY-A-HANGING-WEIGHT" 1) ("SPOOL-PULLED-FROM-UNDER-ITS-AXLE" -1))
+          for scenario = (named-scenario "spool-pulled-by-a-hanging-weight" name)
+          for values = (scenario-values scenario)
+          for history = (ames:simulate scenario :bridge bridge :parameter-values values)
+          for state = (car (last (rolling-path-states history)))
+          do (is (not (null state)) "~A: no rolling branch" name)
+             (when state
+               (flet ((x (form) (in-scenario-terms scenario form)))
+                 (let* ((arm `(+ big-r (* ,side r)))
+                        (d `(+ i (* m big-r big-r) (* big-m (expt ,arm 2))))
+                        (a `(/ (* big-m g big-r ,arm) ,d))
+                        (tension `(/ (* big-m g (+ i (* m big-r big-r))) ,d)))
+                   (call-with-scenario-facts
+                    bridge scenario
+                    (lambda ()
+                      (is-same-vector bridge "spool" (per-body (ames::state-accelerations state) "SPOOL") (list (x a) 0))
+                      (is-same-vector bridge "weight" (per-body (ames::state-accelerations state) "WEIGHT")
+                                      (list 0 (x `(- (* ,a (/ ,arm big-r))))))
+                      (is-same bridge "alpha" (rotation-entry (ames.simulator:state-angular-accelerations state) "SPOOL")
+                               (x `(- (/ ,a big-r))))
+                      (is-same bridge "tension" (third (find :tension (ames::state-forces-of state) :key #'first))
+                               (x tension))
+                      (is-same bridge "to the edge" (ames::state-duration state) (x `(sqrt (/ (* 2 l) ,a))))))
+                   (let ((printed (find-if (lambda (entry) (getf (cddr entry) :numeric))
+                                           (remove "TENSION" (ames::history-answers history)
+                                                   :key #'first :test-not #'same-name-p*))))
+                     (is (near-p (getf (cddr printed) :numeric) (numeric-under bridge (x tension) values) 1d-6)))))))
     (let ((history (ames:simulate (named-scenario "spool-pulled-by-a-hanging-weight" "spool-pulled-by-a-hanging-weight")
                                   :bridge bridge)))
       (dolist (entry (ames::history-answers history))
