@@ -297,8 +297,8 @@ by its CDR."
 (defparameter *reasoning-steps*
   '(decide-by-half-angle-tangent decide-by-quarter-turns decide-by-signed-parts decide-by-common-factors
     decide-by-monotonicity decide-by-atan-order decide-by-squares decide-by-angle-substitution
-    decide-by-inverse-angle-expansion decide-by-polar-angles decide-by-half-angles
-    decide-by-one-angle-cells)
+    decide-by-inverse-angle-expansion decide-by-polar-angles decide-by-principal-angles
+    decide-by-half-angles decide-by-one-angle-cells)
   "The steps of DECIDE-BY-REASONING, in the order they are tried.")
 
 (defun decide-by-reasoning (bridge relation)

@@ -216,7 +216,10 @@ I omega + m (x vy - y vx)."
                                        (* (pos ?body :y) (vel ?body :x))))))))
 
 ;; The angular momentum about the origin is a kind of momentum term of its own (terms.lisp).
-(define-reported-term :angular-momentum :section :momentum :label "angular momentum total")
+;; The query (angular-momentum B) asks for it (a rotating body's: the scenario layer refuses
+;; it of another, whose angular momentum no component reports).
+(define-reported-term :angular-momentum :section :momentum :label "angular momentum total"
+                                        :query :angular-momentum)
 
 (define-phenomenon rotation
   "Rigid bodies that rotate (a body with an :inertia): their angle and angular velocity,

@@ -24,7 +24,8 @@
   '(("X" . 1) ("Y" . 1) ("POSITION" . 1) ("VELOCITY" . 1) ("SPEED" . 1) ("ACCELERATION" . 1)
     ("NORMAL-FORCE" . 2) ("FRICTION" . 2) ("TENSION" . 1) ("KINETIC-ENERGY" . 1)
     ("MOMENTUM" . 1) ("ENERGY" . 0) ("TIME" . 0)
-    ("ANGLE" . 1) ("ANGULAR-VELOCITY" . 1) ("ANGULAR-ACCELERATION" . 1) ("HINGE-FORCE" . 1))
+    ("ANGLE" . 1) ("ANGULAR-VELOCITY" . 1) ("ANGULAR-ACCELERATION" . 1) ("HINGE-FORCE" . 1)
+    ("ANGULAR-MOMENTUM" . 1))
   "The quantities a query may ask for, with how many names each takes.")
 
 (defun query-reject (validation datum control &rest arguments)

@@ -150,7 +150,8 @@ inside or on it, or when the numbers do not tell."
                            "~A lies outside ~A's disc: a rope winds on its rim or on an axle inside it"
                            (show point) (show name))))))))))
 
-(defparameter +rotation-quantities+ '(:angle :angular-velocity :angular-acceleration)
+(defparameter +rotation-quantities+ '(:angle :angular-velocity :angular-acceleration
+                                        :angular-momentum)
   "The query quantities of a rotating body.")
 
 (defun check-rotation-queries (validation scenario)

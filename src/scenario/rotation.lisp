@@ -26,7 +26,8 @@
 ;;;;   (X Y) (so (X Y) at the circle's leftmost point hangs the rope down its left side).
 ;;;; - (segment A B) with an :inertia is a thin rod (the textbook ladder or pendulum rod):
 ;;;;   :uniform gives m |B - A|^2 / 12 about its midpoint, which must be its reference point.
-;;;; - (angle B), (angular-velocity B), (angular-acceleration B) name a rotating body,
+;;;; - (angle B), (angular-velocity B), (angular-acceleration B), (angular-momentum B) (about
+;;;;   the origin) name a rotating body,
 ;;;;   (hinge-force H) a hinge (a vector: (x (hinge-force H)), (y ...)); a value query's WHEN
 ;;;;   may be (reaches QUANTITY VALUE) (canonical (:reaches QUANTITY VALUE), queries.lisp).
 ;;;; - Until the simulator rotates bodies, SCENARIO-AWAITING (rotation-checks.lisp) lists what

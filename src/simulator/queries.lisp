@@ -34,6 +34,21 @@ the fork state)."
                                                  (getf branch :outcome)))))))))
     (paths (history-states history) '() (history-outcome history))))
 
+(defun unsimulated-branch-reason (history facts)
+  "Why the branch that ends the path assuming FACTS (a list, the last the branch's own)
+of HISTORY's tree was listed unsimulated, when its fork says (a boundary no parameter is
+solved for: its :FAILURE), else NIL (the values rule it out)."
+  (let ((fact (car (last facts))))
+    (labels ((search-states (states)
+               (dolist (state states)
+                 (dolist (branch (state-branches state))
+                   (when (and (equal (getf branch :assume) fact) (null (getf branch :states))
+                              (getf branch :failure))
+                     (return-from unsimulated-branch-reason (getf branch :failure)))
+                   (search-states (getf branch :states))))))
+      (search-states (history-states history))
+      nil)))
+
 (defun event-matches-p (pattern event)
   "True when the printed EVENT begins with PATTERN, names compared by name. An event
 between two bodies matches with the bodies in either order: (:leaves block cart) is the
@@ -167,7 +182,9 @@ the conservative sources; the work of an external force is not in it)."
 (defun quantity-in (scenario state form)
   "FORM, a query's quantity (an expression over quantity forms), in STATE over TAU."
   (cond ((and (consp form) (keywordp (first form)))
-         (let ((value (quantity-expression scenario state form)))
+         (let ((value (if *known-terms*
+                          (substitute-expressions *known-terms* (quantity-expression scenario state form))
+                          (quantity-expression scenario state form))))
            (when (mentions-unknown-p value)
              (unanswerable "state ~D's motion has no closed form" (state-index state)))
            value))
@@ -208,7 +225,7 @@ number N counts periods of motion, never a fork."
 (defun state-at-time (bridge states time)
   "The state of STATES in which the global TIME falls, and the local time there, as
 decided under the assumptions in BRIDGE; signals UNANSWERABLE when it is not decided."
-  (dolist (state states (unanswerable "the run does not reach t = ~A" time))
+  (dolist (state states (run-end-at-time bridge states time))
     (let ((start (state-start state)) (duration (state-duration state)))
       (unless (closed-form-p start) (unanswerable "a state's start has no closed form"))
       (when (eq (ames.algebra:decide bridge `(>= ,time ,start)) :true)
@@ -218,12 +235,25 @@ decided under the assumptions in BRIDGE; signals UNANSWERABLE when it is not dec
                    (:true (return (values state `(- ,time ,start))))
                    (:unknown (unanswerable "whether t = ~A falls in state ~D is not decided" time (state-index state))))))))))
 
+(defun run-end-at-time (bridge states time)
+  "The last period of motion of STATES and its local end when the global TIME is decided
+to be the instant the run stops (a time limit, the last state's end): a value there is
+the final state's; else signals UNANSWERABLE."
+  (let ((last (find-if-not #'fork-state-p states :from-end t)))
+    (when last
+      (let ((start (state-start last)) (duration (state-duration last)))
+        (when (and (closed-form-p start) (closed-form-p duration)
+                   (eq (ames.algebra:decide bridge `(= ,time (+ ,start ,duration))) :true))
+          (return-from run-end-at-time (values last duration)))))
+    (unanswerable "the run does not reach t = ~A" time)))
+
 (defun value-at (bridge scenario states quantity when)
   "QUANTITY (a query's) at WHEN among STATES, simplified."
   (multiple-value-bind (state at) (if (eq (first when) :reaches)
                                       (reaches-point bridge scenario states (second when) (third when))
                                       (resolve-when bridge states when))
-    (let ((value (quantity-in scenario state quantity)))
+    (let ((value (let ((*known-terms* (known-terms-at scenario states state at)))
+                   (quantity-in scenario state quantity))))
       (simplified bridge (if (vector-p* value)
                              (mapcar (lambda (x) (at-point x state at)) value)
                              (at-point value state at))))))
@@ -328,7 +358,10 @@ the scenario's assumptions."
                                  (handler-case
                                      (ames.maxima:with-assumptions (bridge (and assume facts))
                                        (when (eq outcome :not-simulated)
-                                         (unanswerable "the values rule this branch out, and it is not simulated (--all-branches simulates it)"))
+                                         (let ((why (unsimulated-branch-reason history facts)))
+                                           (if why
+                                               (unanswerable "~A" why)
+                                               (unanswerable "the values rule this branch out, and it is not simulated (--all-branches simulates it)"))))
                                        (let ((value (answer-question bridge scenario question facts
                                                                      outcome states paths)))
                                          (when (and (not (member (first question) '(:prove :parameter)))

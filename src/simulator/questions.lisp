@@ -170,8 +170,12 @@ compression's greatest value from the energy integral)."
     (multiple-value-bind (variable from to)
         (if (free-of-p +arc-length+ q)
             (let ((duration (state-duration state)))
-              (unless (closed-form-p duration) (unanswerable "the state's end has no closed form"))
-              (values 'tau 0 duration))
+              (cond ((eq duration :forever)
+                     ;; no end: the extremum is inside, or there is none
+                     (check-extremum-attained bridge state q maximum)
+                     (values 'tau 0 nil))
+                    ((not (closed-form-p duration)) (unanswerable "the state's end has no closed form"))
+                    (t (values 'tau 0 duration))))
             (let ((from (arc-length-start state)) (to (arc-length-end state)))
               (unless (and from to) (unanswerable "the state's ends along its path are not known"))
               (if (eq :true (ames.algebra:decide bridge `(<= ,from ,to)))
@@ -179,7 +183,7 @@ compression's greatest value from the energy integral)."
                   (if (eq :true (ames.algebra:decide bridge `(>= ,from ,to)))
                       (values +arc-length+ to from)
                       (unanswerable "which way the state runs along its path is not decided")))))
-      (let* ((points (append (list from to) (critical-points bridge (ames.geometry:differentiate
+      (let* ((points (append (list from) (and to (list to)) (critical-points bridge (ames.geometry:differentiate
                                                                            ;; sqrt is increasing: its argument's extrema
                                                                            (if (and (consp q) (eq (first q) 'sqrt)) (second q) q)
                                                                            variable)
@@ -194,8 +198,33 @@ compression's greatest value from the energy integral)."
         (or best (unanswerable "which of ~{~A~^, ~} is the ~:[smallest~;largest~] is not decided"
                                values maximum))))))
 
+(defun check-extremum-attained (bridge state q maximum)
+  "Signal UNANSWERABLE unless Q (over TAU, in STATE, which lasts forever) has a largest
+(MAXIMUM) or smallest value over it: Q (or the argument of its square root, which is
+increasing) is a polynomial in TAU, so that it tends to its leading term, whose
+coefficient has the sign that bounds it (negative for a maximum, positive for a
+minimum), or a constant. A disc rolled up an incline: its height's maximum is inside."
+  (let ((base (if (and (consp q) (eq (first q) 'sqrt)) (second q) q)))
+    (loop for derivative = base
+            then (handler-case (ames.maxima:simplify bridge (ames.geometry:differentiate derivative 'tau)
+                                                     :strategy :full)
+                   (ames-error () (ames.geometry:differentiate derivative 'tau)))
+          for order from 0 to 4
+          when (free-of-p 'tau derivative)
+            do (return
+                 (when (plusp order)
+                   (case (ames.algebra:decide bridge (list (if maximum '< '>) derivative 0))
+                     (:true nil)
+                     (:false (unanswerable "it has no ~:[smallest~;largest~] value: it grows without bound in state ~D"
+                                           maximum (state-index state)))
+                     (t (unanswerable "whether it has a ~:[smallest~;largest~] value in state ~D is not decided"
+                                      maximum (state-index state))))))
+          finally (unanswerable "whether it has a ~:[smallest~;largest~] value in state ~D, which never ends, is not decided"
+                                maximum (state-index state)))))
+
 (defun critical-points (bridge slope variable from to)
-  "The zeros of SLOPE (over VARIABLE) strictly between FROM and TO: those of each of its
+  "The zeros of SLOPE (over VARIABLE) strictly between FROM and TO (after FROM when TO
+is NIL: a state that never ends): those of each of its
 factors (a product vanishes where a factor does), so that v0^2 w cos(w t) sin(w t) has
 the zeros of the cosine and of the sine, each found by the root finder of its kind."
   (let ((slope (handler-case (ames.maxima:simplify bridge slope :strategy :full)
@@ -216,7 +245,7 @@ the zeros of the cosine and of the sine, each found by the root finder of its ki
         repeat 8
         do (cond ((eq root :unknown) (unanswerable "where its derivative vanishes is not decided"))
                  ((eq root :none) (return (reverse points)))
-                 ((eq :true (ames.algebra:decide bridge `(< ,root ,to))) (push root points))
+                 ((or (null to) (eq :true (ames.algebra:decide bridge `(< ,root ,to)))) (push root points))
                  ((eq :true (ames.algebra:decide bridge `(>= ,root ,to))) (return (reverse points)))
                  (t (unanswerable "whether its derivative vanishes before the state ends is not decided")))
         finally (unanswerable "its derivative vanishes too many times in the state")))

@@ -31,7 +31,41 @@ before it (NIL for the first)."
         (start (or (arc-length-start state) (rotation-arc-start scenario previous state)))
         (end (arc-length-end state)))
     (cond ((and between (not (getf (state-periodic state) :coordinate))) between)
-          ((and start end) (list start end)))))
+          ((and start end) (list start end))
+          ;; a motion along the coordinate that never ends nor turns (a rod turning over
+          ;; and over): its far end is NIL
+          ((and start (eq (state-duration state) :forever) (not between)) (list start nil)))))
+
+(defun endless-motion-direction (state)
+  "The direction (1 or -1) of STATE's one motion along its coordinate, or NIL."
+  (let ((notes (state-line-coordinates state)))
+    (and notes (null (rest notes)) (member (getf (first notes) :direction) '(1 -1))
+         (getf (first notes) :direction))))
+
+(defun reached-with-speed-p (bridge state root)
+  "True when the motion along STATE's coordinate reaches ROOT moving: its energy integral
+(the squared speed along the coordinate) is proven positive there, so that it is not
+only approached for ever (an unstable equilibrium reached with exactly its energy)."
+  (let ((integral (getf (first (state-line-coordinates state)) :energy-integral)))
+    (and integral
+         (eq :true (ames.algebra:decide
+                    bridge `(> ,(substitute-expressions (list (cons +arc-length+ root)) (third integral)) 0))))))
+
+(defun reaches-along-endless-arc (bridge state difference s0)
+  "The arc length S where DIFFERENCE first vanishes ahead of S0 in STATE, whose motion along
+its coordinate never ends nor turns, or NIL; signals UNANSWERABLE when not decided."
+  (let ((direction (or (endless-motion-direction state)
+                       (unanswerable "which way state ~D runs along its coordinate is not known"
+                                     (state-index state)))))
+    (multiple-value-bind (root status)
+        (ames.algebra:coordinate-root-ahead bridge difference +arc-length+ s0 direction)
+      (case root
+        (:none nil)
+        (:unknown (unanswerable "where it is reached in state ~D is not decided~@[ (~S)~]"
+                                (state-index state) status))
+        (t (if (reached-with-speed-p bridge state root)
+               root
+               (unanswerable "whether state ~D reaches it moving is not decided" (state-index state))))))))
 
 (defun reaches-along-arc (bridge scenario previous state difference)
   "The arc length S where DIFFERENCE (over the arc length) first vanishes in STATE, or NIL
@@ -47,6 +81,8 @@ is not decided."
           (:true (return-from reaches-along-arc s0))
           (:unknown (unanswerable "whether it holds at the start of state ~D is not decided"
                                   (state-index state))))
+        (unless s1
+          (return-from reaches-along-arc (reaches-along-endless-arc bridge state difference s0)))
         (let ((direction (case (decided `(> ,s1 ,s0)) (:true 1)
                            (t (if (eq (decided `(< ,s1 ,s0)) :true) -1
                                   (return-from reaches-along-arc nil))))))

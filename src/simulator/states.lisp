@@ -81,9 +81,10 @@ then has no closed form)."
 
 (defun line-notes (groups)
   "The notes of the state's motions along a line of the configuration space (see
-line.lisp): the coordinate s, its start and direction, and the energy integral."
+line.lisp) or along a rotating body's angle (rotation-path.lisp): the coordinate s, its
+start and direction, and the energy integral."
   (loop for group in groups
-        when (eq (group-kind group) :line)
+        when (member (group-kind group) '(:line :rotation-path))
           collect (list :bodies (group-bodies group)
                         :coordinate (getf (group-line group) :coordinate)
                         :from (group-s0 group)
