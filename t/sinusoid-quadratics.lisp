@@ -108,3 +108,74 @@ unproven; quadratics in one sinusoid with and without a linear part are proven."
            (is (member verdict (case points (1 '(nil :positive)) (-1 '(nil :negative)) (t '(nil))))
                "~A: ~A, but ~A at points" coefficients verdict points)))
        (is (> proven 5))))))
+
+;;; The friction limit mu N -+ F at every angle, under a declared "rough enough"
+
+(defparameter *rocking-friction*
+  '(/ (* m (+ (* (- (* (- (* 9 g (expt k 2)) (* 9 g (expt w 2))) (cos s))
+                    (+ (* 6 g (expt k 2)) (* 2 (expt w 2) k (expt w0 2)) (* 2 (expt k 3) (expt w0 2))))
+                 (sin s))
+              (* 18 g w k (expt (cos s) 2))
+              (- (* (+ (* 6 g w k) (* 2 w (expt k 2) (expt w0 2)) (* 2 (expt w 3) (expt w0 2))) (cos s)))
+              (* -9 g w k)))
+      (* 4 (+ (expt w 2) (expt k 2))))
+  "The static friction on the symbolic rocking block's edge along its angle s, as the run
+writes it.")
+
+(defparameter *rocking-turning-cosine*
+  '(/ (+ (* 3 g k) (* (+ (expt w 2) (expt k 2)) (expt w0 2))) (* 3 g (sqrt (+ (expt w 2) (expt k 2)))))
+  "b = k/D + D w0^2/(3 g): the cosine of the centre's angle from the vertical through the
+edge at the turning point.")
+
+(test rocking-friction-is-the-textbooks
+  "The run's friction is the textbook's m a_x = (3 m g / 4) sin p (2 b - 3 c) (this file's
+header; p = atan(w/k) + s, the sign of the x axis)."
+  (call-with-bridge
+   (lambda (b)
+     (let* ((d '(sqrt (+ (expt w 2) (expt k 2))))
+            (c `(/ (- (* k (cos s)) (* w (sin s))) ,d))
+            (sp `(/ (+ (* w (cos s)) (* k (sin s))) ,d)))
+       (is (ames.maxima:equivalent-p
+            b *rocking-friction*
+            `(* -3/4 m g ,sp (- (* 2 ,*rocking-turning-cosine*) (* 3 ,c)))))))))
+
+(test rocking-friction-limit-holds-at-every-angle-when-rough-enough
+  "With mu > (9/2 + 6 b) / (1 - b^2) (N >= (m g / 4)(1 - b^2) and |F| <= (m g / 4)(9/2 + 6 b)
+at every angle), mu N - F and mu N + F are proven positive at every angle; with mu > 0
+alone, or a bound a tenth of it, they are not."
+  (call-with-bridge
+   (lambda (b)
+     (let* ((beta *rocking-turning-cosine*)
+            (rough `(> mu (/ (+ 9/2 (* 6 ,beta)) (- 1 (expt ,beta 2)))))
+            (facts (list* '(> m 0) '(> mu 0) rough *rocking-bound-facts*)))
+       (dolist (sign '(1 -1))
+         (let ((limit `(- (* mu ,*rocking-normal-force*) (* ,sign ,*rocking-friction*))))
+           (is (eq :positive (sign-everywhere b facts limit)))
+           (is (null (sign-everywhere b (list* '(> m 0) '(> mu 0) *rocking-bound-facts*) limit)))
+           (is (null (sign-everywhere b (list* '(> m 0) '(> mu 0)
+                                               `(> mu (/ (+ 9/20 (* 6/10 ,beta)) (- 1 (expt ,beta 2))))
+                                               *rocking-bound-facts*)
+                                      limit)))))))))
+
+(test parameter-bounds-hold-at-points
+  "p P + Q with P a quadratic in one sinusoid and Q any quadratic in sin and cos, under a
+fact p > p0: every :POSITIVE holds at 720 angles for p just above p0 and well above it."
+  (call-with-bridge
+   (lambda (b)
+     (let ((*random-state* (sb-ext:seed-random-state 29)) (proven 0))
+       (dotimes (i 25)
+         (let* ((delta (- (random 5) 2)) (epsilon (- (random 5) 2))
+                (a (/ (random 5) 4)) (c (/ (random 9) 2))
+                (inner (list (* a delta delta) (* 2 a delta epsilon) (* a epsilon epsilon)
+                             delta epsilon c))
+                (outer (loop repeat 6 collect (/ (- (random 9) 4) 2)))
+                (p0 (/ (random 17) 2))
+                (function `(+ (* p ,(sinusoid-expression inner)) ,(sinusoid-expression outer)))
+                (verdict (sign-everywhere b `((> p ,p0)) function)))
+           (when (eq verdict :positive)
+             (incf proven)
+             (dolist (p (list (+ p0 1/1000) (+ p0 5)))
+               (is (= 1 (sinusoid-sign-at-points
+                         (mapcar (lambda (x y) (+ (* p x) y)) inner outer)))
+                   "~A under p > ~A: not positive at p = ~A" function p0 p)))))
+       (is (> proven 2))))))

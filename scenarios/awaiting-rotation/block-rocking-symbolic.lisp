@@ -14,9 +14,24 @@
 
 (scenario block-rocking-symbolic
   "A block set turning about its bottom edge rises on it, turns back and rocks on its other edge."
-  (parameters (m :positive) (g :positive) (w :positive) (k :positive) (mu :positive)
+  (parameters (m :positive) (g :positive) (w :positive) (k :positive)
               (w0 :positive (< w0 (sqrt (/ (* 3 g (- (sqrt (+ (expt w 2) (expt k 2))) k))
-                                          (+ (expt w 2) (expt k 2)))))))
+                                          (+ (expt w 2) (expt k 2))))))
+              ;; rough enough (see the header): at every angle, then at the start and at
+              ;; the strike, which follow from it
+              (mu :positive
+                  (> mu (/ (+ 9/2 (* 6 (/ (+ (* 3 g k) (* (+ (expt w 2) (expt k 2)) (expt w0 2)))
+                                          (* 3 g (sqrt (+ (expt w 2) (expt k 2)))))))
+                           (- 1 (expt (/ (+ (* 3 g k) (* (+ (expt w 2) (expt k 2)) (expt w0 2)))
+                                         (* 3 g (sqrt (+ (expt w 2) (expt k 2)))))
+                                      2))))
+                  (> mu (/ (- (* 3 g w k) (* 2 w (+ (expt w 2) (expt k 2)) (expt w0 2)))
+                           (- (* g (+ (expt w 2) (* 4 (expt k 2))))
+                              (* 2 k (+ (expt w 2) (expt k 2)) (expt w0 2)))))
+                  (> mu (/ (- (* 2 w (+ (expt w 2) (expt k 2)) (expt w0 2)) (* 3 g w k))
+                           (- (* g (+ (expt w 2) (* 4 (expt k 2))))
+                              (* 2 k (+ (expt w 2) (expt k 2)) (expt w0 2)))))
+                  (> mu (/ (* 3 w k) (+ (expt w 2) (* 4 (expt k 2)))))))
   (gravity g)
   (body floor :fixed t :shape (half-plane (1 0) (0 0)))
   (body block :mass m :inertia :uniform :position (0 (/ k 2))

@@ -95,6 +95,58 @@ at every angle (see this file's header)."
                     (and (proven `(> (+ (* ,a (expt ,r 2)) (- ,r) ,c) 0))
                          (or (proven `(<= ,a 0)) (proven `(<= (* 2 ,a ,r) 1))))))))))))
 
+;;; A function linear in a positive parameter: p P + Q, P bounded below, Q in size
+
+(defun sinusoid-lower-bound (bridge coefficients)
+  "An expression L, free of the angle, with the function of COEFFICIENTS >= L at every
+angle (its least value over a quadratic in one sinusoid), or NIL when none is found."
+  (destructuring-bind (alpha beta gamma delta epsilon zeta) coefficients
+    (flet ((proven (relation) (holds-p bridge relation)))
+      (if (and (zero-expression-p bridge delta) (zero-expression-p bridge epsilon))
+          `(- (+ ,zeta (/ (+ ,alpha ,gamma) 2))
+              (sqrt (/ (+ (expt (- ,alpha ,gamma) 2) (expt ,beta 2)) 4)))
+          (let ((form (one-sinusoid-form bridge coefficients)))
+            (when form
+              (destructuring-bind (a c r) form
+                (cond ((and (proven `(> ,a 0)) (proven `(>= (* 2 ,a ,r) 1)))
+                       `(- ,c (/ 1 (* 4 ,a))))
+                      ((or (proven `(<= ,a 0)) (proven `(<= (* 2 ,a ,r) 1)))
+                       `(+ (* ,a (expt ,r 2)) (- ,r) ,c))))))))))
+
+(defun sinusoid-size-bound (coefficients)
+  "An expression B, free of the angle, with |f| <= B at every angle for the function of
+COEFFICIENTS: |M| + sqrt(P^2 + Q^2) + sqrt(delta^2 + epsilon^2), f = M + P cos 2s + Q sin
+2s + delta cos s + epsilon sin s."
+  (destructuring-bind (alpha beta gamma delta epsilon zeta) coefficients
+    `(+ (abs (+ ,zeta (/ (+ ,alpha ,gamma) 2)))
+        (sqrt (/ (+ (expt (- ,alpha ,gamma) 2) (expt ,beta 2)) 4))
+        (sqrt (+ (expt ,delta 2) (expt ,epsilon 2))))))
+
+(defun expression-names (expression)
+  "The symbols (parameters) of EXPRESSION, other than pi."
+  (let ((names '()))
+    (labels ((walk (x)
+               (cond ((and (symbolp x) x (not (eq x 'pi))) (pushnew x names))
+                     ((and (consp x) (not (quantity-term-p x))) (mapc #'walk (expression-arguments x))))))
+      (walk expression))
+    names))
+
+(defun positive-through-a-parameter-p (bridge function angle)
+  "True when FUNCTION = p P + Q for a parameter p, P and Q quadratic in sin and cos of
+ANGLE, P >= L at every angle (SINUSOID-LOWER-BOUND), |Q| <= B (SINUSOID-SIZE-BOUND), and
+L > 0 and p > B / L are proven: then p > 0 and FUNCTION >= p L - B > 0 at every angle (a static friction limit, mu N - F, under a declared \"rough enough\")."
+  (dolist (p (remove angle (expression-names function)) nil)
+    (let ((parts (coefficients-up-to bridge function p 1)))
+      (when (and parts (not (zero-expression-p bridge (second parts))))
+        (let ((inner (quadratic-sinusoid-coefficients bridge (second parts) angle))
+              (rest (quadratic-sinusoid-coefficients bridge (first parts) angle)))
+          (when (and inner rest)
+            (let ((lower (sinusoid-lower-bound bridge inner)))
+              ;; L > 0 and p > B / L (so p > 0, as B >= 0): p P + Q >= p L - B > 0
+              (when (and lower (holds-p bridge `(> ,lower 0))
+                         (holds-p bridge `(> ,p (/ ,(sinusoid-size-bound rest) ,lower))))
+                (return t)))))))))
+
 (defun sign-at-every-angle (bridge function angle)
   "The sign FUNCTION (of the name or term ANGLE, through its sin and cos only, quadratic in
 them) is proven to have at every value of ANGLE under the facts in force: :POSITIVE,
@@ -107,5 +159,7 @@ header). Sound: NIL claims nothing."
           (cond ((positive-quadratic-in-sinusoid-p bridge coefficients) :positive)
                 ((positive-quadratic-in-sinusoid-p
                   bridge (mapcar (lambda (x) (simplified bridge `(- ,x))) coefficients))
-                 :negative))
+                 :negative)
+                ((positive-through-a-parameter-p bridge function angle) :positive)
+                ((positive-through-a-parameter-p bridge `(- ,function) angle) :negative))
         ((or maxima-error maxima-timeout) () nil)))))
