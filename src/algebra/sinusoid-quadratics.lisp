@@ -19,6 +19,14 @@
 ;;;;   - when it is 0: f = M + P cos 2s + Q sin 2s, M = zeta + (alpha + gamma)/2, P = (alpha -
 ;;;;     gamma)/2, Q = beta/2, and f > 0 at every angle when M > 0 and M^2 > P^2 + Q^2.
 ;;;; Each condition is asked of DECIDE under the facts in force. f < 0 likewise, on -f.
+;;;; A static friction limit along the angle, mu N - F, is no quadratic in one sinusoid
+;;;; (F's sinusoid is another). It is linear in mu: f = p P + Q, p a parameter. Where P
+;;;; has a least value L > 0 at every angle (c - 1/(4 a) for a > 0 and the vertex within
+;;;; [-R, R], else the value at -R; M - sqrt(P^2 + Q^2) without a linear part) and Q is no
+;;;; larger than B = |M| + sqrt(P^2 + Q^2) + sqrt(delta^2 + epsilon^2) in size (each
+;;;; harmonic at its amplitude), p > B / L proves f >= p L - B > 0 at every angle: a
+;;;; declared "rough enough", mu greater than the largest friction over the least normal
+;;;; force, taken one harmonic at a time (stronger than the motion needs).
 ;;;; Sound: each is a proof that f has that sign for every real angle, the more so over a
 ;;;; part of them (a rise from the flat position to a turning angle); where a condition is
 ;;;; not proven nothing is claimed.
