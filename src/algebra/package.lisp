@@ -18,6 +18,8 @@ It asks Maxima only through the bridge.")
    #:decide #:substitute-subexpressions #:holds-p #:*combined-bounds-wanted* #:sign-varies-p #:refuted-p
    ;; a relation proven to contradict the facts in force (contradictions.lisp)
    #:contradicts-facts-p #:one-angle-root
+   ;; the sign of a quadratic in one sinusoid at every angle (sinusoid-quadratics.lisp)
+   #:sign-at-every-angle
    ;; numbers before proofs (values.lisp)
    #:call-with-parameter-values #:with-parameter-values #:current-parameter-values
    #:value-truth #:decide-by-values #:facts-from-values

@@ -14,7 +14,9 @@
 ;;;; piece whose lower bound is not positive is halved, down to a 2^-16th of the first
 ;;;; pieces (ames.algebra's intervals.lisp). f > 0 on every piece proves that the condition never fires before the body
 ;;;; turns back; anything else (a bound that stays non-positive, a form not evaluated) is
-;;;; no proof, and the condition stays undecided.
+;;;; no proof, and the condition stays undecided. Without numbers, a function quadratic in
+;;;; one sinusoid of the angle (a normal force) may be proven positive at every angle
+;;;; (ames.algebra's sinusoid-quadratics.lisp).
 
 (in-package #:ames.simulator)
 
@@ -23,8 +25,13 @@
 GROUP's start to just past the angle where its body turns back (its energy integral
 turns negative, within a full turn): the condition it stands for never fires within the
 state's motion along the angle. NIL when not proven (no numbers, no turning point found,
-or the bound fails)."
-  (when (run-numbers-known-p run)
+or the bound fails). Without numbers: FUNCTION proven positive at every angle, a
+quadratic in one sinusoid of it (AMES.ALGEBRA:SIGN-AT-EVERY-ANGLE)."
+  (unless (run-numbers-known-p run)
+    (return-from positive-before-turning-p
+      (eq :positive (ames.algebra:sign-at-every-angle (run-bridge run) (tidy run function)
+                                                      +arc-length+))))
+  (progn
     (let ((reach (numeric-turning-reach run group))
           (bindings (numeric-bindings run)))
       (when (and reach (< reach (* 2 pi)))

@@ -162,12 +162,18 @@ its top with just the energy to get there) the body approaches it in no finite t
                    (let ((slope (tidy run (at-arc (ames.geometry:differentiate (group-speed-squared group)
                                                                                +arc-length+)
                                                   s))))
-                     (case (decide run `(= ,slope 0))
-                       ;; a double zero of E: the body creeps toward it for ever (an
-                       ;; unstable equilibrium reached in no finite time), never turning
-                       (:true (values :never))
-                       (:false (values :at s))
-                       (t (values :unknown `(/= ,slope 0)))))
+                     ;; E falls to 0 there, its slope of the sign opposite to the
+                     ;; motion's: proven strict, a simple zero (asked first: where E's
+                     ;; zero is an atan of a root, = 0 costs DECIDE minutes, the strict
+                     ;; sign seconds)
+                     (if (eq :true (decide run `(< (* ,(group-direction group) ,slope) 0)))
+                         (values :at s)
+                         (case (decide run `(= ,slope 0))
+                           ;; a double zero of E: the body creeps toward it for ever (an
+                           ;; unstable equilibrium reached in no finite time), never turning
+                           (:true (values :never))
+                           (:false (values :at s))
+                           (t (values :unknown `(/= ,slope 0))))))
                    (values status s)))))))
 
 (defun creeping-end-p (run group s)
