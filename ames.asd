@@ -77,6 +77,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "one-angle-cells")
                  (:file "values")
                  (:file "values-first")
+                 (:file "real-roots")
                  (:file "roots")
                  (:file "repeated-roots")
                  (:file "integrator-support")
