@@ -396,6 +396,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "rest-in-contact")
                (:file "refusals")
                (:file "closing-at-pulley")
+               (:file "real-roots")
                (:file "witness")
                (:file "witness-rotation")
                (:file "scenario-rotation")
