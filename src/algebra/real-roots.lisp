@@ -32,17 +32,25 @@ ones included, each once, outermost first."
       (walk expression))
     (nreverse found)))
 
+(defun proven-real-p (bridge expression)
+  "True when EXPRESSION (prefix algebra, free of %i) is proven real under the facts in
+force in BRIDGE: each radicand of an even root in it (EVEN-ROOT-RADICANDS) proven
+non-negative (HOLDS-P; a constant one by exact intervals, through DECIDE). NIL when one
+is not: Maxima's sign() takes sqrt(D) for a non-negative real whatever D's sign, so a
+sign it gives such an EXPRESSION proves nothing. Signals what DECIDE signals, but for an
+untranslatable radicand (NIL)."
+  (every (lambda (radicand)
+           (if (realp radicand)
+               (>= radicand 0)
+               (handler-case (holds-p bridge (list '>= radicand 0))
+                 (untranslatable-expression () nil))))
+         (even-root-radicands expression)))
+
 (defun proven-real-root-p (search offset)
   "True when the root form OFFSET (a root solve() gave, free of %i) is proven real under
-the facts in force: each radicand of an even root in it (EVEN-ROOT-RADICANDS) proven
-non-negative (HOLDS-P; a constant one by exact intervals, through DECIDE). NIL when
-one is not, or OFFSET does not translate."
+the facts in force (PROVEN-REAL-P of its expression). NIL when it is not, or OFFSET
+does not translate."
   (let* ((bridge (search-bridge search))
          (expression (handler-case (root-form-expression bridge offset)
                        (untranslatable-result () (return-from proven-real-root-p nil)))))
-    (every (lambda (radicand)
-             (if (realp radicand)
-                 (>= radicand 0)
-                 (handler-case (holds-p bridge (list '>= radicand 0))
-                   (untranslatable-expression () nil))))
-           (even-root-radicands expression))))
+    (proven-real-p bridge expression)))
