@@ -12,6 +12,9 @@
 ;;;; it is left undecided (and dropped only when its imaginary part is decidedly not zero,
 ;;;; NON-REAL-P), so that the search answers :UNKNOWN and the square-free retry
 ;;;; (repeated-roots.lisp), whose quadratic reads the discriminant's sign, is tried.
+;;;; The same flaw took sqrt(-(mb (l1 - l2)^2 + ma l3^2)) / sqrt(mb g (l2 - l1) + f l3) for
+;;;; a time in the two blocks in a corner (real only when the push is too weak); the run
+;;;; now branches on the push's sign at once, not through the slope at that root.
 
 (in-package #:ames.algebra)
 
