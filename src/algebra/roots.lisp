@@ -319,7 +319,11 @@ miss roots and nothing is proven)."
         (if (complex-root-form-p offset)
             (progn (push offset undecided) (undecided-anyway))
             (ecase (root-verdict (sign-pattern-of search offset (verdict-tests strictly)) strictly)
-              (:yes (push offset proven))
+              ;; a root of undecided realness (sqrt of a radicand of undecided sign,
+              ;; which sign() takes for real) is no proven time (real-roots.lisp)
+              (:yes (cond ((proven-real-root-p search offset) (push offset proven))
+                          ((non-real-p search offset))
+                          (t (push offset undecided) (undecided-anyway))))
               (:no)
               (:maybe (unless (non-real-p search offset)
                         (push offset undecided) (undecided-anyway)))))))

@@ -34,13 +34,16 @@ along it alone (see ALONG-SPEED-LINE); else NIL."
 
 (defun monotone-root (run g)
   "The one root of G (a function of TAU) that Maxima finds after 0 which is proven
-positive, a root, and a downward crossing; NIL unless there is exactly one such."
+real, positive, a root, and a downward crossing; NIL unless there is exactly one such."
   (multiple-value-bind (root candidates)
       (ames.algebra:earliest-root (run-bridge run) g 'tau :after 0 :strictly t :candidates t)
     (when (eq root :unknown)
       (let ((roots (remove-if-not
                     (lambda (c)
                       (and (free-of-p 'tau c)
+                           ;; sign() takes a square root of a radicand of open sign for
+                           ;; real: a complex root would pass the tests below
+                           (ames.algebra:proven-real-p (run-bridge run) c)
                            (holds run `(> ,c 0))
                            (eql 0 (tidy run (at-time g c) :full))
                            (holds run `(< ,(tidy run (at-time (time-derivative g) c) :full) 0))))
