@@ -55,6 +55,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "sign-rules")
                  (:file "angles")
                  (:file "witnesses")
+                 (:file "admissible-pools")
                  (:file "constant-zero")
                  (:file "intervals")
                  (:file "round-off")
