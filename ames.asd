@@ -410,6 +410,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "tipping")
                (:file "ledge-impacts")
                (:file "tipping-criterion")
+               (:file "pushed-block")
                (:file "fact-remainders")
                (:file "one-angle-cells")
                (:file "atan-orders")

@@ -37,7 +37,7 @@ branch, the static pivot ruled out where it slides, two bounds combined by DECID
 
 (defun pushed-block-file ()
   "The file of the pushed block's scenarios."
-  (merge-pathnames "scenarios/awaiting-rotation/pushed-block-tips-or-slides.lisp"
+  (merge-pathnames "scenarios/pushed-block-tips-or-slides.lisp"
                    (asdf:system-source-directory "ames")))
 
 (test sticking-front-edge-is-ruled-out-where-the-block-slides-flat

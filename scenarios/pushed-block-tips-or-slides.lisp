@@ -1,4 +1,4 @@
-;;;; scenarios/awaiting-rotation/pushed-block-tips-or-slides.lisp -- a block on a rough floor
+;;;; scenarios/pushed-block-tips-or-slides.lisp -- a block on a rough floor
 ;;;; pushed horizontally: pushed low it slides, pushed high it tips.
 ;;;;
 ;;;; The block: width w, height k, mass m, uniform; a constant push P > mu m g to the right
