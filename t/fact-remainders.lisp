@@ -1,6 +1,6 @@
 ;;;; t/fact-remainders.lisp -- DECIDE by one fact and a remainder of proven sign (src/algebra/fact-remainders.lisp).
 ;;;;
-;;;; The pushed block of scenarios/awaiting-rotation/pushed-block-tips-or-slides.lisp,
+;;;; The pushed block of scenarios/pushed-block-tips-or-slides.lisp,
 ;;;; pushed at y = 9k/20, tips about its front edge (t/tipping-criterion.lisp). Turning
 ;;;; about that edge from rest, alpha = (m g w/2 - (y + k/2) P) / I_edge, I_edge = m (w^2 +
 ;;;; k^2)/3; its centre, at (-w/2, k/2) from the edge, accelerates by alpha x r =

@@ -36,8 +36,8 @@ branch, the static pivot ruled out where it slides, two bounds combined by DECID
   "The static friction limit of the front edge while the block tips about it from rest.")
 
 (defun pushed-block-file ()
-  "The file of the pushed block's scenarios."
-  (merge-pathnames "scenarios/awaiting-rotation/pushed-block-tips-or-slides.lisp"
+  "The file of the block pushed low (y = -9k/20)."
+  (merge-pathnames "scenarios/awaiting-rotation/pushed-block-slides.lisp"
                    (asdf:system-source-directory "ames")))
 
 (test sticking-front-edge-is-ruled-out-where-the-block-slides-flat

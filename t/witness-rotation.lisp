@@ -231,8 +231,7 @@ I_edge = m (w^2 + k^2) / 3 (after 0.02 s, within 1 %), and its downhill edge doe
   "A block pushed by P > mu m g: pushed low it slides flat at (P - mu m g) / m; pushed high
 (y P + (k/2) mu m g > (w/2) m g) it tips forward (clockwise) instead."
   (with-siconos
-    (multiple-value-bind (answer values) (rotation-witness "pushed-block-tips-or-slides" 0.2d0
-                                                           :name "pushed-block-slides")
+    (multiple-value-bind (answer values) (rotation-witness "pushed-block-slides" 0.2d0)
       (flet ((v (name) (value-of-parameter values name)))
         (let ((end (ames.witness:witness-end answer)))
           (is (eq :ok (ames.witness:witness-status answer)))

@@ -120,7 +120,7 @@ there, or NIL where it has none (the point lies outside the case its caller hand
 is skipped). CANDIDATE without a real value where REFERENCE has one disagrees. Stops at
 the first disagreement, or after twice *VERIFICATION-POINTS* agreements."
   (let ((agreed 0) (disagreed 0)
-        (*witness-draws* 400) (*witness-admissible-points* 40))
+        (*witness-admissible-points* 40))
     (call-with-admissible-points
      bridge (list '> (if subjects (list* '+ subjects) 0) 0)
      (lambda (point)

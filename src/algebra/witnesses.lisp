@@ -22,11 +22,9 @@
 ;;; overflow) is left out. Finding no witness proves nothing, and the strategies run as
 ;;; before: no answer changes, only its cost (given that every strategy is sound).
 
-(defparameter *witness-draws* 80
-  "How many random points CALL-WITH-ADMISSIBLE-POINTS draws at most.")
-
 (defparameter *witness-admissible-points* 16
-  "How many admissible points CALL-WITH-ADMISSIBLE-POINTS offers at most.")
+  "How many admissible points CALL-WITH-ADMISSIBLE-POINTS offers at most (drawn once per
+set of facts: admissible-pools.lisp).")
 
 (defstruct (ball (:constructor make-ball (center radius)))
   "A real number known to lie within RADIUS of CENTER (double floats)."
@@ -206,28 +204,11 @@ gives them (each kept at its last occurrence), in time linear in their number."
 (defun call-with-admissible-points (bridge relation function &optional assuming)
   "Call FUNCTION on random points (alists subject -> double float, over the subjects of
 RELATION and of the facts in force) that surely satisfy the facts in force and the
-facts ASSUMING, until it returns true or the limits (*WITNESS-DRAWS*,
-*WITNESS-ADMISSIBLE-POINTS*) are reached. Returns the flattened facts."
-  (let* ((facts (flatten-facts (append (current-assumptions bridge) assuming)))
-         (intervals (subject-intervals facts))
-         (subjects (distinct-subjects (append (expression-variables relation)
-                                              (mapcan #'expression-variables facts))))
-         ;; each subject's interval looked up once, not at every draw
-         (subject-intervals (let ((table (make-hash-table :test #'equal)))
-                              (dolist (entry (reverse intervals))
-                                (setf (gethash (car entry) table) (cdr entry)))
-                              (mapcar (lambda (subject) (values (gethash subject table)))
-                                      subjects)))
-         (random-state (sb-ext:seed-random-state 1994))
-         (admissible 0))
-    (loop repeat *witness-draws*
-          while (< admissible *witness-admissible-points*)
-          do (let ((point (mapcar (lambda (subject interval)
-                                    (cons subject (random-value interval random-state)))
-                                  subjects subject-intervals)))
-               (when (every (lambda (fact) (eq (condition-truth fact point) :true)) facts)
-                 (incf admissible)
-                 (when (funcall function point) (return)))))
+facts ASSUMING, until it returns true or the points run out (at most
+*WITNESS-ADMISSIBLE-POINTS*, drawn once per set of facts: admissible-pools.lisp).
+Returns the flattened facts."
+  (let ((facts (flatten-facts (append (current-assumptions bridge) assuming))))
+    (pooled-admissible-points facts relation function)
     facts))
 
 (defun relation-witnesses (bridge relation)
