@@ -237,6 +237,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "numeric-round-off")
                  (:file "numeric-roots")
                  (:file "numeric-angle-roots")
+                 (:file "angle-horizon")
                  (:file "angle-intervals")
                  (:file "corner-snapping")
                  (:file "flat-corner-snapping")
