@@ -238,6 +238,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "numeric-roots")
                  (:file "numeric-angle-roots")
                  (:file "angle-horizon")
+                 (:file "angle-horizon-proofs")
                  (:file "angle-intervals")
                  (:file "corner-snapping")
                  (:file "flat-corner-snapping")

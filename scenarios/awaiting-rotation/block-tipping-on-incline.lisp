@@ -25,10 +25,10 @@
               ;; (< w h): the block must fit on the slope (w <= h / sin a) for its two
               ;; bottom corners to be proven on it at the start
               (w :positive (< w h) (:value 1/5))
-              ;; (< (+ k (/ w 2)) (/ h (* 2 (sin a)))): the slope below the block is long
+              ;; (< k (- (/ h (* 2 (sin a))) (/ w 2))): the slope below the block is long
               ;; enough for its downhill face to land on it (the downhill edge stands w/2
               ;; below the slope's middle, h / (2 sin a) above its foot)
-              (k :positive (> k (/ w (tan a))) (< k h) (< (+ k (/ w 2)) (/ h (* 2 (sin a))))
+              (k :positive (> k (/ w (tan a))) (< k h) (< k (- (/ h (* 2 (sin a))) (/ w 2)))
                  (:value 1))
               (mu :positive (> mu (tan a))
                   (> mu (/ (+ (* (+ (* 4 w w) (* k k)) (sin a)) (* 3 w k (cos a)))

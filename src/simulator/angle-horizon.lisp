@@ -112,15 +112,17 @@ numbers do not tell."
                      ((realp u) (values u nil))
                      (t (values (second u) nil)))))))))
 
-(defun angle-horizon-screen (run solved groups conditions)
+(defun angle-horizon-screen (run solved groups reach conditions)
   "A function CONDITION -> (:NEVER) for those of CONDITIONS that cannot end the state by
-the run's numbers (see the file header), else NIL; one that returns NIL throughout when
-the run has no values to decide first or no group is a rotation path."
+the run's numbers (see the file header), else NIL; when the run has no values to decide
+first, PROVEN-ANGLE-SCREEN's (angle-horizon-proofs.lisp; REACH the broad phase's); NIL
+throughout when no group is a rotation path."
   (let ((earliest (make-hash-table :test #'eq))
         (horizons '()))
-    (unless (and (some (lambda (g) (eq (group-kind g) :rotation-path)) groups)
-                 (angle-horizon-active-p run))
+    (unless (some (lambda (g) (eq (group-kind g) :rotation-path)) groups)
       (return-from angle-horizon-screen (constantly nil)))
+    (unless (angle-horizon-active-p run)
+      (return-from angle-horizon-screen (proven-angle-screen run solved groups reach conditions)))
     (progn
       (dolist (condition conditions)
         (let* ((relation (ames.engine:termination-condition-relation condition))

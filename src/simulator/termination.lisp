@@ -369,7 +369,7 @@ broad-phase.lisp) never fires."
     ;; proven out of reach before another candidate (horizon-phase.lisp)
     ;; under values, the conditions along an angle that cannot come first are set aside
     ;; by numbers (angle-horizon.lisp)
-    (let* ((screen (angle-horizon-screen run solved groups conditions))
+    (let* ((screen (angle-horizon-screen run solved groups reach conditions))
            (results (condition-results run reach conditions
                                        (lambda (condition)
                                          (or (funcall screen condition)
