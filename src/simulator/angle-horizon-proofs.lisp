@@ -15,7 +15,9 @@
 ;;;;     closes with its guards proven there, reached before any turning point), its angle
 ;;;;     is the HORIZON: the state surely ends there or before;
 ;;;;   - every other guarded meeting whose gap's first closing (no guards asked) is PROVEN
-;;;;     beyond the horizon (NEARER-P) cannot end the state: it is set aside as (:NEVER),
+;;;;     beyond the horizon (NEARER-P; DECIDE's cheap strategies only,
+;;;;     AMES.ALGEBRA:*DECIDE-CHEAPLY*: where they fail, the meeting gets the full work as
+;;;;     before) cannot end the state: it is set aside as (:NEVER),
 ;;;;     as angle-horizon.lisp does under values and horizon-phase.lisp does for meetings
 ;;;;     out of reach. Its firing is at or after that first closing.
 ;;;; Nothing is set aside on the defaults' word alone; without defaults for every parameter,
@@ -80,5 +82,7 @@ once; a guarded meeting proven to close beyond the horizon gets (:NEVER); others
                (let ((entry (find condition entries :key #'first)))
                  (when (and entry (eq (second entry) (second first-sure))
                             (> (third entry) (third first-sure))
-                            (first-closing-beyond-p run solved (second entry) condition horizon))
+                            ;; cheap proofs only: an :UNKNOWN just sets nothing aside
+                            (let ((ames.algebra:*decide-cheaply* t))
+                              (first-closing-beyond-p run solved (second entry) condition horizon)))
                    (list :never)))))))))
