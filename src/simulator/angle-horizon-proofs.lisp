@@ -15,11 +15,12 @@
 ;;;;     closes with its guards proven there, reached before any turning point), its angle
 ;;;;     is the HORIZON: the state surely ends there or before;
 ;;;;   - every other guarded meeting whose gap's first closing (no guards asked) is PROVEN
-;;;;     beyond the horizon (NEARER-P; DECIDE's cheap strategies only,
+;;;;     beyond the horizon (the closing found with DECIDE's cheap strategies only,
 ;;;;     AMES.ALGEBRA:*DECIDE-CHEAPLY*: where they fail, the meeting gets the full work as
-;;;;     before) cannot end the state: it is set aside as (:NEVER),
-;;;;     as angle-horizon.lisp does under values and horizon-phase.lisp does for meetings
-;;;;     out of reach. Its firing is at or after that first closing.
+;;;;     before; its order against the horizon, NEARER-P, by DECIDE) cannot end the
+;;;;     state: it is set aside as (:NEVER), as angle-horizon.lisp does under values and
+;;;;     horizon-phase.lisp does for meetings out of reach. Its firing is at or after
+;;;;     that first closing.
 ;;;; Nothing is set aside on the defaults' word alone; without defaults for every parameter,
 ;;;; or where the horizon's candidate is not proven, nothing is set aside.
 
@@ -56,10 +57,14 @@ angle proven beyond HORIZON, or never closes ahead."
   (let* ((gap (guarded-relation-parts (ames.engine:termination-condition-relation condition)))
          (f (motion-value (list group) (over-state-terms run solved gap))))
     (multiple-value-bind (status s)
-        (handler-case (angle-root-ahead run group f)
-          (ames.maxima:maxima-error () :unknown))
+        ;; the closing by the cheap strategies only: an :UNKNOWN just sets nothing aside
+        (let ((ames.algebra:*decide-cheaply* t))
+          (handler-case (angle-root-ahead run group f)
+            (ames.maxima:maxima-error () :unknown)))
       (case status
         (:never t)
+        ;; the order of two angles in closed form, by DECIDE's full work (arc tangents
+        ;; against multiples of pi: atan-orders.lisp)
         (:at (eq :true (nearer-p run group horizon s)))))))
 
 (defun proven-angle-screen (run solved groups reach conditions)
@@ -82,7 +87,5 @@ once; a guarded meeting proven to close beyond the horizon gets (:NEVER); others
                (let ((entry (find condition entries :key #'first)))
                  (when (and entry (eq (second entry) (second first-sure))
                             (> (third entry) (third first-sure))
-                            ;; cheap proofs only: an :UNKNOWN just sets nothing aside
-                            (let ((ames.algebra:*decide-cheaply* t))
-                              (first-closing-beyond-p run solved (second entry) condition horizon)))
+                            (first-closing-beyond-p run solved (second entry) condition horizon))
                    (list :never)))))))))
