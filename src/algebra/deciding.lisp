@@ -169,8 +169,9 @@ seen), what a physicist knows, one square root by cases on the sign beside it
   "The verdict keys (see VERDICT-KEY) of the DECIDE calls under way, innermost first.")
 
 (defvar *decide-cheaply* nil
-  "True while DECIDE tries only CHEAP-PROOF's strategies on a question it has no verdict
-for (a screen whose :UNKNOWN costs nothing but a proof not made: angle-horizon-proofs.lisp).")
+  "T while DECIDE tries only CHEAP-PROOF's strategies on a question it has no verdict for
+(a screen whose :UNKNOWN costs nothing but a proof not made: angle-horizon-proofs.lisp);
+an internal real time: from then on.")
 
 (defvar *cut-short* '()
   "The verdict keys of questions that DECIDE answered :UNKNOWN without trying, because
@@ -203,7 +204,8 @@ Maxima)."
         (setf verdict (inherited-verdict bridge relation)
               found (and verdict (cache-answer bridge key verdict) t)))
       (cond (found verdict)
-            (*decide-cheaply*
+            ((and *decide-cheaply*
+                  (or (eq *decide-cheaply* t) (> (get-internal-real-time) *decide-cheaply*)))
              ;; only the cheap strategies (values-first.lisp); an :UNKNOWN here is not cached
              (when *deciding* (push :cheaply *cut-short*))
              (cheap-proof bridge relation))

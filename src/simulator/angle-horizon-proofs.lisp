@@ -16,7 +16,7 @@
 ;;;;     is the HORIZON: the state surely ends there or before;
 ;;;;   - every other guarded meeting whose gap's first closing (no guards asked) is PROVEN
 ;;;;     beyond the horizon (the closing found with DECIDE's cheap strategies only,
-;;;;     AMES.ALGEBRA:*DECIDE-CHEAPLY*: where they fail, the meeting gets the full work as
+;;;;     AMES.ALGEBRA:*DECIDE-CHEAPLY*, *SCREEN-PROOF-SECONDS*: where they fail, the meeting gets the full work as
 ;;;;     before; its order against the horizon, NEARER-P, by DECIDE) cannot end the
 ;;;;     state: it is set aside as (:NEVER), as angle-horizon.lisp does under values and
 ;;;;     horizon-phase.lisp does for meetings out of reach. Its firing is at or after
@@ -25,6 +25,12 @@
 ;;;; or where the horizon's candidate is not proven, nothing is set aside.
 
 (in-package #:ames.simulator)
+
+(defparameter *screen-proof-seconds* 0
+  "The wall time for which the search for a guarded meeting's first closing gets DECIDE's
+full work (FIRST-CLOSING-BEYOND-P); its cheap strategies only after that. 0: cheap only
+(the tipping block: 2 s, two meetings set aside, one of them 648 s of guards; with 30 s,
+three, but the screen took 294 s at a load near 10).")
 
 (defun defaults-run (run)
   "A stand-in RUN carrying only the scenario's (:value N) defaults as its values (for
@@ -57,8 +63,11 @@ angle proven beyond HORIZON, or never closes ahead."
   (let* ((gap (guarded-relation-parts (ames.engine:termination-condition-relation condition)))
          (f (motion-value (list group) (over-state-terms run solved gap))))
     (multiple-value-bind (status s)
-        ;; the closing by the cheap strategies only: an :UNKNOWN just sets nothing aside
-        (let ((ames.algebra:*decide-cheaply* t))
+        ;; the closing by DECIDE's full work for *SCREEN-PROOF-SECONDS*, its cheap
+        ;; strategies only after that: an :UNKNOWN just sets nothing aside
+        (let ((ames.algebra:*decide-cheaply*
+                (+ (get-internal-real-time)
+                   (round (* *screen-proof-seconds* internal-time-units-per-second)))))
           (handler-case (angle-root-ahead run group f)
             (ames.maxima:maxima-error () :unknown)))
       (case status
