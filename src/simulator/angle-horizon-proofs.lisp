@@ -16,8 +16,8 @@
 ;;;;     is the HORIZON: the state surely ends there or before;
 ;;;;   - every other guarded meeting whose gap's first closing (no guards asked) is PROVEN
 ;;;;     beyond the horizon (the closing found with DECIDE's cheap strategies only,
-;;;;     AMES.ALGEBRA:*DECIDE-CHEAPLY*, *SCREEN-PROOF-SECONDS*: where they fail, the meeting gets the full work as
-;;;;     before; its order against the horizon, NEARER-P, by DECIDE) cannot end the
+;;;;     AMES.ALGEBRA:*DECIDE-CHEAPLY*, *SCREEN-PROOF-SECONDS*: where they fail, the
+;;;;     meeting gets the full work as before; its order against the horizon, NEARER-P, by DECIDE) cannot end the
 ;;;;     state: it is set aside as (:NEVER), as angle-horizon.lisp does under values and
 ;;;;     horizon-phase.lisp does for meetings out of reach. Its firing is at or after
 ;;;;     that first closing.

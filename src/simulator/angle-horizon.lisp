@@ -23,8 +23,8 @@
 ;;;; The condition at the horizon, and any whose earliest angle is not beyond it, get the
 ;;;; full work (a closed form where the algebra finds one, else the numeric root). Only
 ;;;; while the values decide first (AMES.ALGEBRA:VALUES-FIRST-P) and the facts in force
-;;;; hold at them (a branch the values do not select gets the full work): without values
-;;;; nothing is set aside here.
+;;;; hold at them (a branch the values do not select gets the full work); without them,
+;;;; the proofs of angle-horizon-proofs.lisp set aside what they can.
 
 (in-package #:ames.simulator)
 
@@ -123,8 +123,7 @@ throughout when no group is a rotation path."
       (return-from angle-horizon-screen (constantly nil)))
     (unless (angle-horizon-active-p run)
       (return-from angle-horizon-screen (proven-angle-screen run solved groups reach conditions)))
-    (progn
-      (dolist (condition conditions)
+    (dolist (condition conditions)
         (let* ((relation (ames.engine:termination-condition-relation condition))
                (involved (unless-failing (condition-groups run solved groups relation)))
                (group (first involved)))
@@ -140,9 +139,9 @@ throughout when no group is a rotation path."
                       (let ((entry (assoc group horizons)))
                         (if entry
                             (setf (cdr entry) (min (cdr entry) u))
-                            (push (cons group u) horizons)))))))))))
-      (lambda (condition)
-        (let* ((entry (gethash condition earliest))
-               (horizon (and entry (cdr (assoc (car entry) horizons)))))
-          (when (and horizon (> (cdr entry) (+ horizon (* 1d-6 (max 1d0 horizon)))))
-            (list :never)))))))
+                            (push (cons group u) horizons))))))))))
+    (lambda (condition)
+      (let* ((entry (gethash condition earliest))
+             (horizon (and entry (cdr (assoc (car entry) horizons)))))
+        (when (and horizon (> (cdr entry) (+ horizon (* 1d-6 (max 1d0 horizon)))))
+          (list :never)))))))
