@@ -205,8 +205,10 @@ Maxima)."
               found (and verdict (cache-answer bridge key verdict) t)))
       (cond (found verdict)
             ((and *decide-cheaply*
-                  (or (eq *decide-cheaply* t) (> (get-internal-real-time) *decide-cheaply*)))
-             ;; only the cheap strategies (values-first.lisp); an :UNKNOWN here is not cached
+                  (or (eq *decide-cheaply* t) (> (get-internal-real-time) *decide-cheaply*))
+                  (relation-operator-p (expression-operator relation)))
+             ;; only the cheap strategies (values-first.lisp; a connective's parts come
+             ;; back here one by one); an :UNKNOWN here is not cached
              (when *deciding* (push :cheaply *cut-short*))
              (cheap-proof bridge relation))
             ((member key *deciding* :test #'equal)
