@@ -168,6 +168,11 @@ seen), what a physicist knows, one square root by cases on the sign beside it
 (defvar *deciding* '()
   "The verdict keys (see VERDICT-KEY) of the DECIDE calls under way, innermost first.")
 
+(defvar *decide-cheaply* nil
+  "T while DECIDE tries only CHEAP-PROOF's strategies on a question it has no verdict for
+(a screen whose :UNKNOWN costs nothing but a proof not made: angle-horizon-proofs.lisp);
+an internal real time: from then on.")
+
 (defvar *cut-short* '()
   "The verdict keys of questions that DECIDE answered :UNKNOWN without trying, because
 they were already under way (or :DEPTH, because the questions nested too deep), while
@@ -199,6 +204,13 @@ Maxima)."
         (setf verdict (inherited-verdict bridge relation)
               found (and verdict (cache-answer bridge key verdict) t)))
       (cond (found verdict)
+            ((and *decide-cheaply*
+                  (or (eq *decide-cheaply* t) (> (get-internal-real-time) *decide-cheaply*))
+                  (relation-operator-p (expression-operator relation)))
+             ;; only the cheap strategies (values-first.lisp; a connective's parts come
+             ;; back here one by one); an :UNKNOWN here is not cached
+             (when *deciding* (push :cheaply *cut-short*))
+             (cheap-proof bridge relation))
             ((member key *deciding* :test #'equal)
              (push key *cut-short*)
              :unknown)

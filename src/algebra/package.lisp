@@ -26,6 +26,7 @@ It asks Maxima only through the bridge.")
    ;; the values decide first (values-first.lisp)
    #:call-with-values-first #:values-first-p #:decide-first-cheaply #:cheap-proof #:signs-refuted-by-values
    #:proven-real-p
+   #:facts-hold-at-values-p #:*decide-cheaply*
    #:undecided-witnesses #:explain-undecided
    ;; roots (roots.lisp, trig-roots.lisp)
    #:earliest-root #:square-free-part #:earliest-trigonometric-root

@@ -367,8 +367,13 @@ broad-phase.lisp) never fires."
     (check-deferred-pairs reach)
     ;; the meetings of bodies that do not touch come last, set aside where they are
     ;; proven out of reach before another candidate (horizon-phase.lisp)
-    (let ((results (condition-results run reach conditions
-                                      (lambda (condition) (condition-result run solved groups reach condition)))))
+    ;; under values, the conditions along an angle that cannot come first are set aside
+    ;; by numbers (angle-horizon.lisp)
+    (let* ((screen (angle-horizon-screen run solved groups reach conditions))
+           (results (condition-results run reach conditions
+                                       (lambda (condition)
+                                         (or (funcall screen condition)
+                                             (condition-result run solved groups reach condition))))))
       (dolist (condition conditions)
         (destructuring-bind (result &optional fact not-before) (gethash condition results)
           (cond ((eq result :numeric) (push condition numeric))
