@@ -38,6 +38,9 @@ ADMISSIBLE-POOL). The facts themselves are the key, so a pool is never used for 
   "The subjects of FACTS, without repetitions (as DISTINCT-SUBJECTS keeps them)."
   (distinct-subjects (mapcan #'expression-variables facts)))
 
+(defparameter *plain-draws* 200
+  "How many independent draws DRAW-ADMISSIBLE-POINTS makes before it narrows its draws.")
+
 (defun draw-admissible-points (facts)
   "Up to *WITNESS-ADMISSIBLE-POINTS* points (alists subject -> double float over FACTS'
 subjects) that surely satisfy every one of FACTS (flattened), drawn from a fixed seed
@@ -71,9 +74,6 @@ when none of those is admissible)."
     (nreverse points)))
 
 ;;; Draws narrowed by the facts linear in one subject
-
-(defparameter *plain-draws* 200
-  "How many independent draws DRAW-ADMISSIBLE-POINTS makes before it narrows its draws.")
 
 (defun value-with (expression subject value point)
   "EXPRESSION's value (the centre of its ball) at POINT with SUBJECT set to VALUE, or NIL."

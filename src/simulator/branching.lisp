@@ -304,15 +304,17 @@ starts under the values (see NUMERIC-CLOCK); its states from the fork on, as (:A
 
 (defun failure-text (condition)
   "Why a branch failed, from the AMES-ERROR CONDITION: its detail (or its type) and the
-form at fault (its datum, printed on one line and cut at 300 characters), so that the
-fact a geometry could not decide is named."
+form at fault (its datum, printed on one line; one over 300 characters only by its
+length), so that the fact a geometry could not decide is named."
   (let* ((detail (or (ames-error-detail condition) (string-downcase (type-of condition))))
          (datum (ames-error-datum condition))
          (printed (and datum
                        (let ((*print-pretty* nil) (*print-case* :downcase))
                          (princ-to-string datum)))))
     (cond ((or (null printed) (search printed detail)) detail)
-          ((> (length printed) 300) (format nil "~A (at ~A ...)" detail (subseq printed 0 300)))
+          ;; a prefix form cut short could not be read back as a formula by the reports
+          ((> (length printed) 300)
+           (format nil "~A (at a formula of ~D characters, too long to print)" detail (length printed)))
           (t (format nil "~A (at ~A)" detail printed)))))
 
 (defun history-leaf-outcomes (history)
