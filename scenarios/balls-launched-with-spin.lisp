@@ -2,11 +2,12 @@
 ;;;; launched with topspin, and a disc set down spinning in place, each on a rough floor:
 ;;;; each slides until it rolls.
 ;;;;
-;;;; Source type: the textbook's "ball that slides then rolls" problems (first-year
-;;;; mechanics; the angular momentum about the contact point is kept, since friction acts
-;;;; there and the normal force and the weight pass through it). A body of inertia I,
-;;;; launched at v0 with angular velocity w (counter-clockwise positive: for motion to +x
-;;;; rolling is w = -v/r, backspin is w > 0), ends rolling at
+;;;; Expected results (textbook), below. Source type: the textbook's "ball that slides
+;;;; then rolls" problems (first-year mechanics; the angular momentum about the contact
+;;;; point is kept, since friction acts there and the normal force and the weight pass
+;;;; through it). A body of inertia I, launched at v0 with angular velocity w
+;;;; (counter-clockwise positive: for motion to +x rolling is w = -v/r, backspin is
+;;;; w > 0), ends rolling at
 ;;;;   v = (m r^2 v0 - I r w) / (m r^2 + I),
 ;;;; after a time |v - v0| / (mu g) (kinetic friction mu m g throughout the slide):
 ;;;;   sphere (I = (2/5) m r^2) with backspin w0: v = (5 v0 - 2 r w0) / 7 at

@@ -27,7 +27,7 @@
 ;;;; The block pushed low (y = -9k/20), which slides, is
 ;;;; awaiting-rotation/pushed-block-slides.lisp (its symbolic run is still too slow).
 
-(scenario pushed-block-tips
+(scenario pushed-block-tips-or-slides
   "A block pushed near its top tips over its front edge."
   (parameters (m :positive (:value 1)) (g :positive (:value 981/100)) (w :positive (:value 1))
               (k :positive (:value 2)) (mu :positive (< mu (/ (+ (* 4 w w) (* k k)) (* 3 w k))) (:value 1/2))

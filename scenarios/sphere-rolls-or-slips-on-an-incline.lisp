@@ -10,7 +10,7 @@
 ;;;; AMES branches on 7 mu cos a - 2 sin a (slips below 0, rolls at and above); the values
 ;;;; (mu = 1/10, a = 45 degrees) select the slip.
 
-(scenario sphere-rolls-or-slips
+(scenario sphere-rolls-or-slips-on-an-incline
   "A solid sphere on a rough incline: it rolls or slips according to mu."
   (parameters (m :positive (:value 2)) (g :positive (:value 981/100)) (r :positive (:value 1/10))
               (a (> a 0) (< a (/ pi 2)) (:value (deg 45)))

@@ -56,7 +56,7 @@ writes its fact): positive where the block tips."
   "Where the criterion keeps it flat (the run's branch 2), the block pushed at y = 9k/20
 slides without turning at (P - mu m g) / m."
   (with-fixture simulator-bridge ()
-    (let ((scenario (pushed-block-scenario "pushed-block-tips")))
+    (let ((scenario (pushed-block-scenario "pushed-block-tips-or-slides")))
       (call-with-first-state
        scenario bridge (list `(< ,(criterion-gap bridge scenario) 0))
        (lambda (run solved groups)
@@ -86,7 +86,7 @@ static friction limits), the block turns about that edge: one rotation path, wit
 alpha = (m g w/2 - (y + k/2) P) / I_edge at the start (half the slope of omega^2 along
 the angle there)."
   (with-fixture simulator-bridge ()
-    (let ((scenario (pushed-block-scenario "pushed-block-tips")))
+    (let ((scenario (pushed-block-scenario "pushed-block-tips-or-slides")))
       (multiple-value-bind (lower upper alpha) (edge-static-limits scenario)
         (call-with-first-state
          scenario bridge (list `(> ,(criterion-gap bridge scenario) 0) lower upper)
@@ -111,7 +111,7 @@ the angle there)."
 criterion y P + (k/2) mu m g against (w/2) m g, up to a factor of one sign free of the
 push and of friction."
   (with-fixture simulator-bridge ()
-    (let* ((scenario (unbranched (pushed-block-scenario "pushed-block-tips")))
+    (let* ((scenario (unbranched (pushed-block-scenario "pushed-block-tips-or-slides")))
            (history (simulate-stopping-when-ambiguous scenario bridge))
            (condition (getf (ames::history-notes history) :stopped-by)))
       (is (eq :ambiguous (ames::history-outcome history)))

@@ -108,7 +108,7 @@ r); above it rolls (a = (5/7) g sin a, friction (2/7) m g sin a). Either way its
 momentum about a point of the slope is -m g r t sin a. With mu open the run branches on
 that very threshold."
   (with-fixture simulator-bridge ()
-    (let ((open (named-scenario "sphere-rolls-or-slips-on-an-incline" "sphere-rolls-or-slips")))
+    (let ((open (named-scenario "sphere-rolls-or-slips-on-an-incline" "sphere-rolls-or-slips-on-an-incline")))
       (let ((fork (first (ames::history-states (ames:simulate open :bridge bridge)))))
         (is (ames::state-branches fork))
         (call-with-scenario-facts

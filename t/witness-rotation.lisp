@@ -238,7 +238,7 @@ I_edge = m (w^2 + k^2) / 3 (after 0.02 s, within 1 %), and its downhill edge doe
           (is (< (abs (state-entry end :angular-velocities "block")) 1d-9))
           (is (relatively-near (* (/ (- (v "p") (* (v "mu") (v "m") (v "g"))) (v "m")) (getf end :time))
                                (first (state-entry end :velocities "block")) 1d-9)))))
-    (let* ((answer (rotation-witness "pushed-block-tips-or-slides" 0.2d0 :name "pushed-block-tips"))
+    (let* ((answer (rotation-witness "pushed-block-tips-or-slides" 0.2d0 :name "pushed-block-tips-or-slides"))
            (end (ames.witness:witness-end answer)))
       (is (eq :ok (ames.witness:witness-status answer)))
       (is (< (state-entry end :angular-velocities "block") -0.1d0)))))

@@ -117,6 +117,27 @@ base declares, which a query's event pattern must name; the knowledge base sets 
                (checked-quantity validation (second x)) (checked-quantity validation (third x))))
         (t (query-reject validation x "a condition is a relation such as (> (speed b) v), an outcome such as (:lift-off b s), or (not OUTCOME), not ~A" (show x)))))
 
+(defparameter *question-options*
+  '(("VALUE" :at) ("DISTANCE" :during) ("PARAMETER" :such-that) ("PROVE" :during)
+    ("MAXIMUM" :during) ("MINIMUM" :during))
+  "For each question word taking one argument and options, the option keys it accepts.")
+
+(defun check-question-options (validation question word arguments)
+  "Reject QUESTION (its WORD, ARGUMENTS) unless its arguments are one argument followed by
+options, each a key WORD accepts with one value, none repeated: an option misspelt or a
+stray atom would otherwise be ignored. Words not in *QUESTION-OPTIONS* are left to their
+own checks."
+  (let ((keys (rest (assoc word *question-options* :test #'equal))))
+    (when keys
+      (let ((options (rest arguments)))
+        (unless (and arguments (evenp (length options))
+                     (loop for (key) on options by #'cddr
+                           always (member key keys))
+                     (loop for (key . more) on options by #'cddr
+                           never (member key (loop for (k) on (rest more) by #'cddr collect k))))
+          (query-reject validation question "(~(~A~) ...) takes one argument, then the options ~{~(~S~)~^, ~}, each at most once and with a value, not ~A"
+                        word keys (show question)))))))
+
 (defun checked-query (validation clause)
   "The canonical query (NAME QUESTION) of the clause (query NAME QUESTION)."
   (enter validation "clause QUERY" clause)
@@ -129,6 +150,7 @@ base declares, which a query's event pattern must name; the knowledge base sets 
     (flet ((option (key)
              (let ((tail (member key arguments)))
                (and tail (second tail)))))
+      (check-question-options validation question word arguments)
       (list (second clause)
             (cond ((equal word "VALUE")
                    (unless (option :at) (query-reject validation question "(value QUANTITY :at WHEN)"))
