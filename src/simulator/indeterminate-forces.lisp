@@ -115,7 +115,7 @@ fixed, some forces are not); NIL otherwise."
 
 (defun holding-bounds (run relation free values)
   "The bounds on FREE within which the exit RELATION does not hold at the start: a list
-of (:LOWER X) and (:UPPER X); :NEVER when it holds whatever FREE (decided); :OPEN when
+of (:LOWER X) and (:UPPER X); :NEVER when it holds whatever FREE (decided); :UNDECIDED when
 its truth is not decided or it is not linear in FREE."
   (case (first relation)
     (or (let ((bounds '()))
@@ -132,15 +132,15 @@ its truth is not decided or it is not linear in FREE."
                                        (run-bridge run)
                                        (substitute-expressions (list (cons free z)) difference) z)))))
        (cond ((free-of-p free difference)
-              (case (decide run (list holds difference 0)) (:true '()) (:false :never) (t :open)))
-             ((/= 2 (length coefficients)) :open)
+              (case (decide run (list holds difference 0)) (:true '()) (:false :never) (t :undecided)))
+             ((/= 2 (length coefficients)) :undecided)
              (t (let ((sign (one-sign (sign-of run (second coefficients))))
                       (bound (tidy run `(- (/ ,(first coefficients) ,(second coefficients))))))
                   (case sign
                     (:positive (list (list (if (member holds '(> >=)) :lower :upper) bound)))
                     (:negative (list (list (if (member holds '(> >=)) :upper :lower) bound)))
-                    (t :open)))))))
-    (t :open)))
+                    (t :undecided)))))))
+    (t :undecided)))
 
 (defun tightest (run bounds keep-p)
   "BOUNDS (expressions) without those another one is decided to be tighter than: KEEP-P,
