@@ -244,6 +244,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                  (:file "flush-corner-snapping")
                  (:file "approximate-starts")
                  (:file "pending-candidates")
+                 (:file "numeric-ends")
                  (:file "end-values")
                  (:file "states")
                  (:file "impacts")
