@@ -70,3 +70,26 @@ just after. Returns (values AFTER IMPACT)."
           (setf (getf impact :angular-velocities-after)
                 (valued-end-values run (getf impact :angular-velocities-after))))
         (values (valued-end-values run after) impact))))
+
+(defvar *impact-at-values* nil
+  "True while an impact after an end found with numbers (NUMERIC-END-STATE-P) is resolved:
+its velocities just before are numbers at the run's values, and the relations over the
+parameters its consistency search meets hold or not at those values only.")
+
+(defun valued-relation (run relation)
+  "RELATION (a comparison, or AND / OR / NOT of them) with the run's parameter values put
+in its sides (VALUED-EXPRESSION) while *IMPACT-AT-VALUES*; RELATION itself otherwise. An
+impact after an end found with numbers starts where only those values put it: a relation
+mixing the parameters' symbols with the integration's numbers (an impulse 225770929 m
+(3 - l) / 536647140) is no statement about other values, and is decided at them, exactly."
+  (cond ((or (not *impact-at-values*) (null (run-values run)) (atom relation)) relation)
+        ((member (first relation) '(< > <= >= = /=))
+         (cons (first relation) (mapcar (lambda (side) (valued-expression run side)) (rest relation))))
+        ((member (first relation) '(and or not))
+         (cons (first relation) (mapcar (lambda (part) (valued-relation run part)) (rest relation))))
+        (t relation)))
+
+(defun impact-valued (run x)
+  "X with the run's parameter values put in (VALUED-EXPRESSION) while *IMPACT-AT-VALUES*,
+else X: see VALUED-RELATION."
+  (if *impact-at-values* (valued-expression run x) x))
