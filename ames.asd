@@ -418,6 +418,7 @@ gravitation (after Leon Wong's 1994 MIT thesis)."
                (:file "fork-pruning")
                (:file "fork-bounds")
                (:file "approximate-starts")
+               (:file "numeric-ends")
                (:file "witness-curved")
                (:file "witness-crosscheck")
                (:file "witness-comparator")
