@@ -30,10 +30,16 @@ they reach (see FINAL-VALUES)."
                                         (rotation-final-values run groups fired 'ames.kb:angle) fired)
                values)))
         ((null (run-rotations run))
-         (snap-velocities-onto-held-circles run values (final-values run groups fired :pos)))
-        (t (snap-corner-velocities run values (final-values run groups fired :pos)
+         (snap-velocities-onto-held-circles run values (snapped-positions run groups fired)))
+        (t (snap-corner-velocities run values (snapped-positions run groups fired)
                                    (rotation-final-values run groups fired 'ames.kb:angle)
                                    (rotation-final-values run groups fired 'ames.kb:angvel) fired))))
+
+(defun snapped-positions (run groups fired)
+  "The positions SNAPPED-FINAL-VALUES puts on their contacts, before the run's values are
+put in: the exact points the velocities are put along (a circle's radius, a face's
+place, as the geometry writes them)."
+  (snapped-final-values run groups fired :pos (unsnapped-final-values run groups fired :pos)))
 
 (defun unsnapped-final-values (run groups fired what)
   "FINAL-VALUES before the positions are put on the contacts reached."
