@@ -38,12 +38,17 @@ an expression is an atom or a list whose head is a symbol."
       (mapcar (lambda (x) (valued-tree run x)) tree)))
 
 (defun valued-end-values (run values)
-  "VALUES, an alist body -> (X Y) or body -> (VALUE), the free bodies' entries valued
-(VALUED-EXPRESSION); a fixed body's stays the scenario's formula."
+  "VALUES, an alist body -> (X Y) or body -> (VALUE), the rotating bodies' entries valued
+(VALUED-EXPRESSION): their corners put back on the faces made them products of the
+integration's rationals and the parameters. A fixed body's stays the scenario's formula;
+a body that does not turn keeps the exact point its contact's geometry gives (a bob put
+on its rope's circle at a + l u: valued, the next state would find the rope's slack
+1 - l, and fork on its sign)."
   (if (null (run-values run))
       values
       (mapcar (lambda (entry)
-                (if (body-fixed-p run (first entry))
+                (if (or (body-fixed-p run (first entry))
+                        (not (assoc (first entry) (run-rotations run))))
                     entry
                     (cons (first entry) (valued-tree run (rest entry)))))
               values)))
