@@ -2,15 +2,20 @@
 ;;;;
 ;;;; A numerically integrated state ends with rationals near the integration's doubles
 ;;;; (RATIONAL-OF), at the run's parameter values. Putting a rotating body's corners back on
-;;;; their faces (corner-snapping.lisp), a body back on its circle (circle-snapping.lisp)
-;;;; or on a face (SNAP-ONTO-CONTACTS) uses the scenario's geometry, written in its
-;;;; parameters: a corner's velocity along the floor becomes -(l/2) omega with omega the
-;;;; integration's rational, printed "-225770929 l / 89441190" -- a product of a symbol with
-;;;; a number that holds only at l = 1, not a formula of the problem. So once a state ends
-;;;; with numbers (values in force), its end values, and what the impact after it derives
-;;;; from them (impulses, the energy lost, the velocities just after, the next state's
-;;;; start), have the parameters' values put in: numbers, equal to the formulas they
-;;;; replace at those values. A run without values is not touched (closed forms stay).
+;;;; their faces (corner-snapping.lisp, flat-corner-snapping.lisp) uses the scenario's
+;;;; geometry, written in its parameters: a corner's velocity along the floor becomes
+;;;; -(l/2) omega with omega the integration's rational, printed "-225770929 l / 89441190"
+;;;; -- a product of a symbol with a number that holds only at l = 1, not a formula of the
+;;;; problem. So once a state ends with numbers (values in force), the rotating bodies' end
+;;;; values, and what the impact after it derives from them (impulses, the energy lost, the
+;;;; rotating bodies' velocities just after: the next state's start), have the parameters'
+;;;; values put in: numbers, equal to the formulas they replace at those values; the
+;;;; impact's open signs are decided at the values (VALUED-RELATION). A run without values
+;;;; is not touched (closed forms stay). Not done: a body that does not turn keeps the
+;;;; exact point its contact's geometry gives (a bob on its rope's circle at a + l u, with
+;;;; u a rational direction): valued, the next state finds the rope's slack 1 - l, not 0,
+;;;; and forks on its sign -- the next state's contacts would have to be decided at the
+;;;; values too.
 
 (in-package #:ames.simulator)
 
@@ -61,8 +66,9 @@ time is a double (a root searched with numbers)."
 (defun valued-impact (run numeric-end after impact)
   "AFTER (velocities just after) and IMPACT (RESOLVE-IMPACT's plist) with the parameters'
 values put in (VALUED-EXPRESSION) when NUMERIC-END, the impact following an end found
-with numbers (NUMERIC-END-STATE-P): the impulses, the energy lost, the velocities and angular velocities
-just after. Returns (values AFTER IMPACT)."
+with numbers (NUMERIC-END-STATE-P): the impulses, the energy lost, the rotating bodies'
+velocities and angular velocities just after (VALUED-END-VALUES). Returns (values AFTER
+IMPACT)."
   (if (not (and numeric-end (run-values run)))
       (values after impact)
       (let ((impact (copy-list impact)))
