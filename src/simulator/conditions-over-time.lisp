@@ -132,15 +132,19 @@ holds at once only when it is loose."
              (:negative :true)
              (:positive :false)
              (:zero (if loose :true :false))
-             (t (or (and (run-decider-override run) (impact-verdict-by-values coefficient))
+             (t (or (and (run-decider-override run)
+                         (impact-verdict-by-values (impact-valued run coefficient))) ; numeric-ends.lisp
                     (values :unknown `(< ,coefficient 0))))))))))
 
 (defun impact-verdict-by-values (coefficient)
   "While an impact is resolved, whether a relation whose leading COEFFICIENT's sign the
 assumptions leave open fires (:TRUE when it is negative, :FALSE when positive) at the
 run's parameter values, the fact recorded as assumed from them; NIL when there are no
-values or they do not settle it. An impact has one outcome: it is not branched on."
-  (cond ((eq (ames.algebra:decide-by-values `(< ,coefficient 0)) :true) :true)
+values or they do not settle it. An impact has one outcome: it is not branched on. A
+COEFFICIENT that is a number (after an end found with numbers: IMPACT-VALUED) is its own
+verdict, nothing assumed."
+  (cond ((realp coefficient) (cond ((minusp coefficient) :true) ((plusp coefficient) :false)))
+        ((eq (ames.algebra:decide-by-values `(< ,coefficient 0)) :true) :true)
         ((eq (ames.algebra:decide-by-values `(> ,coefficient 0)) :true) :false)))
 
 (defun vanishes-identically-p (run solved expression)

@@ -11,21 +11,35 @@ numerically integrated body's end position is put exactly on the contacts FIRED 
 face, and the next state would not find the contact), a body held on a circle exactly on
 it, moving along it (SNAP-ONTO-HELD-CIRCLES), and a rotating body's corners on the
 faces they touch, and its velocity along them (SNAP-CORNERS-ONTO-FACES and
-SNAP-CORNER-VELOCITIES)."
+SNAP-CORNER-VELOCITIES). With the run's parameter values, the end values are numbers
+(VALUED-END-VALUES)."
   (let ((values (unsnapped-final-values run groups fired what)))
-    (cond ((notany (lambda (group) (eq (group-kind group) :numeric)) groups) values)
-          ((eq what :pos)
-           (let ((values (snap-onto-held-circles ; circle-snapping.lisp
-                          run (snap-onto-contacts run values fired)))) ; numeric-roots.lisp
-             (if (run-rotations run)
-                 (snap-corners-onto-faces run values ; corner-snapping.lisp
-                                          (rotation-final-values run groups fired 'ames.kb:angle) fired)
-                 values)))
-          ((null (run-rotations run))
-           (snap-velocities-onto-held-circles run values (final-values run groups fired :pos) fired))
-          (t (snap-corner-velocities run values (final-values run groups fired :pos)
-                                     (rotation-final-values run groups fired 'ames.kb:angle)
-                                     (rotation-final-values run groups fired 'ames.kb:angvel) fired)))))
+    (if (notany (lambda (group) (eq (group-kind group) :numeric)) groups)
+        values
+        ;; numbers at the run's values, not the integration's rationals times symbols
+        (valued-end-values run (snapped-final-values run groups fired what values))))) ; numeric-ends.lisp
+
+(defun snapped-final-values (run groups fired what values)
+  "FINAL-VALUES' VALUES (unsnapped) of a state with a numeric group, put on the contacts
+they reach (see FINAL-VALUES)."
+  (cond ((eq what :pos)
+         (let ((values (snap-onto-held-circles ; circle-snapping.lisp
+                        run (snap-onto-contacts run values fired)))) ; numeric-roots.lisp
+           (if (run-rotations run)
+               (snap-corners-onto-faces run values ; corner-snapping.lisp
+                                        (rotation-final-values run groups fired 'ames.kb:angle) fired)
+               values)))
+        ((null (run-rotations run))
+         (snap-velocities-onto-held-circles run values (snapped-positions run groups fired) fired))
+        (t (snap-corner-velocities run values (snapped-positions run groups fired)
+                                   (rotation-final-values run groups fired 'ames.kb:angle)
+                                   (rotation-final-values run groups fired 'ames.kb:angvel) fired))))
+
+(defun snapped-positions (run groups fired)
+  "The positions SNAPPED-FINAL-VALUES puts on their contacts, before the run's values are
+put in: the exact points the velocities are put along (a circle's radius, a face's
+place, as the geometry writes them)."
+  (snapped-final-values run groups fired :pos (unsnapped-final-values run groups fired :pos)))
 
 (defun unsnapped-final-values (run groups fired what)
   "FINAL-VALUES before the positions are put on the contacts reached."

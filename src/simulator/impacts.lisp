@@ -178,7 +178,7 @@ place to branch: its outcome is one, the question only how the algebra shows it.
         ;; over the impact's unknowns (a contact's separation just after, a slip):
         ;; settled by consistency
         :choice
-        (let* ((relation (constant-roots-taken run relation))
+        (let* ((relation (constant-roots-taken run (valued-relation run relation))) ; numeric-ends.lisp
                (verdict (decide run relation)))
           (or (and (eq verdict :unknown) (ames.algebra:decide-by-values relation))
               verdict)))))

@@ -107,10 +107,12 @@ ames.kb:angle or ames.kb:angvel; (B (:NO-CLOSED-FORM)) for a body integrated num
                       (cond ((and (eq (group-kind group) :numeric) (null (group-end-state group)))
                              (rotation-initial-value run term))
                             ((eq (group-kind group) :numeric)
-                             ;; flat on a face by two corners: flat-corner-snapping.lisp
-                             (snap-flat-rotation run group body head
-                                                 (rational-of (cdr (assoc term (group-end-state group) :test #'equal)))
-                                                 fired))
+                             ;; flat on a face by two corners: flat-corner-snapping.lisp;
+                             ;; numbers at the run's values (numeric-ends.lisp)
+                             (valued-expression
+                              run (snap-flat-rotation run group body head
+                                                      (rational-of (cdr (assoc term (group-end-state group) :test #'equal)))
+                                                      fired)))
                             (t (end-value run (substitute-expressions
                                                (list (cons (group-variable group)
                                                            (group-at-end run groups group fired)))

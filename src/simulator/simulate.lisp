@@ -72,7 +72,9 @@ CHECK-INCREMENTAL."
                                :test #'equal))))
     (when impulsive
       (check-held-contacts-at-impact run state fired) ; held-contacts.lisp
-      (multiple-value-bind (after impact) (resolve-impact run impulsive)
+      (multiple-value-bind (after impact)
+          (let ((*impact-at-values* (numeric-end-state-p state))) ; numeric-ends.lisp
+            (multiple-value-call #'valued-impact run *impact-at-values* (resolve-impact run impulsive)))
         (setf (run-velocities run) after
               (run-rotations run) (impact-rotations run impact)
               (state-impact state) impact
