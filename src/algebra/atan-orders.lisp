@@ -37,18 +37,24 @@
           ((minusp q) (list '- (cdr entry)))
           (t (cdr entry)))))
 
-(defun atan-kernels (expression)
-  "The one-argument (atan X) of EXPRESSION whose X has a variable, largest first."
+(defun one-argument-atans (expression argument-test)
+  "The one-argument (atan X) forms of EXPRESSION (outside quantity terms) whose X
+satisfies ARGUMENT-TEST, innermost first, each once."
   (let ((found '()))
     (labels ((walk (x)
                (when (and (consp x) (not (quantity-term-p x)))
                  (mapc #'walk (expression-arguments x))
                  (when (and (eq (expression-operator x) 'atan)
                             (= 1 (length (expression-arguments x)))
-                            (not (numeric-constant-p (second x))))
+                            (funcall argument-test (first (expression-arguments x))))
                    (pushnew x found :test #'equal)))))
       (walk expression))
-    (sort found #'> :key #'expression-size)))
+    (nreverse found)))
+
+(defun atan-kernels (expression)
+  "The one-argument (atan X) of EXPRESSION whose X has a variable, largest first."
+  (sort (reverse (one-argument-atans expression (complement #'numeric-constant-p)))
+        #'> :key #'expression-size))
 
 (defun linear-in-kernel (expression kernel)
   "EXPRESSION as c KERNEL + R with c rational and R free of KERNEL: (values c R), or NIL

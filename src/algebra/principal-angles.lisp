@@ -37,16 +37,7 @@ argument holds, with -pi/2 < x < pi/2 proven; else NIL."
 (defun arctangents-of-tangents (expression)
   "The one-argument atan forms of EXPRESSION whose argument holds a trigonometric
 function, innermost first."
-  (let ((found '()))
-    (labels ((walk (x)
-               (when (and (consp x) (not (quantity-term-p x)))
-                 (mapc #'walk (expression-arguments x))
-                 (when (and (eq (expression-operator x) 'atan)
-                            (= 1 (length (expression-arguments x)))
-                            (trigonometric-angles (first (expression-arguments x))))
-                   (pushnew x found :test #'equal)))))
-      (walk expression))
-    (nreverse found)))
+  (one-argument-atans expression #'trigonometric-angles)) ; atan-orders.lisp
 
 (defun decide-by-principal-angles (prover relation)
   "A reasoning step: each atan(tan x) of RELATION with x on the principal branch written

@@ -51,21 +51,28 @@ only approached for ever (an unstable equilibrium reached with exactly its energ
          (eq :true (ames.algebra:decide
                     bridge `(> ,(substitute-expressions (list (cons +arc-length+ root)) (third integral)) 0))))))
 
+(defun first-root-ahead (bridge state difference s0 direction)
+  "The first arc length ahead of S0 (along DIRECTION, +1 or -1) where DIFFERENCE vanishes
+in STATE, or NIL when there is none; signals UNANSWERABLE when that is not decided."
+  (multiple-value-bind (root status)
+      (ames.algebra:coordinate-root-ahead bridge difference +arc-length+ s0 direction)
+    (case root
+      (:none nil)
+      (:unknown (unanswerable "where it is reached in state ~D is not decided~@[ (~S)~]"
+                              (state-index state) status))
+      (t root))))
+
 (defun reaches-along-endless-arc (bridge state difference s0)
   "The arc length S where DIFFERENCE first vanishes ahead of S0 in STATE, whose motion along
 its coordinate never ends nor turns, or NIL; signals UNANSWERABLE when not decided."
   (let ((direction (or (endless-motion-direction state)
                        (unanswerable "which way state ~D runs along its coordinate is not known"
                                      (state-index state)))))
-    (multiple-value-bind (root status)
-        (ames.algebra:coordinate-root-ahead bridge difference +arc-length+ s0 direction)
-      (case root
-        (:none nil)
-        (:unknown (unanswerable "where it is reached in state ~D is not decided~@[ (~S)~]"
-                                (state-index state) status))
-        (t (if (reached-with-speed-p bridge state root)
-               root
-               (unanswerable "whether state ~D reaches it moving is not decided" (state-index state))))))))
+    (let ((root (first-root-ahead bridge state difference s0 direction)))
+      (cond ((null root) nil)
+            ((reached-with-speed-p bridge state root) root)
+            (t (unanswerable "whether state ~D reaches it moving is not decided"
+                             (state-index state)))))))
 
 (defun reaches-along-arc (bridge scenario previous state difference)
   "The arc length S where DIFFERENCE (over the arc length) first vanishes in STATE, or NIL
@@ -86,17 +93,13 @@ is not decided."
         (let ((direction (case (decided `(> ,s1 ,s0)) (:true 1)
                            (t (if (eq (decided `(< ,s1 ,s0)) :true) -1
                                   (return-from reaches-along-arc nil))))))
-          (multiple-value-bind (root status)
-              (ames.algebra:coordinate-root-ahead bridge difference +arc-length+ s0 direction)
-            (case root
-              (:none nil)
-              (:unknown (unanswerable "where it is reached in state ~D is not decided~@[ (~S)~]"
-                                      (state-index state) status))
-              (t (case (decided `(<= (* ,direction (- ,root ,s1)) 0))
-                   (:true root)
-                   (:false nil)
-                   (t (unanswerable "whether it is reached before state ~D ends is not decided"
-                                    (state-index state))))))))))))
+          (let ((root (first-root-ahead bridge state difference s0 direction)))
+            (when root
+              (case (decided `(<= (* ,direction (- ,root ,s1)) 0))
+                (:true root)
+                (:false nil)
+                (t (unanswerable "whether it is reached before state ~D ends is not decided"
+                                 (state-index state)))))))))))
 
 (defun reaches-in-time (bridge state difference)
   "The local time where DIFFERENCE (over TAU) first vanishes in STATE, or NIL; signals
